@@ -1,0 +1,93 @@
+//! Errors of the library: bad parameters, failed integrations, failed output.
+
+use thiserror::Error;
+
+/// A parameter outside its physical or numerical range.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum ParamError {
+    /// A numeric parameter is out of range (or not finite).
+    #[error("invalid {name} = {value}: expected {expected}")]
+    InvalidParameter {
+        /// Parameter name as the user spells it.
+        name: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// The allowed range, in words.
+        expected: &'static str,
+    },
+    /// A model id or alias that is not in [`crate::ModelKind`].
+    #[error("unknown model {given:?}: expected one of {expected}")]
+    UnknownModel {
+        /// What was asked for.
+        given: String,
+        /// The accepted ids.
+        expected: String,
+    },
+    /// Requested output times that are not finite, negative or not ascending.
+    #[error("invalid output times: {reason}")]
+    InvalidTimes {
+        /// What is wrong with them.
+        reason: &'static str,
+    },
+}
+
+/// A simulation that could not be carried out.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum SimError {
+    /// The scenario or the options were invalid.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// The step size underflowed: the equations are singular near `t`.
+    #[error("step size {h:e} s too small at t = {t} s")]
+    StepSizeTooSmall {
+        /// Time of the failure, s.
+        t: f64,
+        /// The step that was too small, s.
+        h: f64,
+    },
+    /// More steps than allowed.
+    #[error("gave up after {steps} steps at t = {t} s")]
+    TooManySteps {
+        /// Time reached, s.
+        t: f64,
+        /// The step budget.
+        steps: u64,
+    },
+    /// The state became NaN or infinite.
+    #[error("the state became non-finite at t = {t} s")]
+    NonFiniteState {
+        /// Time of the failure, s.
+        t: f64,
+    },
+    /// A system declared more event functions than the integrator supports.
+    #[error("{count} event functions, at most {max} are supported")]
+    TooManyEvents {
+        /// Declared.
+        count: usize,
+        /// Supported.
+        max: usize,
+    },
+    /// The closed-form time–distance relation could not be inverted.
+    #[error("could not invert t(x) at t = {t} s")]
+    Inversion {
+        /// Requested time, s.
+        t: f64,
+    },
+}
+
+/// Writing results failed.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// The underlying writer failed.
+    #[error("write failed: {0}")]
+    Io(#[from] std::io::Error),
+    /// CSV serialisation failed.
+    #[error("CSV: {0}")]
+    Csv(#[from] csv::Error),
+    /// JSON serialisation failed.
+    #[error("JSON: {0}")]
+    Json(#[from] serde_json::Error),
+}

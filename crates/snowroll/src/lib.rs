@@ -1,0 +1,77 @@
+//! # snowroll
+//!
+//! A log (or snowball) rolling without slipping down a slope of angle α
+//! covered by snow of depth b, picking up all the snow it meets: every
+//! analysis of K. T. McDonald, "Snowball/Log Rolling down a Snowy Slope",
+//! with the corrections of its errata.
+//!
+//! ## The physics on one page
+//! * §2 takes the log as circular at all times, radius `π r² = π r0² + b x`
+//!   (eq. (8)). Torque about the centre (eq. (4)), torque about the contact
+//!   line (eq. (6)), energy conservation (eqs. (14), (15)) and the Lagrangian
+//!   (eq. (21) as printed) give different equations of motion that agree as
+//!   b → 0 on `a = (2/3) g sin α` (App. A). The corrected Lagrangian is eq. (14).
+//!   Each tends to its own terminal acceleration: g sin α/5 for eq. (4)
+//!   (Loney's closed form, fn. 4), g sin α/3 for eqs. (14), (15), (32) (eq. (35)).
+//! * §2.4 treats the log as only approximately circular (eq. (32), with the
+//!   optional lift term (36)).
+//! * §3 follows the log turn by turn without assuming it is circular, with a
+//!   collision at each full turn (eq. (89)).
+//!
+//! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
+//! one integrator ([`integrate`]): DOP853 with dense output and events.
+//!
+//! ## Symbols
+//! | symbol | meaning | Rust name | unit |
+//! |---|---|---|---|
+//! | α | slope angle | [`Scenario::slope_angle`] | rad (degrees on the command line) |
+//! | b | snow depth normal to the slope | [`Scenario::snow_depth`] | m |
+//! | r0 | initial radius | [`Scenario::initial_radius`] | m |
+//! | r | radius (nominal radius in §3) | [`Sample::r_m`] | m |
+//! | g | gravitational acceleration | [`Scenario::gravity`] | m/s² |
+//! | G, C | g sin α, g cos α | [`Scenario::g_along`], [`Scenario::g_normal`] | m/s² |
+//! | ρ | density of log and snow | [`Scenario::density`] | kg/m³ |
+//! | l | length of the log | [`Scenario::length`] | m |
+//! | x | distance rolled down the slope | [`Sample::x_m`] | m |
+//! | v, a | speed and acceleration down the slope | [`Sample::v_m_s`], [`Sample::a_m_s2`] | m/s, m/s² |
+//! | m | mass of log plus snow | [`Sample::mass_kg`] | kg |
+//!
+//! ## Equation → item
+//! | note | item |
+//! |---|---|
+//! | eq. (4) | [`Derivation::TorqueAboutCentre`] |
+//! | eq. (6) | [`Derivation::TorqueAboutContact`] |
+//! | eqs. (7), (10), (11) | [`physics::kinetic_energy`], [`physics::potential_energy`], [`physics::mechanical_energy`] |
+//! | eq. (8) | [`physics::radius_at`], [`physics::mass_at`] |
+//! | eq. (14) | [`Derivation::Energy`] |
+//! | eq. (15) | [`Derivation::EnergyLinearised`] |
+//! | eq. (21) | [`Derivation::LagrangianPrinted`] |
+//! | eq. (32), (36) | [`Derivation::QuasiCircular`], [`Derivation::QuasiCircularLift`] |
+//! | eq. (35) and every terminal value | [`Coefficients::terminal_fraction`] |
+//! | fn. 4 | [`LoneyModel`], [`DragOnlyClosedForm`] |
+//! | fn. 7 | [`Coefficients::stall_slope`] |
+//! | eq. (95) | [`Derivation::Snowless`] |
+#![deny(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    clippy::print_stdout
+)]
+
+pub mod error;
+pub mod integrate;
+pub mod models;
+pub mod output;
+pub mod physics;
+mod quadrature;
+pub mod scenario;
+pub mod trajectory;
+pub mod units;
+
+pub use error::{OutputError, ParamError, SimError};
+pub use models::{
+    CircularModel, Coefficients, Derivation, DragOnlyClosedForm, LoneyModel, Model, ModelKind,
+};
+pub use output::{write_trajectory, Format, RunParams};
+pub use scenario::{Scenario, ScenarioFile};
+pub use trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState};

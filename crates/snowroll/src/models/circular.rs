@@ -1,0 +1,289 @@
+//! §2.1–2.4: the log taken as circular at all times (unphysical, §2.1.3:
+//! fresh snow would have to spread over the whole surface at once), and the
+//! approximately circular log of §2.4.
+//!
+//! All eight equations of motion share one form and differ only in
+//! coefficients ([`Coefficients`]):
+//!
+//! `a (1 + κ b²/(6π²r²)) = (2/3) G − c_v b v²/(π r²) − C (λ₁ b/(π r) + λ₂ b²/(3π r²))`
+//!
+//! with G = g sin α, C = g cos α and `π r² = π r0² + b x` (eq. (8)).
+//! State `[x (m), v (m/s)]`. Valid to the order in b/r each derivation keeps.
+
+use std::f64::consts::PI;
+
+use super::ode::{run_ode, OdeModel};
+use super::{Model, ModelKind};
+use crate::error::SimError;
+use crate::integrate::{Direction, OdeSystem};
+use crate::scenario::Scenario;
+use crate::trajectory::{Sample, SimOptions, Stop, StopReason, Trajectory};
+use crate::units::Radians;
+
+/// How an equation of motion of §2 was derived: its coefficients.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Derivation {
+    /// App. A, eq. (95): no snow collected, `a = (2/3) g sin α`.
+    Snowless,
+    /// §2.1.1, eq. (4): torque about the centre, `a = 2G/3 − 7bv²/(6πr²)`.
+    TorqueAboutCentre,
+    /// §2.1.2, eq. (6): torque about the contact line, `a = 2G/3 − 3bv²/(2πr²)`.
+    TorqueAboutContact,
+    /// §2.2, eq. (14): energy conservation of eq. (11) with the b² terms,
+    /// `a(1 + b²/6π²r²) = 2G/3 − bv²/(2πr²) − C(3br + b²)/(3πr²)`.
+    /// Also the corrected Lagrangian result (errata §2.1).
+    Energy,
+    /// §2.2, eq. (15): eq. (14) to first order in b,
+    /// `a = 2G/3 − bv²/(2πr²) − gb cos α/(πr)`.
+    EnergyLinearised,
+    /// §2.3, eq. (21) exactly as printed,
+    /// `a(1 + b²/6π²r²) = 2G/3 − bv²/(πr²) − C(3rb + b²)/(3πr²)`;
+    /// it omits ∂T/∂x in eq. (19) (errata §2.1), the corrected form is eq. (14).
+    LagrangianPrinted,
+    /// §2.4, eq. (32): `a = 2G/3 − bv²/(2πr²)`, r from eq. (27).
+    QuasiCircular,
+    /// §2.4, eq. (32) plus term (36): `a = 2G/3 − bv²/(2πr²) − gb cos α/(πr)`
+    /// (the same equation as (15); errata §4 row 9 fixes r).
+    QuasiCircularLift,
+}
+
+/// The coefficients of the common form of the circular equations of motion
+/// (see the module doc).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Coefficients {
+    /// Whether snow is collected at all (false only for the snowless model).
+    pub accretes: bool,
+    /// c_v, the momentum-drag coefficient of `b v²/(π r²)`.
+    pub drag: f64,
+    /// λ₁, the coefficient of the lifting term `g b cos α/(π r)`.
+    pub lift: f64,
+    /// λ₂, the coefficient of `g b² cos α/(3π r²)`.
+    pub lift_b2: f64,
+    /// κ, the coefficient of the inertia correction `b²/(6π² r²)`.
+    pub inertia_b2: f64,
+}
+
+impl Derivation {
+    /// The coefficients; see each variant for its equation.
+    pub const fn coefficients(self) -> Coefficients {
+        let (accretes, drag, lift, lift_b2, inertia_b2) = match self {
+            Derivation::Snowless => (false, 0.0, 0.0, 0.0, 0.0),
+            Derivation::TorqueAboutCentre => (true, 7.0 / 6.0, 0.0, 0.0, 0.0),
+            Derivation::TorqueAboutContact => (true, 1.5, 0.0, 0.0, 0.0),
+            Derivation::Energy => (true, 0.5, 1.0, 1.0, 1.0),
+            Derivation::EnergyLinearised => (true, 0.5, 1.0, 0.0, 0.0),
+            Derivation::LagrangianPrinted => (true, 1.0, 1.0, 1.0, 1.0),
+            Derivation::QuasiCircular => (true, 0.5, 0.0, 0.0, 0.0),
+            Derivation::QuasiCircularLift => (true, 0.5, 1.0, 0.0, 0.0),
+        };
+        Coefficients {
+            accretes,
+            drag,
+            lift,
+            lift_b2,
+            inertia_b2,
+        }
+    }
+
+    /// The model id of this derivation.
+    pub fn kind(self) -> ModelKind {
+        match self {
+            Derivation::Snowless => ModelKind::Snowless,
+            Derivation::TorqueAboutCentre => ModelKind::TorqueCm,
+            Derivation::TorqueAboutContact => ModelKind::TorqueContact,
+            Derivation::Energy => ModelKind::Energy,
+            Derivation::EnergyLinearised => ModelKind::EnergyThin,
+            Derivation::LagrangianPrinted => ModelKind::LagrangianPrinted,
+            Derivation::QuasiCircular => ModelKind::QuasiCircular,
+            Derivation::QuasiCircularLift => ModelKind::QuasiCircularLift,
+        }
+    }
+}
+
+impl Coefficients {
+    /// Acceleration at `(x, v)` of the common form (module doc).
+    pub fn acceleration(&self, s: &Scenario, x: f64, v: f64) -> f64 {
+        let (gs, gc) = (s.g_along(), s.g_normal());
+        if !self.accretes {
+            return 2.0 * gs / 3.0;
+        }
+        let b = s.snow_depth();
+        let r0 = s.initial_radius();
+        let r2 = r0 * r0 + b * x / PI;
+        let r = r2.sqrt();
+        let rhs = 2.0 * gs / 3.0
+            - self.drag * b * v * v / (PI * r2)
+            - gc * (self.lift * b / (PI * r) + self.lift_b2 * b * b / (3.0 * PI * r2));
+        rhs / (1.0 + self.inertia_b2 * b * b / (6.0 * PI * PI * r2))
+    }
+
+    /// Late-time acceleration over g sin α for b > 0: with `π r² ≈ b x` and
+    /// `v² ≈ 2 a x` the drag term tends to `2 c_v a`, the lift and b² terms
+    /// vanish like 1/r, so `a∞ = (2G/3)/(1 + 2 c_v)`: G/5 for eq. (4)
+    /// (fn. 4), G/6 for eq. (6), G/3 for eqs. (14), (15), (32) (eq. (35)),
+    /// 2G/9 for eq. (21) as printed; 2/3 throughout for the snowless
+    /// model (App. A, eq. (95)). Always `Some` for the circular models.
+    pub fn terminal_fraction(&self) -> Option<f64> {
+        if self.accretes {
+            Some((2.0 / 3.0) / (1.0 + 2.0 * self.drag))
+        } else {
+            Some(2.0 / 3.0)
+        }
+    }
+
+    /// Leading approach to the terminal value. With lift (λ₁ ≠ 0),
+    /// `a − a∞ ≈ −λ₁ g b cos α /((1 + 4c_v) π r)` (from the particular
+    /// solution `v² = A s + B s^{1/2}`, s = πr²); without it, the exact
+    /// solution `v² = A s + K s^{−2c_v}` gives `a − a∞ ∝ s^{−(1 + 2c_v)} ∝ r^{−2(1 + 2c_v)}`.
+    /// Returns the power p of `|a − a∞| ∝ r^{−p}`.
+    pub fn approach_power_in_r(&self) -> Option<f64> {
+        if !self.accretes {
+            None
+        } else if self.lift != 0.0 {
+            Some(1.0)
+        } else {
+            Some(2.0 * (1.0 + 2.0 * self.drag))
+        }
+    }
+
+    /// The initial acceleration with v = 0 is not positive below this slope
+    /// (fn. 7: the snow must be lifted). From the common form at x = 0, v = 0:
+    /// `tan α* = 3(λ₁ b r0 + λ₂ b²/3)/(2π r0²)`. `None` when the model has
+    /// no lift term (it always starts).
+    pub fn stall_slope(&self, b: f64, r0: f64) -> Option<Radians> {
+        if !self.accretes || (self.lift == 0.0 && self.lift_b2 == 0.0) {
+            return None;
+        }
+        let tan = 3.0 * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (2.0 * PI * r0 * r0);
+        Some(tan.atan())
+    }
+}
+
+/// A circular model of §2, one right-hand side for all derivations.
+///
+/// ```
+/// use snowroll::{CircularModel, Derivation, Model, Scenario, SimOptions};
+/// let model = CircularModel::new(Derivation::TorqueAboutCentre);
+/// let traj = model.simulate(&Scenario::default(), &SimOptions::default())?;
+/// assert!(traj.samples.last().unwrap().v_m_s > 0.0);
+/// # Ok::<(), snowroll::SimError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CircularModel {
+    derivation: Derivation,
+}
+
+impl CircularModel {
+    /// The model of `derivation`.
+    pub fn new(derivation: Derivation) -> Self {
+        Self { derivation }
+    }
+
+    /// Its derivation.
+    pub fn derivation(&self) -> Derivation {
+        self.derivation
+    }
+}
+
+/// Event indices of [`CircularSystem`].
+const EVENT_STALL: usize = 0;
+const EVENT_DISTANCE: usize = 1;
+
+/// The ODE `x' = v, v' = a(x, v)` of one scenario.
+struct CircularSystem {
+    coeffs: Coefficients,
+    scenario: Scenario,
+    x_end: Option<f64>,
+}
+
+impl OdeSystem<2> for CircularSystem {
+    fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
+        dy[0] = y[1];
+        dy[1] = self.coeffs.acceleration(&self.scenario, y[0], y[1]);
+    }
+
+    fn event_count(&self) -> usize {
+        if self.x_end.is_some() {
+            2
+        } else {
+            1
+        }
+    }
+
+    fn event(&self, index: usize, _t: f64, y: &[f64; 2]) -> f64 {
+        match index {
+            EVENT_STALL => y[1],
+            _ => y[0] - self.x_end.unwrap_or(f64::INFINITY),
+        }
+    }
+
+    fn event_direction(&self, index: usize) -> Direction {
+        match index {
+            EVENT_STALL => Direction::Falling,
+            _ => Direction::Rising,
+        }
+    }
+}
+
+impl OdeModel<2> for CircularSystem {
+    fn sample(&self, t: f64, y: &[f64; 2]) -> Sample {
+        let s = &self.scenario;
+        let (x, v) = (y[0], y[1]);
+        let (r, mass_kg) = if self.coeffs.accretes {
+            (
+                crate::physics::radius_at(s, x),
+                crate::physics::mass_at(s, x),
+            )
+        } else {
+            (s.initial_radius(), s.initial_mass())
+        };
+        Sample {
+            t_s: t,
+            x_m: x,
+            v_m_s: v,
+            a_m_s2: self.coeffs.acceleration(s, x, v),
+            r_m: r,
+            mass_kg,
+        }
+    }
+
+    fn stop_reason(&self, event: usize) -> StopReason {
+        if event == EVENT_DISTANCE {
+            StopReason::Distance
+        } else {
+            StopReason::Stalled
+        }
+    }
+}
+
+impl Model for CircularModel {
+    fn kind(&self) -> ModelKind {
+        self.derivation.kind()
+    }
+
+    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
+        opts.validate()?;
+        let mut system = CircularSystem {
+            coeffs: self.derivation.coefficients(),
+            scenario: *scenario,
+            x_end: opts.x_end,
+        };
+        let y0 = [0.0, scenario.initial_speed()];
+        // fn. 7: from rest the log moves only if a(0) > 0.
+        if y0[1] == 0.0 && system.coeffs.acceleration(scenario, 0.0, 0.0) <= 0.0 {
+            let first = system.sample(0.0, &y0);
+            return Ok(Trajectory {
+                model: self.kind(),
+                samples: vec![first],
+                turn_states: Vec::new(),
+                stop: Stop {
+                    reason: StopReason::DoesNotStart,
+                    t_s: 0.0,
+                    x_m: 0.0,
+                },
+                stats: Default::default(),
+            });
+        }
+        run_ode(self.kind(), &mut system, y0, opts)
+    }
+}

@@ -1,0 +1,258 @@
+//! Closed-form solutions: Loney's solution of eq. (4) (fn. 4), generalised
+//! to every circular equation of motion without a lift term.
+//!
+//! With `u = v²`, `2a = du/dx` and `s = π r² = π r0² + b x` (eq. (8)), an
+//! equation `a = 2G/3 − c_v b v²/s` becomes the linear equation
+//! `du/dx + 2c_v b u/s = 4G/3`, whose solution from `u(0) = v0²` is
+//!
+//! `u(x) = v0² (s0/s)^p + 4G/(3(1+p)) · (s0/b) [s/s0 − (s0/s)^p]`, p = 2c_v,
+//!
+//! (fn. 4 for c_v = 7/6, p = 7/3: `u = 2G s/(5b) + K/s^{7/3}`) and
+//! `a(x) = G·2/(3(1+p)) [1 + p (s0/s)^{p+1}] − (p/2)(b/s0) v0² (s0/s)^{p+1}`,
+//! which tends to `2G/(3(1+p))` (G/5 for eq. (4)). The coefficient of the
+//! decaying term is `7bK/6` for eq. (4), not `7bK/3` as printed (errata, fn. 4).
+//! Time follows from `t(x) = ∫ dx/√u` by quadrature, and x(t) by inverting it.
+
+use std::f64::consts::PI;
+
+use super::{Model, ModelKind};
+use crate::error::SimError;
+use crate::quadrature;
+use crate::scenario::Scenario;
+use crate::trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory};
+use crate::units::{Meters, MetersPerSecond, MetersPerSecondSquared, Seconds};
+
+/// Samples of the closed form when every "step" is asked for.
+const DEFAULT_SAMPLES: usize = 500;
+
+/// Relative accuracy of the quadrature for t(x): near f64 rounding.
+const QUAD_RTOL: f64 = 1e-14;
+
+/// The exact solution of `a = 2G/3 − c_v b v²/(π r²)` for one scenario.
+///
+/// ```
+/// use snowroll::{DragOnlyClosedForm, Scenario};
+/// let s = Scenario::default();
+/// let loney = DragOnlyClosedForm::new(&s, 7.0 / 6.0); // eq. (4), fn. 4
+/// // From rest the acceleration starts at 2/3 g sin α ...
+/// assert!((loney.acceleration(0.0) / s.g_along() - 2.0 / 3.0).abs() < 1e-14);
+/// // ... and tends to g sin α / 5.
+/// assert!((loney.acceleration(1e7) / s.g_along() - 0.2).abs() < 1e-9);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DragOnlyClosedForm {
+    g_along: f64,
+    b: f64,
+    s0: f64,
+    v0: f64,
+    /// p = 2 c_v.
+    p: f64,
+}
+
+impl DragOnlyClosedForm {
+    /// The solution for drag coefficient `drag` (= c_v; 7/6 for eq. (4)).
+    pub fn new(s: &Scenario, drag: f64) -> Self {
+        let r0 = s.initial_radius();
+        Self {
+            g_along: s.g_along(),
+            b: s.snow_depth(),
+            s0: PI * r0 * r0,
+            v0: s.initial_speed(),
+            p: 2.0 * drag,
+        }
+    }
+
+    /// ε = b x / s0, so that s = s0 (1 + ε).
+    fn eps(&self, x: Meters) -> f64 {
+        self.b * x / self.s0
+    }
+
+    /// `u = v²` at distance `x`, written to stay accurate as b → 0:
+    /// `(s0/b)[s/s0 − (s0/s)^p] = x q(ε)` with `q(ε) = (ε − expm1(−p ln1p ε))/ε`, q(0) = 1 + p.
+    pub fn speed_squared(&self, x: Meters) -> f64 {
+        let e = self.eps(x);
+        let p = self.p;
+        let q = if e == 0.0 {
+            1.0 + p
+        } else {
+            (e - (-p * e.ln_1p()).exp_m1()) / e
+        };
+        self.v0 * self.v0 * (-p * e.ln_1p()).exp() + 4.0 * self.g_along / (3.0 * (1.0 + p)) * x * q
+    }
+
+    /// Speed at distance `x`, m/s.
+    pub fn speed(&self, x: Meters) -> MetersPerSecond {
+        self.speed_squared(x).sqrt()
+    }
+
+    /// Acceleration at distance `x`, `a = ½ du/dx` (module doc), m/s².
+    pub fn acceleration(&self, x: Meters) -> MetersPerSecondSquared {
+        let p = self.p;
+        let decay = (-(p + 1.0) * self.eps(x).ln_1p()).exp(); // (s0/s)^{p+1}
+        2.0 * self.g_along / (3.0 * (1.0 + p)) * (1.0 + p * decay)
+            - 0.5 * p * self.b / self.s0 * self.v0 * self.v0 * decay
+    }
+
+    /// Time to roll from `x_a` to `x_b`, s: `∫ dx/√u`, integrated in
+    /// `w = √x` (`dx = 2w dw`), which removes the `1/√x` singularity of a
+    /// start from rest.
+    pub fn time_between(&self, x_a: Meters, x_b: Meters) -> Seconds {
+        let mut f = |w: f64| {
+            let v = self.speed(w * w);
+            if v > 0.0 {
+                2.0 * w / v
+            } else {
+                // w = 0 from rest: the limit of 2w/v is 2/√(4G/3).
+                2.0 / (4.0 * self.g_along / 3.0).sqrt()
+            }
+        };
+        quadrature::integrate(&mut f, x_a.sqrt(), x_b.sqrt(), QUAD_RTOL, 0.0)
+    }
+
+    /// Time to reach `x` from the start, s.
+    pub fn time_at(&self, x: Meters) -> Seconds {
+        self.time_between(0.0, x)
+    }
+
+    /// Position at time `t`, found by safeguarded Newton steps on
+    /// `t(x) = t` starting from a known point `(x_a, t_a)` with `t_a <= t`.
+    ///
+    /// # Errors
+    /// [`SimError::Inversion`] if no bracket or no convergence (not expected:
+    /// t(x) is smooth and increasing).
+    pub fn position_after(
+        &self,
+        x_a: Meters,
+        t_a: Seconds,
+        t: Seconds,
+    ) -> Result<Meters, SimError> {
+        if t <= t_a {
+            return Ok(x_a);
+        }
+        let fail = SimError::Inversion { t };
+        // Bracket: the speed only grows faster than √(x) ... expand until passed.
+        let (mut lo, mut hi) = (x_a, x_a);
+        let mut t_hi = t_a;
+        let mut guess = (self.speed(x_a) * (t - t_a)).max(self.g_along * (t - t_a).powi(2) / 3.0);
+        for _ in 0..200 {
+            hi = x_a + guess;
+            t_hi = t_a + self.time_between(x_a, hi);
+            if t_hi >= t {
+                break;
+            }
+            lo = hi;
+            guess *= 2.0;
+        }
+        if t_hi < t {
+            return Err(fail);
+        }
+        let mut x = 0.5 * (lo + hi);
+        for _ in 0..100 {
+            let tx = t_a + self.time_between(x_a, x);
+            let f = tx - t;
+            if f > 0.0 {
+                hi = x;
+            } else {
+                lo = x;
+            }
+            let v = self.speed(x);
+            let mut next = x - f * v;
+            if !(next > lo && next < hi) {
+                next = 0.5 * (lo + hi);
+            }
+            if (next - x).abs() <= 4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE)
+                || hi - lo <= 4.0 * f64::EPSILON * hi
+            {
+                return Ok(next);
+            }
+            x = next;
+        }
+        Ok(x)
+    }
+}
+
+/// Loney's closed form of eq. (4) (fn. 4), evaluated without an ODE solver.
+///
+/// ```
+/// use snowroll::{LoneyModel, Model, Sampling, Scenario, SimOptions};
+/// let opts = SimOptions { sampling: Sampling::Times(vec![0.0, 1.0, 10.0]), ..Default::default() };
+/// let traj = LoneyModel.simulate(&Scenario::default(), &opts)?;
+/// assert_eq!(traj.samples.len(), 3);
+/// # Ok::<(), snowroll::SimError>(())
+/// ```
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct LoneyModel;
+
+/// Drag coefficient of eq. (4): `7/(6π)·b v²/r²` = `c_v b v²/(π r²)` with c_v = 7/6.
+const LONEY_DRAG: f64 = 7.0 / 6.0;
+
+impl Model for LoneyModel {
+    fn kind(&self) -> ModelKind {
+        ModelKind::Loney
+    }
+
+    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
+        opts.validate()?;
+        let cf = DragOnlyClosedForm::new(scenario, LONEY_DRAG);
+        // Where the run ends: t_end, or x_end if that comes first.
+        let (t_stop, reason) = match opts.x_end {
+            Some(x_end) => {
+                let t_x = cf.time_at(x_end);
+                if t_x <= opts.t_end {
+                    (t_x, StopReason::Distance)
+                } else {
+                    (opts.t_end, StopReason::EndTime)
+                }
+            }
+            None => (opts.t_end, StopReason::EndTime),
+        };
+        let times: Vec<f64> = match &opts.sampling {
+            Sampling::Times(ts) => ts.iter().copied().filter(|&t| t <= t_stop).collect(),
+            Sampling::Every(dt) => (0..)
+                .map(|i| i as f64 * dt)
+                .take_while(|&t| t <= t_stop * (1.0 + 4.0 * f64::EPSILON))
+                .map(|t| t.min(t_stop))
+                .collect(),
+            Sampling::Steps => (0..=DEFAULT_SAMPLES)
+                .map(|i| t_stop * i as f64 / DEFAULT_SAMPLES as f64)
+                .collect(),
+            Sampling::Ends => vec![0.0, t_stop],
+        };
+        let r0 = scenario.initial_radius();
+        let b = scenario.snow_depth();
+        let sample = |t: f64, x: f64| Sample {
+            t_s: t,
+            x_m: x,
+            v_m_s: cf.speed(x),
+            a_m_s2: cf.acceleration(x),
+            r_m: (r0 * r0 + b * x / PI).sqrt(),
+            mass_kg: crate::physics::mass_at(scenario, x),
+        };
+        let mut samples = Vec::with_capacity(times.len());
+        let (mut x_a, mut t_a) = (0.0, 0.0);
+        for &t in &times {
+            let x = if reason == StopReason::Distance && t >= t_stop {
+                opts.x_end.unwrap_or(x_a)
+            } else {
+                cf.position_after(x_a, t_a, t)?
+            };
+            samples.push(sample(t, x));
+            (x_a, t_a) = (x, t);
+        }
+        let x_stop = match reason {
+            StopReason::Distance => opts.x_end.unwrap_or(x_a),
+            _ => cf.position_after(x_a, t_a, t_stop)?,
+        };
+        Ok(Trajectory {
+            model: ModelKind::Loney,
+            samples,
+            turn_states: Vec::new(),
+            stop: Stop {
+                reason,
+                t_s: t_stop,
+                x_m: x_stop,
+            },
+            stats: Default::default(),
+        })
+    }
+}

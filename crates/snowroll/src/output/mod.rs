@@ -1,0 +1,292 @@
+//! Writing trajectories as CSV or JSON. Both come from the same serde
+//! records ([`Sample`], [`TurnState`]); there is no hand-written CSV.
+
+use std::io::Write;
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::OutputError;
+use crate::scenario::{Scenario, ScenarioFile};
+use crate::trajectory::{Sample, Sampling, SimOptions, Stop, Trajectory, TurnState};
+
+/// The program version written into every output.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// Output format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Format {
+    /// Comma-separated values with `#` comment lines recording version and parameters.
+    #[default]
+    Csv,
+    /// One JSON object.
+    Json,
+}
+
+/// Every parameter of a run, unit-suffixed, as recorded in outputs.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunParams {
+    /// The scenario.
+    #[serde(flatten)]
+    pub scenario: ScenarioFile,
+    /// End time, s.
+    pub t_end_s: f64,
+    /// End distance, m.
+    pub x_end_m: Option<f64>,
+    /// Number of turns (turn models).
+    pub turns: Option<u64>,
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance.
+    pub atol: f64,
+    /// Sampling, in words.
+    pub sampling: String,
+}
+
+impl RunParams {
+    /// Collects the parameters of a run.
+    pub fn new(scenario: &Scenario, opts: &SimOptions) -> Self {
+        Self {
+            scenario: ScenarioFile::from(*scenario),
+            t_end_s: opts.t_end,
+            x_end_m: opts.x_end,
+            turns: opts.turns,
+            rtol: opts.tolerances.rtol,
+            atol: opts.tolerances.atol,
+            sampling: match &opts.sampling {
+                Sampling::Steps => "every accepted step".to_string(),
+                Sampling::Times(ts) => format!("{} requested times", ts.len()),
+                Sampling::Every(dt) => format!("every {dt} s"),
+                Sampling::Ends => "start and end".to_string(),
+            },
+        }
+    }
+
+    /// `key = value` lines, in a fixed order.
+    fn lines(&self) -> Vec<(String, String)> {
+        let opt = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
+        let s = &self.scenario;
+        vec![
+            ("slope_deg".into(), s.slope_deg.to_string()),
+            ("snow_depth_m".into(), s.snow_depth_m.to_string()),
+            ("r0_m".into(), s.r0_m.to_string()),
+            ("g_m_s2".into(), s.g_m_s2.to_string()),
+            ("density_kg_m3".into(), s.density_kg_m3.to_string()),
+            ("length_m".into(), s.length_m.to_string()),
+            ("v0_m_s".into(), s.v0_m_s.to_string()),
+            ("t_end_s".into(), self.t_end_s.to_string()),
+            ("x_end_m".into(), opt(self.x_end_m)),
+            (
+                "turns".into(),
+                self.turns.map_or("none".to_string(), |n| n.to_string()),
+            ),
+            ("rtol".into(), self.rtol.to_string()),
+            ("atol".into(), self.atol.to_string()),
+            ("sampling".into(), self.sampling.clone()),
+        ]
+    }
+}
+
+/// A sample of a turn model: [`Sample`] plus [`TurnState`] in one CSV row.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+struct TurnRow {
+    t_s: f64,
+    x_m: f64,
+    v_m_s: f64,
+    a_m_s2: f64,
+    r_m: f64,
+    mass_kg: f64,
+    turn: u64,
+    theta_rad: f64,
+    omega_rad_s: f64,
+}
+
+impl TurnRow {
+    fn new(s: &Sample, k: &TurnState) -> Self {
+        Self {
+            t_s: s.t_s,
+            x_m: s.x_m,
+            v_m_s: s.v_m_s,
+            a_m_s2: s.a_m_s2,
+            r_m: s.r_m,
+            mass_kg: s.mass_kg,
+            turn: k.turn,
+            theta_rad: k.theta_rad,
+            omega_rad_s: k.omega_rad_s,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct ModelInfo {
+    id: &'static str,
+    equation: &'static str,
+}
+
+#[derive(Serialize)]
+struct JsonStop {
+    reason: crate::trajectory::StopReason,
+    description: &'static str,
+    t_s: f64,
+    x_m: f64,
+}
+
+impl From<Stop> for JsonStop {
+    fn from(s: Stop) -> Self {
+        Self {
+            reason: s.reason,
+            description: s.reason.describe(),
+            t_s: s.t_s,
+            x_m: s.x_m,
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct JsonTrajectory<'a> {
+    snowroll_version: &'static str,
+    model: ModelInfo,
+    params: &'a RunParams,
+    stop: JsonStop,
+    samples: JsonSamples<'a>,
+}
+
+#[derive(Serialize)]
+#[serde(untagged)]
+enum JsonSamples<'a> {
+    Plain(&'a [Sample]),
+    Turns(Vec<TurnRow>),
+}
+
+/// Writes `traj` in `format`, recording the version, the model and `params`.
+///
+/// # Errors
+/// [`OutputError`] when the writer fails.
+pub fn write_trajectory(
+    w: &mut impl Write,
+    format: Format,
+    traj: &Trajectory,
+    params: &RunParams,
+) -> Result<(), OutputError> {
+    let has_turns = !traj.turn_states.is_empty() && traj.turn_states.len() == traj.samples.len();
+    match format {
+        Format::Csv => {
+            writeln!(w, "# snowroll {VERSION}")?;
+            writeln!(
+                w,
+                "# model = {} ({})",
+                traj.model.id(),
+                traj.model.equation()
+            )?;
+            for (k, v) in params.lines() {
+                writeln!(w, "# {k} = {v}")?;
+            }
+            writeln!(
+                w,
+                "# stop = {} at t_s = {} x_m = {}: {}",
+                serde_json::to_value(traj.stop.reason)?
+                    .as_str()
+                    .unwrap_or_default(),
+                traj.stop.t_s,
+                traj.stop.x_m,
+                traj.stop.reason.describe()
+            )?;
+            let mut csv = csv::Writer::from_writer(&mut *w);
+            if has_turns {
+                for (s, k) in traj.samples.iter().zip(&traj.turn_states) {
+                    csv.serialize(TurnRow::new(s, k))?;
+                }
+            } else if traj.samples.is_empty() {
+                csv.write_record(["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"])?;
+            } else {
+                for s in &traj.samples {
+                    csv.serialize(s)?;
+                }
+            }
+            csv.flush()?;
+        }
+        Format::Json => {
+            let doc = JsonTrajectory {
+                snowroll_version: VERSION,
+                model: ModelInfo {
+                    id: traj.model.id(),
+                    equation: traj.model.equation(),
+                },
+                params,
+                stop: traj.stop.into(),
+                samples: if has_turns {
+                    JsonSamples::Turns(
+                        traj.samples
+                            .iter()
+                            .zip(&traj.turn_states)
+                            .map(|(s, k)| TurnRow::new(s, k))
+                            .collect(),
+                    )
+                } else {
+                    JsonSamples::Plain(&traj.samples)
+                },
+            };
+            serde_json::to_writer_pretty(&mut *w, &doc)?;
+            writeln!(w)?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::models::ModelKind;
+    use crate::trajectory::StopReason;
+
+    fn tiny() -> Trajectory {
+        Trajectory {
+            model: ModelKind::TorqueCm,
+            samples: vec![Sample {
+                t_s: 0.0,
+                x_m: 0.0,
+                v_m_s: 0.0,
+                a_m_s2: 3.27,
+                r_m: 0.1,
+                mass_kg: 12.566,
+            }],
+            turn_states: vec![],
+            stop: Stop {
+                reason: StopReason::EndTime,
+                t_s: 0.0,
+                x_m: 0.0,
+            },
+            stats: Default::default(),
+        }
+    }
+
+    #[test]
+    fn csv_has_comment_header_then_unit_columns() {
+        let params = RunParams::new(&Scenario::default(), &SimOptions::default());
+        let mut out = Vec::new();
+        write_trajectory(&mut out, Format::Csv, &tiny(), &params).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let mut lines = text.lines();
+        assert!(lines.next().unwrap().starts_with("# snowroll "));
+        assert!(text.contains("# model = torque-cm (eq. (4))"));
+        assert!(text.contains("# slope_deg = 30"));
+        let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
+        assert_eq!(header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+    }
+
+    #[test]
+    fn json_has_the_documented_shape() {
+        let params = RunParams::new(&Scenario::default(), &SimOptions::default());
+        let mut out = Vec::new();
+        write_trajectory(&mut out, Format::Json, &tiny(), &params).unwrap();
+        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        for key in ["snowroll_version", "model", "params", "stop", "samples"] {
+            assert!(v.get(key).is_some(), "missing {key}");
+        }
+        assert_eq!(v["model"]["id"], "torque-cm");
+        assert_eq!(v["stop"]["reason"], "end-time");
+        assert_eq!(v["params"]["snow_depth_m"], 0.01);
+        assert_eq!(v["samples"][0]["a_m_s2"], 3.27);
+    }
+}

@@ -1,0 +1,202 @@
+//! One output schema for every model: samples, the stop, the options.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::ParamError;
+use crate::integrate::{Stats, Tolerances};
+use crate::models::ModelKind;
+use crate::units::{Kilograms, Meters, MetersPerSecond, MetersPerSecondSquared, Radians, Seconds};
+
+/// The state of the log at one time. Column names carry their units.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Sample {
+    /// Time since the start, s.
+    pub t_s: Seconds,
+    /// Distance rolled down the slope (of the contact line / nominal centre), m.
+    pub x_m: Meters,
+    /// Speed down the slope, m/s.
+    pub v_m_s: MetersPerSecond,
+    /// Acceleration dv/dt, m/s².
+    pub a_m_s2: MetersPerSecondSquared,
+    /// Radius (nominal radius for the turn models), m.
+    pub r_m: Meters,
+    /// Mass of log plus snow as the model counts it, kg.
+    pub mass_kg: Kilograms,
+}
+
+/// Extra state of the turn-by-turn models (§3), one per sample.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TurnState {
+    /// Turn number k, 0-based (errata §4 row 3).
+    pub turn: u64,
+    /// Angle rolled in this turn, rad, in [0, 2π].
+    pub theta_rad: Radians,
+    /// Rotation rate dθ/dt, rad/s.
+    pub omega_rad_s: f64,
+}
+
+/// Why a run ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
+pub enum StopReason {
+    /// Reached `t_end`.
+    EndTime,
+    /// Reached `x_end`.
+    Distance,
+    /// Completed the requested number of turns.
+    Turns,
+    /// The speed returned to zero (the log would have to shed snow to roll back, errata §4 row 8).
+    Stalled,
+    /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7).
+    DoesNotStart,
+}
+
+impl StopReason {
+    /// A sentence for people.
+    pub fn describe(self) -> &'static str {
+        match self {
+            StopReason::EndTime => "reached the end time",
+            StopReason::Distance => "reached the end distance",
+            StopReason::Turns => "completed the requested number of turns",
+            StopReason::Stalled => "the speed returned to zero (stall)",
+            StopReason::DoesNotStart => {
+                "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7)"
+            }
+        }
+    }
+}
+
+/// Where and why the run ended.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Stop {
+    /// Why.
+    pub reason: StopReason,
+    /// Time, s.
+    pub t_s: Seconds,
+    /// Position, m.
+    pub x_m: Meters,
+}
+
+/// The result of one simulation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trajectory {
+    /// Which model produced it.
+    pub model: ModelKind,
+    /// Samples in time order, as asked for by [`Sampling`].
+    pub samples: Vec<Sample>,
+    /// For the turn models, the turn state of each sample; empty otherwise.
+    pub turn_states: Vec<TurnState>,
+    /// How the run ended.
+    pub stop: Stop,
+    /// Integrator counts (zero for closed forms).
+    pub stats: Stats,
+}
+
+/// Which samples a run records.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Sampling {
+    /// The start and every accepted step (closed forms: 500 even steps).
+    #[default]
+    Steps,
+    /// Exactly these times, s (ascending, non-negative), from the dense output;
+    /// times after the stop are dropped.
+    Times(Vec<Seconds>),
+    /// A regular grid 0, dt, 2dt, … up to the stop, s.
+    Every(Seconds),
+    /// Only the start and the end (fastest).
+    Ends,
+}
+
+impl Sampling {
+    /// Checks times and grid spacing.
+    ///
+    /// # Errors
+    /// [`ParamError::InvalidTimes`] for non-finite, negative or descending
+    /// times; [`ParamError::InvalidParameter`] for a grid spacing `dt <= 0`.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        match self {
+            Sampling::Times(ts) => {
+                if ts.iter().any(|t| !t.is_finite() || *t < 0.0) {
+                    return Err(ParamError::InvalidTimes {
+                        reason: "every time must be finite and >= 0 s",
+                    });
+                }
+                if ts.windows(2).any(|w| w[1] < w[0]) {
+                    return Err(ParamError::InvalidTimes {
+                        reason: "times must be in ascending order",
+                    });
+                }
+                Ok(())
+            }
+            Sampling::Every(dt) if !(dt.is_finite() && *dt > 0.0) => {
+                Err(ParamError::InvalidParameter {
+                    name: "dt (s)",
+                    value: *dt,
+                    expected: "dt > 0 s",
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Options of one simulation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimOptions {
+    /// End time, s. Default 100.
+    pub t_end: Seconds,
+    /// Stop when x reaches this distance, m. Default: none.
+    pub x_end: Option<Meters>,
+    /// Stop after this many full turns (turn models only). Default: none.
+    pub turns: Option<u64>,
+    /// Integrator tolerances. Default rtol 1e-10, atol 1e-12.
+    pub tolerances: Tolerances,
+    /// What to record. Default: every step.
+    pub sampling: Sampling,
+}
+
+impl Default for SimOptions {
+    fn default() -> Self {
+        Self {
+            t_end: 100.0,
+            x_end: None,
+            turns: None,
+            tolerances: Tolerances::default(),
+            sampling: Sampling::Steps,
+        }
+    }
+}
+
+impl SimOptions {
+    /// Checks every option.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming the first bad option.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let bad = |name, value, expected| ParamError::InvalidParameter {
+            name,
+            value,
+            expected,
+        };
+        if !(self.t_end.is_finite() && self.t_end > 0.0) {
+            return Err(bad("t_end (s)", self.t_end, "0 < t_end < infinity s"));
+        }
+        if let Some(x) = self.x_end {
+            if !(x.is_finite() && x > 0.0) {
+                return Err(bad("x_end (m)", x, "0 < x_end < infinity m"));
+            }
+        }
+        if self.turns == Some(0) {
+            return Err(bad("turns", 0.0, "turns >= 1"));
+        }
+        let t = &self.tolerances;
+        if !(t.rtol.is_finite() && t.rtol >= 1e-15 && t.rtol < 1.0) {
+            return Err(bad("rtol", t.rtol, "1e-15 <= rtol < 1"));
+        }
+        if !(t.atol.is_finite() && t.atol > 0.0) {
+            return Err(bad("atol", t.atol, "atol > 0"));
+        }
+        self.sampling.validate()
+    }
+}
