@@ -42,6 +42,12 @@ fn with_default(text: &str, default: impl Display) -> String {
     format!("{text} [default: {default}]")
 }
 
+/// How a value of a clap enum is spelt on the command line.
+fn value_name(v: impl ValueEnum) -> String {
+    v.to_possible_value()
+        .map_or_else(String::new, |p| p.get_name().to_string())
+}
+
 /// A number as a person would type it: `1e-10` rather than `0.0000000001`.
 fn short(x: f64) -> String {
     if x != 0.0 && !(1e-3..1e6).contains(&x.abs()) {
@@ -59,36 +65,92 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "ID", ignore_case = true)]
     pub model: Option<ModelKind>,
 
-    #[arg(long, value_name = "DEG", allow_negative_numbers = true,
-          help = with_default("Slope angle alpha, in degrees (0 < alpha < 90)", ScenarioFile::default().slope_deg))]
+    #[arg(
+        long,
+        value_name = "DEG",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Slope angle alpha, in degrees (0 < alpha < 90)",
+            ScenarioFile::default().slope_deg
+        )
+    )]
     pub alpha_deg: Option<f64>,
 
-    #[arg(long, value_name = "M", allow_negative_numbers = true,
-          help = with_default("Snow depth b normal to the slope, in m (b >= 0; 0 = no snow)", ScenarioFile::default().snow_depth_m))]
+    #[arg(
+        long,
+        value_name = "M",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Snow depth b normal to the slope, in m (b >= 0; 0 = no snow)",
+            ScenarioFile::default().snow_depth_m
+        )
+    )]
     pub snow_depth: Option<f64>,
 
-    #[arg(long, value_name = "M", allow_negative_numbers = true,
-          help = with_default("Initial radius r0 of the log, in m (r0 > 0)", ScenarioFile::default().r0_m))]
+    #[arg(
+        long,
+        value_name = "M",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Initial radius r0 of the log, in m (r0 > 0)",
+            ScenarioFile::default().r0_m
+        )
+    )]
     pub r0: Option<f64>,
 
-    #[arg(long, value_name = "M/S^2", allow_negative_numbers = true,
-          help = with_default("Gravitational acceleration g, in m/s^2 (g > 0)", ScenarioFile::default().g_m_s2))]
+    #[arg(
+        long,
+        value_name = "M/S^2",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Gravitational acceleration g, in m/s^2 (g > 0)",
+            ScenarioFile::default().g_m_s2
+        )
+    )]
     pub g: Option<f64>,
 
-    #[arg(long, value_name = "KG/M^3", allow_negative_numbers = true,
-          help = with_default("Density rho of log and snow, in kg/m^3 (rho > 0)", ScenarioFile::default().density_kg_m3))]
+    #[arg(
+        long,
+        value_name = "KG/M^3",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Density rho of log and snow, in kg/m^3 (rho > 0)",
+            ScenarioFile::default().density_kg_m3
+        )
+    )]
     pub density: Option<f64>,
 
-    #[arg(long, value_name = "M", allow_negative_numbers = true,
-          help = with_default("Length l of the log, in m (l > 0)", ScenarioFile::default().length_m))]
+    #[arg(
+        long,
+        value_name = "M",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Length l of the log, in m (l > 0)",
+            ScenarioFile::default().length_m
+        )
+    )]
     pub length: Option<f64>,
 
-    #[arg(long, value_name = "M/S", allow_negative_numbers = true,
-          help = with_default("Initial speed v0 down the slope, in m/s (v0 >= 0)", ScenarioFile::default().v0_m_s))]
+    #[arg(
+        long,
+        value_name = "M/S",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Initial speed v0 down the slope, in m/s (v0 >= 0)",
+            ScenarioFile::default().v0_m_s
+        )
+    )]
     pub v0: Option<f64>,
 
-    #[arg(long, value_name = "S", allow_negative_numbers = true,
-          help = with_default("Stop at this time, in s (t_end > 0)", SimOptions::default().t_end))]
+    #[arg(
+        long,
+        value_name = "S",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Stop at this time, in s (t_end > 0)",
+            SimOptions::default().t_end
+        )
+    )]
     pub t_end: Option<f64>,
 
     #[arg(
@@ -117,16 +179,37 @@ pub struct SimulateArgs {
     )]
     pub dt: Option<f64>,
 
-    #[arg(long, value_name = "R", allow_negative_numbers = true,
-          help = with_default("Relative tolerance of the integrator (1e-15 <= rtol < 1)", short(SimOptions::default().tolerances.rtol)))]
+    #[arg(
+        long,
+        value_name = "R",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Relative tolerance of the integrator (1e-15 <= rtol < 1)",
+            short(SimOptions::default().tolerances.rtol)
+        )
+    )]
     pub rtol: Option<f64>,
 
-    #[arg(long, value_name = "A", allow_negative_numbers = true,
-          help = with_default("Absolute tolerance of the integrator, in the units of x (m) and v (m/s) (atol > 0)", short(SimOptions::default().tolerances.atol)))]
+    #[arg(
+        long,
+        value_name = "A",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Absolute tolerance of the integrator, in the units of x (m) and v (m/s) (atol > 0)",
+            short(SimOptions::default().tolerances.atol)
+        )
+    )]
     pub atol: Option<f64>,
 
-    #[arg(long, value_enum, value_name = "FORMAT",
-          help = with_default("Output format: csv (with # lines recording version and parameters) or json", "csv"))]
+    #[arg(
+        long,
+        value_enum,
+        value_name = "FORMAT",
+        help = with_default(
+            "Output format: csv (with # lines recording version and parameters) or json",
+            value_name(Format::default())
+        )
+    )]
     pub format: Option<Format>,
 
     /// Write to this file instead of stdout (written in full, then renamed into place)
