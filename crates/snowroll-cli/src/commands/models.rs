@@ -1,0 +1,187 @@
+//! `snowroll models`: every model with its equation, its late-time
+//! acceleration as a fraction of g sin alpha, and (for models with a lift
+//! term) the slope below which it does not start from rest. Every number is
+//! computed by the library ([`ModelKind::terminal_fraction`],
+//! [`snowroll::Coefficients::stall_slope`]).
+
+use std::io::Write;
+
+use anyhow::{Context, Result};
+use serde::Serialize;
+use snowroll::{ModelKind, ScenarioFile};
+
+use crate::args::{ModelsArgs, ModelsFormat};
+use crate::sink::Sink;
+
+/// Largest denominator tried when showing a fraction such as `1/5`.
+const MAX_DENOMINATOR: u32 = 100;
+/// A decimal equals `p/q` if it is this close: the fractions come from
+/// coefficient ratios like (2/3)/(1 + 2·7/6), a few roundings from exact.
+const FRACTION_TOL: f64 = 1e-12;
+
+/// One model, as listed.
+#[derive(Debug, Serialize)]
+struct Row {
+    id: &'static str,
+    alias: &'static str,
+    equation: &'static str,
+    description: &'static str,
+    /// Late-time acceleration over g sin alpha.
+    terminal_fraction: Option<f64>,
+    /// The same as a fraction `p/q`, when it is one.
+    terminal_fraction_exact: Option<String>,
+    /// Below this slope the model does not start from rest, for the default b and r0 (fn. 7).
+    stall_slope_deg: Option<f64>,
+}
+
+/// The listing.
+#[derive(Debug, Serialize)]
+struct Listing {
+    snowroll_version: &'static str,
+    /// Snow depth used for `stall_slope_deg`, m.
+    stall_snow_depth_m: f64,
+    /// Initial radius used for `stall_slope_deg`, m.
+    stall_r0_m: f64,
+    models: Vec<Row>,
+}
+
+fn listing() -> Listing {
+    let d = ScenarioFile::default();
+    let (b, r0) = (d.snow_depth_m, d.r0_m);
+    let models = ModelKind::ALL
+        .into_iter()
+        .map(|kind| {
+            let terminal = kind.terminal_fraction();
+            Row {
+                id: kind.id(),
+                alias: kind.alias(),
+                equation: kind.equation(),
+                description: kind.description(),
+                terminal_fraction: terminal,
+                terminal_fraction_exact: terminal
+                    .and_then(as_fraction)
+                    .map(|(p, q)| format!("{p}/{q}")),
+                stall_slope_deg: kind
+                    .derivation()
+                    .and_then(|dv| dv.coefficients().stall_slope(b, r0))
+                    .map(f64::to_degrees),
+            }
+        })
+        .collect();
+    Listing {
+        snowroll_version: snowroll::output::VERSION,
+        stall_snow_depth_m: b,
+        stall_r0_m: r0,
+        models,
+    }
+}
+
+/// `f` as `p/q` with the smallest `q <= MAX_DENOMINATOR`, if there is one.
+fn as_fraction(f: f64) -> Option<(u64, u32)> {
+    if !(f.is_finite() && f >= 0.0) {
+        return None;
+    }
+    (1..=MAX_DENOMINATOR).find_map(|q| {
+        let p = (f * f64::from(q)).round();
+        ((p / f64::from(q) - f).abs() <= FRACTION_TOL).then_some((p as u64, q))
+    })
+}
+
+/// Prints the listing.
+pub fn run(args: &ModelsArgs) -> Result<()> {
+    let listing = listing();
+    let text = match args.format {
+        ModelsFormat::Json => serde_json::to_string_pretty(&listing)? + "\n",
+        ModelsFormat::Table => table(&listing),
+    };
+    let mut out = Sink::open(None)?;
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.commit())
+        .context("writing to stdout")
+}
+
+/// An aligned text table, then the stall notes.
+fn table(listing: &Listing) -> String {
+    let header = [
+        "id",
+        "alias",
+        "equation",
+        "a_inf / (g sin alpha)",
+        "description",
+    ];
+    let rows: Vec<[String; 5]> = listing
+        .models
+        .iter()
+        .map(|m| {
+            let terminal = match (&m.terminal_fraction_exact, m.terminal_fraction) {
+                (Some(exact), Some(f)) => format!("{exact} = {f:.4}"),
+                (None, Some(f)) => format!("{f:.4}"),
+                (_, None) => "none".to_string(),
+            };
+            [
+                m.id.to_string(),
+                m.alias.to_string(),
+                m.equation.to_string(),
+                terminal,
+                m.description.to_string(),
+            ]
+        })
+        .collect();
+    let mut widths = header.map(|h| h.chars().count());
+    for row in &rows {
+        for (w, cell) in widths.iter_mut().zip(row) {
+            *w = (*w).max(cell.chars().count());
+        }
+    }
+    let line = |cells: [&str; 5]| {
+        let mut s = String::new();
+        for (i, (cell, w)) in cells.iter().zip(widths).enumerate() {
+            if i + 1 == cells.len() {
+                s.push_str(cell);
+            } else {
+                s.push_str(&format!("{cell:<w$}  "));
+            }
+        }
+        s.push('\n');
+        s
+    };
+    let mut text = line(header);
+    for row in &rows {
+        text.push_str(&line(row.each_ref().map(String::as_str)));
+    }
+    text.push_str(
+        "\na_inf: late-time acceleration with snow (b > 0), from the model's coefficients.\n",
+    );
+    let stalls: Vec<_> = listing
+        .models
+        .iter()
+        .filter_map(|m| m.stall_slope_deg.map(|s| (m.id, s)))
+        .collect();
+    if !stalls.is_empty() {
+        text.push_str(&format!(
+            "Stall (fn. 7): with b = {} m, r0 = {} m these models do not start from rest unless alpha exceeds:\n",
+            listing.stall_snow_depth_m, listing.stall_r0_m
+        ));
+        for (id, slope) in stalls {
+            text.push_str(&format!("  {id:<w$}  {slope:.4} degrees\n", w = widths[0]));
+        }
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fractions_are_recognised_and_decimals_are_not() {
+        assert_eq!(
+            as_fraction((2.0 / 3.0) / (1.0 + 2.0 * 7.0 / 6.0)),
+            Some((1, 5))
+        );
+        assert_eq!(as_fraction(2.0 / 9.0), Some((2, 9)));
+        assert_eq!(as_fraction(1.0), Some((1, 1)));
+        assert_eq!(as_fraction(std::f64::consts::FRAC_1_PI), None);
+        assert_eq!(as_fraction(f64::NAN), None);
+    }
+}

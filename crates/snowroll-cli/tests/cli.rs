@@ -1,0 +1,810 @@
+//! The `snowroll` binary end to end: every flag has the effect the physics
+//! predicts, outputs record what produced them, and bad input is one clear
+//! line on stderr with a non-zero exit.
+
+use std::collections::BTreeMap;
+use std::f64::consts::PI;
+use std::fs;
+use std::path::Path;
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::Value;
+use snowroll::ModelKind;
+
+/// a(0), m(0), r(0) are closed-form expressions the program evaluates in its
+/// own order and prints in full (shortest round-trip) precision: only
+/// rounding can differ.
+const CLOSED_FORM_TOL: f64 = 1e-12;
+/// Requested and grid times are set, not integrated: only rounding of k·dt.
+const TIME_TOL: f64 = 1e-12;
+/// Events are located on the dense output to near machine precision; at
+/// rtol 1e-10 the located x or v is off by far less than this (m, m/s).
+const EVENT_TOL: f64 = 1e-8;
+/// Eq. (8) along an integrated trajectory: x carries the integrator's
+/// relative error (rtol 1e-10 by default), r is computed from x.
+const EQ8_TOL: f64 = 1e-9;
+
+/// Default slope angle and g, as documented in `--help`.
+const ALPHA_DEG: f64 = 30.0;
+const G: f64 = 9.81;
+
+fn snowroll() -> Command {
+    cargo_bin_cmd!("snowroll")
+}
+
+/// Runs `snowroll simulate ARGS`, expecting success; returns stdout.
+fn simulate(args: &[&str]) -> String {
+    let out = snowroll().arg("simulate").args(args).assert().success();
+    String::from_utf8(out.get_output().stdout.clone()).unwrap()
+}
+
+/// Runs `snowroll ARGS`, expecting failure; returns stderr.
+fn fails(args: &[&str]) -> String {
+    let out = snowroll().args(args).assert().failure();
+    String::from_utf8(out.get_output().stderr.clone()).unwrap()
+}
+
+/// A parsed CSV output: `# key = value` comments, header, numeric rows.
+struct Csv {
+    comments: BTreeMap<String, String>,
+    first_line: String,
+    header: String,
+    rows: Vec<Vec<f64>>,
+}
+
+impl Csv {
+    fn parse(text: &str) -> Csv {
+        let mut lines = text.lines();
+        let first_line = text.lines().next().unwrap().to_string();
+        let mut comments = BTreeMap::new();
+        let mut header = String::new();
+        for line in lines.by_ref() {
+            match line.strip_prefix("# ") {
+                Some(c) => {
+                    if let Some((k, v)) = c.split_once(" = ") {
+                        comments.insert(k.to_string(), v.to_string());
+                    }
+                }
+                None => {
+                    header = line.to_string();
+                    break;
+                }
+            }
+        }
+        let rows = lines
+            .map(|l| l.split(',').map(|c| c.parse::<f64>().unwrap()).collect())
+            .collect();
+        Csv {
+            comments,
+            first_line,
+            header,
+            rows,
+        }
+    }
+
+    fn param(&self, key: &str) -> f64 {
+        self.comments[key].parse().unwrap()
+    }
+
+    /// Column `name` of row `i`.
+    fn get(&self, i: usize, name: &str) -> f64 {
+        let col = self.header.split(',').position(|h| h == name).unwrap();
+        self.rows[i][col]
+    }
+
+    fn column(&self, name: &str) -> Vec<f64> {
+        (0..self.rows.len()).map(|i| self.get(i, name)).collect()
+    }
+}
+
+fn json(text: &str) -> Value {
+    serde_json::from_str(text).unwrap()
+}
+
+fn close(got: f64, want: f64, tol: f64) -> bool {
+    (got - want).abs() <= tol * want.abs().max(1.0)
+}
+
+fn assert_close(got: f64, want: f64, tol: f64) {
+    assert!(close(got, want, tol), "got {got}, want {want} (tol {tol})");
+}
+
+/// App. A / eq. (4) at rest: a(0) = (2/3) g sin alpha.
+fn two_thirds_g_sin(alpha_deg: f64, g: f64) -> f64 {
+    2.0 / 3.0 * g * alpha_deg.to_radians().sin()
+}
+
+// ---------------------------------------------------------------- flags
+
+#[test]
+fn alpha_deg_sets_initial_acceleration_to_two_thirds_g_sin_alpha() {
+    for alpha in [10.0, 45.0, 70.0] {
+        let a = alpha.to_string();
+        let csv = Csv::parse(&simulate(&[
+            "--model",
+            "torque-cm",
+            "--alpha-deg",
+            &a,
+            "--t-end",
+            "1",
+        ]));
+        assert_close(
+            csv.get(0, "a_m_s2"),
+            two_thirds_g_sin(alpha, G),
+            CLOSED_FORM_TOL,
+        );
+        assert_close(csv.param("slope_deg"), alpha, CLOSED_FORM_TOL);
+    }
+}
+
+#[test]
+fn g_scales_initial_acceleration() {
+    let csv = Csv::parse(&simulate(&[
+        "--model", "eq4", "--g", "1.62", "--t-end", "1",
+    ]));
+    assert_close(
+        csv.get(0, "a_m_s2"),
+        two_thirds_g_sin(ALPHA_DEG, 1.62),
+        CLOSED_FORM_TOL,
+    );
+}
+
+#[test]
+fn v0_enters_the_drag_term_of_eq4() {
+    // eq. (4) at x = 0: a = (2/3) g sin alpha - 7 b v0^2 / (6 pi r0^2).
+    let (b, r0, v0) = (0.02, 0.15, 3.0);
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "torque-cm",
+        "--snow-depth",
+        "0.02",
+        "--r0",
+        "0.15",
+        "--v0",
+        "3",
+        "--t-end",
+        "1",
+    ]));
+    let want = two_thirds_g_sin(ALPHA_DEG, G) - 7.0 * b * v0 * v0 / (6.0 * PI * r0 * r0);
+    assert_close(csv.get(0, "v_m_s"), v0, CLOSED_FORM_TOL);
+    assert_close(csv.get(0, "a_m_s2"), want, CLOSED_FORM_TOL);
+}
+
+#[test]
+fn r0_density_and_length_set_the_initial_mass() {
+    // m0 = pi rho l r0^2 (eq. (37)).
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "torque-cm",
+        "--r0",
+        "0.2",
+        "--density",
+        "917",
+        "--length",
+        "2.5",
+        "--t-end",
+        "1",
+    ]));
+    assert_close(csv.get(0, "r_m"), 0.2, CLOSED_FORM_TOL);
+    assert_close(
+        csv.get(0, "mass_kg"),
+        PI * 917.0 * 2.5 * 0.2 * 0.2,
+        CLOSED_FORM_TOL,
+    );
+}
+
+#[test]
+fn snow_depth_sets_the_growth_of_eq8_and_zero_depth_is_the_snowless_limit() {
+    // pi r^2 = pi r0^2 + b x along the run (eq. (8)).
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "energy",
+        "--snow-depth",
+        "0.05",
+        "--times",
+        "1,2,5,10",
+    ]));
+    assert_eq!(csv.rows.len(), 4);
+    for i in 0..4 {
+        let (x, r) = (csv.get(i, "x_m"), csv.get(i, "r_m"));
+        assert!(x > 0.0);
+        assert_close(PI * r * r, PI * 0.1 * 0.1 + 0.05 * x, EQ8_TOL);
+    }
+    // b = 0: a = (2/3) g sin alpha throughout (App. A), r stays r0.
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "torque-contact",
+        "--snow-depth",
+        "0",
+        "--t-end",
+        "5",
+    ]));
+    for i in 0..csv.rows.len() {
+        assert_close(
+            csv.get(i, "a_m_s2"),
+            two_thirds_g_sin(ALPHA_DEG, G),
+            CLOSED_FORM_TOL,
+        );
+        assert_close(csv.get(i, "r_m"), 0.1, CLOSED_FORM_TOL);
+    }
+}
+
+#[test]
+fn t_end_ends_the_run_there() {
+    let csv = Csv::parse(&simulate(&["--model", "torque-cm", "--t-end", "3.5"]));
+    let t = csv.column("t_s");
+    assert_close(*t.last().unwrap(), 3.5, TIME_TOL);
+    assert!(t.windows(2).all(|w| w[1] > w[0]), "times must increase");
+    assert!(csv.comments["stop"].starts_with("end-time"));
+}
+
+#[test]
+fn x_end_stops_at_that_distance_with_a_note() {
+    let out = snowroll()
+        .args(["simulate", "--model", "torque-cm", "--x-end", "7.5"])
+        .args(["--format", "json"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("end distance"));
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert_eq!(doc["stop"]["reason"], "distance");
+    let x_stop = doc["stop"]["x_m"].as_f64().unwrap();
+    assert!((x_stop - 7.5).abs() < EVENT_TOL, "stopped at x = {x_stop}");
+    let last = doc["samples"].as_array().unwrap().last().unwrap();
+    assert!((last["x_m"].as_f64().unwrap() - 7.5).abs() < EVENT_TOL);
+    assert!(doc["stop"]["t_s"].as_f64().unwrap() < 100.0);
+}
+
+#[test]
+fn times_give_exactly_one_row_per_requested_time() {
+    let requested = [0.0, 0.25, 1.0, 2.0, 17.5, 60.0];
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "eq6",
+        "--times",
+        "0,0.25,1,2,17.5,60",
+    ]));
+    let t = csv.column("t_s");
+    assert_eq!(t.len(), requested.len());
+    for (got, want) in t.iter().zip(requested) {
+        assert_close(*got, want, TIME_TOL);
+    }
+    assert_eq!(csv.comments["sampling"], "6 requested times");
+}
+
+#[test]
+fn times_past_the_stop_are_not_written() {
+    // The run stops at x = 1 m well before t = 50 s.
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "torque-cm",
+        "--x-end",
+        "1",
+        "--times",
+        "0.1,0.2,50",
+    ]));
+    assert_eq!(csv.column("t_s").len(), 2);
+}
+
+#[test]
+fn dt_gives_a_regular_grid() {
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "quasi-circular",
+        "--dt",
+        "0.5",
+        "--t-end",
+        "4",
+    ]));
+    let t = csv.column("t_s");
+    assert_eq!(t.len(), 9, "0, 0.5, ..., 4");
+    for (k, got) in t.iter().enumerate() {
+        assert_close(*got, 0.5 * k as f64, TIME_TOL);
+    }
+}
+
+#[test]
+fn looser_tolerances_take_fewer_steps() {
+    // Every accepted step is a row: an adaptive method takes fewer steps
+    // when the error it may commit per step is larger.
+    let rows = |extra: &[&str]| {
+        let mut args = vec!["--model", "torque-cm", "--t-end", "20"];
+        args.extend_from_slice(extra);
+        Csv::parse(&simulate(&args))
+    };
+    let tight = rows(&["--rtol", "1e-12", "--atol", "1e-12"]);
+    let loose_rtol = rows(&["--rtol", "1e-4", "--atol", "1e-12"]);
+    let loose_atol = rows(&["--rtol", "1e-12", "--atol", "1"]);
+    assert!(loose_rtol.rows.len() < tight.rows.len());
+    assert!(loose_atol.rows.len() < tight.rows.len());
+    assert_close(loose_rtol.param("rtol"), 1e-4, CLOSED_FORM_TOL);
+    assert_close(loose_atol.param("atol"), 1.0, CLOSED_FORM_TOL);
+}
+
+#[test]
+fn csv_records_version_model_and_every_parameter_before_the_header() {
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "energy-thin",
+        "--snow-depth",
+        "0.02",
+        "--r0",
+        "0.3",
+        "--g",
+        "9.8",
+        "--density",
+        "300",
+        "--length",
+        "2",
+        "--v0",
+        "0.5",
+        "--t-end",
+        "2",
+        "--x-end",
+        "1000",
+        "--rtol",
+        "1e-9",
+        "--atol",
+        "1e-11",
+    ]));
+    assert_eq!(
+        csv.first_line,
+        format!("# snowroll {}", env!("CARGO_PKG_VERSION"))
+    );
+    assert_eq!(csv.comments["model"], "energy-thin (eq. (15))");
+    for (key, want) in [
+        ("slope_deg", ALPHA_DEG),
+        ("snow_depth_m", 0.02),
+        ("r0_m", 0.3),
+        ("g_m_s2", 9.8),
+        ("density_kg_m3", 300.0),
+        ("length_m", 2.0),
+        ("v0_m_s", 0.5),
+        ("t_end_s", 2.0),
+        ("x_end_m", 1000.0),
+        ("rtol", 1e-9),
+        ("atol", 1e-11),
+    ] {
+        assert_close(csv.param(key), want, CLOSED_FORM_TOL);
+    }
+    assert_eq!(csv.header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+}
+
+#[test]
+fn json_has_the_documented_keys() {
+    let doc = json(&simulate(&[
+        "--model",
+        "torque-cm",
+        "--format",
+        "json",
+        "--times",
+        "0,1",
+    ]));
+    assert_eq!(doc["snowroll_version"], env!("CARGO_PKG_VERSION"));
+    assert_eq!(doc["model"]["id"], "torque-cm");
+    assert_eq!(doc["model"]["equation"], "eq. (4)");
+    assert_close(
+        doc["params"]["snow_depth_m"].as_f64().unwrap(),
+        0.01,
+        CLOSED_FORM_TOL,
+    );
+    assert_eq!(doc["stop"]["reason"], "end-time");
+    assert!(doc["stop"]["t_s"].is_number() && doc["stop"]["x_m"].is_number());
+    let samples = doc["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 2);
+    for key in ["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"] {
+        assert!(samples[1][key].is_number(), "sample lacks {key}");
+    }
+    assert_close(
+        samples[0]["a_m_s2"].as_f64().unwrap(),
+        two_thirds_g_sin(ALPHA_DEG, G),
+        CLOSED_FORM_TOL,
+    );
+}
+
+#[test]
+fn output_writes_the_file_and_nothing_to_stdout() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("run.json");
+    snowroll()
+        .args(["simulate", "--model", "loney", "--format", "json"])
+        .args(["--times", "1,2", "--output"])
+        .arg(&path)
+        .assert()
+        .success()
+        .stdout(predicate::str::is_empty());
+    let doc = json(&fs::read_to_string(&path).unwrap());
+    assert_eq!(doc["model"]["id"], "loney");
+    assert_eq!(doc["samples"].as_array().unwrap().len(), 2);
+    assert_eq!(entries(dir.path()), vec!["run.json".to_string()]);
+}
+
+/// File names in `dir`, sorted.
+fn entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn config_values_are_used_and_flags_override_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("run.toml");
+    fs::write(
+        &path,
+        "model = \"eq4\"\nalpha-deg = 45\ng = 9.0\ntimes = [0.0, 1.0, 2.0]\n",
+    )
+    .unwrap();
+    let from_file = Csv::parse(&simulate(&["--config", path.to_str().unwrap()]));
+    assert_eq!(from_file.comments["model"], "torque-cm (eq. (4))");
+    assert_eq!(from_file.rows.len(), 3);
+    assert_close(
+        from_file.get(0, "a_m_s2"),
+        two_thirds_g_sin(45.0, 9.0),
+        CLOSED_FORM_TOL,
+    );
+
+    let overridden = Csv::parse(&simulate(&[
+        "--config",
+        path.to_str().unwrap(),
+        "--alpha-deg",
+        "20",
+        "--model",
+        "snowless",
+        "--dt",
+        "0.5",
+        "--t-end",
+        "1",
+    ]));
+    assert_eq!(overridden.comments["model"], "snowless (eq. (95))");
+    // g still from the file, alpha from the flag, sampling from the flag.
+    assert_close(
+        overridden.get(0, "a_m_s2"),
+        two_thirds_g_sin(20.0, 9.0),
+        CLOSED_FORM_TOL,
+    );
+    assert_eq!(overridden.rows.len(), 3, "t = 0, 0.5, 1");
+}
+
+#[test]
+fn model_aliases_are_accepted() {
+    for (given, id) in [
+        ("eq4", "torque-cm"),
+        ("EQ4", "torque-cm"),
+        ("eq32+36", "quasi-circular-lift"),
+        ("fn4", "loney"),
+        ("eq95", "snowless"),
+    ] {
+        let doc = json(&simulate(&[
+            "--model", given, "--format", "json", "--times", "0",
+        ]));
+        assert_eq!(doc["model"]["id"], id, "--model {given}");
+    }
+}
+
+#[test]
+fn does_not_start_and_stall_are_reported_on_stderr_with_exit_zero() {
+    // Below the stall slope of eq. (14) (fn. 7) the log cannot start from rest.
+    let out = snowroll()
+        .args(["simulate", "--model", "energy", "--alpha-deg", "1"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("does not start"));
+    let csv = Csv::parse(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert!(csv.comments["stop"].starts_with("does-not-start"));
+    // Pushed, it decelerates (a < 0 there) until v = 0.
+    let out = snowroll()
+        .args(["simulate", "--model", "energy", "--alpha-deg", "1"])
+        .args(["--v0", "0.5", "--format", "json"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("stall"));
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert_eq!(doc["stop"]["reason"], "stalled");
+    let last = doc["samples"].as_array().unwrap().last().unwrap();
+    assert!(last["v_m_s"].as_f64().unwrap().abs() < EVENT_TOL);
+    assert!(doc["stop"]["x_m"].as_f64().unwrap() > 0.0);
+}
+
+// ---------------------------------------------------------------- models
+
+#[test]
+fn models_lists_every_model_with_its_alias() {
+    let out = snowroll().arg("models").assert().success();
+    let text = std::str::from_utf8(&out.get_output().stdout).unwrap();
+    assert_eq!(ModelKind::ALL.len(), 9);
+    for kind in ModelKind::ALL {
+        let line = text
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(kind.id()))
+            .unwrap_or_else(|| panic!("{} not listed", kind.id()));
+        assert!(line.contains(kind.alias()), "{line}");
+    }
+    assert!(text.contains("1/5 = 0.2000"), "eq. (4): G/5 (fn. 4)");
+}
+
+#[test]
+fn models_json_gives_the_terminal_fractions_of_the_note() {
+    let out = snowroll()
+        .args(["models", "--format", "json"])
+        .assert()
+        .success();
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    let models = doc["models"].as_array().unwrap();
+    assert_eq!(models.len(), 9);
+    let fraction = |id: &str| {
+        models.iter().find(|m| m["id"] == id).unwrap()["terminal_fraction"]
+            .as_f64()
+            .unwrap()
+    };
+    // Loney (fn. 4): G/5; eq. (35): G/3; App. A: 2G/3.
+    assert_close(fraction("torque-cm"), 1.0 / 5.0, CLOSED_FORM_TOL);
+    assert_close(fraction("loney"), 1.0 / 5.0, CLOSED_FORM_TOL);
+    assert_close(fraction("energy"), 1.0 / 3.0, CLOSED_FORM_TOL);
+    assert_close(fraction("snowless"), 2.0 / 3.0, CLOSED_FORM_TOL);
+}
+
+#[test]
+fn models_stall_slope_is_the_threshold_of_eq14_and_of_simulate() {
+    let out = snowroll()
+        .args(["models", "--format", "json"])
+        .assert()
+        .success();
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    let energy = doc["models"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["id"] == "energy")
+        .unwrap();
+    let stall_deg = energy["stall_slope_deg"].as_f64().unwrap();
+    // Eq. (14) at x = 0, v = 0: a = 0 when (2/3) g sin a = g cos a (3 b r0 + b^2)/(3 pi r0^2).
+    let (b, r0) = (
+        doc["stall_snow_depth_m"].as_f64().unwrap(),
+        doc["stall_r0_m"].as_f64().unwrap(),
+    );
+    let want = ((3.0 * b * r0 + b * b) / (2.0 * PI * r0 * r0))
+        .atan()
+        .to_degrees();
+    assert_close(stall_deg, want, CLOSED_FORM_TOL);
+    // And simulate agrees on either side of it.
+    let reason = |alpha: f64| {
+        let a = alpha.to_string();
+        json(&simulate(&[
+            "--model",
+            "energy",
+            "--alpha-deg",
+            &a,
+            "--format",
+            "json",
+            "--t-end",
+            "1",
+        ]))["stop"]["reason"]
+            .clone()
+    };
+    assert_eq!(reason(stall_deg * 0.99), "does-not-start");
+    assert_eq!(reason(stall_deg * 1.01), "end-time");
+}
+
+// ---------------------------------------------------------------- help
+
+#[test]
+fn simulate_help_gives_units() {
+    snowroll()
+        .args(["simulate", "--help"])
+        .assert()
+        .success()
+        .stdout(
+            predicate::str::contains("in degrees")
+                .and(predicate::str::contains("in m "))
+                .and(predicate::str::contains("in s"))
+                .and(predicate::str::contains("in m/s"))
+                .and(predicate::str::contains("[default: 30]")),
+        );
+}
+
+// ---------------------------------------------------------------- errors
+
+/// Stderr is exactly one line starting `error: ` containing every `needle`.
+fn assert_one_line_error(stderr: &str, needles: &[&str]) {
+    assert_eq!(stderr.lines().count(), 1, "not one line: {stderr:?}");
+    assert!(stderr.starts_with("error: "), "{stderr:?}");
+    for n in needles {
+        assert!(stderr.contains(n), "{stderr:?} lacks {n:?}");
+    }
+}
+
+#[test]
+fn negative_snow_depth_is_rejected_by_name_value_and_range() {
+    let err = fails(&["simulate", "--model", "eq4", "--snow-depth", "-1"]);
+    assert_one_line_error(&err, &["snow depth", "-1", "b >= 0 m"]);
+}
+
+#[test]
+fn right_angle_slope_is_rejected() {
+    let err = fails(&["simulate", "--model", "eq4", "--alpha-deg", "90"]);
+    assert_one_line_error(&err, &["slope angle", "90", "0 < alpha < 90"]);
+}
+
+#[test]
+fn nan_is_rejected() {
+    let err = fails(&["simulate", "--model", "eq4", "--snow-depth", "NaN"]);
+    assert_one_line_error(&err, &["snow depth", "NaN", "b >= 0 m"]);
+    let err = fails(&["simulate", "--model", "eq4", "--t-end", "nan"]);
+    assert_one_line_error(&err, &["t_end", "NaN"]);
+}
+
+#[test]
+fn unknown_model_lists_the_valid_ids() {
+    let err = fails(&["simulate", "--model", "eq99"]);
+    assert!(err.contains("eq99"), "{err}");
+    for kind in ModelKind::ALL {
+        assert!(err.contains(kind.id()), "{err} lacks {}", kind.id());
+    }
+}
+
+#[test]
+fn missing_model_says_how_to_give_one() {
+    let err = fails(&["simulate"]);
+    assert_one_line_error(&err, &["--model", "torque-cm"]);
+}
+
+#[test]
+fn unreadable_config_names_the_file() {
+    let err = fails(&["simulate", "--config", "/no/such/dir/run.toml"]);
+    assert_one_line_error(&err, &["/no/such/dir/run.toml"]);
+}
+
+#[test]
+fn malformed_config_names_the_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bad.toml");
+    fs::write(&path, "model = \"eq4\"\nalpha-deg = = 3\n").unwrap();
+    let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
+    assert_one_line_error(&err, &["bad.toml", "line 2"]);
+    // A value of the wrong type too.
+    fs::write(&path, "snow-depth = \"deep\"\n").unwrap();
+    let err = fails(&[
+        "simulate",
+        "--model",
+        "eq4",
+        "--config",
+        path.to_str().unwrap(),
+    ]);
+    assert_one_line_error(&err, &["bad.toml", "line 1"]);
+}
+
+#[test]
+fn unknown_config_key_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("typo.toml");
+    fs::write(&path, "model = \"eq4\"\nalpha = 25\n").unwrap();
+    let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
+    assert_one_line_error(&err, &["typo.toml", "alpha", "alpha-deg"]);
+}
+
+#[test]
+fn config_with_unknown_model_lists_the_ids() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("m.toml");
+    fs::write(&path, "model = \"eq99\"\n").unwrap();
+    let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
+    assert_one_line_error(
+        &err,
+        &["m.toml", "eq99", "torque-cm", "quasi-circular-lift"],
+    );
+}
+
+#[test]
+fn descending_times_are_rejected() {
+    let err = fails(&["simulate", "--model", "eq4", "--times", "2,1"]);
+    assert_one_line_error(&err, &["ascending"]);
+}
+
+#[test]
+fn zero_dt_is_rejected() {
+    let err = fails(&["simulate", "--model", "eq4", "--dt", "0"]);
+    assert_one_line_error(&err, &["dt", "= 0", "dt > 0"]);
+}
+
+#[test]
+fn times_and_dt_conflict() {
+    let err = fails(&["simulate", "--model", "eq4", "--times", "1", "--dt", "1"]);
+    assert!(err.contains("--times") && err.contains("--dt"), "{err}");
+}
+
+#[test]
+fn output_in_a_missing_directory_fails_and_leaves_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("missing").join("out.csv");
+    let err = fails(&[
+        "simulate",
+        "--model",
+        "eq4",
+        "--output",
+        path.to_str().unwrap(),
+    ]);
+    assert_one_line_error(&err, &["out.csv"]);
+    assert!(!path.exists());
+    assert!(entries(dir.path()).is_empty());
+}
+
+#[test]
+fn failed_run_leaves_an_existing_output_untouched_and_no_temporary_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("out.csv");
+    fs::write(&path, "previous results\n").unwrap();
+    // Rejected before the output is opened.
+    let err = fails(&[
+        "simulate",
+        "--model",
+        "eq4",
+        "--snow-depth",
+        "-0.5",
+        "--output",
+        path.to_str().unwrap(),
+    ]);
+    assert_one_line_error(&err, &["snow depth"]);
+    // Fails after the output is opened: with g = 1e307 m/s^2, x = g t^2/5
+    // overflows f64 long before t = 100 s.
+    let err = fails(&[
+        "simulate",
+        "--model",
+        "eq4",
+        "--g",
+        "1e307",
+        "--output",
+        path.to_str().unwrap(),
+    ]);
+    assert_one_line_error(&err, &["simulating torque-cm"]);
+    assert_eq!(fs::read_to_string(&path).unwrap(), "previous results\n");
+    assert_eq!(entries(dir.path()), vec!["out.csv".to_string()]);
+}
+
+#[test]
+fn a_repeated_flag_takes_the_last_value() {
+    let csv = Csv::parse(&simulate(&[
+        "--model",
+        "eq4",
+        "--alpha-deg",
+        "10",
+        "--alpha-deg",
+        "45",
+        "--t-end",
+        "1",
+    ]));
+    assert_close(
+        csv.get(0, "a_m_s2"),
+        two_thirds_g_sin(45.0, G),
+        CLOSED_FORM_TOL,
+    );
+}
+
+#[test]
+fn a_closed_pipe_ends_quietly() {
+    // 10^5 rows (megabytes) cannot fit in a pipe buffer, so the program is
+    // still writing when the reader goes away, as with `| head`.
+    let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin!("snowroll"))
+        .args(["simulate", "--model", "eq4", "--dt", "0.001"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 10];
+    let mut stdout = child.stdout.take().unwrap();
+    std::io::Read::read_exact(&mut stdout, &mut first).unwrap();
+    assert_eq!(&first, b"# snowroll");
+    drop(stdout);
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success());
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
