@@ -82,12 +82,12 @@ pub enum SimError {
 #[non_exhaustive]
 pub enum OutputError {
     /// The underlying writer failed.
-    #[error("write failed: {0}")]
+    #[error("writing the output failed")]
     Io(#[from] std::io::Error),
     /// CSV serialisation failed.
-    #[error("CSV: {0}")]
+    #[error("writing CSV failed")]
     Csv(#[from] csv::Error),
     /// JSON serialisation failed.
-    #[error("JSON: {0}")]
+    #[error("writing JSON failed")]
     Json(#[from] serde_json::Error),
 }

@@ -25,6 +25,8 @@ use crate::units::{
 #[serde(try_from = "ScenarioFile", into = "ScenarioFile")]
 pub struct Scenario {
     alpha: Radians,
+    /// The angle as given, kept so that outputs record exactly what was asked.
+    alpha_deg: f64,
     b: Meters,
     r0: Meters,
     g: MetersPerSecondSquared,
@@ -98,6 +100,7 @@ impl Scenario {
         )?;
         Ok(Self {
             alpha: alpha_deg.to_radians(),
+            alpha_deg,
             b: check(
                 "snow depth (m)",
                 file.snow_depth_m,
@@ -185,7 +188,7 @@ impl TryFrom<ScenarioFile> for Scenario {
 impl From<Scenario> for ScenarioFile {
     fn from(s: Scenario) -> Self {
         Self {
-            slope_deg: s.alpha.to_degrees(),
+            slope_deg: s.alpha_deg,
             snow_depth_m: s.b,
             r0_m: s.r0,
             g_m_s2: s.g,
@@ -204,6 +207,7 @@ impl Default for Scenario {
         let f = ScenarioFile::default();
         Self {
             alpha: f.slope_deg.to_radians(),
+            alpha_deg: f.slope_deg,
             b: f.snow_depth_m,
             r0: f.r0_m,
             g: f.g_m_s2,

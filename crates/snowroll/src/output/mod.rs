@@ -81,8 +81,8 @@ impl RunParams {
                 "turns".into(),
                 self.turns.map_or("none".to_string(), |n| n.to_string()),
             ),
-            ("rtol".into(), self.rtol.to_string()),
-            ("atol".into(), self.atol.to_string()),
+            ("rtol".into(), format!("{:e}", self.rtol)),
+            ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
         ]
     }
