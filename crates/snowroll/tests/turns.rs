@@ -509,6 +509,49 @@ fn stall_on_both_sides_of_the_threshold() {
 }
 
 #[test]
+fn range_of_a_in_a_turn_matches_a_fine_scan_of_the_energy_integral() {
+    /// Scan spacing 2π/2e5: the scan misses an extreme by ≤ a″(1.6e-5)²/2,
+    /// a″ ≲ 10 G per rad², i.e. 1.3e-9 G.
+    const SCAN_TOL: f64 = 2e-9;
+    /// The refined extreme is an evaluated value: it cannot beat the true
+    /// one by more than rounding.
+    const ROUNDING: f64 = 1e-13;
+    let s = Scenario::default();
+    let (b, gs, gc) = (s.snow_depth(), s.g_along(), s.g_normal());
+    let table = rows(ModelKind::Turns, &s, 60, Tolerances::default());
+    for row in table.iter().filter(|r| r.turn < 5 || r.turn == 59) {
+        let r = radius(&s, row.turn);
+        let omega0 = row.v_start_m_s / r;
+        // a(θ) = r(−W′ − ½I′θ̇²)/I with θ̇² = [I(0)θ̇₀² − 2W]/I (turn-model.md, item 2).
+        let a = |theta: f64| {
+            let (i, w) = paper_inertia_potential(&s, r, theta);
+            let di = (2.0 * b * r / PI) * (1.0 - theta.cos());
+            let dw = -gs * r - (b / PI) * (theta - theta.sin()) * gs
+                + (b / PI) * (1.0 - theta.cos()) * gc;
+            let omega2 = (1.5 * r * r * omega0 * omega0 - 2.0 * w) / i;
+            r * (-dw - 0.5 * di * omega2) / i
+        };
+        let (lo, hi) = (0..=200_000)
+            .map(|j| a(2.0 * PI * j as f64 / 200_000.0))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
+                (lo.min(x), hi.max(x))
+            });
+        assert!(
+            row.min_a_m_s2 <= lo + ROUNDING * gs && row.min_a_m_s2 >= lo - SCAN_TOL * gs,
+            "turn {}: min {} vs scan {lo}",
+            row.turn,
+            row.min_a_m_s2
+        );
+        assert!(
+            row.max_a_m_s2 >= hi - ROUNDING * gs && row.max_a_m_s2 <= hi + SCAN_TOL * gs,
+            "turn {}: max {} vs scan {hi}",
+            row.turn,
+            row.max_a_m_s2
+        );
+    }
+}
+
+#[test]
 fn stops_at_x_end_and_t_end_with_continuous_x() {
     let s = Scenario::default();
     let x_end = 5.0;

@@ -27,6 +27,7 @@
 //! un-accrete snow, errata §4 row 8). Valid to O(b/r_k) (`Paper`); the
 //! collision model itself is the note's idealisation (§3.4).
 
+mod extremes;
 mod table;
 
 pub use table::{run_turns, TurnCheckpoint, TurnRow, TurnSummary, TurnTable};
@@ -179,16 +180,21 @@ impl TurnDynamics {
         (
             -g * (r * theta + k.e1 * theta * theta / 2.0 - k.e2 * (1.0 - cos))
                 + c_n * (k.e3 * theta - k.e2 * sin),
-            -g * (r + k.e1 * theta - k.e2 * sin) + c_n * (k.e3 - k.e2 * cos),
+            self.potential_slope_sc(theta, sin, cos),
         )
+    }
+
+    /// `dW/dθ` alone (the right-hand side needs no more).
+    fn potential_slope_sc(&self, theta: f64, sin: f64, cos: f64) -> f64 {
+        let k = &self.coeffs;
+        -self.g_along * (self.r + k.e1 * theta - k.e2 * sin) + self.g_normal * (k.e3 - k.e2 * cos)
     }
 
     /// `θ̈ = (−W′ − ½ I′ θ̇²)/I`, rad/s².
     pub fn angular_acceleration(&self, theta: Radians, omega: f64) -> f64 {
         let (s, c) = theta.sin_cos();
         let (i, di) = self.inertia_sc(theta, s, c);
-        let (_, dw) = self.potential_sc(theta, s, c);
-        (-dw - 0.5 * di * omega * omega) / i
+        (-self.potential_slope_sc(theta, s, c) - 0.5 * di * omega * omega) / i
     }
 
     /// `a = dv/dt = r_k θ̈`, m/s² (eq. (73) for `Paper`).
@@ -223,68 +229,25 @@ impl TurnDynamics {
 
     /// Smallest and largest acceleration over a whole turn started with
     /// `θ̇(0) = omega0`, from the energy integral (no integration): a grid
-    /// over [0, 2π] brackets each extreme, golden-section search refines it.
+    /// over [0, 2π] brackets each extreme, Brent's method refines it.
     pub fn acceleration_range(&self, omega0: f64) -> (f64, f64) {
-        let a = |theta: f64| self.acceleration_on_orbit(theta, omega0);
-        let step = TWO_PI / RANGE_GRID as f64;
-        let (mut i_min, mut i_max) = (0, 0);
-        let (mut a_min, mut a_max) = (f64::INFINITY, f64::NEG_INFINITY);
-        for i in 0..=RANGE_GRID {
-            let ai = a(i as f64 * step);
-            if ai < a_min {
-                (a_min, i_min) = (ai, i);
-            }
-            if ai > a_max {
-                (a_max, i_max) = (ai, i);
-            }
-        }
-        let bracket = |i: usize| {
-            (
-                (i.saturating_sub(1)) as f64 * step,
-                ((i + 1).min(RANGE_GRID)) as f64 * step,
-            )
-        };
-        let (lo, hi) = bracket(i_min);
-        let refined_min = golden_min(a, lo, hi);
-        let (lo, hi) = bracket(i_max);
-        let refined_max = -golden_min(|t| -a(t), lo, hi);
-        (a_min.min(refined_min), a_max.max(refined_max))
+        extremes::range_on(
+            |theta| self.acceleration_on_orbit(theta, omega0),
+            0.0,
+            TWO_PI,
+            RANGE_GRID,
+            RANGE_THETA_TOL,
+        )
     }
 }
 
-/// Grid intervals over a turn that bracket the extremes of a(θ) (a(θ) has
-/// one minimum and one maximum per turn; 32 intervals leave margin).
-const RANGE_GRID: usize = 32;
-/// Golden-section steps: the bracket (two grid intervals, 0.39 rad) shrinks
-/// by 0.618^25 ≈ 6e-6 to ~2.4e-6 rad, so a at the extreme is off by at most
-/// ~a″·(2.4e-6)²/2 ≈ 3e-12 a″ (a″ ~ G per rad²).
-const GOLDEN_STEPS: usize = 25;
-
-/// Smallest value of a unimodal `f` on `[lo, hi]` by golden-section search
-/// (the smallest value it evaluated).
-fn golden_min(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let ratio = (5f64.sqrt() - 1.0) / 2.0;
-    let mut x1 = hi - ratio * (hi - lo);
-    let mut x2 = lo + ratio * (hi - lo);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    let mut best = f(lo).min(f(hi)).min(f1).min(f2);
-    for _ in 0..GOLDEN_STEPS {
-        if f1 < f2 {
-            hi = x2;
-            (x2, f2) = (x1, f1);
-            x1 = hi - ratio * (hi - lo);
-            f1 = f(x1);
-            best = best.min(f1);
-        } else {
-            lo = x1;
-            (x1, f1) = (x2, f2);
-            x2 = lo + ratio * (hi - lo);
-            f2 = f(x2);
-            best = best.min(f2);
-        }
-    }
-    best
-}
+/// Grid intervals over a turn that bracket the extremes of a(θ): a(θ) has
+/// one minimum and one maximum per turn (≈ (2/3)G − (G/3)(1 − cos θ) at
+/// large k), so 16 intervals of 0.39 rad leave margin.
+const RANGE_GRID: usize = 16;
+/// Relative tolerance in θ of the refined extremes: a at the extreme is then
+/// off by ~a″·(1e-8 · 2π)²/2 ≈ 2e-15 a″, a″ ~ G per rad².
+const RANGE_THETA_TOL: f64 = 1e-8;
 
 /// Speed just after the collision at the end of turn k, eq. (89) with
 /// `I_C,end = m_{k+1}(r_{k+1}²/2 + r_k²)` (eq. (85)) and
