@@ -26,6 +26,11 @@
 //! reaches 0 first the log stalls and the run stops (rolling back would
 //! un-accrete snow, errata §4 row 8). Valid to O(b/r_k) (`Paper`); the
 //! collision model itself is the note's idealisation (§3.4).
+//!
+//! Samples report `r_m = r_k` (nominal) and `mass_kg = m_k + m_s(θ)` in the
+//! variant's own bookkeeping (`m_s = m_k bθ/(πr_k)`, eq. (38), for `Paper`;
+//! the exact sector mass for `Exact`), so the mass may jump by O(b²) at a
+//! collision for `Paper`. The per-turn table is [`run_turns`].
 
 mod extremes;
 mod table;

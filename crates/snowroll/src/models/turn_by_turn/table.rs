@@ -4,6 +4,13 @@
 //! The rows come from the integrator's events (v before and after each
 //! collision) and, for the range of a within a turn, from the energy
 //! integral of the turn (no dense output is needed).
+//!
+//! What to expect (leading order in 1/k, checked in `tests/turns.rs`): with
+//! r_k ≈ kb, the energy over a turn gives `(3/4 + 2b/r) v_end² ≈ (3/4) v_beg² + 2πG r`
+//! and the collision `v_after² ≈ v_end²(1 − 2b/3r)`, so `v_beg² → (πGb/2) k²`
+//! and each turn lasts `2πr/v`: the mean acceleration tends to G/3 within a
+//! turn and to G/4 with the collisions (not the 4G/9 of eq. (79)), while
+//! `a(θ) ≈ (2/3)G − (G/3)(1 − cos θ)` keeps ranging over [0, 2G/3] (eq. (77)).
 
 use serde::{Deserialize, Serialize};
 
