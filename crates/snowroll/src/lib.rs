@@ -35,6 +35,9 @@
 //! | x | distance rolled down the slope | [`Sample::x_m`] | m |
 //! | v, a | speed and acceleration down the slope | [`Sample::v_m_s`], [`Sample::a_m_s2`] | m/s, m/s² |
 //! | m | mass of log plus snow | [`Sample::mass_kg`] | kg |
+//! | k | turn number, 0-based (§3.4) | [`TurnState::turn`] | 1 |
+//! | θ, θ̇ | angle rolled in the turn, its rate | [`TurnState::theta_rad`], [`TurnState::omega_rad_s`] | rad, rad/s |
+//! | r_k, m_k, X_k | radius, mass, position at the start of turn k (eq. (74)) | [`TurnDynamics::radius`], [`TurnRow::x_start_m`] | m, kg, m |
 //!
 //! ## Equation → item
 //! | note | item |
@@ -51,6 +54,12 @@
 //! | fn. 4 | [`LoneyModel`], [`DragOnlyClosedForm`] |
 //! | fn. 7 | [`Coefficients::stall_slope`] |
 //! | eq. (95) | [`Derivation::Snowless`] |
+//! | eqs. (37)–(43), (48), (56), (60)–(62), exact | [`SectorBody`] |
+//! | eqs. (58), (64), (69), (71)–(76) | [`TurnDynamics`], [`InTurnCoefficients::paper`] |
+//! | exact in-turn equation (57), (88) | [`TurnVariant::Exact`], [`models::exact_geometry::exact_turn_coefficients`] |
+//! | eq. (74) (0-based), §3.4 | [`TurnModel`] |
+//! | eqs. (81)–(89), the collision | [`collision_speed`], [`TurnRow::collision_loss_j`] |
+//! | eqs. (77)–(79), measured | [`run_turns`], [`TurnSummary`] |
 #![deny(
     clippy::unwrap_used,
     clippy::expect_used,
@@ -70,8 +79,10 @@ pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
 pub use models::{
-    CircularModel, Coefficients, Derivation, DragOnlyClosedForm, LoneyModel, Model, ModelKind,
+    collision_speed, run_turns, CircularModel, Coefficients, Derivation, DragOnlyClosedForm,
+    InTurnCoefficients, LoneyModel, Model, ModelKind, SectorBody, TurnCheckpoint, TurnDynamics,
+    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
 };
-pub use output::{write_trajectory, Format, RunParams};
+pub use output::{write_trajectory, write_turn_table, Format, RunParams};
 pub use scenario::{Scenario, ScenarioFile};
 pub use trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState};

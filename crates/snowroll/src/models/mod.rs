@@ -5,10 +5,17 @@
 
 mod circular;
 mod closed_form;
+pub mod exact_geometry;
 mod ode;
+mod turn_by_turn;
 
 pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
+pub use exact_geometry::SectorBody;
+pub use turn_by_turn::{
+    collision_speed, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics, TurnModel,
+    TurnRow, TurnSummary, TurnTable, TurnVariant,
+};
 
 use std::fmt;
 use std::str::FromStr;
@@ -45,6 +52,8 @@ pub trait Model {
 /// | `quasi-circular` | `eq32` | §2.4, eq. (32) |
 /// | `quasi-circular-lift` | `eq32+36` | eqs. (32) + (36) |
 /// | `loney` | `fn4` | fn. 4, closed form of eq. (4) |
+/// | `turns` | `eq73` | §3.4, eqs. (73), (76), collision eq. (89) |
+/// | `turns-exact` | `eq88` | §3.4, exact geometry, eq. (88) with (87) corrected |
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
@@ -85,11 +94,19 @@ pub enum ModelKind {
     #[serde(alias = "fn4")]
     #[cfg_attr(feature = "clap", value(alias = "fn4"))]
     Loney,
+    /// §3.4: turn by turn, eqs. (73), (76) to first order in b/r, collision eq. (89).
+    #[serde(alias = "eq73")]
+    #[cfg_attr(feature = "clap", value(alias = "eq73"))]
+    Turns,
+    /// §3.4: turn by turn with the exact mass properties, so that eq. (88) holds.
+    #[serde(alias = "eq88")]
+    #[cfg_attr(feature = "clap", value(alias = "eq88"))]
+    TurnsExact,
 }
 
 impl ModelKind {
     /// Every model, in the order of the note.
-    pub const ALL: [ModelKind; 9] = [
+    pub const ALL: [ModelKind; 11] = [
         ModelKind::Snowless,
         ModelKind::TorqueCm,
         ModelKind::TorqueContact,
@@ -99,6 +116,8 @@ impl ModelKind {
         ModelKind::QuasiCircular,
         ModelKind::QuasiCircularLift,
         ModelKind::Loney,
+        ModelKind::Turns,
+        ModelKind::TurnsExact,
     ];
 
     /// The kebab-case id.
@@ -113,6 +132,8 @@ impl ModelKind {
             ModelKind::QuasiCircular => "quasi-circular",
             ModelKind::QuasiCircularLift => "quasi-circular-lift",
             ModelKind::Loney => "loney",
+            ModelKind::Turns => "turns",
+            ModelKind::TurnsExact => "turns-exact",
         }
     }
 
@@ -128,6 +149,8 @@ impl ModelKind {
             ModelKind::QuasiCircular => "eq32",
             ModelKind::QuasiCircularLift => "eq32+36",
             ModelKind::Loney => "fn4",
+            ModelKind::Turns => "eq73",
+            ModelKind::TurnsExact => "eq88",
         }
     }
 
@@ -143,6 +166,8 @@ impl ModelKind {
             ModelKind::QuasiCircular => "eq. (32)",
             ModelKind::QuasiCircularLift => "eqs. (32)+(36)",
             ModelKind::Loney => "fn. 4",
+            ModelKind::Turns => "eqs. (73), (76), (89)",
+            ModelKind::TurnsExact => "eqs. (88), (89), exact geometry",
         }
     }
 
@@ -160,11 +185,18 @@ impl ModelKind {
             ModelKind::QuasiCircular => "approximately circular log, energy rate (§2.4)",
             ModelKind::QuasiCircularLift => "eq. (32) plus the snow-lifting term (36) (§2.4)",
             ModelKind::Loney => "Loney's closed form of eq. (4), no ODE solver (fn. 4)",
+            ModelKind::Turns => {
+                "turn by turn, first order in b/r, collision at every full turn (§3.4)"
+            }
+            ModelKind::TurnsExact => {
+                "turn by turn, exact disk + sector mass properties, eq. (88) holds (§3.4)"
+            }
         }
     }
 
     /// Late-time acceleration as a fraction of g sin α, where the model has
-    /// one (with snow, b > 0), computed from the model's coefficients.
+    /// one (with snow, b > 0), computed from the model's coefficients. `None`
+    /// for the turn models, whose long-run mean is measured ([`run_turns`]).
     pub fn terminal_fraction(self) -> Option<f64> {
         match self {
             ModelKind::Loney => Derivation::TorqueAboutCentre
@@ -187,15 +219,16 @@ impl ModelKind {
             ModelKind::LagrangianPrinted => Derivation::LagrangianPrinted,
             ModelKind::QuasiCircular => Derivation::QuasiCircular,
             ModelKind::QuasiCircularLift => Derivation::QuasiCircularLift,
-            ModelKind::Loney => return None,
+            ModelKind::Loney | ModelKind::Turns | ModelKind::TurnsExact => return None,
         })
     }
 
     /// The implementation.
     pub fn build(self) -> Box<dyn Model> {
-        match self.derivation() {
-            Some(derivation) => Box::new(CircularModel::new(derivation)),
-            None => Box::new(LoneyModel),
+        match (self.derivation(), TurnVariant::of(self)) {
+            (Some(derivation), _) => Box::new(CircularModel::new(derivation)),
+            (None, Some(variant)) => Box::new(TurnModel::new(variant)),
+            (None, None) => Box::new(LoneyModel),
         }
     }
 }

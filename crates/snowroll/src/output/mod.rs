@@ -9,6 +9,9 @@ use crate::error::OutputError;
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sample, Sampling, SimOptions, Stop, Trajectory, TurnState};
 
+mod turns;
+pub use turns::write_turn_table;
+
 /// The program version written into every output.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 

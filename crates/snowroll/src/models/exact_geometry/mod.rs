@@ -1,0 +1,17 @@
+//! §3 without truncation in b/r: the exact mass properties of the log with a
+//! partial ring of snow, and the in-turn equation of motion they give.
+//!
+//! The note keeps only the first order in b/r0 (eqs. (38), (43), (48), (56),
+//! (62)); [`SectorBody`] computes the same quantities exactly for a disk of
+//! radius r plus an annular sector `r < r′ < r + b` over the angle θ. The
+//! equation of motion from energy conservation with these exact `I_C(θ)` and
+//! `V(θ)` ([`exact_turn_coefficients`]) makes eq. (88), with the corrected
+//! (87), an identity of the integrated motion (errata §2 item 4). Torque and
+//! energy differ only at O(b³) in this geometry (errata §2 item 3); the
+//! energy form is used (errata §4 row 5).
+
+mod dynamics;
+mod mass_properties;
+
+pub use dynamics::exact_turn_coefficients;
+pub use mass_properties::{RingMoments, SectorBody};

@@ -1,0 +1,157 @@
+//! The smallest and largest value of a smooth function over one turn, for
+//! the range of the acceleration within a turn: a coarse grid brackets each
+//! extreme, Brent's method (parabolic steps with golden-section fallback,
+//! Brent 1973, ch. 5) refines it.
+
+/// Golden-section fraction `(3 − √5)/2`.
+const GOLDEN: f64 = 0.381_966_011_250_105_1;
+/// Most refinement steps (Brent's method needs ~10 here; golden section alone 40).
+const MAX_STEPS: usize = 60;
+/// Probe step, as a fraction of the bracket, that tells whether an extreme
+/// found at an end of the interval is a boundary extreme.
+const PROBE: f64 = 1e-6;
+
+/// The smallest value of `f` near its minimum in `[lo, hi]` (f unimodal
+/// there), located to `x_tol` (absolute) in the argument: the smallest value
+/// evaluated.
+pub(super) fn brent_min(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, x_tol: f64) -> f64 {
+    let mut x = lo + GOLDEN * (hi - lo);
+    let (mut w, mut v) = (x, x);
+    let mut fx = f(x);
+    let (mut fw, mut fv) = (fx, fx);
+    // Step taken last (d) and the one before (e).
+    let (mut d, mut e) = (0.0f64, 0.0f64);
+    for _ in 0..MAX_STEPS {
+        let mid = 0.5 * (lo + hi);
+        let tol1 = x_tol;
+        let tol2 = 2.0 * tol1;
+        if (x - mid).abs() <= tol2 - 0.5 * (hi - lo) {
+            break;
+        }
+        let mut golden = true;
+        if e.abs() > tol1 {
+            // Parabola through (v, fv), (w, fw), (x, fx).
+            let r = (x - w) * (fx - fv);
+            let q0 = (x - v) * (fx - fw);
+            let mut p = (x - v) * q0 - (x - w) * r;
+            let mut q = 2.0 * (q0 - r);
+            if q > 0.0 {
+                p = -p;
+            }
+            q = q.abs();
+            let e_old = e;
+            e = d;
+            if p.abs() < (0.5 * q * e_old).abs() && p > q * (lo - x) && p < q * (hi - x) {
+                d = p / q;
+                let u = x + d;
+                if u - lo < tol2 || hi - u < tol2 {
+                    d = tol1.copysign(mid - x);
+                }
+                golden = false;
+            }
+        }
+        if golden {
+            e = if x >= mid { lo - x } else { hi - x };
+            d = GOLDEN * e;
+        }
+        let u = if d.abs() >= tol1 {
+            x + d
+        } else {
+            x + tol1.copysign(d)
+        };
+        let fu = f(u);
+        if fu <= fx {
+            if u >= x {
+                lo = x;
+            } else {
+                hi = x;
+            }
+            (v, fv) = (w, fw);
+            (w, fw) = (x, fx);
+            (x, fx) = (u, fu);
+        } else {
+            if u < x {
+                lo = u;
+            } else {
+                hi = u;
+            }
+            if fu <= fw || w.to_bits() == x.to_bits() {
+                (v, fv) = (w, fw);
+                (w, fw) = (u, fu);
+            } else if fu <= fv || v.to_bits() == x.to_bits() || v.to_bits() == w.to_bits() {
+                (v, fv) = (u, fu);
+            }
+        }
+    }
+    fx
+}
+
+/// `(min, max)` of `f` over `[lo, hi]`: `grid` intervals bracket each
+/// extreme (endpoints included), Brent's method refines it to `x_tol`.
+pub(super) fn range_on(
+    f: impl Fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    grid: usize,
+    x_tol: f64,
+) -> (f64, f64) {
+    let step = (hi - lo) / grid as f64;
+    let at = |i: usize| lo + i as f64 * step;
+    let (mut i_min, mut i_max) = (0, 0);
+    let (mut f_min, mut f_max) = (f64::INFINITY, f64::NEG_INFINITY);
+    for i in 0..=grid {
+        let fi = f(at(i));
+        if fi < f_min {
+            (f_min, i_min) = (fi, i);
+        }
+        if fi > f_max {
+            (f_max, i_max) = (fi, i);
+        }
+    }
+    // Refines the smallest value of g near grid point i (g = ±f); an end
+    // point that g increases away from is itself the extreme.
+    let refine = |g: &dyn Fn(f64) -> f64, i: usize, g_i: f64| {
+        let inward = if i == 0 {
+            Some(PROBE * step)
+        } else if i == grid {
+            Some(-PROBE * step)
+        } else {
+            None
+        };
+        match inward {
+            Some(dx) if g(at(i) + dx) >= g_i => g_i,
+            _ => brent_min(g, at(i.saturating_sub(1)), at((i + 1).min(grid)), x_tol),
+        }
+    };
+    let refined_min = refine(&|x| f(x), i_min, f_min);
+    let refined_max = -refine(&|x| -f(x), i_max, -f_max);
+    (f_min.min(refined_min), f_max.max(refined_max))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Value error at an abscissa error of 1e-9 on curvature O(1), plus rounding.
+    const VALUE_TOL: f64 = 1e-15;
+
+    #[test]
+    fn finds_interior_and_boundary_extremes() {
+        use std::f64::consts::PI;
+        // min −1 at 2.5, max 1 at 2.5 ± π (2.5 − π is outside [0, 2π]).
+        let f = |x: f64| -(x - 2.5).cos();
+        let (lo, hi) = range_on(f, 0.0, 2.0 * PI, 16, 1e-9);
+        assert!((lo + 1.0).abs() < VALUE_TOL, "{lo}");
+        assert!((hi - 1.0).abs() < VALUE_TOL, "{hi}");
+        // Monotone: the extremes are the endpoints.
+        let (lo, hi) = range_on(|x| x * x, 0.0, 2.0, 16, 1e-9);
+        assert!(lo.abs() < VALUE_TOL && (hi - 4.0).abs() < VALUE_TOL);
+        // An asymmetric minimum where parabolic steps matter.
+        let g = |x: f64| (x - 1.3).powi(4) + (x - 1.3).powi(2) + x.sin() * 1e-3;
+        let direct = (0..=2_000_000)
+            .map(|i| g(i as f64 * 1e-6))
+            .fold(f64::INFINITY, f64::min);
+        let refined = brent_min(g, 1.0, 1.6, 1e-10);
+        assert!(refined <= direct + VALUE_TOL, "{refined} vs {direct}");
+    }
+}

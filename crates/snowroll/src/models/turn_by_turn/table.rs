@@ -1,0 +1,322 @@
+//! One row per completed turn of §3.4, and the long-run statistics of the
+//! acceleration that eqs. (77)–(79) leave open (errata §2 item 2).
+//!
+//! The rows come from the integrator's events (v before and after each
+//! collision) and, for the range of a within a turn, from the energy
+//! integral of the turn (no dense output is needed).
+//!
+//! What to expect (leading order in 1/k, checked in `tests/turns.rs`): with
+//! r_k ≈ kb, the energy over a turn gives `(3/4 + 2b/r) v_end² ≈ (3/4) v_beg² + 2πG r`
+//! and the collision `v_after² ≈ v_end²(1 − 2b/3r)`, so `v_beg² → (πGb/2) k²`
+//! and each turn lasts `2πr/v`: the mean acceleration tends to G/3 within a
+//! turn and to G/4 with the collisions (not the 4G/9 of eq. (79)), while
+//! `a(θ) ≈ (2/3)G − (G/3)(1 − cos θ)` keeps ranging over [0, 2G/3] (eq. (77)).
+
+use serde::{Deserialize, Serialize};
+
+use super::{collision_speed, TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END};
+use crate::error::{ParamError, SimError};
+use crate::integrate::{integrate, EventRecord, Observer, Stats, Termination};
+use crate::models::ode::OdeModel;
+use crate::models::ModelKind;
+use crate::scenario::Scenario;
+use crate::trajectory::{SimOptions, Stop, StopReason};
+use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Seconds};
+
+/// One completed turn k. Column names carry their units.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TurnRow {
+    /// Turn number k, 0-based.
+    pub turn: u64,
+    /// Time the turn starts, s.
+    pub t_start_s: Seconds,
+    /// Position of the contact line at the start, `X_k` (eq. (74)), m.
+    pub x_start_m: Meters,
+    /// Speed of the nominal centre at the start (after the previous collision), m/s.
+    pub v_start_m_s: MetersPerSecond,
+    /// Time the turn ends (θ = 2π), s.
+    pub t_end_s: Seconds,
+    /// Speed just before the collision, `r_k θ̇(2π)`, m/s.
+    pub v_end_m_s: MetersPerSecond,
+    /// Speed just after the collision, eq. (89) (also for the last turn of a
+    /// run stopped by a turn count, as if the run went on), m/s.
+    pub v_after_m_s: MetersPerSecond,
+    /// Kinetic energy the collision removes, `T_end [1 − (r_{k+1}² + 2r_k²)/(3r_{k+1}²)]`
+    /// with `T_end = m_{k+1}(r_{k+1}²/2 + r_k²) θ̇²/2` (eqs. (85), (86)), J.
+    pub collision_loss_j: Joules,
+    /// Mean acceleration within the turn, `(v_end − v_start)/(t_end − t_start)`, m/s².
+    pub mean_a_turn_m_s2: MetersPerSecondSquared,
+    /// Smallest acceleration within the turn, m/s².
+    pub min_a_m_s2: MetersPerSecondSquared,
+    /// Largest acceleration within the turn, m/s².
+    pub max_a_m_s2: MetersPerSecondSquared,
+    /// Mean acceleration including the collision's jump,
+    /// `(v_after − v_start)/(t_end − t_start)`, m/s².
+    pub mean_a_with_collision_m_s2: MetersPerSecondSquared,
+}
+
+/// Means of the acceleration up to turn K, as fractions of G = g sin α.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct TurnCheckpoint {
+    /// K: the statistics cover completed turns k < K.
+    pub turns: u64,
+    /// Time-weighted mean of a within turns, over all turns k < K,
+    /// `Σ(v_end − v_start)/Σ(t_end − t_start)`, over G.
+    pub mean_a_turn_over_g: f64,
+    /// Mean of a including the collisions, over all turns k < K,
+    /// `(v_after(K−1) − v_start(0))/t_end(K−1)`, over G.
+    pub mean_a_with_collision_over_g: f64,
+    /// First turn of the last decade, ⌊K/10⌋.
+    pub window_first_turn: u64,
+    /// Time-weighted mean of a within turns over the last decade ⌊K/10⌋ ≤ k < K, over G.
+    pub window_mean_a_turn_over_g: f64,
+    /// Mean of a including collisions over the last decade, over G.
+    pub window_mean_a_with_collision_over_g: f64,
+    /// Smallest a within a turn over the last decade, over G.
+    pub window_min_a_over_g: f64,
+    /// Largest a within a turn over the last decade, over G.
+    pub window_max_a_over_g: f64,
+}
+
+/// Long-run statistics of a run: checkpoints at K = 1, 2, 5, 10, 20, 50, …
+/// and at the last completed turn.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TurnSummary {
+    /// G = g sin α, the unit of every `_over_g` value, m/s².
+    pub g_along_m_s2: f64,
+    /// Number of completed turns.
+    pub turns: u64,
+    /// How the means converge with K; the last entry covers every turn.
+    pub checkpoints: Vec<TurnCheckpoint>,
+}
+
+impl TurnSummary {
+    /// The statistics of `rows` (consecutive turns from k = 0).
+    pub fn new(rows: &[TurnRow], g_along: f64) -> Self {
+        // Prefix sums of the in-turn velocity gain, so that any window costs O(1).
+        let mut gain = Vec::with_capacity(rows.len() + 1);
+        gain.push(0.0);
+        let mut sum = 0.0;
+        for row in rows {
+            sum += row.v_end_m_s - row.v_start_m_s;
+            gain.push(sum);
+        }
+        let window = |from: usize, to: usize| {
+            let (first, last) = (&rows[from], &rows[to - 1]);
+            let dt = last.t_end_s - first.t_start_s;
+            let in_turn = (gain[to] - gain[from]) / dt / g_along;
+            let with = (last.v_after_m_s - first.v_start_m_s) / dt / g_along;
+            (in_turn, with)
+        };
+        let checkpoints = checkpoint_turns(rows.len())
+            .into_iter()
+            .map(|k| {
+                let first = k / 10;
+                let (mean_turn, mean_with) = window(0, k);
+                let (w_turn, w_with) = window(first, k);
+                let (lo, hi) = rows[first..k]
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| {
+                        (lo.min(r.min_a_m_s2), hi.max(r.max_a_m_s2))
+                    });
+                TurnCheckpoint {
+                    turns: k as u64,
+                    mean_a_turn_over_g: mean_turn,
+                    mean_a_with_collision_over_g: mean_with,
+                    window_first_turn: first as u64,
+                    window_mean_a_turn_over_g: w_turn,
+                    window_mean_a_with_collision_over_g: w_with,
+                    window_min_a_over_g: lo / g_along,
+                    window_max_a_over_g: hi / g_along,
+                }
+            })
+            .collect();
+        Self {
+            g_along_m_s2: g_along,
+            turns: rows.len() as u64,
+            checkpoints,
+        }
+    }
+
+    /// The checkpoint covering every turn, if any turn was completed.
+    pub fn overall(&self) -> Option<&TurnCheckpoint> {
+        self.checkpoints.last()
+    }
+}
+
+/// 1, 2, 5, 10, 20, 50, … below `n`, then `n` (empty when n = 0).
+fn checkpoint_turns(n: usize) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut decade = 1usize;
+    'outer: loop {
+        for m in [1, 2, 5] {
+            let k = m * decade;
+            if k >= n {
+                break 'outer;
+            }
+            out.push(k);
+        }
+        decade = match decade.checked_mul(10) {
+            Some(d) => d,
+            None => break,
+        };
+    }
+    if n > 0 {
+        out.push(n);
+    }
+    out
+}
+
+/// The per-turn table of a run of a turn model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TurnTable {
+    /// Which model produced it.
+    pub model: ModelKind,
+    /// One row per completed turn, in order.
+    pub rows: Vec<TurnRow>,
+    /// How the run ended.
+    pub stop: Stop,
+    /// Long-run statistics of the rows.
+    pub summary: TurnSummary,
+    /// Integrator counts.
+    pub stats: Stats,
+}
+
+/// Gathers one [`TurnRow`] per turn-end event.
+struct TableObserver {
+    rows: Vec<TurnRow>,
+    t_start: f64,
+    v_start: f64,
+}
+
+impl Observer<TurnSystem, 2> for TableObserver {
+    fn start(&mut self, system: &TurnSystem, t0: f64, y0: &[f64; 2]) {
+        self.t_start = t0;
+        self.v_start = system.dynamics().radius() * y0[1];
+    }
+
+    fn event(&mut self, system: &TurnSystem, event: &EventRecord<2>) {
+        if event.index != EVENT_TURN_END {
+            return;
+        }
+        let dynamics = system.dynamics();
+        let (r, b) = (dynamics.radius(), system.snow_depth());
+        let r_next = r + b;
+        let omega_end = event.y_before[1];
+        let v_end = r * omega_end;
+        let v_after = collision_speed(r, b, v_end);
+        // eqs. (85), (86): the end-of-turn body is a disk r_{k+1} touching at distance r_k.
+        let mass_next = std::f64::consts::PI * system.rho_l() * r_next * r_next;
+        let t_end_kinetic =
+            mass_next * (r_next * r_next / 2.0 + r * r) * omega_end * omega_end / 2.0;
+        let collision_loss = t_end_kinetic * 2.0 * b * (2.0 * r + b) / (3.0 * r_next * r_next);
+        let (a_min, a_max) = dynamics.acceleration_range(self.v_start / r);
+        let dt = event.t - self.t_start;
+        self.rows.push(TurnRow {
+            turn: system.turn(),
+            t_start_s: self.t_start,
+            x_start_m: system.turn_start_x(),
+            v_start_m_s: self.v_start,
+            t_end_s: event.t,
+            v_end_m_s: v_end,
+            v_after_m_s: v_after,
+            collision_loss_j: collision_loss,
+            mean_a_turn_m_s2: (v_end - self.v_start) / dt,
+            min_a_m_s2: a_min,
+            max_a_m_s2: a_max,
+            mean_a_with_collision_m_s2: (v_after - self.v_start) / dt,
+        });
+        self.t_start = event.t;
+        self.v_start = v_after;
+    }
+}
+
+impl TurnModel {
+    /// Runs the model and returns one row per completed turn (the samples
+    /// of [`Model::simulate`](crate::Model::simulate) are not recorded;
+    /// `opts.sampling` is ignored).
+    ///
+    /// # Errors
+    /// As [`Model::simulate`](crate::Model::simulate).
+    pub fn run_table(&self, scenario: &Scenario, opts: &SimOptions) -> Result<TurnTable, SimError> {
+        opts.validate()?;
+        let mut system = TurnSystem::new(self.variant, scenario, opts);
+        let mut observer = TableObserver {
+            rows: Vec::new(),
+            t_start: 0.0,
+            v_start: 0.0,
+        };
+        let y0 = Self::initial_state(scenario);
+        let outcome = integrate(
+            &mut system,
+            0.0,
+            y0,
+            opts.t_end,
+            &opts.tolerances,
+            &mut observer,
+        )?;
+        let reason = match outcome.termination {
+            Termination::EndTime => StopReason::EndTime,
+            Termination::Event { index } => system.stop_reason(index),
+        };
+        let x_m = system.sample(outcome.t, &outcome.y).x_m;
+        let summary = TurnSummary::new(&observer.rows, scenario.g_along());
+        Ok(TurnTable {
+            model: self.variant.kind(),
+            rows: observer.rows,
+            stop: Stop {
+                reason,
+                t_s: outcome.t,
+                x_m,
+            },
+            summary,
+            stats: outcome.stats,
+        })
+    }
+}
+
+/// Runs the turn model `kind` (`turns` or `turns-exact`) and returns its
+/// per-turn table with the long-run statistics.
+///
+/// ```
+/// use snowroll::{run_turns, ModelKind, Scenario, SimOptions};
+/// let opts = SimOptions { turns: Some(100), t_end: 1e6, ..SimOptions::default() };
+/// let table = run_turns(ModelKind::Turns, &Scenario::default(), &opts)?;
+/// assert_eq!(table.rows.len(), 100);
+/// // Each collision slows the log down (eq. (89)).
+/// assert!(table.rows.iter().all(|r| r.v_after_m_s < r.v_end_m_s));
+/// # Ok::<(), snowroll::SimError>(())
+/// ```
+///
+/// # Errors
+/// [`ParamError::UnknownModel`] (inside [`SimError::Param`]) when `kind` is
+/// not a turn model; otherwise as [`Model::simulate`](crate::Model::simulate).
+pub fn run_turns(
+    kind: ModelKind,
+    scenario: &Scenario,
+    opts: &SimOptions,
+) -> Result<TurnTable, SimError> {
+    let variant = TurnVariant::of(kind).ok_or_else(|| ParamError::UnknownModel {
+        given: kind.id().to_string(),
+        expected: ModelKind::ALL
+            .iter()
+            .filter(|k| TurnVariant::of(**k).is_some())
+            .map(|k| format!("{} ({})", k.id(), k.alias()))
+            .collect::<Vec<_>>()
+            .join(", "),
+    })?;
+    TurnModel::new(variant).run_table(scenario, opts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::checkpoint_turns;
+
+    #[test]
+    fn checkpoints_are_1_2_5_per_decade_then_the_end() {
+        assert!(checkpoint_turns(0).is_empty());
+        assert_eq!(checkpoint_turns(1), vec![1]);
+        assert_eq!(checkpoint_turns(7), vec![1, 2, 5, 7]);
+        assert_eq!(checkpoint_turns(100), vec![1, 2, 5, 10, 20, 50, 100]);
+    }
+}
