@@ -469,3 +469,75 @@ fn two_figures_with_one_name_are_refused() {
         Err(ReportError::DuplicateFigure { name }) if name == "speed"
     ));
 }
+
+/// A trajectory laid out as the turn model of `turn-model.md` records it:
+/// turn k has nominal radius r_k = r0 + k b and starts at X_k = Σ_{j<k} 2π r_j;
+/// within it x = X_k + r_k θ. (No turn model exists yet, so the samples are
+/// built from these formulae; the model tag is only a label.)
+fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajectory {
+    use snowroll::{Sample, Stop, StopReason, TurnState};
+    let (r0, b) = (s.initial_radius(), s.snow_depth());
+    let mut samples = Vec::new();
+    let mut states = Vec::new();
+    let mut start_x = 0.0;
+    for k in 0..turns {
+        let rk = r0 + k as f64 * b;
+        for q in 0..per_turn {
+            let theta = TAU * q as f64 / per_turn as f64;
+            samples.push(Sample {
+                t_s: samples.len() as f64 * 0.01,
+                x_m: start_x + rk * theta,
+                v_m_s: 1.0,
+                a_m_s2: 0.0,
+                r_m: rk,
+                mass_kg: 1.0,
+            });
+            states.push(TurnState {
+                turn: k,
+                theta_rad: theta,
+                omega_rad_s: 1.0 / rk,
+            });
+        }
+        start_x += TAU * rk;
+    }
+    let end = *samples.last().unwrap();
+    Trajectory {
+        model: ModelKind::QuasiCircular,
+        samples,
+        turn_states: states,
+        stop: Stop {
+            reason: StopReason::Turns,
+            t_s: end.t_s,
+            x_m: end.x_m,
+        },
+        stats: Default::default(),
+    }
+}
+
+#[test]
+fn turn_model_frames_count_whole_turns_and_start_each_at_r0_plus_k_b() {
+    let s = scenario(0.02);
+    let traj = turn_shaped_trajectory(&s, 4, 36);
+    let anim = Animation::from_trajectory(&traj, &s, usize::MAX).unwrap();
+    assert!(!anim.circular);
+    for (f, k) in anim.frames.iter().zip(&traj.turn_states) {
+        approx::assert_relative_eq!(
+            f.theta_rad,
+            TAU * k.turn as f64 + k.theta_rad,
+            max_relative = SNOWLESS_THETA_TOL
+        );
+        assert_eq!(f.turn, k.turn);
+    }
+    let (r0, b) = (s.initial_radius(), s.snow_depth());
+    assert_eq!(anim.turn_start_radius_m.len(), 4);
+    for (k, &r) in anim.turn_start_radius_m.iter().enumerate() {
+        approx::assert_relative_eq!(r, r0 + k as f64 * b, max_relative = SNOWLESS_THETA_TOL);
+    }
+    // Mismatched turn states are refused rather than drawn wrongly.
+    let mut broken = traj.clone();
+    broken.turn_states.pop();
+    assert!(matches!(
+        Animation::from_trajectory(&broken, &s, 100),
+        Err(ReportError::InvalidAnimation { .. })
+    ));
+}
