@@ -72,7 +72,10 @@ pub mod integrate;
 pub mod models;
 pub mod output;
 pub mod physics;
+#[cfg(feature = "plot")]
+pub mod plot;
 mod quadrature;
+pub mod report;
 pub mod scenario;
 pub mod trajectory;
 pub mod units;

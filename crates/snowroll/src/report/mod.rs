@@ -1,0 +1,41 @@
+//! The report of `snowroll paper`: claims of the note with verdicts, figures,
+//! and an animation of the rolling log.
+//!
+//! [`Claim`], [`ClaimResult`] and [`Verdict`] are always available. With the
+//! feature `plot`, a [`Report`] (metadata, claim results, [`Figure`]s, an
+//! optional [`Animation`]) renders to a directory with [`Report::write_to`]:
+//!
+//! ```text
+//! report.html        self-contained: inline CSS, SVG, JS and data; no network
+//! report.md          the claims table, figures linked as figures/NAME.svg
+//! claims.json        the claim results
+//! figures/NAME.svg   one per figure, and NAME.png
+//! data/NAME.csv      the plotted series of each figure
+//! data/animation.csv the animation frames (when there is an animation)
+//! ```
+//!
+//! Every file records the program version and the parameters. Each file is
+//! written to a temporary name in its folder and then renamed into place, so
+//! a reader never sees half a file.
+
+mod claim;
+
+pub use claim::{Claim, ClaimResult, Tally, Tolerance, Verdict};
+
+#[cfg(feature = "plot")]
+mod animation;
+#[cfg(feature = "plot")]
+mod document;
+#[cfg(feature = "plot")]
+mod files;
+#[cfg(feature = "plot")]
+mod html;
+#[cfg(feature = "plot")]
+mod markdown;
+
+#[cfg(feature = "plot")]
+pub use animation::{Animation, Frame};
+#[cfg(feature = "plot")]
+pub use document::{params_of, Figure, Metadata, RenderedFigure, Report};
+#[cfg(feature = "plot")]
+pub use files::{figure_csv, ReportError};
