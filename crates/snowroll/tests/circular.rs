@@ -104,7 +104,11 @@ fn fn4_corrected_coefficient_is_half_du_dx() {
         let h = 1e-4 * x;
         let du = (cf.speed_squared(x + h) - cf.speed_squared(x - h)) / (2.0 * h);
         let a = cf.acceleration(x);
-        assert!(((0.5 * du - a) / a).abs() < 1e-6, "x {x}: {} vs {a}", 0.5 * du);
+        assert!(
+            ((0.5 * du - a) / a).abs() < 1e-6,
+            "x {x}: {} vs {a}",
+            0.5 * du
+        );
         // The printed coefficient 7bC/3 doubles the decaying part: it is
         // not ½ du/dx (the misprint of fn. 4).
         let g5 = s.g_along() / 5.0;
@@ -143,7 +147,10 @@ fn eq95_every_model_gives_two_thirds_g_sin_alpha_as_b_goes_to_zero() {
     };
     for kind in ModelKind::ALL {
         let (a0, x0) = max_dev(kind, 0.0);
-        assert!(a0 < EXACT_TOL && x0 < 1e-12, "{kind} at b = 0: {a0:e} {x0:e}");
+        assert!(
+            a0 < EXACT_TOL && x0 < 1e-12,
+            "{kind} at b = 0: {a0:e} {x0:e}"
+        );
         if kind == ModelKind::Snowless {
             continue;
         }
@@ -243,11 +250,14 @@ fn every_circular_model_approaches_its_derived_terminal_acceleration() {
         assert_eq!(traj.stop.reason, StopReason::Distance, "{kind}");
         let last = traj.samples.last().unwrap();
         let got = last.a_m_s2 / s.g_along();
-        assert!(((got - frac) / frac).abs() < TERMINAL_TOL, "{kind}: {got} vs {frac}");
+        assert!(
+            ((got - frac) / frac).abs() < TERMINAL_TOL,
+            "{kind}: {got} vs {frac}"
+        );
         if c.lift != 0.0 {
             // Leading correction: a − a∞ ≈ −λ₁ g b cos α /((1 + 4c_v) π r).
-            let predicted = -c.lift * s.g_normal() * s.snow_depth()
-                / ((1.0 + 4.0 * c.drag) * PI * last.r_m);
+            let predicted =
+                -c.lift * s.g_normal() * s.snow_depth() / ((1.0 + 4.0 * c.drag) * PI * last.r_m);
             let measured = last.a_m_s2 - frac * s.g_along();
             assert!(
                 ((measured - predicted) / predicted).abs() < LIFT_COEFF_TOL,
@@ -288,12 +298,18 @@ fn drag_only_models_approach_with_the_derived_power_of_r() {
         let (r1, d1) = at(1.0);
         let (r2, d2) = at(30.0);
         let slope = -(d2 / d1).ln() / (r2 / r1).ln();
-        assert!(((slope - want) / want).abs() < POWER_TOL, "{kind}: {slope} vs {want}");
+        assert!(
+            ((slope - want) / want).abs() < POWER_TOL,
+            "{kind}: {slope} vs {want}"
+        );
         // The closed form of the same equation gives the same deviation.
         let cf = DragOnlyClosedForm::new(&s, c.drag);
         let x2 = PI * (r2 * r2 - 0.01) / s.snow_depth();
         let d_cf = (cf.acceleration(x2) - a_inf).abs();
-        assert!(((d_cf - d2) / d2).abs() < 1e-5, "{kind}: {d_cf:e} vs {d2:e}");
+        assert!(
+            ((d_cf - d2) / d2).abs() < 1e-5,
+            "{kind}: {d_cf:e} vs {d2:e}"
+        );
     }
 }
 
@@ -402,11 +418,22 @@ fn halving_rtol_halves_the_error_against_loney() {
     let rtols: Vec<f64> = (0..10).map(|i| 1e-6 * 0.5f64.powi(i)).collect();
     let errs: Vec<f64> = rtols.iter().map(|&r| err(r)).collect();
     let n = rtols.len() as f64;
-    let (lx, ly): (Vec<f64>, Vec<f64>) = rtols.iter().zip(&errs).map(|(r, e)| (r.ln(), e.ln())).unzip();
+    let (lx, ly): (Vec<f64>, Vec<f64>) = rtols
+        .iter()
+        .zip(&errs)
+        .map(|(r, e)| (r.ln(), e.ln()))
+        .unzip();
     let mx = lx.iter().sum::<f64>() / n;
     let my = ly.iter().sum::<f64>() / n;
-    let slope = lx.iter().zip(&ly).map(|(x, y)| (x - mx) * (y - my)).sum::<f64>()
+    let slope = lx
+        .iter()
+        .zip(&ly)
+        .map(|(x, y)| (x - mx) * (y - my))
+        .sum::<f64>()
         / lx.iter().map(|x| (x - mx).powi(2)).sum::<f64>();
-    assert!((0.75..=1.25).contains(&slope), "exponent {slope}, errors {errs:?}");
+    assert!(
+        (0.75..=1.25).contains(&slope),
+        "exponent {slope}, errors {errs:?}"
+    );
     assert!(errs.last().unwrap() < &errs[0]);
 }

@@ -19,8 +19,10 @@
 //! a reader never sees half a file.
 
 mod claim;
+mod claims;
 
 pub use claim::{Claim, ClaimResult, Tally, Tolerance, Verdict};
+pub use claims::{ClaimCheck, Finding, Lab, CLAIMS};
 
 #[cfg(feature = "plot")]
 mod animation;
