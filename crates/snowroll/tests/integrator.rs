@@ -675,6 +675,60 @@ fn continued_events_are_seen_in_time_order_between_step_pieces() {
     assert_contiguous(&log, 0.0, 10.0);
 }
 
+/// `x' = 1` with one event `x − (n + 1)` whose level `n` counts the events
+/// (a turn counter): every crossing continues and raises the level.
+struct Counter {
+    passed: u32,
+}
+
+impl OdeSystem<1> for Counter {
+    fn rhs(&self, _t: f64, _y: &[f64; 1], dy: &mut [f64; 1]) {
+        dy[0] = 1.0;
+    }
+    fn event_count(&self) -> usize {
+        1
+    }
+    fn event(&self, _index: usize, _t: f64, y: &[f64; 1]) -> f64 {
+        y[0] - f64::from(self.passed + 1)
+    }
+    fn event_direction(&self, _index: usize) -> Direction {
+        Direction::Rising
+    }
+    fn on_event(&self, _index: usize, _t: f64, _y: &[f64; 1]) -> EventAction<1> {
+        EventAction::Continue
+    }
+    fn commit_event(&mut self, _index: usize, _t: f64, _before: &[f64; 1], _after: &[f64; 1]) {
+        self.passed += 1;
+    }
+}
+
+#[test]
+fn continue_with_a_counter_finds_every_level_even_several_in_one_step() {
+    let mut counter = Counter { passed: 0 };
+    let mut log = Log::new();
+    let t_end = 20.5;
+    let out = integrate(
+        &mut counter,
+        0.0,
+        [0.0],
+        t_end,
+        &Tolerances::default(),
+        &mut log,
+    )
+    .unwrap();
+    // x = t exactly, so the steps grow sixfold each time and the last ones
+    // span several levels.
+    assert!(out.stats.accepted < 10, "{:?}", out.stats);
+    let times: Vec<f64> = log.events().iter().map(|e| e.t).collect();
+    assert_eq!(times.len(), 20, "{times:?}");
+    assert_eq!(counter.passed, 20);
+    for (k, t) in times.iter().enumerate() {
+        let want = (k + 1) as f64;
+        assert!(within_ulps(*t, want, ROOT_ULPS), "{t} vs {want}");
+    }
+    assert_contiguous(&log, 0.0, t_end);
+}
+
 /// The observer saw steps that tile `[t0, t_end]` without gaps or overlaps,
 /// each event at the end of the step before it, in the state that step
 /// ended in, and each step after an event starting from the event's

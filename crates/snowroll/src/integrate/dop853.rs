@@ -235,14 +235,17 @@ fn check_times<const N: usize>(t0: f64, y0: &[f64; N], t_end: f64) -> Result<(),
 /// onto the event surface (a bouncing ball) finds the next crossing even
 /// when one step spans the whole excursion. Events are found from sign
 /// changes between the ends of each step, so a function that crosses zero
-/// twice within one step is not seen. Simultaneous events are offered in
-/// index order; after a `Reset` the others of the same step are dropped.
+/// twice within one step is not seen, unless a `Continue` event in between
+/// changed it (after `Continue` events the rest of the step is searched
+/// again, so a counter in the event function works). Simultaneous events
+/// are offered in index order; after a `Reset` the others of the same step
+/// are dropped, and the integration restarts from the new state.
 ///
 /// # Errors
 /// [`ParamError::InvalidParameter`] for bad tolerances or a start or end
 /// time that is not finite (or `t_end < t0`),
 /// [`SimError::StepSizeTooSmall`] when the step underflows (a singularity),
-/// [`SimError::TooManySteps`] past `tol.max_steps`,
+/// [`SimError::TooManySteps`] past `tol.max_steps` steps and events,
 /// [`SimError::NonFiniteState`] when the state is or becomes non-finite, and
 /// [`SimError::TooManyEvents`] past [`MAX_EVENTS`] event functions.
 pub fn integrate<S, O, const N: usize>(
@@ -292,8 +295,9 @@ where
     it.stats.evaluations += 1;
     let mut h = it.initial_step(t, &y);
     let mut last_rejected = false;
+    let mut events_located = 0;
     loop {
-        if it.stats.accepted + it.stats.rejected >= tol.max_steps {
+        if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
             return Err(SimError::TooManySteps {
                 t,
                 steps: tol.max_steps,
@@ -346,48 +350,66 @@ where
         let (mut t_seen, mut y_seen) = (t, y);
         let mut reset = None;
         if let (true, Some(p)) = (ends.needs_dense(), dense) {
-            let found = crossings(&*it.system, &p, t_new, &g_old[..n_events], &g_new);
-            for &(te, i) in found.as_slice() {
-                let ye = p.at(te);
-                let action = it.system.on_event(i, te, &ye);
-                let y_after = match action {
-                    EventAction::Reset(r) => r,
-                    EventAction::Stop | EventAction::Continue => ye,
-                };
-                if te > t_seen {
-                    let piece = DenseStep::new((t_seen, &y_seen), (te, &ye), Some(p));
-                    observer.step(&*it.system, &piece);
-                    (t_seen, y_seen) = (te, ye);
+            // Where the search for crossings starts, and the event values there.
+            let mut g_lo = g_old;
+            loop {
+                let found = crossings(&*it.system, &p, (t_seen, &g_lo[..n_events]), t_new, &g_new);
+                if found.is_empty() {
+                    break;
                 }
-                let record = EventRecord {
-                    index: i,
-                    t: te,
-                    y_before: ye,
-                    y_after,
-                    action,
-                };
-                observer.event(&*it.system, &record);
-                it.system.commit_event(i, te, &ye, &y_after);
-                match action {
-                    EventAction::Continue => {}
-                    EventAction::Stop => {
-                        return Ok(Outcome {
-                            t: te,
-                            y: ye,
-                            termination: Termination::Event { index: i },
-                            stats: it.stats,
-                        });
+                for &(te, i) in found.as_slice() {
+                    events_located += 1;
+                    let ye = p.at(te);
+                    let action = it.system.on_event(i, te, &ye);
+                    let y_after = match action {
+                        EventAction::Reset(r) => r,
+                        EventAction::Stop | EventAction::Continue => ye,
+                    };
+                    if te > t_seen {
+                        let piece = DenseStep::new((t_seen, &y_seen), (te, &ye), Some(p));
+                        observer.step(&*it.system, &piece);
+                        (t_seen, y_seen) = (te, ye);
                     }
-                    EventAction::Reset(_) => {
-                        reset = Some((te, y_after));
-                        break;
+                    let record = EventRecord {
+                        index: i,
+                        t: te,
+                        y_before: ye,
+                        y_after,
+                        action,
+                    };
+                    observer.event(&*it.system, &record);
+                    it.system.commit_event(i, te, &ye, &y_after);
+                    match action {
+                        EventAction::Continue => {}
+                        EventAction::Stop => {
+                            return Ok(Outcome {
+                                t: te,
+                                y: ye,
+                                termination: Termination::Event { index: i },
+                                stats: it.stats,
+                            });
+                        }
+                        EventAction::Reset(_) => {
+                            reset = Some((te, y_after));
+                            break;
+                        }
                     }
                 }
-            }
-            if reset.is_none() {
-                // `commit_event` may have changed the event functions: the
-                // next step must start from their current values.
+                if reset.is_some() || t_seen >= t_new {
+                    break;
+                }
+                // Every event so far continued, but `commit_event` may have
+                // changed the event functions (a turn counter): search the
+                // rest of the step again with their current values. Events
+                // count towards the step budget, so a cascade cannot hang.
+                if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
+                    return Err(SimError::TooManySteps {
+                        t: t_seen,
+                        steps: tol.max_steps,
+                    });
+                }
                 for i in 0..n_events {
+                    g_lo[i] = it.system.event(i, t_seen, &y_seen);
                     g_new[i] = it.system.event(i, t_new, &y_new);
                 }
             }

@@ -71,40 +71,46 @@ pub(super) struct Found {
 }
 
 impl Found {
+    /// Whether no event was found.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
     /// The events, earliest first (simultaneous ones in index order).
     pub fn as_slice(&self) -> &[(f64, usize)] {
         &self.events[..self.len]
     }
 }
 
-/// Locates every crossing of the step `(p.t, t_new]` on its dense output
-/// `p`, given the event values `g_old` at its start and `g_new` at its end.
+/// Locates every crossing in `(t_lo, t_new]`, part of the step whose dense
+/// output is `p`, given the event values `g_lo` at `t_lo` and `g_new` at
+/// `t_new`.
 pub(super) fn crossings<S: OdeSystem<N>, const N: usize>(
     system: &S,
     p: &Polynomial<'_, N>,
+    (t_lo, g_lo): (f64, &[f64]),
     t_new: f64,
-    g_old: &[f64],
     g_new: &[f64; MAX_EVENTS],
 ) -> Found {
-    let t_nudge = (p.t + NUDGE_ULPS * f64::EPSILON * (p.t.abs() + p.h)).min(0.5 * (p.t + t_new));
+    let t_nudge = (t_lo + NUDGE_ULPS * f64::EPSILON * (t_lo.abs() + p.h)).min(0.5 * (t_lo + t_new));
     let mut y_nudge = None;
     let mut found = Found {
         events: [(f64::INFINITY, 0); MAX_EVENTS],
         len: 0,
     };
-    for (i, &before) in g_old.iter().enumerate() {
+    for (i, &before) in g_lo.iter().enumerate() {
         let direction = system.event_direction(i);
         // Where the bracket starts, and the function's value there.
-        let (t_lo, g_lo) = if before != 0.0 {
-            (p.t, before)
+        let (t_start, g_start) = if before != 0.0 {
+            (t_lo, before)
         } else if direction.may_end_crossing(g_new[i]) {
             let y = y_nudge.get_or_insert_with(|| p.at(t_nudge));
             (t_nudge, system.event(i, t_nudge, y))
         } else {
             continue;
         };
-        if direction.crosses(g_lo, g_new[i]) {
-            let te = locate(t_lo, t_new, g_lo, g_new[i], |tt| {
+        if direction.crosses(g_start, g_new[i]) {
+            let te = locate(t_start, t_new, g_start, g_new[i], |tt| {
                 system.event(i, tt, &p.at(tt))
             });
             found.events[found.len] = (te, i);

@@ -165,7 +165,8 @@ pub struct Tolerances {
     pub atol: f64,
     /// Largest step, in the time unit. Default: unbounded.
     pub max_step: f64,
-    /// Most accepted plus rejected steps before giving up. Default 10^8.
+    /// Most accepted plus rejected steps, plus located events, before
+    /// giving up. Default 10^8.
     pub max_steps: u64,
 }
 
