@@ -6,17 +6,18 @@
 // hide that correspondence.
 #![allow(clippy::needless_range_loop)]
 
-use super::events::locate;
+use super::dense::{DenseStep, Polynomial, DENSE_TERMS};
+use super::events::{crossings, scan_step_ends};
 use super::tableau::{A, B, C, D, E3, E5};
-use super::{EventAction, EventRecord, Observer, OdeSystem, Outcome, Termination, Tolerances};
-use crate::error::SimError;
+use super::{
+    EventAction, EventRecord, Observer, OdeSystem, Outcome, Termination, Tolerances, MAX_EVENTS,
+};
+use crate::error::{ParamError, SimError};
 
 /// Stages of the 8th-order solution.
 const STAGES: usize = 12;
 /// Stages including the three extra ones of the dense output.
 const STAGES_DENSE: usize = 16;
-/// Coefficient vectors of the dense polynomial.
-const DENSE_TERMS: usize = 7;
 
 // Hairer's DOP853 controller constants (his defaults).
 /// Safety factor on the predicted step.
@@ -25,8 +26,6 @@ const SAFETY: f64 = 0.9;
 const FAC_MIN: f64 = 0.333;
 /// ... and grow at most by FAC_MAX per step.
 const FAC_MAX: f64 = 6.0;
-/// Exponent 1/(q+1) of the error estimator of order q = 7.
-const EXPONENT: f64 = 1.0 / 8.0;
 
 /// Step and evaluation counts of one integration.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -39,112 +38,82 @@ pub struct Stats {
     pub evaluations: u64,
 }
 
-/// One accepted step as the observer sees it: the interval `(t_old, t_new]`
-/// and, when asked for, the 7th-order dense output on it.
-#[derive(Debug)]
-pub struct DenseStep<'a, const N: usize> {
-    /// Start of the step.
-    pub t_old: f64,
-    /// End of the step (earlier than the full step if an event stopped or reset it).
-    pub t_new: f64,
-    /// State at `t_old`.
-    pub y_old: &'a [f64; N],
-    /// State at `t_new`.
-    pub y_new: &'a [f64; N],
-    h: f64,
-    dense: Option<&'a [[f64; N]; DENSE_TERMS]>,
-}
-
-impl<const N: usize> DenseStep<'_, N> {
-    /// The state at `t` in `[t_old, t_new]` from the dense output; `None` when
-    /// the observer did not ask for dense output on this step.
-    pub fn eval(&self, t: f64) -> Option<[f64; N]> {
-        if t >= self.t_new {
-            return Some(*self.y_new);
-        }
-        self.dense
-            .map(|f| interpolate(f, self.y_old, (t - self.t_old) / self.h))
-    }
-}
-
-/// Evaluates the dense polynomial at the fraction `s` of the step.
+/// `Σ_j w[j] k[j]` over the non-zero weights, component by component.
 ///
-/// With `F0..F6` from [`Integrator::dense_coefficients`] the polynomial is
-/// `y_old + s(F0 + (1−s)(F1 + s(F2 + (1−s)(F3 + s(F4 + (1−s)(F5 + s F6))))))`.
-fn interpolate<const N: usize>(f: &[[f64; N]; DENSE_TERMS], y_old: &[f64; N], s: f64) -> [f64; N] {
-    let mut y = [0.0; N];
-    for (i, fi) in f.iter().rev().enumerate() {
-        let factor = if i % 2 == 0 { s } else { 1.0 - s };
-        for n in 0..N {
-            y[n] = (y[n] + fi[n]) * factor;
+/// Every caller passes a row of the tableau constants, so once this is
+/// inlined the loop is unrolled and the zero entries (a third of `A`) drop
+/// out at compile time; the inner loop over components vectorises.
+#[inline(always)]
+fn weighted_sum<const N: usize>(w: &[f64], k: &[[f64; N]; STAGES_DENSE]) -> [f64; N] {
+    let mut acc = [0.0; N];
+    for (&wj, kj) in w.iter().zip(k) {
+        if wj != 0.0 {
+            for n in 0..N {
+                acc[n] += wj * kj[n];
+            }
         }
     }
-    for n in 0..N {
-        y[n] += y_old[n];
-    }
-    y
+    acc
+}
+
+/// `err^(1/8)`, the controller's power of the error (Hairer's `FAC11`; the
+/// exponent is 1/(q + 1) for the error estimator of order q = 7),
+/// as three square roots: exact to rounding and far cheaper than `powf`.
+fn eighth_root(err: f64) -> f64 {
+    err.sqrt().sqrt().sqrt()
 }
 
 struct Integrator<'s, S, const N: usize> {
     system: &'s mut S,
     tol: Tolerances,
+    /// Stages: `k[0..12]` the twelve of the step, `k[12] = f(t + h, y_new)`
+    /// (the first stage of the next step), `k[13..16]` the dense-output stages.
     k: [[f64; N]; STAGES_DENSE],
     stats: Stats,
 }
 
 impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
-    fn eval(&mut self, t: f64, y: &[f64; N], out_stage: usize) {
-        let mut dy = [0.0; N];
-        self.system.rhs(t, y, &mut dy);
-        self.k[out_stage] = dy;
+    /// Evaluates stage `STAGE` at `t + C[STAGE] h`, from the argument
+    /// `y + h Σ_{j<STAGE} A[STAGE][j] k_j`.
+    #[inline(always)]
+    fn stage<const STAGE: usize>(&mut self, t: f64, y: &[f64; N], h: f64) {
+        let mut arg = *y;
+        let sum = weighted_sum(&A[STAGE][..STAGE], &self.k);
+        for n in 0..N {
+            arg[n] += h * sum[n];
+        }
+        self.system.rhs(t + C[STAGE] * h, &arg, &mut self.k[STAGE]);
         self.stats.evaluations += 1;
     }
 
-    /// State `y + h Σ_{j<s} A[s][j] k_j`, the argument of stage `s`.
-    fn stage_state(&self, y: &[f64; N], h: f64, s: usize) -> [f64; N] {
-        let mut acc = [0.0; N];
-        for j in 0..s {
-            let a = A[s][j];
-            if a != 0.0 {
-                for n in 0..N {
-                    acc[n] += a * self.k[j][n];
-                }
-            }
-        }
-        let mut out = *y;
-        for n in 0..N {
-            out[n] += h * acc[n];
-        }
-        out
-    }
-
     /// One trial step from `(t, y)` with `k[0] = f(t, y)`: the 8th-order
-    /// solution, with `k[12] = f(t + h, y_new)`, and Hairer's error norm
-    /// (a blend of the 5th- and 3rd-order estimators, DOP853's `err`).
+    /// solution and Hairer's error norm
+    /// `err = |h| err5 / sqrt(N (err5 + 0.01 err3))`, where `err5` and
+    /// `err3` are the sums of squares of the scaled 5th- and 3rd-order
+    /// estimators (DOP853's `ERR`).
     fn trial(&mut self, t: f64, y: &[f64; N], h: f64) -> ([f64; N], f64) {
-        for s in 1..STAGES {
-            let ys = self.stage_state(y, h, s);
-            self.eval(t + C[s] * h, &ys, s);
-        }
+        self.stage::<1>(t, y, h);
+        self.stage::<2>(t, y, h);
+        self.stage::<3>(t, y, h);
+        self.stage::<4>(t, y, h);
+        self.stage::<5>(t, y, h);
+        self.stage::<6>(t, y, h);
+        self.stage::<7>(t, y, h);
+        self.stage::<8>(t, y, h);
+        self.stage::<9>(t, y, h);
+        self.stage::<10>(t, y, h);
+        self.stage::<11>(t, y, h);
         let mut y_new = *y;
-        for n in 0..N {
-            let mut acc = 0.0;
-            for (j, b) in B.iter().enumerate() {
-                acc += b * self.k[j][n];
-            }
-            y_new[n] += h * acc;
-        }
-        self.eval(t + h, &y_new, STAGES);
+        let slope = weighted_sum(&B, &self.k);
+        let est5 = weighted_sum(&E5, &self.k);
+        let est3 = weighted_sum(&E3, &self.k);
         let (mut err5, mut err3) = (0.0, 0.0);
         for n in 0..N {
+            y_new[n] += h * slope[n];
             let scale = self.tol.atol + self.tol.rtol * y[n].abs().max(y_new[n].abs());
-            let (mut e5, mut e3) = (0.0, 0.0);
-            for j in 0..=STAGES {
-                e5 += E5[j] * self.k[j][n];
-                e3 += E3[j] * self.k[j][n];
-            }
-            err5 += (e5 / scale).powi(2);
-            err3 += (e3 / scale).powi(2);
+            let (e5, e3) = (est5[n] / scale, est3[n] / scale);
+            err5 += e5 * e5;
+            err3 += e3 * e3;
         }
         let mut denom = err5 + 0.01 * err3;
         if denom <= 0.0 {
@@ -154,8 +123,18 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         (y_new, err)
     }
 
-    /// Coefficients `F0..F6` of the dense output on the accepted step
-    /// `(t, y) → (t + h, y_new)`; needs the three extra stages 13–15.
+    /// `k[12] = f(t_new, y_new)`: needed once a step is accepted, by the
+    /// dense output and as the first stage of the next step (FSAL). Hairer
+    /// evaluates it only after acceptance, so rejected steps cost 11
+    /// evaluations, not 12.
+    fn last_stage(&mut self, t_new: f64, y_new: &[f64; N]) {
+        self.system.rhs(t_new, y_new, &mut self.k[STAGES]);
+        self.stats.evaluations += 1;
+    }
+
+    /// Coefficients `F0..F6` of the dense output (see [`Polynomial`]) on the accepted step
+    /// `(t, y) → (t + h, y_new)`; evaluates the three extra stages 13–15
+    /// (Hairer's `CONT`, with `F_i = CONT(i + 1)`).
     fn dense_coefficients(
         &mut self,
         t: f64,
@@ -163,30 +142,30 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         y_new: &[f64; N],
         h: f64,
     ) -> [[f64; N]; DENSE_TERMS] {
-        for s in STAGES + 1..STAGES_DENSE {
-            let ys = self.stage_state(y, h, s);
-            self.eval(t + C[s] * h, &ys, s);
-        }
+        self.stage::<13>(t, y, h);
+        self.stage::<14>(t, y, h);
+        self.stage::<15>(t, y, h);
         let mut f = [[0.0; N]; DENSE_TERMS];
         for n in 0..N {
             let dy = y_new[n] - y[n];
+            let bspl = h * self.k[0][n] - dy;
             f[0][n] = dy;
-            f[1][n] = h * self.k[0][n] - dy;
-            f[2][n] = 2.0 * dy - h * (self.k[STAGES][n] + self.k[0][n]);
-            for (i, d) in D.iter().enumerate() {
-                let mut acc = 0.0;
-                for (j, dj) in d.iter().enumerate() {
-                    acc += dj * self.k[j][n];
-                }
-                f[3 + i][n] = h * acc;
+            f[1][n] = bspl;
+            f[2][n] = dy - h * self.k[STAGES][n] - bspl;
+        }
+        for (fi, d) in f[3..].iter_mut().zip(&D) {
+            let sum = weighted_sum(d, &self.k);
+            for n in 0..N {
+                fi[n] = h * sum[n];
             }
         }
         f
     }
 
-    /// Hairer's initial step guess (DOP853's `HINIT`) for an 8th-order method.
-    fn initial_step(&mut self, t: f64, y: &[f64; N], t_end: f64) -> f64 {
-        let dir = (t_end - t).signum();
+    /// Hairer's initial step guess (DOP853's `HINIT`) for an 8th-order
+    /// method, forward in time: `h` such that `h^8 max(‖f‖, ‖f'‖) = 0.01`
+    /// in the scaled norm, at most 100 times the explicit-Euler guess.
+    fn initial_step(&mut self, t: f64, y: &[f64; N]) -> f64 {
         let f0 = self.k[0];
         let (mut dnf, mut dny) = (0.0, 0.0);
         for n in 0..N {
@@ -202,10 +181,10 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         h = h.min(self.tol.max_step);
         let mut y1 = *y;
         for n in 0..N {
-            y1[n] += dir * h * f0[n];
+            y1[n] += h * f0[n];
         }
         let mut f1 = [0.0; N];
-        self.system.rhs(t + dir * h, &y1, &mut f1);
+        self.system.rhs(t + h, &y1, &mut f1);
         self.stats.evaluations += 1;
         let mut der2 = 0.0;
         for n in 0..N {
@@ -219,18 +198,56 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         } else {
             (0.01 / der12).powf(1.0 / 8.0)
         };
-        dir * (100.0 * h).min(h1).min(self.tol.max_step)
+        (100.0 * h).min(h1).min(self.tol.max_step)
     }
 }
 
-/// Integrates `system` from `(t0, y0)` towards `t_end` with DOP853,
+/// Rejects a start or end time the loop cannot work with.
+fn check_times<const N: usize>(t0: f64, y0: &[f64; N], t_end: f64) -> Result<(), SimError> {
+    let bad = |name, value, expected| {
+        Err(SimError::Param(ParamError::InvalidParameter {
+            name,
+            value,
+            expected,
+        }))
+    };
+    if !t0.is_finite() {
+        return bad("t0", t0, "a finite start time");
+    }
+    if !(t_end.is_finite() && t_end >= t0) {
+        return bad("t_end", t_end, "a finite end time, not before the start");
+    }
+    if !y0.iter().all(|v| v.is_finite()) {
+        return Err(SimError::NonFiniteState { t: t0 });
+    }
+    Ok(())
+}
+
+/// Integrates `system` from `(t0, y0)` forward to `t_end` with DOP853,
 /// locating the system's events on the dense output and applying their
-/// actions, and reports each accepted step and event to `observer`.
+/// actions, and reports each accepted step (cut at events) and each event
+/// to `observer`, in time order.
+///
+/// An event function that is exactly zero where a step starts (at `t0`,
+/// where a `Reset` left it, or where the previous step ended on its zero)
+/// does not trigger there: it counts with the sign it takes just after the
+/// start (100 ulps of `|t| + h` into the step), so an event at `t0` is not reported and a reset
+/// onto the event surface (a bouncing ball) finds the next crossing even
+/// when one step spans the whole excursion. Events are found from sign
+/// changes between the ends of each step, so a function that crosses zero
+/// twice within one step is not seen, unless a `Continue` event in between
+/// changed it (after `Continue` events the rest of the step is searched
+/// again, so a counter in the event function works). Simultaneous events
+/// are offered in index order; after a `Reset` the others of the same step
+/// are dropped, and the integration restarts from the new state.
 ///
 /// # Errors
+/// [`ParamError::InvalidParameter`] for bad tolerances or a start or end
+/// time that is not finite (or `t_end < t0`),
 /// [`SimError::StepSizeTooSmall`] when the step underflows (a singularity),
-/// [`SimError::TooManySteps`] past `tol.max_steps`, and
-/// [`SimError::NonFiniteState`] when the state stops being finite.
+/// [`SimError::TooManySteps`] past `tol.max_steps` steps and events,
+/// [`SimError::NonFiniteState`] when the state is or becomes non-finite, and
+/// [`SimError::TooManyEvents`] past [`MAX_EVENTS`] event functions.
 pub fn integrate<S, O, const N: usize>(
     system: &mut S,
     t0: f64,
@@ -244,6 +261,14 @@ where
     O: Observer<S, N>,
 {
     tol.validate()?;
+    check_times(t0, &y0, t_end)?;
+    let n_events = system.event_count();
+    if n_events > MAX_EVENTS {
+        return Err(SimError::TooManyEvents {
+            count: n_events,
+            max: MAX_EVENTS,
+        });
+    }
     let mut it = Integrator {
         system,
         tol: *tol,
@@ -252,7 +277,7 @@ where
     };
     observer.start(&*it.system, t0, &y0);
     let (mut t, mut y) = (t0, y0);
-    if t_end <= t0 || t_end.is_nan() {
+    if t_end <= t0 {
         return Ok(Outcome {
             t,
             y,
@@ -260,30 +285,27 @@ where
             stats: it.stats,
         });
     }
-    let n_events = it.system.event_count();
     // Event values at the start of the current step (a small fixed buffer:
     // no model has more than a handful of events).
     let mut g_old = [0.0; MAX_EVENTS];
-    if n_events > MAX_EVENTS {
-        return Err(SimError::TooManyEvents {
-            count: n_events,
-            max: MAX_EVENTS,
-        });
-    }
     for (i, g) in g_old.iter_mut().enumerate().take(n_events) {
         *g = it.system.event(i, t, &y);
     }
-    it.eval(t, &y, 0);
-    let mut h = it.initial_step(t, &y, t_end);
+    it.system.rhs(t, &y, &mut it.k[0]);
+    it.stats.evaluations += 1;
+    let mut h = it.initial_step(t, &y);
     let mut last_rejected = false;
+    let mut events_located = 0;
     loop {
-        if it.stats.accepted + it.stats.rejected >= tol.max_steps {
+        if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
             return Err(SimError::TooManySteps {
                 t,
                 steps: tol.max_steps,
             });
         }
-        if 0.1 * h.abs() <= t.abs() * f64::EPSILON {
+        // Hairer's test, plus a NaN step (from a right-hand side that is
+        // NaN at the start) counting as too small.
+        if 0.1 * h <= t.abs() * f64::EPSILON || h.is_nan() {
             return Err(SimError::StepSizeTooSmall { t, h });
         }
         let mut last = false;
@@ -299,7 +321,7 @@ where
             last_rejected = true;
             continue;
         }
-        let fac11 = err.powf(EXPONENT);
+        let fac11 = eighth_root(err);
         if err > 1.0 {
             it.stats.rejected += 1;
             h /= (1.0 / FAC_MIN).min(fac11 / SAFETY);
@@ -312,76 +334,54 @@ where
         if !y_new.iter().all(|v| v.is_finite()) {
             return Err(SimError::NonFiniteState { t: t_new });
         }
+        it.last_stage(t_new, &y_new);
         // Events: which functions changed sign in the allowed direction?
         let mut g_new = [0.0; MAX_EVENTS];
-        let mut any = false;
-        for i in 0..n_events {
-            g_new[i] = it.system.event(i, t_new, &y_new);
-            any |= it.system.event_direction(i).crosses(g_old[i], g_new[i]);
-        }
-        let need_dense = any || observer.wants_dense(t, t_new);
-        let dense = if need_dense {
+        let ends = scan_step_ends(&*it.system, t_new, &y_new, &g_old[..n_events], &mut g_new);
+        // Asked on every accepted step, so the observer sees each full step.
+        let wanted = observer.wants_dense(t, t_new);
+        let coefficients = if ends.needs_dense() || wanted {
             Some(it.dense_coefficients(t, &y, &y_new, h))
         } else {
             None
         };
-        if any {
-            // Locate every triggered event on the dense output, earliest first.
-            let mut found: [(f64, usize); MAX_EVENTS] = [(f64::INFINITY, 0); MAX_EVENTS];
-            let mut n_found = 0;
-            if let Some(f) = dense.as_ref() {
-                for i in 0..n_events {
-                    if it.system.event_direction(i).crosses(g_old[i], g_new[i]) {
-                        let system = &*it.system;
-                        let te = locate(t, t_new, g_old[i], g_new[i], |tt| {
-                            let yy = interpolate(f, &y, (tt - t) / h);
-                            system.event(i, tt, &yy)
-                        });
-                        found[n_found] = (te, i);
-                        n_found += 1;
-                    }
+        let dense = coefficients.as_ref().map(|f| Polynomial { t, y: &y, h, f });
+        // Start of the part of the step not yet shown to the observer.
+        let (mut t_seen, mut y_seen) = (t, y);
+        let mut reset = None;
+        if let (true, Some(p)) = (ends.needs_dense(), dense) {
+            // Where the search for crossings starts, and the event values there.
+            let mut g_lo = g_old;
+            loop {
+                let found = crossings(&*it.system, &p, (t_seen, &g_lo[..n_events]), t_new, &g_new);
+                if found.is_empty() {
+                    break;
                 }
-            }
-            found[..n_found].sort_by(|a, b| a.0.total_cmp(&b.0));
-            let mut handled = false;
-            for &(te, i) in &found[..n_found] {
-                let ye = match dense.as_ref() {
-                    Some(f) => interpolate(f, &y, (te - t) / h),
-                    None => y_new,
-                };
-                let action = it.system.on_event(i, te, &ye);
-                let record = EventRecord {
-                    index: i,
-                    t: te,
-                    y_before: ye,
-                    y_after: match action {
+                for &(te, i) in found.as_slice() {
+                    events_located += 1;
+                    let ye = p.at(te);
+                    let action = it.system.on_event(i, te, &ye);
+                    let y_after = match action {
                         EventAction::Reset(r) => r,
-                        _ => ye,
-                    },
-                    action,
-                };
-                match action {
-                    EventAction::Continue => {
-                        observer.event(&*it.system, &record);
-                        it.system
-                            .commit_event(i, te, &record.y_before, &record.y_after);
+                        EventAction::Stop | EventAction::Continue => ye,
+                    };
+                    if te > t_seen {
+                        let piece = DenseStep::new((t_seen, &y_seen), (te, &ye), Some(p));
+                        observer.step(&*it.system, &piece);
+                        (t_seen, y_seen) = (te, ye);
                     }
-                    EventAction::Stop | EventAction::Reset(_) => {
-                        observer.step(
-                            &*it.system,
-                            &DenseStep {
-                                t_old: t,
-                                t_new: te,
-                                y_old: &y,
-                                y_new: &ye,
-                                h,
-                                dense: dense.as_ref(),
-                            },
-                        );
-                        observer.event(&*it.system, &record);
-                        it.system
-                            .commit_event(i, te, &record.y_before, &record.y_after);
-                        if matches!(action, EventAction::Stop) {
+                    let record = EventRecord {
+                        index: i,
+                        t: te,
+                        y_before: ye,
+                        y_after,
+                        action,
+                    };
+                    observer.event(&*it.system, &record);
+                    it.system.commit_event(i, te, &ye, &y_after);
+                    match action {
+                        EventAction::Continue => {}
+                        EventAction::Stop => {
                             return Ok(Outcome {
                                 t: te,
                                 y: ye,
@@ -389,44 +389,59 @@ where
                                 stats: it.stats,
                             });
                         }
-                        // Reset: start afresh from the new state at te.
-                        t = te;
-                        y = record.y_after;
-                        for (j, g) in g_old.iter_mut().enumerate().take(n_events) {
-                            *g = it.system.event(j, t, &y);
+                        EventAction::Reset(_) => {
+                            reset = Some((te, y_after));
+                            break;
                         }
-                        it.eval(t, &y, 0);
-                        // Keep the step size but never step past the old step end.
-                        h = h.min(tol.max_step);
-                        last_rejected = false;
-                        handled = true;
-                        break;
                     }
                 }
-            }
-            if handled {
-                if t >= t_end {
-                    return Ok(Outcome {
-                        t,
-                        y,
-                        termination: Termination::EndTime,
-                        stats: it.stats,
+                if reset.is_some() || t_seen >= t_new {
+                    break;
+                }
+                // Every event so far continued, but `commit_event` may have
+                // changed the event functions (a turn counter): search the
+                // rest of the step again with their current values. Events
+                // count towards the step budget, so a cascade cannot hang.
+                if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
+                    return Err(SimError::TooManySteps {
+                        t: t_seen,
+                        steps: tol.max_steps,
                     });
                 }
-                continue;
+                for i in 0..n_events {
+                    g_lo[i] = it.system.event(i, t_seen, &y_seen);
+                    g_new[i] = it.system.event(i, t_new, &y_new);
+                }
             }
         }
-        observer.step(
-            &*it.system,
-            &DenseStep {
-                t_old: t,
-                t_new,
-                y_old: &y,
-                y_new: &y_new,
-                h,
-                dense: dense.as_ref(),
-            },
-        );
+        if let Some((te, y_after)) = reset {
+            // Start afresh from the new state, with the step size that was
+            // just accepted (the controller shrinks it if the new state
+            // needs that).
+            (t, y) = (te, y_after);
+            if !y.iter().all(|v| v.is_finite()) {
+                return Err(SimError::NonFiniteState { t });
+            }
+            for (j, g) in g_old.iter_mut().enumerate().take(n_events) {
+                *g = it.system.event(j, t, &y);
+            }
+            it.system.rhs(t, &y, &mut it.k[0]);
+            it.stats.evaluations += 1;
+            last_rejected = false;
+            if t >= t_end {
+                return Ok(Outcome {
+                    t,
+                    y,
+                    termination: Termination::EndTime,
+                    stats: it.stats,
+                });
+            }
+            continue;
+        }
+        if t_new > t_seen {
+            let piece = DenseStep::new((t_seen, &y_seen), (t_new, &y_new), dense);
+            observer.step(&*it.system, &piece);
+        }
         // Advance (FSAL: stage 12 is f(t_new, y_new)).
         it.k[0] = it.k[STAGES];
         t = t_new;
@@ -440,7 +455,8 @@ where
                 stats: it.stats,
             });
         }
-        // Hairer's controller: new step from the error, bounded in ratio.
+        // Hairer's controller: new step from the error, bounded in ratio,
+        // and not larger than the last one right after a rejection.
         // (Hairer's Lund stabilisation exponent beta is 0 for DOP853, so the
         // previous error does not enter.)
         let fac = (fac11 / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
@@ -452,6 +468,3 @@ where
         h = h_new;
     }
 }
-
-/// Most event functions one system may have.
-pub const MAX_EVENTS: usize = 8;

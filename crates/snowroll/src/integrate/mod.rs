@@ -11,9 +11,9 @@
 //! `ode_solvers` 0.6 has no event location, and `diffsol` 0.18 has no direction
 //! filter, allocates state on the heap and builds slowly. So the stepper is
 //! written once, generic over `const N: usize` with `[f64; N]` state (no heap
-//! in the step loop), with the tableau as data ([`tableau`]), Hairer's error
+//! in the step loop), with the tableau as data (`tableau.rs`), Hairer's error
 //! norm and step-size controller, and Illinois root finding on the dense
-//! output ([`events`]).
+//! output (`events.rs`).
 //!
 //! # Use
 //! A model implements [`OdeSystem`]; [`integrate`] runs it from `(t0, y0)`
@@ -21,11 +21,17 @@
 //! every event to an [`Observer`], which decides what is recorded (nothing,
 //! every step, or values at requested times from the dense output).
 
+mod dense;
 mod dop853;
 mod events;
 mod tableau;
 
-pub use dop853::{integrate, DenseStep, Stats};
+pub use dense::DenseStep;
+pub use dop853::{integrate, Stats};
+
+/// Most event functions one system may have (they live in fixed buffers,
+/// so the step loop does not allocate).
+pub const MAX_EVENTS: usize = 8;
 
 use crate::error::SimError;
 
@@ -49,6 +55,16 @@ impl Direction {
             Direction::Rising => rising,
             Direction::Falling => falling,
             Direction::Either => rising || falling,
+        }
+    }
+
+    /// Whether a step that starts with the function at exactly zero and
+    /// ends at `after` can hold a crossing in this direction.
+    pub(crate) fn may_end_crossing(self, after: f64) -> bool {
+        match self {
+            Direction::Rising => after >= 0.0,
+            Direction::Falling => after <= 0.0,
+            Direction::Either => true,
         }
     }
 }
@@ -118,15 +134,18 @@ pub trait Observer<S: ?Sized, const N: usize> {
     fn start(&mut self, _system: &S, _t0: f64, _y0: &[f64; N]) {}
 
     /// Whether `step` will need the dense output on `(t_old, t_new]` (it costs
-    /// three more evaluations of `f`).
+    /// three more evaluations of `f`). Asked once for every accepted step,
+    /// with the whole step, before it is cut at any event.
     fn wants_dense(&self, _t_old: f64, _t_new: f64) -> bool {
         false
     }
 
-    /// One accepted step, truncated at an event that stopped or reset it.
+    /// One accepted step, or a piece of it: a step is cut at each located
+    /// event, so the pieces and the events arrive in time order, each piece
+    /// starting where the previous one (or the event's `y_after`) left off.
     fn step(&mut self, _system: &S, _step: &DenseStep<'_, N>) {}
 
-    /// One located event, after the step that led to it and before
+    /// One located event, after the step piece that ends at it and before
     /// [`OdeSystem::commit_event`] updates the system.
     fn event(&mut self, _system: &S, _event: &EventRecord<N>) {}
 }
@@ -146,7 +165,8 @@ pub struct Tolerances {
     pub atol: f64,
     /// Largest step, in the time unit. Default: unbounded.
     pub max_step: f64,
-    /// Most accepted plus rejected steps before giving up. Default 10^8.
+    /// Most accepted plus rejected steps, plus located events, before
+    /// giving up. Default 10^8.
     pub max_steps: u64,
 }
 

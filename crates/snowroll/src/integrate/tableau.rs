@@ -418,3 +418,64 @@ pub(super) const D: [[f64; 16]; 4] = [
         -149.72683625798564,
     ],
 ];
+
+#[cfg(test)]
+mod tests {
+    //! The tableau against the order conditions it must satisfy, so that a
+    //! mistyped coefficient cannot hide behind the convergence tests.
+    use super::{A, B, C, E3, E5};
+
+    /// Sums of at most 16 products of coefficients below 50 in size,
+    /// rounded to f64: exact conditions hold to ~1e-15.
+    const TABLEAU_TOL: f64 = 1e-14;
+    /// A condition of the next order fails by far more than rounding
+    /// (measured 3e-5 and more), which shows the order is exactly 8.
+    const NEXT_ORDER_MISS: f64 = 1e-6;
+
+    /// `Σ_i w_i c_i^(k−1)`: the weights applied to `t^(k−1)`.
+    fn moment(w: &[f64], k: i32) -> f64 {
+        w.iter().zip(C).map(|(wi, ci)| wi * ci.powi(k - 1)).sum()
+    }
+
+    #[test]
+    fn stage_weights_sum_to_the_nodes() {
+        for (row, c) in A.iter().zip(C) {
+            let sum: f64 = row.iter().sum();
+            assert!((sum - c).abs() <= TABLEAU_TOL, "{sum} vs {c}");
+        }
+        // Stage 12 (index 12) is f(t + h, y_new): its row is B.
+        assert!(A[12][..12].iter().zip(B).all(|(a, b)| (a - b).abs() <= 0.0));
+    }
+
+    #[test]
+    fn solution_weights_integrate_polynomials_up_to_degree_7() {
+        // Quadrature conditions Σ b_i c_i^(k−1) = 1/k, order k ≤ 8 ...
+        for k in 1..=8 {
+            let got = moment(&B, k);
+            assert!((got - 1.0 / f64::from(k)).abs() <= TABLEAU_TOL, "k = {k}");
+        }
+        assert!((moment(&B, 9) - 1.0 / 9.0).abs() > NEXT_ORDER_MISS);
+        // ... and Σ b_i a_ij c_j^(k−1) = 1/(k(k+1)), trees of order k + 1 ≤ 8.
+        for k in 1..=8 {
+            let got: f64 = B.iter().zip(A).map(|(b, row)| b * moment(&row, k)).sum();
+            let want = 1.0 / f64::from(k * (k + 1));
+            if k < 8 {
+                assert!((got - want).abs() <= TABLEAU_TOL, "k = {k}");
+            } else {
+                assert!((got - want).abs() > NEXT_ORDER_MISS);
+            }
+        }
+    }
+
+    #[test]
+    fn error_estimators_vanish_on_low_degree_polynomials() {
+        // E5 = b − b̂ with b̂ of order 5: it annihilates t^0..t^4, not t^5;
+        // E3 with a 3rd-order b̂: t^0..t^2, not t^3.
+        for (e, order) in [(&E5[..], 5), (&E3[..], 3)] {
+            for k in 1..=order {
+                assert!(moment(e, k).abs() <= TABLEAU_TOL, "order {order}, k = {k}");
+            }
+            assert!(moment(e, order + 1).abs() > NEXT_ORDER_MISS);
+        }
+    }
+}
