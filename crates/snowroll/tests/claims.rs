@@ -40,7 +40,11 @@ fn claim_ids_are_unique_and_every_claim_cites_the_note() {
     for c in CLAIMS {
         let r = c.claim.paper_ref;
         assert!(
-            r.contains("eq.") || r.contains("eqs.") || r.contains('§') || r.contains("fn.") || r.contains("App."),
+            r.contains("eq.")
+                || r.contains("eqs.")
+                || r.contains('§')
+                || r.contains("fn.")
+                || r.contains("App."),
             "{}: {r}",
             c.claim.id
         );

@@ -219,10 +219,12 @@ fn lagrangian_vs_energy(lab: &Lab) -> Result<Finding, SimError> {
             // Eqs. (17), (18) and the corrected (19): ∂𝓛/∂x gains ∂T/∂x = (3/4)ρ l b v²,
             // so (3πr²/2) a (1 + b²/6π²r²) = π r² G − 3bv²/4 − (C/2)(3rb + b²) (per ρl).
             let lhs = 1.5 * PI * r2 * (1.0 + b * b / (6.0 * PI * PI * r2));
-            let a_corrected = (PI * r2 * gs - 0.75 * b * v * v - 0.5 * gc * (3.0 * r * b + b * b)) / lhs;
+            let a_corrected =
+                (PI * r2 * gs - 0.75 * b * v * v - 0.5 * gc * (3.0 * r * b + b * b)) / lhs;
             worst_corrected =
                 worst_corrected.max((a_corrected - energy.acceleration(s, x, v)).abs() / gs);
-            worst_printed = worst_printed.max((printed.acceleration(s, x, v) - energy.acceleration(s, x, v)).abs() / gs);
+            worst_printed = worst_printed
+                .max((printed.acceleration(s, x, v) - energy.acceleration(s, x, v)).abs() / gs);
         }
     }
     let printed_terminal = printed.terminal_fraction().unwrap_or(f64::NAN);
@@ -268,9 +270,13 @@ fn loney_closed_form(lab: &Lab) -> Result<Finding, SimError> {
         }
     }
     Ok(Finding {
-        measured: format!("max relative |v_ODE − v_Loney| over 0 ≤ x ≤ 10 km, 3 scenarios: {worst:.2e}"),
+        measured: format!(
+            "max relative |v_ODE − v_Loney| over 0 ≤ x ≤ 10 km, 3 scenarios: {worst:.2e}"
+        ),
         verdict: holds_if(worst < 1e-9, Verdict::Refuted),
-        evidence: "v² = 2G s/(5b) + K s^(−7/3), s = π r0² + b x, matches DOP853 at rtol 1e-10 within 1e-9".to_string(),
+        evidence:
+            "v² = 2G s/(5b) + K s^(−7/3), s = π r0² + b x, matches DOP853 at rtol 1e-10 within 1e-9"
+                .to_string(),
     })
 }
 
@@ -339,7 +345,9 @@ fn terminal_values(lab: &Lab) -> Result<Finding, SimError> {
     Ok(Finding {
         measured: format!("a/G at x = 10⁷ r0: {}", parts.join("; ")),
         verdict: holds_if(ok, Verdict::Refuted),
-        evidence: format!("largest relative difference simulation vs closed form: {worst:.1e} (< 1e-3)"),
+        evidence: format!(
+            "largest relative difference simulation vs closed form: {worst:.1e} (< 1e-3)"
+        ),
     })
 }
 
@@ -369,10 +377,7 @@ fn loney_limit(lab: &Lab) -> Result<Finding, SimError> {
 
 /// Late-time |a − a∞| at two distances and the log-slope in r.
 fn approach_slope(kind: ModelKind, s: &Scenario, x1: f64, x2: f64) -> Result<f64, SimError> {
-    let a_inf = kind
-        .terminal_fraction()
-        .unwrap_or(f64::NAN)
-        * s.g_along();
+    let a_inf = kind.terminal_fraction().unwrap_or(f64::NAN) * s.g_along();
     let at = |x: f64| -> Result<(f64, f64), SimError> {
         let traj = run(
             kind,
@@ -458,7 +463,8 @@ fn stall_threshold(lab: &Lab) -> Result<Finding, SimError> {
         &with(&s, |f| f.slope_deg = crit_deg + 0.01)?,
         &opts,
     )?;
-    let ok = below.stop.reason == StopReason::DoesNotStart && above.stop.reason == StopReason::EndTime;
+    let ok =
+        below.stop.reason == StopReason::DoesNotStart && above.stop.reason == StopReason::EndTime;
     Ok(Finding {
         measured: format!(
             "eq. (14), b = {} m, r0 = {} m: critical slope {crit_deg:.4}°; at −0.01°: {}; at +0.01°: {}",
@@ -480,7 +486,10 @@ fn snowless(lab: &Lab) -> Result<Finding, SimError> {
         ..SimOptions::default()
     };
     let mut worst: f64 = 0.0;
-    for kind in ModelKind::ALL.into_iter().filter(|k| k.derivation().is_some() || *k == ModelKind::Loney) {
+    for kind in ModelKind::ALL
+        .into_iter()
+        .filter(|k| k.derivation().is_some() || *k == ModelKind::Loney)
+    {
         for p in run(kind, &s, &opts)?.samples {
             worst = worst.max((p.a_m_s2 / s.g_along() - 2.0 / 3.0).abs());
             if p.t_s > 0.0 {
@@ -490,9 +499,12 @@ fn snowless(lab: &Lab) -> Result<Finding, SimError> {
         }
     }
     Ok(Finding {
-        measured: format!("b = 0: max |a/G − 2/3| and max relative |x − G t²/3| over every model: {worst:.1e}"),
+        measured: format!(
+            "b = 0: max |a/G − 2/3| and max relative |x − G t²/3| over every model: {worst:.1e}"
+        ),
         verdict: holds_if(worst < 1e-12, Verdict::Refuted),
-        evidence: "eqs. (95), (100), (102), (110), (114), (118), (122), (126), (130) all give 2G/3".to_string(),
+        evidence: "eqs. (95), (100), (102), (110), (114), (118), (122), (126), (130) all give 2G/3"
+            .to_string(),
     })
 }
 
@@ -511,7 +523,12 @@ fn v62(r0: f64, b: f64, gs: f64, gc: f64, th: f64) -> f64 {
 /// printed are not.
 fn first_turn_equivalence(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (r0, b, gs, gc) = (s.initial_radius(), s.snow_depth(), s.g_along(), s.g_normal());
+    let (r0, b, gs, gc) = (
+        s.initial_radius(),
+        s.snow_depth(),
+        s.g_along(),
+        s.g_normal(),
+    );
     let mut worst_corr: f64 = 0.0;
     let mut worst_63: f64 = 0.0;
     let mut worst_69: f64 = 0.0;
@@ -521,12 +538,15 @@ fn first_turn_equivalence(lab: &Lab) -> Result<Finding, SimError> {
         for v in [0.3, 1.0, 2.5] {
             let ic = ic56(r0, b, th);
             // (58), torque (per unit m0, m → m0 corrected):
-            let torque = gs * (r0 + b * th / PI - b / PI * th.sin()) - b / PI * (1.0 - th.cos()) * gc;
+            let torque =
+                gs * (r0 + b * th / PI - b / PI * th.sin()) - b / PI * (1.0 - th.cos()) * gc;
             let a58 = (r0 * torque - b * v * v * (1.0 - th.cos()) / PI) / ic;
             // (64), energy: dT/dt = −dV/dt with dV/dθ by central difference of (62)
             // and dT/dt = I_C v a/r0² + m0 b v³ (1 − cos θ)/(π r0²) (eq. (59)).
             let dv_dth = (v62(r0, b, gs, gc, th + h) - v62(r0, b, gs, gc, th - h)) / (2.0 * h);
-            let a64 = (-dv_dth * v / r0 - b * v.powi(3) * (1.0 - th.cos()) / (PI * r0 * r0)) * r0 * r0 / (ic * v);
+            let a64 =
+                (-dv_dth * v / r0 - b * v.powi(3) * (1.0 - th.cos()) / (PI * r0 * r0)) * r0 * r0
+                    / (ic * v);
             // (69), Lagrangian with θ: d/dt(I_C θ̇) = ∂T/∂θ − ∂V/∂θ,
             // I_C' = (2 b r0/π)(1 − cos θ) (eq. (56)).
             let dic = 2.0 * b * r0 / PI * (1.0 - th.cos());
@@ -534,8 +554,10 @@ fn first_turn_equivalence(lab: &Lab) -> Result<Finding, SimError> {
             let a69 = r0 * (-0.5 * dic * w * w - dv_dth) / ic;
             worst_corr = worst_corr.max(((a58 - a64).abs()).max((a58 - a69).abs()) / gs);
             // (63) as printed: θ/π in place of bθ/π in −dV/dt.
-            let minus_dv_63 = (v / r0) * (gs * r0 + (th / PI - b / PI * th.sin()) * gs - gc * b / PI * (1.0 - th.cos()));
-            let a63 = (minus_dv_63 - b * v.powi(3) * (1.0 - th.cos()) / (PI * r0 * r0)) * r0 * r0 / (ic * v);
+            let minus_dv_63 = (v / r0)
+                * (gs * r0 + (th / PI - b / PI * th.sin()) * gs - gc * b / PI * (1.0 - th.cos()));
+            let a63 = (minus_dv_63 - b * v.powi(3) * (1.0 - th.cos()) / (PI * r0 * r0)) * r0 * r0
+                / (ic * v);
             worst_63 = worst_63.max((a63 - a58).abs() / gs);
             // (69) as printed: b/π in place of bθ/π.
             let torque_69 = gs * (r0 + b / PI - b / PI * th.sin()) - b / PI * (1.0 - th.cos()) * gc;
@@ -562,7 +584,7 @@ fn eq54_erratum(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
     let r0 = s.initial_radius();
     let (th, w, wdot): (f64, f64, f64) = (1.1, 3.0, 2.0); // θ, θ̇, θ̈: a generic state (rad, rad/s, rad/s²)
-    // Exact cross product of the O(b) kinematics (43), (45) with m = m0(1 + bθ/πr0), per m0.
+                                                          // Exact cross product of the O(b) kinematics (43), (45) with m = m0(1 + bθ/πr0), per m0.
     let exact = |b: f64| {
         let dx = -b / PI * (1.0 - th.cos());
         let ycm = r0 - b / PI * th.sin();
@@ -570,10 +592,12 @@ fn eq54_erratum(lab: &Lab) -> Result<Finding, SimError> {
         let ay = -b / PI * (wdot * th.cos() - w * w * th.sin());
         (1.0 + b * th / (PI * r0)) * (dx * ay - ycm * ax)
     };
-    let corrected =
-        |b: f64| -(r0 * r0 * wdot + b * r0 / PI * (th * wdot - 2.0 * wdot * th.sin() - w * w * th.cos()));
-    let printed =
-        |b: f64| -(r0 * r0 * wdot + b * r0 / PI * (th * wdot - 2.0 * w * th.sin() - w * w * th.cos()));
+    let corrected = |b: f64| {
+        -(r0 * r0 * wdot + b * r0 / PI * (th * wdot - 2.0 * wdot * th.sin() - w * w * th.cos()))
+    };
+    let printed = |b: f64| {
+        -(r0 * r0 * wdot + b * r0 / PI * (th * wdot - 2.0 * w * th.sin() - w * w * th.cos()))
+    };
     let (b1, b2) = (1e-3 * r0, 1e-4 * r0);
     let c_ratio = (exact(b1) - corrected(b1)).abs() / (exact(b2) - corrected(b2)).abs();
     let p_ratio = (exact(b1) - printed(b1)).abs() / (exact(b2) - printed(b2)).abs();
@@ -613,7 +637,6 @@ fn eq70_mass(lab: &Lab) -> Result<Finding, SimError> {
         evidence: "the printed form doubles the mass and contradicts its own next two forms and eq. (75)".to_string(),
     })
 }
-
 
 /// The last checkpoint of a long run (the means over its last decade of turns).
 fn last_window(table: &TurnTable) -> Option<&crate::models::TurnCheckpoint> {
@@ -760,7 +783,12 @@ fn collision_loss(lab: &Lab) -> Result<Finding, SimError> {
 /// (88) with (87): the energy balance of a turn.
 fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (b, r0, gs, gc) = (s.snow_depth(), s.initial_radius(), s.g_along(), s.g_normal());
+    let (b, r0, gs, gc) = (
+        s.snow_depth(),
+        s.initial_radius(),
+        s.g_along(),
+        s.g_normal(),
+    );
     let rho_l = s.density() * s.length();
     let exact = lab.long_run(true)?;
     let paper = lab.long_run(false)?;
@@ -784,10 +812,16 @@ fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
     let mut worst_printed: f64 = 0.0;
     for (re, rp) in exact.rows.iter().zip(&paper.rows).take(50) {
         let k = re.turn as f64;
-        worst_exact = worst_exact.max((predict(k, re.v_start_m_s, false) / re.v_end_m_s - 1.0).abs());
-        worst_paper = worst_paper.max((predict(k, rp.v_start_m_s, false) / rp.v_end_m_s - 1.0).abs());
+        worst_exact =
+            worst_exact.max((predict(k, re.v_start_m_s, false) / re.v_end_m_s - 1.0).abs());
+        worst_paper =
+            worst_paper.max((predict(k, rp.v_start_m_s, false) / rp.v_end_m_s - 1.0).abs());
         let p = predict(k, re.v_start_m_s, true);
-        worst_printed = worst_printed.max(if p.is_finite() { (p / re.v_end_m_s - 1.0).abs() } else { f64::INFINITY });
+        worst_printed = worst_printed.max(if p.is_finite() {
+            (p / re.v_end_m_s - 1.0).abs()
+        } else {
+            f64::INFINITY
+        });
     }
     let ok = worst_exact < 1e-9 && worst_printed > 1e-2;
     Ok(Finding {

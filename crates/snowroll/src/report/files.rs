@@ -28,6 +28,9 @@ pub enum ReportError {
     /// A figure could not be drawn.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// A simulation behind the report failed.
+    #[error(transparent)]
+    Simulation(#[from] crate::error::SimError),
     /// JSON serialisation failed.
     #[error("JSON: {0}")]
     Json(#[from] serde_json::Error),

@@ -34,6 +34,8 @@ mod files;
 mod html;
 #[cfg(feature = "plot")]
 mod markdown;
+#[cfg(feature = "plot")]
+mod paper;
 
 #[cfg(feature = "plot")]
 pub use animation::{Animation, Frame};
@@ -41,3 +43,5 @@ pub use animation::{Animation, Frame};
 pub use document::{params_of, Figure, Metadata, RenderedFigure, Report};
 #[cfg(feature = "plot")]
 pub use files::{figure_csv, ReportError};
+#[cfg(feature = "plot")]
+pub use paper::{build_paper_report, paper_steps, Progress};

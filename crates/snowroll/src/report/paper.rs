@@ -1,0 +1,408 @@
+//! `snowroll paper`: runs every claim of [`CLAIMS`] and the scenarios behind
+//! the figures, and assembles the [`Report`].
+//!
+//! The figures only read results: trajectories of every model on the lab's
+//! scenario, the long multi-turn runs the claims already computed, and their
+//! per-turn tables.
+
+use super::{Animation, ClaimResult, Figure, Lab, Metadata, Report, ReportError, CLAIMS};
+use crate::models::{ModelKind, TurnTable};
+use crate::scenario::ScenarioFile;
+use crate::plot::{Axis, Chart, Legend, Series, Style};
+use crate::trajectory::{Sampling, SimOptions, Trajectory};
+
+/// End of the runs shown against time, s.
+const T_END: f64 = 100.0;
+/// First time of the logarithmic time grid, s.
+const T_FIRST: f64 = 1e-3;
+/// Points of the logarithmic time grid.
+const N_TIMES: usize = 300;
+/// Distance of the approach figure, m (10⁷ r0 for the default r0).
+const X_FAR: f64 = 1e6;
+/// Turns shown in full in the in-turn acceleration figure and the animation.
+const TURNS_SHOWN: u64 = 6;
+/// Frames of the animation.
+const FRAMES: usize = 600;
+
+/// One step of the work, for a progress display.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress<'a> {
+    /// Steps done so far.
+    pub done: usize,
+    /// Steps in all.
+    pub total: usize,
+    /// What is being done now.
+    pub label: &'a str,
+}
+
+/// Number of progress steps of [`build_paper_report`].
+pub fn paper_steps() -> usize {
+    CLAIMS.len() + 4
+}
+
+fn log_times() -> Vec<f64> {
+    let (a, b) = (T_FIRST.ln(), T_END.ln());
+    (0..N_TIMES)
+        .map(|i| (a + (b - a) * i as f64 / (N_TIMES - 1) as f64).exp())
+        .collect()
+}
+
+fn run(kind: ModelKind, lab: &Lab, opts: &SimOptions) -> Result<Trajectory, ReportError> {
+    Ok(kind.build().simulate(lab.scenario(), opts)?)
+}
+
+/// Mid-turn time and in-turn mean acceleration of each turn up to `t_max`.
+fn turn_means(table: &TurnTable, t_max: f64, g: f64) -> Vec<(f64, f64)> {
+    table
+        .rows
+        .iter()
+        .take_while(|r| r.t_end_s <= t_max)
+        .map(|r| (0.5 * (r.t_start_s + r.t_end_s), r.mean_a_turn_m_s2 / g))
+        .collect()
+}
+
+/// About `n` turn indices spread evenly in log k over the table.
+fn log_spread(len: usize, n: usize) -> Vec<usize> {
+    let mut out: Vec<usize> = (0..n)
+        .map(|i| ((len as f64).powf(i as f64 / (n - 1) as f64) - 1.0).round() as usize)
+        .filter(|&k| k < len)
+        .collect();
+    out.dedup();
+    out
+}
+
+/// Runs every claim and every figure's scenarios and assembles the report.
+/// `progress` is called before each step.
+///
+/// # Errors
+/// [`ReportError`] when a simulation or a figure fails.
+pub fn build_paper_report(
+    lab: &Lab,
+    progress: &mut dyn FnMut(Progress<'_>),
+) -> Result<Report, ReportError> {
+    let total = paper_steps();
+    let mut step = 0;
+    let mut tick = |label: &str| {
+        progress(Progress {
+            done: step,
+            total,
+            label,
+        });
+        step += 1;
+    };
+    let s = lab.scenario();
+    let g = s.g_along();
+    let opts = SimOptions::default();
+
+    let mut claims: Vec<ClaimResult> = Vec::with_capacity(CLAIMS.len());
+    for check in CLAIMS {
+        tick(check.claim.id);
+        claims.push(check.run(lab)?);
+    }
+
+    tick("trajectories of every model");
+    let timed = SimOptions {
+        t_end: T_END,
+        sampling: Sampling::Times(log_times()),
+        ..opts.clone()
+    };
+    let circular: Vec<ModelKind> = ModelKind::ALL
+        .into_iter()
+        .filter(|k| k.derivation().is_some() || *k == ModelKind::Loney)
+        .collect();
+    let mut trajectories = Vec::new();
+    for kind in &circular {
+        trajectories.push(run(*kind, lab, &timed)?);
+    }
+    let paper = lab.long_run(false)?;
+    let exact = lab.long_run(true)?;
+
+    let label = |k: ModelKind| format!("{} {}", k.id(), k.equation());
+    let style = |k: ModelKind| match k {
+        ModelKind::Loney | ModelKind::QuasiCircular | ModelKind::EnergyThin => Style::Dashed,
+        _ => Style::Line,
+    };
+    let mut accel = Chart::new(
+        "acceleration-all-models",
+        "Acceleration of every model",
+        Axis::log("time t", "s").column("t_s"),
+        Axis::linear("a / (g sin α)", "1").column("a_over_g_sin_alpha"),
+    )
+    .with_legend(Legend::LowerLeft);
+    let mut speed = Chart::new(
+        "speed-all-models",
+        "Speed of every model",
+        Axis::linear("time t", "s").column("t_s"),
+        Axis::linear("speed v", "m/s").column("v_m_s"),
+    )
+    .with_legend(Legend::UpperLeft);
+    let mut radius = Chart::new(
+        "radius-all-models",
+        "Radius of the log",
+        Axis::linear("time t", "s").column("t_s"),
+        Axis::linear("radius r", "m").column("r_m"),
+    )
+    .with_legend(Legend::UpperLeft);
+    for traj in &trajectories {
+        let k = traj.model;
+        accel = accel.with_series(
+            Series::from_samples(&label(k), &traj.samples, |p| p.t_s, |p| p.a_m_s2 / g)
+                .style(style(k)),
+        );
+        speed = speed.with_series(
+            Series::from_samples(&label(k), &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style(k)),
+        );
+        radius = radius.with_series(
+            Series::from_samples(&label(k), &traj.samples, |p| p.t_s, |p| p.r_m).style(style(k)),
+        );
+    }
+    for (table, kind) in [(paper, ModelKind::Turns), (exact, ModelKind::TurnsExact)] {
+        let name = format!("{} {}, mean over each turn", kind.id(), kind.equation());
+        accel = accel
+            .with_series(Series::new(&name, turn_means(table, T_END, g)).style(Style::Markers));
+        let speeds: Vec<(f64, f64)> = table
+            .rows
+            .iter()
+            .take_while(|r| r.t_start_s <= T_END)
+            .map(|r| (r.t_start_s, r.v_start_m_s))
+            .collect();
+        speed = speed.with_series(
+            Series::new(
+                &format!("{} {}, start of each turn", kind.id(), kind.equation()),
+                speeds,
+            )
+            .style(Style::Markers),
+        );
+        let radii: Vec<(f64, f64)> = table
+            .rows
+            .iter()
+            .take_while(|r| r.t_start_s <= T_END)
+            .map(|r| {
+                (
+                    r.t_start_s,
+                    s.initial_radius() + r.turn as f64 * s.snow_depth(),
+                )
+            })
+            .collect();
+        radius = radius.with_series(
+            Series::new(
+                &format!("{} {}, r_k = r0 + k b", kind.id(), kind.equation()),
+                radii,
+            )
+            .style(Style::Markers),
+        );
+    }
+
+    tick("approach to the terminal accelerations");
+    let mut approach = Chart::new(
+        "approach-to-terminal",
+        "Approach to the terminal acceleration",
+        Axis::log("distance x", "m").column("x_m"),
+        Axis::log("|a − a_term| / (g sin α)", "1").column("deviation_over_g_sin_alpha"),
+    )
+    .with_legend(Legend::LowerLeft);
+    let far = SimOptions {
+        t_end: 1e8,
+        x_end: Some(X_FAR),
+        sampling: Sampling::Steps,
+        ..opts.clone()
+    };
+    for kind in circular
+        .iter()
+        .copied()
+        .filter(|k| *k != ModelKind::Snowless && *k != ModelKind::Loney)
+    {
+        let a_term = kind.terminal_fraction().unwrap_or(f64::NAN);
+        let traj = run(kind, lab, &far)?;
+        let points: Vec<(f64, f64)> = traj
+            .samples
+            .iter()
+            .map(|p| (p.x_m, (p.a_m_s2 / g - a_term).abs()))
+            .filter(|&(x, d)| x > 0.0 && d > 1e-13)
+            .collect();
+        approach = approach.with_series(
+            Series::new(&format!("{} (a_term = {a_term:.4} G)", label(kind)), points)
+                .style(style(kind)),
+        );
+    }
+
+    tick("turn-by-turn model");
+    let first_turns = SimOptions {
+        turns: Some(TURNS_SHOWN),
+        t_end: 1e6,
+        sampling: Sampling::Every(0.002),
+        ..opts.clone()
+    };
+    let turns_traj = run(ModelKind::Turns, lab, &first_turns)?;
+    let exact_traj = run(ModelKind::TurnsExact, lab, &first_turns)?;
+    let in_turn = Chart::new(
+        "turns-acceleration",
+        "Acceleration over the first turns (with a collision at each full turn)",
+        Axis::linear("time t", "s").column("t_s"),
+        Axis::linear("a / (g sin α)", "1").column("a_over_g_sin_alpha"),
+    )
+    .with_legend(Legend::LowerRight)
+    .with_series(Series::from_samples(
+        &label(ModelKind::Turns),
+        &turns_traj.samples,
+        |p| p.t_s,
+        |p| p.a_m_s2 / g,
+    ))
+    .with_series(
+        Series::from_samples(
+            &label(ModelKind::TurnsExact),
+            &exact_traj.samples,
+            |p| p.t_s,
+            |p| p.a_m_s2 / g,
+        )
+        .style(Style::Dashed),
+    );
+
+    let mut means = Chart::new(
+        "turns-long-run-means",
+        "Long-run mean acceleration of the turn-by-turn model",
+        Axis::log("turns completed K", "1").column("turns"),
+        Axis::linear("mean a / (g sin α)", "1").column("mean_a_over_g_sin_alpha"),
+    )
+    .with_legend(Legend::UpperRight);
+    let checkpoints = &paper.summary.checkpoints;
+    let k_span: Vec<f64> = checkpoints.iter().map(|c| c.turns as f64).collect();
+    let flat = |v: f64| -> Vec<(f64, f64)> { k_span.iter().map(|&k| (k, v)).collect() };
+    means = means
+        .with_series(Series::new(
+            "in turn, mean over turns K/10 … K",
+            checkpoints
+                .iter()
+                .map(|c| (c.turns as f64, c.window_mean_a_turn_over_g))
+                .collect(),
+        ))
+        .with_series(Series::new(
+            "with collisions, mean over turns K/10 … K",
+            checkpoints
+                .iter()
+                .map(|c| (c.turns as f64, c.window_mean_a_with_collision_over_g))
+                .collect(),
+        ))
+        .with_series(
+            Series::new(
+                "in turn, mean over all K turns",
+                checkpoints
+                    .iter()
+                    .map(|c| (c.turns as f64, c.mean_a_turn_over_g))
+                    .collect(),
+            )
+            .style(Style::Markers),
+        )
+        .with_series(
+            Series::new(
+                "with collisions, mean over all K turns",
+                checkpoints
+                    .iter()
+                    .map(|c| (c.turns as f64, c.mean_a_with_collision_over_g))
+                    .collect(),
+            )
+            .style(Style::Markers),
+        )
+        .with_series(Series::new("note, eq. (79): 4/9", flat(4.0 / 9.0)).style(Style::Dashed))
+        .with_series(Series::new("1/3", flat(1.0 / 3.0)).style(Style::Dashed))
+        .with_series(Series::new("1/4", flat(0.25)).style(Style::Dashed));
+
+    // Energy ledger: potential energy released (T_end − T_beg within each
+    // turn, energy being conserved in the turn), kinetic energy, and the
+    // collisions' losses, summed over turns.
+    let (b, r0) = (s.snow_depth(), s.initial_radius());
+    let rho_l = s.density() * s.length();
+    let mut released = 0.0;
+    let mut lost = 0.0;
+    let mut ledger_released = Vec::new();
+    let mut ledger_lost = Vec::new();
+    let mut ledger_kinetic = Vec::new();
+    let keep = log_spread(paper.rows.len(), 200);
+    let mut next = keep.iter().peekable();
+    for row in &paper.rows {
+        let k = row.turn as f64;
+        let (r, r1) = (r0 + k * b, r0 + (k + 1.0) * b);
+        let (m, m1) = (
+            std::f64::consts::PI * rho_l * r * r,
+            std::f64::consts::PI * rho_l * r1 * r1,
+        );
+        let t_beg = 0.75 * m * row.v_start_m_s.powi(2);
+        let t_end = m1 * (1.0 + r1 * r1 / (2.0 * r * r)) * row.v_end_m_s.powi(2) / 2.0;
+        released += t_end - t_beg;
+        lost += row.collision_loss_j;
+        if next.peek().is_some_and(|&&i| i == row.turn as usize) {
+            next.next();
+            let kk = k + 1.0;
+            ledger_released.push((kk, released));
+            ledger_lost.push((kk, lost));
+            ledger_kinetic.push((kk, 0.75 * m1 * row.v_after_m_s.powi(2)));
+        }
+    }
+    let ledger = Chart::new(
+        "turns-energy-ledger",
+        "Energy ledger of the turn-by-turn model",
+        Axis::log("turns completed", "1").column("turns"),
+        Axis::log("energy", "J").column("energy_j"),
+    )
+    .with_legend(Legend::UpperLeft)
+    .with_series(Series::new(
+        "potential energy released (sum over turns)",
+        ledger_released,
+    ))
+    .with_series(
+        Series::new("kinetic energy after the collision", ledger_kinetic).style(Style::Dashed),
+    )
+    .with_series(Series::new("lost in collisions (sum)", ledger_lost));
+
+    tick("animation");
+    let anim_traj = run(
+        ModelKind::Turns,
+        lab,
+        &SimOptions {
+            turns: Some(TURNS_SHOWN + 2),
+            t_end: 1e6,
+            sampling: Sampling::Every(0.005),
+            ..opts.clone()
+        },
+    )?;
+    let animation = Animation::from_trajectory(&anim_traj, s, FRAMES)?;
+
+    let file = ScenarioFile::from(*s);
+    let metadata = Metadata::new("snowroll: McDonald's snowball/log note, reproduced and judged")
+        .param("slope_deg", file.slope_deg)
+        .param("snow_depth_m", file.snow_depth_m)
+        .param("r0_m", file.r0_m)
+        .param("g_m_s2", file.g_m_s2)
+        .param("density_kg_m3", file.density_kg_m3)
+        .param("length_m", file.length_m)
+        .param("v0_m_s", file.v0_m_s)
+        .param("rtol", format!("{:e}", opts.tolerances.rtol))
+        .param("atol", format!("{:e}", opts.tolerances.atol))
+        .param("long_run_turns", lab.turns());
+    // Each figure's footer names the scenario; the full list is in the metadata.
+    let short = |f: Figure| {
+        f.param("slope_deg", file.slope_deg)
+            .param("b_m", file.snow_depth_m)
+            .param("r0_m", file.r0_m)
+            .param("v0_m_s", file.v0_m_s)
+            .param("rtol", format!("{:e}", opts.tolerances.rtol))
+    };
+    let figures: Vec<Figure> = vec![
+        Figure::new(accel, "a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value (2/3 without snow, 1/5 for eq. (4), 1/6 for eq. (6), 1/3 for eqs. (14), (15), (32), 2/9 for eq. (21) as printed); the turn-by-turn models (markers: the mean over each turn) settle near 1/3 within a turn."),
+        Figure::new(speed, "Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration."),
+        Figure::new(radius, "Radius against time: π r² = π r0² + b x (eq. (8)); the turn models grow by b per full turn."),
+        Figure::new(approach, "How fast each circular model approaches its terminal acceleration: |a − a_term| against x. Models with only the v² term approach as a power r^−2(1+2c_v) (x^−10/3 for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r."),
+        Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties."),
+        Figure::new(means, "Mean acceleration over many turns, against the number of turns K: within turns it tends to G/3, including the collisions to G/4, not the note's 4G/9 (eq. (79))."),
+        Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed."),
+    ]
+    .into_iter()
+    .map(short)
+    .collect();
+    Ok(Report {
+        metadata,
+        claims,
+        figures,
+        animation: Some(animation),
+    })
+}
