@@ -1,16 +1,16 @@
 //! The command line: subcommands and their flags.
 //!
-//! Every value flag of `simulate` is an `Option`, so that a flag that was not
-//! given can fall back to the `--config` file and then to the library's
-//! defaults ([`ScenarioFile::default`], [`SimOptions::default`]); the defaults
-//! shown in `--help` are read from those same values. The same struct is the
-//! schema of the config file, so its keys are exactly the long flags.
+//! Every value flag of `simulate` and `turns` is an `Option`, so that a flag
+//! that was not given can fall back to the `--config` file and then to the
+//! library's defaults ([`ScenarioFile::default`], [`SimOptions::default`]);
+//! the defaults shown in `--help` are read from those same values. The flags
+//! the two share are one struct each ([`ScenarioArgs`], [`OutputArgs`]); the
+//! config file ([`crate::config::ConfigFile`]) has one key per long flag.
 
 use std::fmt::Display;
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use serde::Deserialize;
 use snowroll::{Format, ModelKind, ScenarioFile, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
@@ -33,9 +33,29 @@ pub struct Args {
 pub enum Command {
     /// Integrate one model for one scenario and write its trajectory (CSV or JSON).
     Simulate(Box<SimulateArgs>),
+    /// Run a turn model (§3.4) and write one row per turn, with the long-run
+    /// mean acceleration on stderr.
+    ///
+    /// Columns, SI units as suffixed: turn (k, from 0), t_start_s, x_start_m,
+    /// v_start_m_s, t_end_s, v_end_m_s (before the collision), v_after_m_s
+    /// (after it, eq. (89)), collision_loss_j (kinetic energy lost, J),
+    /// mean_a_turn_m_s2, min_a_m_s2, max_a_m_s2 (within the turn, m/s^2),
+    /// mean_a_with_collision_m_s2 (including the collision's jump in v).
+    /// The summary gives the means as fractions of g sin(alpha), and how they
+    /// converge with the number of turns K.
+    Turns(Box<TurnsArgs>),
     /// List every model: id, alias, equation, terminal acceleration, stall slope.
     Models(ModelsArgs),
 }
+
+/// Turns run by `snowroll turns` when neither `--turns` nor the config
+/// file says.
+pub const TURNS_DEFAULT: u64 = 100;
+
+/// End time of `snowroll turns` when neither `--t-end` nor the config file
+/// says, s: about 30 years, so that the turn count, not the clock, ends any
+/// realistic run (10^5 turns of the default scenario take about 6 hours).
+pub const TURNS_T_END_S: f64 = 1e9;
 
 /// `help` text with the default value appended, as clap shows it.
 fn with_default(text: &str, default: impl Display) -> String {
@@ -57,10 +77,10 @@ fn short(x: f64) -> String {
     }
 }
 
-/// Flags of `snowroll simulate`, also the keys of its `--config` file.
-#[derive(Debug, Clone, Default, PartialEq, clap::Args, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "kebab-case")]
-pub struct SimulateArgs {
+/// Flags shared by `simulate` and `turns`: the model, the scenario and the
+/// integrator. Every one is also a key of the `--config` file.
+#[derive(Debug, Clone, Default, PartialEq, clap::Args)]
+pub struct ScenarioArgs {
     /// Model id or equation alias, e.g. torque-cm or eq4 (`snowroll models` describes them)
     #[arg(long, value_name = "ID", ignore_case = true)]
     pub model: Option<ModelKind>,
@@ -163,24 +183,6 @@ pub struct SimulateArgs {
 
     #[arg(
         long,
-        value_name = "T1,T2,...",
-        value_delimiter = ',',
-        allow_negative_numbers = true,
-        conflicts_with = "dt",
-        help = "Write exactly these times, in s, ascending (from the dense output; none after a stop) [default: every accepted step]"
-    )]
-    pub times: Option<Vec<f64>>,
-
-    #[arg(
-        long,
-        value_name = "S",
-        allow_negative_numbers = true,
-        help = "Write a regular grid 0, dt, 2 dt, ... up to the stop, in s (dt > 0) [default: every accepted step]"
-    )]
-    pub dt: Option<f64>,
-
-    #[arg(
-        long,
         value_name = "R",
         allow_negative_numbers = true,
         help = with_default(
@@ -200,7 +202,12 @@ pub struct SimulateArgs {
         )
     )]
     pub atol: Option<f64>,
+}
 
+/// Where and how results are written, and the `--config` file; shared by
+/// `simulate` and `turns`.
+#[derive(Debug, Clone, Default, PartialEq, clap::Args)]
+pub struct OutputArgs {
     #[arg(
         long,
         value_enum,
@@ -218,8 +225,69 @@ pub struct SimulateArgs {
 
     /// Read any of the flags above from this TOML file, as `alpha-deg = 25`; flags on the command line override it
     #[arg(long, value_name = "FILE.toml")]
-    #[serde(skip)]
     pub config: Option<PathBuf>,
+}
+
+/// Flags of `snowroll simulate`.
+#[derive(Debug, Clone, Default, PartialEq, clap::Args)]
+pub struct SimulateArgs {
+    /// Model, scenario and integrator.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+
+    #[arg(
+        long,
+        value_name = "T1,T2,...",
+        value_delimiter = ',',
+        allow_negative_numbers = true,
+        conflicts_with = "dt",
+        help = "Write exactly these times, in s, ascending (from the dense output; none after a stop) [default: every accepted step]"
+    )]
+    pub times: Option<Vec<f64>>,
+
+    #[arg(
+        long,
+        value_name = "S",
+        allow_negative_numbers = true,
+        help = "Write a regular grid 0, dt, 2 dt, ... up to the stop, in s (dt > 0) [default: every accepted step]"
+    )]
+    pub dt: Option<f64>,
+
+    /// Stop after N full turns, N >= 1 (turn models only: turns, turns-exact) [default: none]
+    #[arg(long, value_name = "N")]
+    pub turns: Option<u64>,
+
+    /// Format, destination, config file.
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// Flags of `snowroll turns`.
+#[derive(Debug, Clone, Default, PartialEq, clap::Args)]
+#[command(
+    mut_arg("model", |a| a.hide_possible_values(true).help(
+        "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry)"
+    )),
+    mut_arg("t_end", |a| a.help(with_default(
+        "Stop at this time, in s (t_end > 0); long enough by default that --turns ends the run",
+        short(TURNS_T_END_S)
+    ))),
+)]
+pub struct TurnsArgs {
+    /// Model, scenario and integrator.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+
+    #[arg(
+        long,
+        value_name = "N",
+        help = with_default("Number of full turns to run, N >= 1 (one row each)", TURNS_DEFAULT)
+    )]
+    pub turns: Option<u64>,
+
+    /// Format, destination, config file.
+    #[command(flatten)]
+    pub output: OutputArgs,
 }
 
 /// Flags of `snowroll models`.

@@ -479,6 +479,9 @@ fn model_aliases_are_accepted() {
         ("eq32+36", "quasi-circular-lift"),
         ("fn4", "loney"),
         ("eq95", "snowless"),
+        ("eq73", "turns"),
+        ("Turns-Exact", "turns-exact"),
+        ("EQ88", "turns-exact"),
     ] {
         let doc = json(&simulate(&[
             "--model", given, "--format", "json", "--times", "0",
@@ -511,13 +514,366 @@ fn does_not_start_and_stall_are_reported_on_stderr_with_exit_zero() {
     assert!(doc["stop"]["x_m"].as_f64().unwrap() > 0.0);
 }
 
+// ---------------------------------------------------------------- turn models
+
+/// v_after / v_end of eq. (89) and r_k = r0 + k b: one product and one
+/// quotient of printed (round-trip) numbers, so only rounding can differ.
+const COLLISION_TOL: f64 = 1e-12;
+/// The collision loss against T_end − T_after: two kinetic energies that
+/// agree to O(b/r_k), so cancellation magnifies rounding by about r_k/b.
+const LOSS_TOL: f64 = 1e-10;
+/// X_k of eq. (74) against the printed x_start (relative).
+const EQ74_TOL: f64 = 1e-9;
+/// The stderr summary prints fractions of G with 6 decimals.
+const SUMMARY_PRINT_TOL: f64 = 1e-6;
+
+/// Runs `snowroll turns ARGS`, expecting success; returns stdout and stderr.
+fn turns(args: &[&str]) -> (String, String) {
+    let out = snowroll().arg("turns").args(args).assert().success();
+    let o = out.get_output();
+    (
+        String::from_utf8(o.stdout.clone()).unwrap(),
+        String::from_utf8(o.stderr.clone()).unwrap(),
+    )
+}
+
+/// The header of the per-turn table.
+const TURN_COLUMNS: &str = "turn,t_start_s,x_start_m,v_start_m_s,t_end_s,v_end_m_s,v_after_m_s,\
+collision_loss_j,mean_a_turn_m_s2,min_a_m_s2,max_a_m_s2,mean_a_with_collision_m_s2";
+
+#[test]
+fn turns_gives_exactly_n_rows_numbered_from_zero() {
+    for (model, n) in [("turns", 7usize), ("turns-exact", 3)] {
+        let (out, _) = turns(&["--model", model, "--turns", &n.to_string()]);
+        let csv = Csv::parse(&out);
+        assert_eq!(csv.header, TURN_COLUMNS);
+        assert_eq!(csv.rows.len(), n, "{model}");
+        for (k, turn) in csv.column("turn").into_iter().enumerate() {
+            assert_close(turn, k as f64, 0.0);
+        }
+        assert_eq!(csv.comments["turns"], n.to_string());
+        assert!(csv.comments["stop"].starts_with("turns "));
+    }
+    // Without --turns: the documented default of 100.
+    let (out, _) = turns(&["--model", "eq73"]);
+    assert_eq!(Csv::parse(&out).rows.len(), 100);
+}
+
+#[test]
+fn eq89_collision_ratio_and_its_energy_loss_hold_at_every_turn() {
+    // (r0, b, rho, l) chosen away from the defaults.
+    let (r0, b, rho, l) = (0.15, 0.02, 500.0, 2.0);
+    for model in ["turns", "turns-exact"] {
+        let (out, _) = turns(&[
+            "--model",
+            model,
+            "--r0",
+            "0.15",
+            "--snow-depth",
+            "0.02",
+            "--density",
+            "500",
+            "--length",
+            "2",
+            "--turns",
+            "40",
+        ]);
+        let csv = Csv::parse(&out);
+        for k in 0..csv.rows.len() {
+            let r = r0 + k as f64 * b;
+            let r_next = r + b;
+            let (v_end, v_after) = (csv.get(k, "v_end_m_s"), csv.get(k, "v_after_m_s"));
+            // Eq. (89): angular momentum about the contact line is conserved.
+            let ratio = (r_next * r_next + 2.0 * r * r) / (3.0 * r * r_next);
+            assert_close(v_after / v_end, ratio, COLLISION_TOL);
+            // Eqs. (85), (86): the disk r_{k+1} turns about a line at distance
+            // r_k before, r_{k+1} after, with the same omega-to-v relations.
+            let m_next = PI * rho * l * r_next * r_next;
+            let omega_end = v_end / r;
+            let t_end = m_next * (r_next * r_next / 2.0 + r * r) * omega_end * omega_end / 2.0;
+            let t_after = 0.75 * m_next * v_after * v_after;
+            assert_close(csv.get(k, "collision_loss_j"), t_end - t_after, LOSS_TOL);
+        }
+    }
+}
+
+#[test]
+fn turns_follow_one_another_in_time_and_speed() {
+    let (out, _) = turns(&["--model", "turns-exact", "--v0", "0.3", "--turns", "30"]);
+    let csv = Csv::parse(&out);
+    assert_close(csv.get(0, "t_start_s"), 0.0, 0.0);
+    assert_close(csv.get(0, "v_start_m_s"), 0.3, CLOSED_FORM_TOL);
+    for k in 0..csv.rows.len() {
+        assert!(csv.get(k, "t_end_s") > csv.get(k, "t_start_s"));
+        if k + 1 < csv.rows.len() {
+            assert_close(csv.get(k + 1, "t_start_s"), csv.get(k, "t_end_s"), TIME_TOL);
+            assert_close(
+                csv.get(k + 1, "v_start_m_s"),
+                csv.get(k, "v_after_m_s"),
+                CLOSED_FORM_TOL,
+            );
+        }
+    }
+}
+
+#[test]
+fn eq74_gives_the_start_of_every_turn() {
+    let (r0, b) = (0.12, 0.03);
+    let (out, _) = turns(&[
+        "--model",
+        "turns",
+        "--r0",
+        "0.12",
+        "--snow-depth",
+        "0.03",
+        "--turns",
+        "200",
+    ]);
+    let csv = Csv::parse(&out);
+    assert_eq!(csv.rows.len(), 200);
+    for k in 0..csv.rows.len() {
+        let kf = k as f64;
+        // X_k = sum of the circumferences 2 pi r_j, j < k (0-based, eq. (74)).
+        let want = 2.0 * PI * kf * r0 + kf * (kf - 1.0) * PI * b;
+        assert_close(csv.get(k, "x_start_m"), want, EQ74_TOL);
+    }
+}
+
+#[test]
+fn turns_json_records_the_table_and_the_parameters() {
+    let (out, _) = turns(&[
+        "--model",
+        "eq88",
+        "--snow-depth",
+        "0.02",
+        "--r0",
+        "0.15",
+        "--alpha-deg",
+        "40",
+        "--turns",
+        "4",
+        "--format",
+        "json",
+    ]);
+    let doc = json(&out);
+    assert_eq!(doc["snowroll_version"], env!("CARGO_PKG_VERSION"));
+    assert_eq!(doc["model"]["id"], "turns-exact");
+    assert_eq!(doc["stop"]["reason"], "turns");
+    let params = &doc["params"];
+    assert_eq!(params["turns"], 4);
+    for (key, want) in [("snow_depth_m", 0.02), ("r0_m", 0.15), ("slope_deg", 40.0)] {
+        assert_close(params[key].as_f64().unwrap(), want, CLOSED_FORM_TOL);
+    }
+    let rows = doc["turns"].as_array().unwrap();
+    assert_eq!(rows.len(), 4);
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row["turn"], k);
+        for key in TURN_COLUMNS.split(',') {
+            assert!(row[key].is_number(), "turn {k} lacks {key}");
+        }
+    }
+    // The overall mean with collisions is the net speed gain over the time
+    // taken, in units of G = g sin alpha.
+    let g_along = G * 40f64.to_radians().sin();
+    let last = &rows[3];
+    let want = last["v_after_m_s"].as_f64().unwrap() / last["t_end_s"].as_f64().unwrap() / g_along;
+    let overall = doc["summary"]["checkpoints"]
+        .as_array()
+        .unwrap()
+        .last()
+        .unwrap();
+    assert_eq!(overall["turns"], 4);
+    assert_close(
+        overall["mean_a_with_collision_over_g"].as_f64().unwrap(),
+        want,
+        CLOSED_FORM_TOL,
+    );
+}
+
+/// The number after `label` in `text`.
+fn number_after(text: &str, label: &str) -> f64 {
+    let rest = &text[text
+        .find(label)
+        .unwrap_or_else(|| panic!("{label:?} not in {text}"))
+        + label.len()..];
+    let end = rest
+        .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+        .unwrap_or(rest.len());
+    rest[..end].parse().unwrap()
+}
+
+#[test]
+fn turns_summary_gives_the_long_run_means_of_the_table_and_the_notes_claim() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("turns.csv");
+    let out = snowroll()
+        .args(["turns", "--model", "turns", "--turns", "1000", "--output"])
+        .arg(&path)
+        .assert()
+        .success()
+        .stdout(predicate::str::is_empty());
+    let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    let csv = Csv::parse(&fs::read_to_string(&path).unwrap());
+    assert_eq!(entries(dir.path()), vec!["turns.csv".to_string()]);
+    assert_eq!(csv.rows.len(), 1000);
+    // Time-weighted means from the rows, over G = g sin alpha.
+    let g_along = G * ALPHA_DEG.to_radians().sin();
+    let n = csv.rows.len();
+    let gain: f64 = (0..n)
+        .map(|k| csv.get(k, "v_end_m_s") - csv.get(k, "v_start_m_s"))
+        .sum();
+    let in_turn = gain / csv.get(n - 1, "t_end_s") / g_along;
+    let with_collisions = csv.get(n - 1, "v_after_m_s") / csv.get(n - 1, "t_end_s") / g_along;
+    let label = "over all 1000 turns: in turn ";
+    assert_close(number_after(&stderr, label), in_turn, SUMMARY_PRINT_TOL);
+    assert_close(
+        number_after(&stderr, "with collisions "),
+        with_collisions,
+        SUMMARY_PRINT_TOL,
+    );
+    // The in-turn range over the last decade, 100 <= k < 1000.
+    let lo = (100..n)
+        .map(|k| csv.get(k, "min_a_m_s2"))
+        .fold(f64::INFINITY, f64::min);
+    assert_close(
+        number_after(&stderr, "ranges over ["),
+        lo / g_along,
+        SUMMARY_PRINT_TOL,
+    );
+    assert!(stderr.contains("the note's eq. (79) estimate: 4/9 = 0.444"));
+    // One convergence line per checkpoint 1, 2, 5, ..., 500, 1000.
+    for k in [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000] {
+        assert!(
+            stderr
+                .lines()
+                .any(|l| l.split_whitespace().next() == Some(&k.to_string())),
+            "no checkpoint {k} in {stderr}"
+        );
+    }
+}
+
+#[test]
+fn turns_cut_short_by_t_end_say_how_many_turns_were_done() {
+    let (out, err) = turns(&["--model", "turns", "--t-end", "1"]);
+    let csv = Csv::parse(&out);
+    assert!(!csv.rows.is_empty() && csv.rows.len() < 100);
+    assert!(csv.get(csv.rows.len() - 1, "t_end_s") <= 1.0);
+    assert!(csv.comments["stop"].starts_with("end-time"));
+    assert!(
+        err.contains(&format!("after {} of the 100 turns", csv.rows.len())),
+        "{err}"
+    );
+}
+
+#[test]
+fn simulate_turns_stops_after_n_turns_with_the_turn_columns() {
+    let (r0, b) = (0.1, 0.01);
+    let out = snowroll()
+        .args(["simulate", "--model", "turns", "--turns", "3"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("requested number of turns"));
+    let csv = Csv::parse(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert_eq!(
+        csv.header,
+        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,turn,theta_rad,omega_rad_s"
+    );
+    assert!(csv.comments["stop"].starts_with("turns "));
+    assert_eq!(csv.comments["turns"], "3");
+    for i in 0..csv.rows.len() {
+        // x = X_k + r_k theta, r_k = r0 + k b (eq. (74)).
+        let k = csv.get(i, "turn");
+        assert!((0.0..3.0).contains(&k));
+        let r = r0 + k * b;
+        assert_close(csv.get(i, "r_m"), r, CLOSED_FORM_TOL);
+        let x_start = 2.0 * PI * k * r0 + k * (k - 1.0) * PI * b;
+        assert_close(
+            csv.get(i, "x_m"),
+            x_start + r * csv.get(i, "theta_rad"),
+            EQ74_TOL,
+        );
+        assert_close(
+            csv.get(i, "v_m_s"),
+            r * csv.get(i, "omega_rad_s"),
+            CLOSED_FORM_TOL,
+        );
+    }
+    // It ends at theta = 2 pi of turn 2, i.e. at X_3.
+    let last = csv.rows.len() - 1;
+    assert_close(csv.get(last, "turn"), 2.0, 0.0);
+    assert_close(csv.get(last, "theta_rad"), 2.0 * PI, EVENT_TOL);
+    assert_close(
+        csv.get(last, "x_m"),
+        6.0 * PI * r0 + 6.0 * PI * b,
+        EVENT_TOL,
+    );
+}
+
+#[test]
+fn turns_and_a_case_insensitive_model_come_from_the_config_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("turns.toml");
+    fs::write(&path, "model = \"EQ88\"\nturns = 4\nsnow-depth = 0.02\n").unwrap();
+    let config = path.to_str().unwrap();
+    let doc = json(&simulate(&["--config", config, "--format", "json"]));
+    assert_eq!(doc["model"]["id"], "turns-exact");
+    assert_eq!(doc["stop"]["reason"], "turns");
+    let (out, _) = turns(&["--config", config]);
+    let csv = Csv::parse(&out);
+    assert_eq!(csv.rows.len(), 4);
+    assert_close(csv.param("snow_depth_m"), 0.02, CLOSED_FORM_TOL);
+    // The flag overrides the file.
+    let (out, _) = turns(&["--config", config, "--turns", "2"]);
+    assert_eq!(Csv::parse(&out).rows.len(), 2);
+    // A circular model in any case, too.
+    fs::write(&path, "model = \"Torque-CM\"\nt-end = 1\n").unwrap();
+    let doc = json(&simulate(&["--config", config, "--format", "json"]));
+    assert_eq!(doc["model"]["id"], "torque-cm");
+}
+
+#[test]
+fn zero_turns_are_rejected() {
+    let err = fails(&["simulate", "--model", "turns", "--turns", "0"]);
+    assert_one_line_error(&err, &["turns", "= 0", "turns >= 1"]);
+    let err = fails(&["turns", "--model", "turns", "--turns", "0"]);
+    assert_one_line_error(&err, &["turns", "= 0", "turns >= 1"]);
+}
+
+#[test]
+fn turns_flag_with_a_circular_model_is_rejected() {
+    let err = fails(&["simulate", "--model", "torque-cm", "--turns", "3"]);
+    assert_one_line_error(&err, &["--turns", "turns, turns-exact", "torque-cm"]);
+    // Also when `turns` comes from the config file.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("c.toml");
+    fs::write(&path, "model = \"energy\"\nturns = 3\n").unwrap();
+    let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
+    assert_one_line_error(&err, &["turns", "turns, turns-exact", "energy"]);
+}
+
+#[test]
+fn turns_command_rejects_a_circular_model_listing_the_turn_models() {
+    let err = fails(&["turns", "--model", "torque-cm"]);
+    assert_one_line_error(&err, &["turns, turns-exact", "torque-cm"]);
+    let err = fails(&["turns"]);
+    assert_one_line_error(&err, &["--model", "turns, turns-exact"]);
+}
+
+#[test]
+fn turns_config_with_sampling_keys_is_rejected() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("s.toml");
+    fs::write(&path, "model = \"turns\"\ndt = 0.1\n").unwrap();
+    let err = fails(&["turns", "--config", path.to_str().unwrap()]);
+    assert_one_line_error(&err, &["s.toml", "`dt`", "simulate"]);
+}
+
 // ---------------------------------------------------------------- models
 
 #[test]
 fn models_lists_every_model_with_its_alias() {
     let out = snowroll().arg("models").assert().success();
     let text = std::str::from_utf8(&out.get_output().stdout).unwrap();
-    assert_eq!(ModelKind::ALL.len(), 9);
     for kind in ModelKind::ALL {
         let line = text
             .lines()
@@ -536,7 +892,7 @@ fn models_json_gives_the_terminal_fractions_of_the_note() {
         .success();
     let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
     let models = doc["models"].as_array().unwrap();
-    assert_eq!(models.len(), 9);
+    assert_eq!(models.len(), ModelKind::ALL.len());
     let fraction = |id: &str| {
         models.iter().find(|m| m["id"] == id).unwrap()["terminal_fraction"]
             .as_f64()
@@ -592,6 +948,23 @@ fn models_stall_slope_is_the_threshold_of_eq14_and_of_simulate() {
 }
 
 // ---------------------------------------------------------------- help
+
+#[test]
+fn turns_help_gives_units_and_columns() {
+    snowroll()
+        .args(["turns", "--help"])
+        .assert()
+        .success()
+        .stdout(
+            predicate::str::contains("in degrees")
+                .and(predicate::str::contains("in m "))
+                .and(predicate::str::contains("in s"))
+                .and(predicate::str::contains("m/s^2"))
+                .and(predicate::str::contains("collision_loss_j"))
+                .and(predicate::str::contains("J)"))
+                .and(predicate::str::contains("[default: 100]")),
+        );
+}
 
 #[test]
 fn simulate_help_gives_units() {

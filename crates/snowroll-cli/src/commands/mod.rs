@@ -1,8 +1,10 @@
-//! One module per subcommand; [`run`] dispatches. Later subcommands
-//! (`turns`, `paper`) add a variant to [`Command`] and an arm here.
+//! One module per subcommand; [`run`] dispatches. `inputs` turns the flags
+//! that `simulate` and `turns` share into library types.
 
+mod inputs;
 mod models;
 mod simulate;
+mod turns;
 
 use anyhow::Result;
 
@@ -12,6 +14,7 @@ use crate::args::{Args, Command};
 pub fn run(args: Args) -> Result<()> {
     match args.command {
         Command::Simulate(a) => simulate::run(*a),
+        Command::Turns(a) => turns::run(*a),
         Command::Models(a) => models::run(&a),
     }
 }

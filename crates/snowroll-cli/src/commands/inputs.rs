@@ -1,0 +1,68 @@
+//! From the flags that `simulate` and `turns` share ([`ScenarioArgs`]) to
+//! the library's inputs: the model, the [`Scenario`] and the [`SimOptions`].
+
+use anyhow::{anyhow, Result};
+use snowroll::integrate::Tolerances;
+use snowroll::{ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimOptions, TurnVariant};
+
+use crate::args::ScenarioArgs;
+
+/// The turn-by-turn models of §3.4, which alone take `--turns`.
+pub fn turn_models() -> Vec<ModelKind> {
+    ModelKind::ALL
+        .into_iter()
+        .filter(|k| TurnVariant::of(*k).is_some())
+        .collect()
+}
+
+/// `ids` as `a, b, c`.
+pub fn id_list(kinds: &[ModelKind]) -> String {
+    kinds.iter().map(|k| k.id()).collect::<Vec<_>>().join(", ")
+}
+
+/// The model asked for, or an error saying how to give one of `choices`.
+pub fn model(a: &ScenarioArgs, choices: &[ModelKind]) -> Result<ModelKind> {
+    a.model.ok_or_else(|| {
+        anyhow!(
+            "no model given: pass --model ID (or set `model` in the config file), ID one of {}",
+            id_list(choices)
+        )
+    })
+}
+
+/// The scenario: each parameter from the arguments, else the library default.
+pub fn scenario(a: &ScenarioArgs) -> Result<Scenario, ParamError> {
+    let d = ScenarioFile::default();
+    Scenario::new(ScenarioFile {
+        slope_deg: a.alpha_deg.unwrap_or(d.slope_deg),
+        snow_depth_m: a.snow_depth.unwrap_or(d.snow_depth_m),
+        r0_m: a.r0.unwrap_or(d.r0_m),
+        g_m_s2: a.g.unwrap_or(d.g_m_s2),
+        density_kg_m3: a.density.unwrap_or(d.density_kg_m3),
+        length_m: a.length.unwrap_or(d.length_m),
+        v0_m_s: a.v0.unwrap_or(d.v0_m_s),
+    })
+}
+
+/// The run options: end time, end distance and tolerances from the
+/// arguments, else `t_end_default` and the library defaults; `sampling` and
+/// `turns` as given. Not yet validated.
+pub fn options(
+    a: &ScenarioArgs,
+    t_end_default: f64,
+    sampling: Sampling,
+    turns: Option<u64>,
+) -> SimOptions {
+    let d = SimOptions::default();
+    SimOptions {
+        t_end: a.t_end.unwrap_or(t_end_default),
+        x_end: a.x_end.or(d.x_end),
+        turns,
+        tolerances: Tolerances {
+            rtol: a.rtol.unwrap_or(d.tolerances.rtol),
+            atol: a.atol.unwrap_or(d.tolerances.atol),
+            ..d.tolerances
+        },
+        sampling,
+    }
+}

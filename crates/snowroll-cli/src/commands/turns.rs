@@ -1,0 +1,139 @@
+//! `snowroll turns`: a turn model of §3.4 run for N turns, one row per
+//! turn ([`snowroll::write_turn_table`]), and on stderr the long-run means
+//! of the acceleration that eqs. (77)–(79) leave open, as computed by the
+//! library ([`TurnSummary`]).
+
+use anyhow::{bail, Context, Result};
+use snowroll::{
+    run_turns, write_turn_table, RunParams, Sampling, StopReason, TurnSummary, TurnTable,
+    TurnVariant,
+};
+
+use super::inputs::{self, id_list, turn_models};
+use crate::args::{TurnsArgs, TURNS_DEFAULT, TURNS_T_END_S};
+use crate::config;
+use crate::sink::Sink;
+
+/// The note's long-run mean acceleration over g sin α, eq. (79): 4/9.
+/// Printed for comparison only; nothing is computed from it.
+const NOTE_EQ79_MEAN_OVER_G: f64 = 4.0 / 9.0;
+
+/// Merges flags over the config file, runs the turns, writes the table and
+/// prints the summary.
+pub fn run(flags: TurnsArgs) -> Result<()> {
+    let args = match flags.output.config.clone() {
+        Some(path) => {
+            let file = config::load(&path)?;
+            flags.over(file, &path)?
+        }
+        None => flags,
+    };
+    let choices = turn_models();
+    let model = inputs::model(&args.scenario, &choices)?;
+    if TurnVariant::of(model).is_none() {
+        bail!(
+            "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
+            id_list(&choices),
+            choices
+                .iter()
+                .map(|k| k.alias())
+                .collect::<Vec<_>>()
+                .join(", "),
+            model.id()
+        );
+    }
+    let scenario = inputs::scenario(&args.scenario)?;
+    let wanted = args.turns.unwrap_or(TURNS_DEFAULT);
+    // Only the turn ends are recorded, whatever the sampling.
+    let opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted));
+    opts.validate()?;
+    let format = args.output.format.unwrap_or_default();
+
+    // Open the destination before the run, so that a bad path fails at once.
+    let mut sink = Sink::open(args.output.output.as_deref())?;
+    let name = sink.name();
+    let table = run_turns(model, &scenario, &opts)
+        .with_context(|| format!("running {} ({})", model.id(), model.equation()))?;
+    let mut params = RunParams::new(&scenario, &opts);
+    params.sampling = "one row per turn".to_string();
+    write_turn_table(&mut sink, format, &table, &params)
+        .map_err(anyhow::Error::from)
+        .and_then(|()| Ok(sink.commit()?))
+        .with_context(|| format!("writing {name}"))?;
+    if let Some(note) = stop_note(&table, wanted, opts.t_end) {
+        eprintln!("note: {note}");
+    }
+    eprint!("{}", summary(&table));
+    Ok(())
+}
+
+/// One line for stderr when the run ended before the turns asked for.
+fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
+    let stop = table.stop;
+    if stop.reason == StopReason::Turns {
+        return None;
+    }
+    let mut note = format!(
+        "run stopped at t = {} s, x = {} m: {}, after {} of the {wanted} turns asked for",
+        stop.t_s,
+        stop.x_m,
+        stop.reason.describe(),
+        table.rows.len()
+    );
+    if stop.reason == StopReason::EndTime {
+        note.push_str(&format!(" (t_end = {t_end} s; raise --t-end for more)"));
+    }
+    Some(note)
+}
+
+/// The long-run statistics for people: overall means, the last decade,
+/// convergence with K, and the note's claim beside them.
+fn summary(table: &TurnTable) -> String {
+    let s: &TurnSummary = &table.summary;
+    let mut text = format!(
+        "summary of {} ({}): {} turns; accelerations as fractions of G = g sin(alpha) = {} m/s^2\n",
+        table.model.id(),
+        table.model.equation(),
+        s.turns,
+        s.g_along_m_s2
+    );
+    let Some(all) = s.overall() else {
+        text.push_str("  no turn was completed\n");
+        return text;
+    };
+    text.push_str(&format!(
+        "  long-run mean a/G over all {} turns: in turn {:.6}, with collisions {:.6}\n",
+        all.turns, all.mean_a_turn_over_g, all.mean_a_with_collision_over_g
+    ));
+    text.push_str(&format!(
+        "  last decade (turns {}..{}): mean a/G in turn {:.6}, with collisions {:.6}; \
+         a/G within a turn ranges over [{:.6}, {:.6}]\n",
+        all.window_first_turn,
+        all.turns - 1,
+        all.window_mean_a_turn_over_g,
+        all.window_mean_a_with_collision_over_g,
+        all.window_min_a_over_g,
+        all.window_max_a_over_g
+    ));
+    text.push_str(&format!(
+        "  the note's eq. (79) estimate: 4/9 = {NOTE_EQ79_MEAN_OVER_G:.3}\n"
+    ));
+    text.push_str("  convergence with K (means over turns k < K; last decade: K/10 <= k < K):\n");
+    text.push_str(&format!(
+        "  {:>10}  {:>10}  {:>10}  |  {:>10}  {:>10}  {:>10}  {:>10}\n",
+        "K", "in turn", "with coll.", "decade: in", "with coll.", "min a/G", "max a/G"
+    ));
+    for c in &s.checkpoints {
+        text.push_str(&format!(
+            "  {:>10}  {:>10.6}  {:>10.6}  |  {:>10.6}  {:>10.6}  {:>10.6}  {:>10.6}\n",
+            c.turns,
+            c.mean_a_turn_over_g,
+            c.mean_a_with_collision_over_g,
+            c.window_mean_a_turn_over_g,
+            c.window_mean_a_with_collision_over_g,
+            c.window_min_a_over_g,
+            c.window_max_a_over_g
+        ));
+    }
+    text
+}
