@@ -1,5 +1,17 @@
 #!/usr/bin/env bash
-# The project's test command (README): every Rust test of the workspace.
+# The project's test command (README): every Rust test of the workspace, then
+# the browser test of the report that `snowroll paper` writes (installs
+# Debian's chromium first if it is missing; needs root or sudo for that).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
 cargo test --workspace --all-features
+
+report_dir=$(mktemp -d)
+trap 'rm -rf "$report_dir"' EXIT
+cargo run --release --quiet -- paper --quiet --out "$report_dir"
+bash .ci/browser-test.sh "$report_dir"
+# Keep the screenshots as artifacts of the run.
+mkdir -p target/browser-test
+cp "$report_dir"/browser-*.png target/browser-test/ 2>/dev/null || true
+echo "browser test artifacts: target/browser-test/"

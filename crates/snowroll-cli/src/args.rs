@@ -46,6 +46,33 @@ pub enum Command {
     Turns(Box<TurnsArgs>),
     /// List every model: id, alias, equation, terminal acceleration, stall slope.
     Models(ModelsArgs),
+    /// Reproduce and judge every claim of the note: runs the default
+    /// scenario (alpha 30 degrees, b 0.01 m, r0 0.1 m, from rest) through
+    /// every model, and writes an HTML report with the claims table, plots
+    /// and an animation, plus Markdown, JSON, SVG/PNG figures and CSV data.
+    Paper(PaperArgs),
+}
+
+/// Where `snowroll paper` writes when `--out` is not given.
+pub const PAPER_OUT_DEFAULT: &str = "snowroll-report";
+
+/// Turns of the long multi-turn runs of `snowroll paper` by default.
+pub const PAPER_TURNS_DEFAULT: u64 = 100_000;
+
+/// Flags of `snowroll paper`.
+#[derive(Debug, Clone, PartialEq, clap::Args)]
+pub struct PaperArgs {
+    /// Directory for report.html, report.md, claims.json, figures/ and data/ (created if missing; files in it are replaced)
+    #[arg(long, short, value_name = "DIR", default_value = PAPER_OUT_DEFAULT)]
+    pub out: PathBuf,
+
+    /// Turns of the long runs behind the multi-turn claims (eqs. (77)-(79)), N >= 10
+    #[arg(long, value_name = "N", default_value_t = PAPER_TURNS_DEFAULT, value_parser = clap::value_parser!(u64).range(10..))]
+    pub turns: u64,
+
+    /// Do not show the progress bar
+    #[arg(long)]
+    pub quiet: bool,
 }
 
 /// Turns run by `snowroll turns` when neither `--turns` nor the config

@@ -3,6 +3,7 @@
 
 mod inputs;
 mod models;
+mod paper;
 mod simulate;
 mod turns;
 
@@ -16,5 +17,6 @@ pub fn run(args: Args) -> Result<()> {
         Command::Simulate(a) => simulate::run(*a),
         Command::Turns(a) => turns::run(*a),
         Command::Models(a) => models::run(&a),
+        Command::Paper(a) => paper::run(&a),
     }
 }

@@ -7,8 +7,8 @@
 
 use super::{Animation, ClaimResult, Figure, Lab, Metadata, Report, ReportError, CLAIMS};
 use crate::models::{ModelKind, TurnTable};
-use crate::scenario::ScenarioFile;
 use crate::plot::{Axis, Chart, Legend, Series, Style};
+use crate::scenario::ScenarioFile;
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
 /// End of the runs shown against time, s.

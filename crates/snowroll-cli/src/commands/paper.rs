@@ -1,0 +1,71 @@
+//! `snowroll paper`: every claim of the note judged, and the report written.
+//! The physics, the claims and the report are the library's
+//! ([`snowroll::report`]); this command shows progress and says where the
+//! report is.
+
+use std::io::{IsTerminal, Write};
+
+use anyhow::{Context, Result};
+use indicatif::{ProgressBar, ProgressStyle};
+use snowroll::report::{build_paper_report, paper_steps, Lab, Tally};
+use snowroll::Scenario;
+
+use crate::args::PaperArgs;
+
+/// Runs the claims and figures, writes the report, prints the claims table.
+pub fn run(args: &PaperArgs) -> Result<()> {
+    let lab = Lab::new(Scenario::default(), args.turns);
+    let bar = if args.quiet || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(paper_steps() as u64)
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{bar:32} {pos}/{len} {elapsed:>4} {msg}")
+            .context("progress bar template")?,
+    );
+    let report = build_paper_report(&lab, &mut |p| {
+        bar.set_position(p.done as u64);
+        bar.set_message(p.label.to_string());
+    })
+    .context("building the report")?;
+    bar.set_message("writing files");
+    let written = report
+        .write_to(&args.out)
+        .with_context(|| format!("writing the report to {}", args.out.display()))?;
+    bar.finish_and_clear();
+
+    let mut out = std::io::stdout().lock();
+    let id_width = report
+        .claims
+        .iter()
+        .map(|c| c.claim.id.chars().count())
+        .max()
+        .unwrap_or(0);
+    writeln!(out, "Claims of the note ({} checked):", report.claims.len())?;
+    for c in &report.claims {
+        let flag = if c.as_expected() {
+            ""
+        } else {
+            "  (NOT the expected verdict)"
+        };
+        writeln!(
+            out,
+            "  {} {:<id_width$}  {:<9}  {}{flag}",
+            c.verdict.symbol(),
+            c.claim.id,
+            c.verdict.class(),
+            c.claim.paper_ref,
+        )?;
+    }
+    writeln!(out, "{}", Tally::of(&report.claims).sentence())?;
+    let html = args.out.join("report.html");
+    writeln!(
+        out,
+        "Report: {} ({} files in {})",
+        html.display(),
+        written.len(),
+        args.out.display()
+    )?;
+    Ok(())
+}

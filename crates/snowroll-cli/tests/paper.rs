@@ -1,0 +1,80 @@
+//! `snowroll paper`: the report is written whole, every claim reaches the
+//! verdict the library's table expects, and bad flags are one-line errors.
+
+use std::fs;
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use predicates::prelude::*;
+use serde_json::Value;
+use snowroll::report::CLAIMS;
+
+#[test]
+fn paper_writes_the_report_with_every_claim_as_expected() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report");
+    // 2000 turns keep the test fast; the verdicts do not depend on it.
+    let assert = cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--turns", "2000", "--out"])
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("every verdict as expected"));
+    let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
+    for c in CLAIMS {
+        assert!(
+            stdout.contains(c.claim.id),
+            "{} missing from the table",
+            c.claim.id
+        );
+    }
+    let html = fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.contains("<svg"));
+    // Self-contained: nothing is loaded from elsewhere.
+    for external in ["src=\"http", "href=\"http", "<script src", "<link rel=\"stylesheet\""] {
+        assert!(!html.contains(external), "report.html references {external}");
+    }
+    let claims: Value =
+        serde_json::from_str(&fs::read_to_string(out.join("claims.json")).unwrap()).unwrap();
+    let text = claims.to_string();
+    for c in CLAIMS {
+        assert!(text.contains(c.claim.id));
+    }
+    assert!(text.contains(env!("CARGO_PKG_VERSION")));
+    let md = fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(md.contains("eq. (79)"));
+    let figures: Vec<String> = fs::read_dir(out.join("figures"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    for name in [
+        "acceleration-all-models",
+        "speed-all-models",
+        "radius-all-models",
+        "approach-to-terminal",
+        "turns-acceleration",
+        "turns-long-run-means",
+        "turns-energy-ledger",
+    ] {
+        assert!(figures.contains(&format!("{name}.svg")), "{name}.svg");
+        assert!(figures.contains(&format!("{name}.png")), "{name}.png");
+        let csv = fs::read_to_string(out.join("data").join(format!("{name}.csv"))).unwrap();
+        assert!(
+            csv.starts_with('#'),
+            "{name}.csv records version and parameters"
+        );
+    }
+    // No temporary files are left behind.
+    for entry in fs::read_dir(&out).unwrap() {
+        let name = entry.unwrap().file_name().to_string_lossy().into_owned();
+        assert!(!name.ends_with(".tmp") && !name.starts_with('.'), "{name}");
+    }
+}
+
+#[test]
+fn paper_rejects_too_few_turns_with_one_line() {
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--turns", "3"])
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("--turns"));
+}
