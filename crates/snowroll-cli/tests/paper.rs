@@ -30,8 +30,16 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
     let html = fs::read_to_string(out.join("report.html")).unwrap();
     assert!(html.contains("<svg"));
     // Self-contained: nothing is loaded from elsewhere.
-    for external in ["src=\"http", "href=\"http", "<script src", "<link rel=\"stylesheet\""] {
-        assert!(!html.contains(external), "report.html references {external}");
+    for external in [
+        "src=\"http",
+        "href=\"http",
+        "<script src",
+        "<link rel=\"stylesheet\"",
+    ] {
+        assert!(
+            !html.contains(external),
+            "report.html references {external}"
+        );
     }
     let claims: Value =
         serde_json::from_str(&fs::read_to_string(out.join("claims.json")).unwrap()).unwrap();

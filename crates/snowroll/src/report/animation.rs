@@ -124,7 +124,7 @@ impl Animation {
             ),
             model: traj.model.id().to_string(),
             equation: traj.model.equation().to_string(),
-            slope_deg: scenario.slope_angle().to_degrees(),
+            slope_deg: crate::scenario::ScenarioFile::from(*scenario).slope_deg,
             snow_depth_m: scenario.snow_depth(),
             r0_m: scenario.initial_radius(),
             circular,
