@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # snowroll against SciPy on the issue-2 speed case: eq. (4), alpha 30 deg,
 # b 0.01 m, r0 0.1 m, from rest to t = 100 s, rtol 1e-10, atol 1e-12, N runs.
-# Prints the per-trajectory time of each program (median over the N runs) and
-# the ratio; exits non-zero if the ratio is below MIN_RATIO.
+# Prints the per-trajectory time of each program (median over the N runs:
+# wall clock for snowroll, whose 20 us runs are almost never preempted, and
+# thread CPU time for SciPy, whose 5 ms runs often are on a shared machine)
+# and the ratio; exits non-zero if the ratio is below MIN_RATIO, or if the two
+# programs' final speeds disagree.
 #
 # Usage: bash bench/compare.sh            (from anywhere in a clone)
 # Environment: N (default 1000), MIN_RATIO (default 250), PYTHON (default python3).
@@ -18,7 +21,12 @@ PYTHON="${PYTHON:-python3}"
 if ! "$PYTHON" -c 'import scipy.integrate, numpy' 2>/dev/null; then
     echo "installing scipy and numpy for $PYTHON ..." >&2
     "$PYTHON" -m pip install -q scipy numpy \
-        || "$PYTHON" -m pip install -q --user scipy numpy
+        || "$PYTHON" -m pip install -q --user scipy numpy \
+        || {
+            echo "compare.sh: could not install scipy and numpy for $PYTHON;" \
+                "make a virtual environment and set PYTHON=/path/to/venv/bin/python" >&2
+            exit 2
+        }
 fi
 
 echo "building snowroll (release) ..." >&2
