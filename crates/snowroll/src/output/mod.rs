@@ -162,6 +162,32 @@ enum JsonSamples<'a> {
     Turns(Vec<TurnRow>),
 }
 
+/// The `#` comment lines that open every CSV: version, model, every
+/// parameter in a fixed order, and how the run stopped.
+pub(crate) fn write_csv_header(
+    w: &mut impl Write,
+    model: crate::models::ModelKind,
+    params: &RunParams,
+    stop: &Stop,
+) -> Result<(), OutputError> {
+    writeln!(w, "# snowroll {VERSION}")?;
+    writeln!(w, "# model = {} ({})", model.id(), model.equation())?;
+    for (k, v) in params.lines() {
+        writeln!(w, "# {k} = {v}")?;
+    }
+    writeln!(
+        w,
+        "# stop = {} at t_s = {} x_m = {}: {}",
+        serde_json::to_value(stop.reason)?
+            .as_str()
+            .unwrap_or_default(),
+        stop.t_s,
+        stop.x_m,
+        stop.reason.describe()
+    )?;
+    Ok(())
+}
+
 /// Writes `traj` in `format`, recording the version, the model and `params`.
 ///
 /// # Errors
@@ -175,26 +201,7 @@ pub fn write_trajectory(
     let has_turns = !traj.turn_states.is_empty() && traj.turn_states.len() == traj.samples.len();
     match format {
         Format::Csv => {
-            writeln!(w, "# snowroll {VERSION}")?;
-            writeln!(
-                w,
-                "# model = {} ({})",
-                traj.model.id(),
-                traj.model.equation()
-            )?;
-            for (k, v) in params.lines() {
-                writeln!(w, "# {k} = {v}")?;
-            }
-            writeln!(
-                w,
-                "# stop = {} at t_s = {} x_m = {}: {}",
-                serde_json::to_value(traj.stop.reason)?
-                    .as_str()
-                    .unwrap_or_default(),
-                traj.stop.t_s,
-                traj.stop.x_m,
-                traj.stop.reason.describe()
-            )?;
+            write_csv_header(w, traj.model, params, &traj.stop)?;
             let mut csv = csv::Writer::from_writer(&mut *w);
             if has_turns {
                 for (s, k) in traj.samples.iter().zip(&traj.turn_states) {

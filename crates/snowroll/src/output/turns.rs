@@ -36,26 +36,7 @@ pub fn write_turn_table(
 ) -> Result<(), OutputError> {
     match format {
         Format::Csv => {
-            writeln!(w, "# snowroll {VERSION}")?;
-            writeln!(
-                w,
-                "# model = {} ({})",
-                table.model.id(),
-                table.model.equation()
-            )?;
-            for (k, v) in params.lines() {
-                writeln!(w, "# {k} = {v}")?;
-            }
-            writeln!(
-                w,
-                "# stop = {} at t_s = {} x_m = {}: {}",
-                serde_json::to_value(table.stop.reason)?
-                    .as_str()
-                    .unwrap_or_default(),
-                table.stop.t_s,
-                table.stop.x_m,
-                table.stop.reason.describe()
-            )?;
+            super::write_csv_header(w, table.model, params, &table.stop)?;
             let s = &table.summary;
             writeln!(
                 w,
