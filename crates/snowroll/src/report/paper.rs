@@ -42,9 +42,14 @@ pub fn paper_steps() -> usize {
 
 fn log_times() -> Vec<f64> {
     let (a, b) = (T_FIRST.ln(), T_END.ln());
-    (0..N_TIMES)
+    let mut times: Vec<f64> = (0..N_TIMES)
         .map(|i| (a + (b - a) * i as f64 / (N_TIMES - 1) as f64).exp())
-        .collect()
+        .collect();
+    // exp(ln 100) may round above 100 s, past the end of the run: pin it.
+    if let Some(last) = times.last_mut() {
+        *last = T_END;
+    }
+    times
 }
 
 fn run(kind: ModelKind, lab: &Lab, opts: &SimOptions) -> Result<Trajectory, ReportError> {
