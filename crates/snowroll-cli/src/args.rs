@@ -46,10 +46,14 @@ pub enum Command {
     Turns(Box<TurnsArgs>),
     /// List every model: id, alias, equation, terminal acceleration, stall slope.
     Models(ModelsArgs),
-    /// Reproduce and judge every claim of the note: runs the default
-    /// scenario (alpha 30 degrees, b 0.01 m, r0 0.1 m, from rest) through
-    /// every model, and writes an HTML report with the claims table, plots
-    /// and an animation, plus Markdown, JSON, SVG/PNG figures and CSV data.
+    /// Reproduce and judge every claim of the note; write the report
+    /// (./snowroll-report/report.html)
+    ///
+    /// Runs the default scenario (alpha 30 degrees, b 0.01 m, r0 0.1 m, from
+    /// rest) through every model, checks each claim of the note with a
+    /// verdict (holds, holds after correction, refuted), and writes a
+    /// self-contained HTML report with the claims table, plots and an
+    /// animation, plus report.md, claims.json, figures/*.svg|png and data/*.csv.
     Paper(PaperArgs),
 }
 
