@@ -16,7 +16,12 @@
 //! * §2.4 treats the log as only approximately circular (eq. (32), with the
 //!   optional lift term (36)).
 //! * §3 follows the log turn by turn without assuming it is circular, with a
-//!   collision at each full turn (eq. (89)).
+//!   collision at each full turn (eq. (89)). Its acceleration never settles;
+//!   over many turns its mean tends to g sin α/3 within the turns and to
+//!   g sin α/4 including the collisions (measured by [`run_turns`]; the note's
+//!   4 g sin α/9 of eq. (79) does not hold).
+//! * [`report::CLAIMS`] is the table of the note's claims with the computation
+//!   that judges each; `snowroll paper` renders it with plots.
 //!
 //! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
 //! one integrator ([`integrate`]): DOP853 with dense output and events.
@@ -60,6 +65,7 @@
 //! | eq. (74) (0-based), §3.4 | [`TurnModel`] |
 //! | eqs. (81)–(89), the collision | [`collision_speed`], [`TurnRow::collision_loss_j`] |
 //! | eqs. (77)–(79), measured | [`run_turns`], [`TurnSummary`] |
+//! | every claim of the note, with its verdict | [`report::CLAIMS`] |
 #![deny(
     clippy::unwrap_used,
     clippy::expect_used,
