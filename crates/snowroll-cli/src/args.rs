@@ -228,7 +228,7 @@ pub struct ScenarioArgs {
         value_name = "A",
         allow_negative_numbers = true,
         help = with_default(
-            "Absolute tolerance of the integrator, in the units of x (m) and v (m/s) (atol > 0)",
+            "Absolute tolerance of the integrator, in the units of x (m) and v (m/s) (atol >= 1e-30)",
             short(SimOptions::default().tolerances.atol)
         )
     )]

@@ -1181,3 +1181,25 @@ fn a_closed_pipe_ends_quietly() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+#[test]
+fn out_of_scale_inputs_fail_with_one_line_not_a_panic() {
+    // An absolute tolerance so small that a zero component's error overflows.
+    let err = fails(&["simulate", "--model", "eq14", "--atol", "1e-300"]);
+    assert_one_line_error(&err, &["atol", "1e-300", "1e-30"]);
+    // g so large that the first steps overflow: the integrator gives up cleanly.
+    let err = fails(&["simulate", "--model", "eq14", "--g", "1e300"]);
+    assert_one_line_error(&err, &["simulating energy"]);
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn a_log_that_cannot_start_on_any_slope_says_so() {
+    // b = 1 km of snow on a 10 cm log: the stall slope of eq. (14) is 90°.
+    let out = snowroll()
+        .args(["simulate", "--model", "eq14", "--snow-depth", "1000"])
+        .assert()
+        .success();
+    let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(stderr.contains("cannot start on any slope"), "{stderr}");
+}

@@ -2,12 +2,22 @@
 
 use thiserror::Error;
 
+/// A number as people read it: plain for ordinary magnitudes, in exponent
+/// form for very small or very large ones (`1e-300`, not 300 zeros).
+fn number(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e9).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        x.to_string()
+    }
+}
+
 /// A parameter outside its physical or numerical range.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ParamError {
     /// A numeric parameter is out of range (or not finite).
-    #[error("invalid {name} = {value}: expected {expected}")]
+    #[error("invalid {name} = {}: expected {expected}", number(*value))]
     InvalidParameter {
         /// Parameter name as the user spells it.
         name: &'static str,
@@ -40,7 +50,7 @@ pub enum SimError {
     #[error(transparent)]
     Param(#[from] ParamError),
     /// The step size underflowed: the equations are singular near `t`.
-    #[error("step size {h:e} s too small at t = {t} s")]
+    #[error("step size {h:e} s too small at t = {} s (the equations are singular there, or the scenario is out of scale)", number(*t))]
     StepSizeTooSmall {
         /// Time of the failure, s.
         t: f64,
@@ -48,7 +58,7 @@ pub enum SimError {
         h: f64,
     },
     /// More steps than allowed.
-    #[error("gave up after {steps} steps at t = {t} s")]
+    #[error("gave up after {steps} steps at t = {} s", number(*t))]
     TooManySteps {
         /// Time reached, s.
         t: f64,
@@ -56,7 +66,7 @@ pub enum SimError {
         steps: u64,
     },
     /// The state became NaN or infinite.
-    #[error("the state became non-finite at t = {t} s")]
+    #[error("the state became non-finite at t = {} s", number(*t))]
     NonFiniteState {
         /// Time of the failure, s.
         t: f64,

@@ -194,8 +194,8 @@ impl SimOptions {
         if !(t.rtol.is_finite() && t.rtol >= 1e-15 && t.rtol < 1.0) {
             return Err(bad("rtol", t.rtol, "1e-15 <= rtol < 1"));
         }
-        if !(t.atol.is_finite() && t.atol > 0.0) {
-            return Err(bad("atol", t.atol, "atol > 0"));
+        if !(t.atol.is_finite() && t.atol >= crate::integrate::MIN_ATOL) {
+            return Err(bad("atol", t.atol, "atol >= 1e-30"));
         }
         self.sampling.validate()
     }

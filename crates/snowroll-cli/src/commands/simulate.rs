@@ -91,11 +91,12 @@ fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Optio
             d.coefficients()
                 .stall_slope(scenario.snow_depth(), scenario.initial_radius())
         });
-        if let Some(alpha) = threshold {
-            note.push_str(&format!(
-                "; from rest this model needs alpha > {:.4} degrees",
-                alpha.to_degrees()
-            ));
+        match threshold.map(f64::to_degrees) {
+            Some(deg) if deg < 89.9999 => note.push_str(&format!(
+                "; from rest this model needs alpha > {deg:.4} degrees"
+            )),
+            Some(_) => note.push_str("; with this snow and radius it cannot start on any slope"),
+            None => {}
         }
     }
     Some(note)

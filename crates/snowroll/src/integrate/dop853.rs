@@ -173,7 +173,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
             dnf += (f0[n] / sk).powi(2);
             dny += (y[n] / sk).powi(2);
         }
-        let mut h = if dnf <= 1e-10 || dny <= 1e-10 {
+        let mut h = if dnf <= 1e-10 || dny <= 1e-10 || !dnf.is_finite() {
             1e-6
         } else {
             (dny / dnf).sqrt() * 0.01
@@ -198,7 +198,14 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         } else {
             (0.01 / der12).powf(1.0 / 8.0)
         };
-        (100.0 * h).min(h1).min(self.tol.max_step)
+        let guess = (100.0 * h).min(h1).min(self.tol.max_step);
+        // Hairer's formulae overflow when f or y dwarf the tolerances (e.g.
+        // g = 1e300): fall back to a small step and let the controller grow it.
+        if guess.is_finite() && guess > 0.0 {
+            guess
+        } else {
+            1e-6_f64.min(self.tol.max_step)
+        }
     }
 }
 

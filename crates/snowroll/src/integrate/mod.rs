@@ -156,6 +156,11 @@ pub struct NoObserver;
 
 impl<S: ?Sized, const N: usize> Observer<S, N> for NoObserver {}
 
+/// Smallest absolute tolerance: with a state component at zero the error is
+/// divided by atol alone, and below ~1e-30 that overflows for ordinary
+/// accelerations.
+pub const MIN_ATOL: f64 = 1e-30;
+
 /// Tolerances and limits of one integration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances {
@@ -205,8 +210,8 @@ impl Tolerances {
         check(
             "atol",
             self.atol,
-            self.atol.is_finite() && self.atol > 0.0,
-            "atol > 0",
+            self.atol.is_finite() && self.atol >= MIN_ATOL,
+            "atol >= 1e-30 (a smaller atol makes the error of a zero component overflow)",
         )?;
         check(
             "max_step",
