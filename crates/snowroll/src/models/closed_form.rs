@@ -130,33 +130,35 @@ impl DragOnlyClosedForm {
             return Ok(x_a);
         }
         let fail = SimError::Inversion { t };
-        // Bracket: the speed only grows faster than √(x) ... expand until passed.
-        let (mut lo, mut hi) = (x_a, x_a);
-        let mut t_hi = t_a;
-        let mut guess = (self.speed(x_a) * (t - t_a)).max(self.g_along * (t - t_a).powi(2) / 3.0);
+        // Bracket [lo, hi] with t(lo) <= t <= t(hi), each time known from the
+        // nearest point already integrated, so every quadrature covers only
+        // the interval it adds.
+        let (mut lo, mut t_lo) = (x_a, t_a);
+        let mut step = (self.speed(x_a) * (t - t_a)).max(self.g_along * (t - t_a).powi(2) / 3.0);
+        let (mut hi, mut t_hi) = (x_a, t_a);
         for _ in 0..200 {
-            hi = x_a + guess;
-            t_hi = t_a + self.time_between(x_a, hi);
+            hi = lo + step;
+            t_hi = t_lo + self.time_between(lo, hi);
             if t_hi >= t {
                 break;
             }
-            lo = hi;
-            guess *= 2.0;
+            (lo, t_lo) = (hi, t_hi);
+            step *= 2.0;
         }
         if t_hi < t {
             return Err(fail);
         }
-        let mut x = 0.5 * (lo + hi);
+        // Safeguarded Newton (dt/dx = 1/v), each t(x) integrated from lo.
+        let mut x = lo + (hi - lo) * (t - t_lo) / (t_hi - t_lo);
         for _ in 0..100 {
-            let tx = t_a + self.time_between(x_a, x);
+            let tx = t_lo + self.time_between(lo, x);
             let f = tx - t;
             if f > 0.0 {
                 hi = x;
             } else {
-                lo = x;
+                (lo, t_lo) = (x, tx);
             }
-            let v = self.speed(x);
-            let mut next = x - f * v;
+            let mut next = x - f * self.speed(x);
             if !(next > lo && next < hi) {
                 next = 0.5 * (lo + hi);
             }
