@@ -63,7 +63,7 @@
 //! | eqs. (58), (64), (69), (71)–(76) | [`TurnDynamics`], [`InTurnCoefficients::paper`] |
 //! | exact in-turn equation (57), (88) | [`TurnVariant::Exact`], [`models::exact_geometry::exact_turn_coefficients`] |
 //! | eq. (74) (0-based), §3.4 | [`TurnModel`] |
-//! | eqs. (81)–(89), the collision | [`collision_speed`], [`TurnRow::collision_loss_j`] |
+//! | eqs. (81)–(89), the collision | [`collision_speed`], [`kinetic_energy_at_turn_start`], [`kinetic_energy_at_turn_end`], [`TurnRow::collision_loss_j`] |
 //! | eqs. (77)–(79), measured | [`run_turns`], [`TurnSummary`] |
 //! | every claim of the note, with its verdict | [`report::CLAIMS`] |
 #![deny(
@@ -88,9 +88,10 @@ pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
 pub use models::{
-    collision_speed, run_turns, CircularModel, Coefficients, Derivation, DragOnlyClosedForm,
-    InTurnCoefficients, LoneyModel, Model, ModelKind, SectorBody, TurnCheckpoint, TurnDynamics,
-    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
+    collision_speed, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns,
+    CircularModel, Coefficients, Derivation, DragOnlyClosedForm, InTurnCoefficients, LoneyModel,
+    Model, ModelKind, SectorBody, TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary,
+    TurnTable, TurnVariant,
 };
 pub use output::{write_trajectory, write_turn_table, Format, RunParams};
 pub use scenario::{Scenario, ScenarioFile};

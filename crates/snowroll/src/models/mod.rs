@@ -13,8 +13,9 @@ pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
 pub use exact_geometry::SectorBody;
 pub use turn_by_turn::{
-    collision_speed, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics, TurnModel,
-    TurnRow, TurnSummary, TurnTable, TurnVariant,
+    collision_speed, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns,
+    InTurnCoefficients, TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable,
+    TurnVariant,
 };
 
 use std::fmt;

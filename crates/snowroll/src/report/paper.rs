@@ -6,7 +6,9 @@
 //! per-turn tables.
 
 use super::{Animation, ClaimResult, Figure, Lab, Metadata, Report, ReportError, CLAIMS};
-use crate::models::{ModelKind, TurnTable};
+use crate::models::{
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, ModelKind, TurnTable,
+};
 use crate::plot::{Axis, Chart, Legend, Series, Style};
 use crate::scenario::ScenarioFile;
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
@@ -327,20 +329,15 @@ pub fn build_paper_report(
     for row in &paper.rows {
         let k = row.turn as f64;
         let (r, r1) = (r0 + k * b, r0 + (k + 1.0) * b);
-        let (m, m1) = (
-            std::f64::consts::PI * rho_l * r * r,
-            std::f64::consts::PI * rho_l * r1 * r1,
-        );
-        let t_beg = 0.75 * m * row.v_start_m_s.powi(2);
-        let t_end = m1 * (1.0 + r1 * r1 / (2.0 * r * r)) * row.v_end_m_s.powi(2) / 2.0;
-        released += t_end - t_beg;
+        released += kinetic_energy_at_turn_end(rho_l, r, b, row.v_end_m_s)
+            - kinetic_energy_at_turn_start(rho_l, r, row.v_start_m_s);
         lost += row.collision_loss_j;
         if next.peek().is_some_and(|&&i| i == row.turn as usize) {
             next.next();
             let kk = k + 1.0;
             ledger_released.push((kk, released));
             ledger_lost.push((kk, lost));
-            ledger_kinetic.push((kk, 0.75 * m1 * row.v_after_m_s.powi(2)));
+            ledger_kinetic.push((kk, kinetic_energy_at_turn_start(rho_l, r1, row.v_after_m_s)));
         }
     }
     let ledger = Chart::new(

@@ -46,7 +46,7 @@ use crate::error::SimError;
 use crate::integrate::{Direction, EventAction, OdeSystem};
 use crate::scenario::Scenario;
 use crate::trajectory::{Sample, SimOptions, StopReason, Trajectory, TurnState};
-use crate::units::{Meters, MetersPerSecond, MetersPerSecondSquared, Radians};
+use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Radians};
 
 /// Full turn, rad.
 const TWO_PI: f64 = 2.0 * PI;
@@ -261,6 +261,28 @@ const RANGE_THETA_TOL: f64 = 1e-8;
 pub fn collision_speed(r_k: Meters, b: Meters, v_end: MetersPerSecond) -> MetersPerSecond {
     let r_next = r_k + b;
     v_end * (r_next * r_next + 2.0 * r_k * r_k) / (3.0 * r_k * r_next)
+}
+
+/// Kinetic energy of the circular log of radius `r_k` rolling at speed `v`
+/// at the start of turn k, eq. (82) (0-based): `T = 3 m_k v²/4`, with
+/// `m_k = π ρ l r_k²` and `rho_l` = ρ l, J.
+pub fn kinetic_energy_at_turn_start(rho_l: f64, r_k: Meters, v: MetersPerSecond) -> Joules {
+    0.75 * std::f64::consts::PI * rho_l * r_k * r_k * v * v
+}
+
+/// Kinetic energy at the end of turn k, just before the collision, eqs.
+/// (85)–(86) (0-based): the log is round with radius `r_{k+1} = r_k + b`
+/// but still touches at distance `r_k` from its centre, so
+/// `T = m_{k+1} (1 + r_{k+1}²/(2 r_k²)) v²/2`, J.
+pub fn kinetic_energy_at_turn_end(
+    rho_l: f64,
+    r_k: Meters,
+    b: Meters,
+    v_end: MetersPerSecond,
+) -> Joules {
+    let r_next = r_k + b;
+    let m_next = std::f64::consts::PI * rho_l * r_next * r_next;
+    m_next * (1.0 + r_next * r_next / (2.0 * r_k * r_k)) * v_end * v_end / 2.0
 }
 
 /// Event indices of [`TurnSystem`].

@@ -14,7 +14,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{collision_speed, TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END};
+use super::{
+    collision_speed, kinetic_energy_at_turn_end, TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END,
+};
 use crate::error::{ParamError, SimError};
 use crate::integrate::{integrate, EventRecord, Observer, Stats, Termination};
 use crate::models::ode::OdeModel;
@@ -205,10 +207,8 @@ impl Observer<TurnSystem, 2> for TableObserver {
         let omega_end = event.y_before[1];
         let v_end = r * omega_end;
         let v_after = collision_speed(r, b, v_end);
-        // eqs. (85), (86): the end-of-turn body is a disk r_{k+1} touching at distance r_k.
-        let mass_next = std::f64::consts::PI * system.rho_l() * r_next * r_next;
-        let t_end_kinetic =
-            mass_next * (r_next * r_next / 2.0 + r * r) * omega_end * omega_end / 2.0;
+        // The collision keeps (r_{k+1}² + 2r_k²)/(3r_{k+1}²) of T_end (eqs. (85), (86), (89)).
+        let t_end_kinetic = kinetic_energy_at_turn_end(system.rho_l(), r, b, v_end);
         let collision_loss = t_end_kinetic * 2.0 * b * (2.0 * r + b) / (3.0 * r_next * r_next);
         let (a_min, a_max) = dynamics.acceleration_range(self.v_start / r);
         let dt = event.t - self.t_start;

@@ -4,7 +4,7 @@ use std::f64::consts::PI;
 
 use super::{holds_if, Finding, Lab};
 use crate::error::SimError;
-use crate::models::TurnTable;
+use crate::models::{kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, TurnTable};
 use crate::report::Verdict;
 
 /// The last checkpoint of a long run (the means over its last decade of turns).
@@ -107,12 +107,6 @@ pub(super) fn eq78_speed(lab: &Lab) -> Result<Finding, SimError> {
     })
 }
 
-/// Kinetic energy of the circular log of radius `r_c`, mass `m`, rolling
-/// about a contact line at distance `r_contact` from its centre, eq. (86).
-fn t_end(m: f64, r_c: f64, r_contact: f64, v: f64) -> f64 {
-    m * (1.0 + r_c * r_c / (2.0 * r_contact * r_contact)) * v * v / 2.0
-}
-
 /// (89): angular momentum about the contact line is conserved in the
 /// collision, which therefore loses kinetic energy.
 pub(super) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> {
@@ -127,8 +121,8 @@ pub(super) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> {
         let k = row.turn as f64;
         let (r, r1) = (r0 + k * b, r0 + (k + 1.0) * b);
         let m1 = PI * rho_l * r1 * r1;
-        let before = t_end(m1, r1, r, row.v_end_m_s);
-        let after = 0.75 * m1 * row.v_after_m_s.powi(2);
+        let before = kinetic_energy_at_turn_end(rho_l, r, b, row.v_end_m_s);
+        let after = kinetic_energy_at_turn_start(rho_l, r1, row.v_after_m_s);
         let want = (r1 * r1 + 2.0 * r * r) / (3.0 * r1 * r1);
         worst_ratio = worst_ratio.max((after / before / want - 1.0).abs());
         // L_C = I_C ω before (about the old contact, distance r) and after.
@@ -165,7 +159,7 @@ pub(super) fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
     let predict = |k: f64, v_beg: f64, printed: bool| {
         let (r, r1) = (r0 + k * b, r0 + (k + 1.0) * b);
         let (m, m1) = (PI * rho_l * r * r, PI * rho_l * r1 * r1);
-        let t_beg = 0.75 * m * v_beg * v_beg;
+        let t_beg = kinetic_energy_at_turn_start(rho_l, r, v_beg);
         let v_end_pot = if printed {
             // As printed, 1-based n = k + 1, x_n the cumulative position (74).
             let x_n = 2.0 * PI * (k + 1.0) * r0 + (k + 1.0) * k * PI * b;
@@ -173,7 +167,8 @@ pub(super) fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
         } else {
             (m1 - m) * (r + b / 2.0) * gc - (m1 - 0.5 * (m1 - m)) * (2.0 * PI * r) * gs
         };
-        let denom = m1 * (1.0 + r1 * r1 / (2.0 * r * r)) / 2.0;
+        // T_end per unit v_end² (eq. (86)).
+        let denom = kinetic_energy_at_turn_end(rho_l, r, b, 1.0);
         ((t_beg - v_end_pot) / denom).sqrt()
     };
     let mut worst_exact: f64 = 0.0;
