@@ -40,6 +40,15 @@ fn simulate(args: &[&str]) -> String {
     String::from_utf8(out.get_output().stdout.clone()).unwrap()
 }
 
+/// A config file `name` with `contents` in a fresh temporary directory (kept
+/// while the returned guard lives).
+fn config_file(name: &str, contents: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    fs::write(&path, contents).unwrap();
+    (dir, path)
+}
+
 /// Runs `snowroll ARGS`, expecting failure; returns stderr.
 fn fails(args: &[&str]) -> String {
     let out = snowroll().args(args).assert().failure();
@@ -811,9 +820,10 @@ fn simulate_turns_stops_after_n_turns_with_the_turn_columns() {
 
 #[test]
 fn turns_and_a_case_insensitive_model_come_from_the_config_file() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("turns.toml");
-    fs::write(&path, "model = \"EQ88\"\nturns = 4\nsnow-depth = 0.02\n").unwrap();
+    let (_dir, path) = config_file(
+        "turns.toml",
+        "model = \"EQ88\"\nturns = 4\nsnow-depth = 0.02\n",
+    );
     let config = path.to_str().unwrap();
     let doc = json(&simulate(&["--config", config, "--format", "json"]));
     assert_eq!(doc["model"]["id"], "turns-exact");
@@ -844,9 +854,7 @@ fn turns_flag_with_a_circular_model_is_rejected() {
     let err = fails(&["simulate", "--model", "torque-cm", "--turns", "3"]);
     assert_one_line_error(&err, &["--turns", "turns, turns-exact", "torque-cm"]);
     // Also when `turns` comes from the config file.
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("c.toml");
-    fs::write(&path, "model = \"energy\"\nturns = 3\n").unwrap();
+    let (_dir, path) = config_file("c.toml", "model = \"energy\"\nturns = 3\n");
     let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
     assert_one_line_error(&err, &["turns", "turns, turns-exact", "energy"]);
 }
@@ -861,9 +869,7 @@ fn turns_command_rejects_a_circular_model_listing_the_turn_models() {
 
 #[test]
 fn turns_config_with_sampling_keys_is_rejected() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("s.toml");
-    fs::write(&path, "model = \"turns\"\ndt = 0.1\n").unwrap();
+    let (_dir, path) = config_file("s.toml", "model = \"turns\"\ndt = 0.1\n");
     let err = fails(&["turns", "--config", path.to_str().unwrap()]);
     assert_one_line_error(&err, &["s.toml", "`dt`", "simulate"]);
 }
@@ -1035,9 +1041,7 @@ fn unreadable_config_names_the_file() {
 
 #[test]
 fn malformed_config_names_the_file_and_line() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("bad.toml");
-    fs::write(&path, "model = \"eq4\"\nalpha-deg = = 3\n").unwrap();
+    let (_dir, path) = config_file("bad.toml", "model = \"eq4\"\nalpha-deg = = 3\n");
     let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
     assert_one_line_error(&err, &["bad.toml", "line 2"]);
     // A value of the wrong type too.
@@ -1054,18 +1058,14 @@ fn malformed_config_names_the_file_and_line() {
 
 #[test]
 fn unknown_config_key_is_named() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("typo.toml");
-    fs::write(&path, "model = \"eq4\"\nalpha = 25\n").unwrap();
+    let (_dir, path) = config_file("typo.toml", "model = \"eq4\"\nalpha = 25\n");
     let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
     assert_one_line_error(&err, &["typo.toml", "alpha", "alpha-deg"]);
 }
 
 #[test]
 fn config_with_unknown_model_lists_the_ids() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("m.toml");
-    fs::write(&path, "model = \"eq99\"\n").unwrap();
+    let (_dir, path) = config_file("m.toml", "model = \"eq99\"\n");
     let err = fails(&["simulate", "--config", path.to_str().unwrap()]);
     assert_one_line_error(
         &err,

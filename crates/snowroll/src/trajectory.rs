@@ -109,6 +109,14 @@ pub enum Sampling {
 }
 
 impl Sampling {
+    /// Point `i` of the regular grid `0, dt, 2dt, …` that ends at `t_end`, s;
+    /// `None` past the end. A point that only rounding puts after `t_end` is
+    /// moved onto it, so a grid that divides the run evenly ends exactly there.
+    pub fn grid_time(dt: Seconds, i: usize, t_end: Seconds) -> Option<Seconds> {
+        let t = i as f64 * dt;
+        (t <= t_end * (1.0 + 4.0 * f64::EPSILON)).then_some(t.min(t_end))
+    }
+
     /// Checks times and grid spacing.
     ///
     /// # Errors

@@ -211,9 +211,7 @@ impl Model for LoneyModel {
         let times: Vec<f64> = match &opts.sampling {
             Sampling::Times(ts) => ts.iter().copied().filter(|&t| t <= t_stop).collect(),
             Sampling::Every(dt) => (0..)
-                .map(|i| i as f64 * dt)
-                .take_while(|&t| t <= t_stop * (1.0 + 4.0 * f64::EPSILON))
-                .map(|t| t.min(t_stop))
+                .map_while(|i| Sampling::grid_time(*dt, i, t_stop))
                 .collect(),
             Sampling::Steps => (0..=DEFAULT_SAMPLES)
                 .map(|i| t_stop * i as f64 / DEFAULT_SAMPLES as f64)

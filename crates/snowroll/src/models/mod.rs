@@ -209,6 +209,12 @@ impl ModelKind {
         }
     }
 
+    /// Whether the model takes the log as circular at all times (§2, App. A
+    /// and Loney's fn. 4), as opposed to following it turn by turn (§3).
+    pub fn is_circular(self) -> bool {
+        TurnVariant::of(self).is_none()
+    }
+
     /// The coefficient set of a circular model; `None` for closed forms.
     pub fn derivation(self) -> Option<Derivation> {
         Some(match self {

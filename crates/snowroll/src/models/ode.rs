@@ -47,11 +47,7 @@ impl<'a> Recorder<'a> {
     fn requested(&self, i: usize) -> Option<f64> {
         match self.sampling {
             Sampling::Times(ts) => ts.get(i).copied(),
-            Sampling::Every(dt) => {
-                let t = i as f64 * dt;
-                // Allow the last grid point to round onto t_end.
-                (t <= self.t_end * (1.0 + 4.0 * f64::EPSILON)).then_some(t.min(self.t_end))
-            }
+            Sampling::Every(dt) => Sampling::grid_time(*dt, i, self.t_end),
             _ => None,
         }
     }

@@ -118,7 +118,7 @@ pub fn build_paper_report(
     };
     let circular: Vec<ModelKind> = ModelKind::ALL
         .into_iter()
-        .filter(|k| k.derivation().is_some() || *k == ModelKind::Loney)
+        .filter(|k| k.is_circular())
         .collect();
     let mut trajectories = Vec::new();
     for kind in &circular {

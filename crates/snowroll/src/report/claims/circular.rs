@@ -372,10 +372,7 @@ pub(super) fn snowless(lab: &Lab) -> Result<Finding, SimError> {
         ..SimOptions::default()
     };
     let mut worst: f64 = 0.0;
-    for kind in ModelKind::ALL
-        .into_iter()
-        .filter(|k| k.derivation().is_some() || *k == ModelKind::Loney)
-    {
+    for kind in ModelKind::ALL.into_iter().filter(|k| k.is_circular()) {
         for p in run(kind, &s, &opts)?.samples {
             worst = worst.max((p.a_m_s2 / s.g_along() - 2.0 / 3.0).abs());
             if p.t_s > 0.0 {

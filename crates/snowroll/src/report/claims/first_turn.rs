@@ -1,4 +1,8 @@
 //! Checks of the first turn, §3.1–3.3, and of the errata a computation shows there.
+//!
+//! The note's formulae are typed here as printed (and as corrected), not taken
+//! from [`crate::models::InTurnCoefficients`]: the checks compare the note's
+//! analyses with each other, independently of the model the program runs.
 
 use std::f64::consts::PI;
 
