@@ -215,20 +215,39 @@ impl Acceleration {
 /// assert!(traj.samples.last().unwrap().v_m_s > 0.0);
 /// # Ok::<(), snowroll::SimError>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CircularModel {
     derivation: Derivation,
+    coefficients: Coefficients,
 }
 
 impl CircularModel {
     /// The model of `derivation`.
     pub fn new(derivation: Derivation) -> Self {
-        Self { derivation }
+        Self {
+            derivation,
+            coefficients: derivation.coefficients(),
+        }
+    }
+
+    /// The model of `derivation` run with other coefficients: a deliberately
+    /// wrong model, for the tests that check a claim's verdict changes when
+    /// its model is wrong. It still reports itself as `derivation`'s model.
+    pub fn with_coefficients(derivation: Derivation, coefficients: Coefficients) -> Self {
+        Self {
+            derivation,
+            coefficients,
+        }
     }
 
     /// Its derivation.
     pub fn derivation(&self) -> Derivation {
         self.derivation
+    }
+
+    /// The coefficients it runs with.
+    pub fn coefficients(&self) -> Coefficients {
+        self.coefficients
     }
 }
 
@@ -312,7 +331,7 @@ impl Model for CircularModel {
 
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
-        let coeffs = self.derivation.coefficients();
+        let coeffs = self.coefficients;
         let mut system = CircularSystem {
             coeffs,
             scenario: *scenario,

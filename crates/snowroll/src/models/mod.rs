@@ -8,14 +8,19 @@ mod closed_form;
 pub mod exact_geometry;
 mod ode;
 mod turn_by_turn;
+mod validity;
 
 pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
 pub use exact_geometry::SectorBody;
 pub use turn_by_turn::{
-    collision_speed, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns,
-    InTurnCoefficients, TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable,
-    TurnVariant,
+    collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
+    kinetic_energy_at_turn_start, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics,
+    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
+};
+pub use validity::{
+    validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,
+    THIN_SNOW_MAX_B_OVER_R0,
 };
 
 use std::fmt;

@@ -33,8 +33,10 @@
 //! collision for `Paper`. The per-turn table is [`run_turns`].
 
 mod extremes;
+mod stall;
 mod table;
 
+pub use stall::first_turn_stall_slope;
 pub use table::{run_turns, TurnCheckpoint, TurnRow, TurnSummary, TurnTable};
 
 use std::f64::consts::PI;

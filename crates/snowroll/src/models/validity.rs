@@ -1,0 +1,209 @@
+//! Where each model may be trusted: the order in b/r its derivation keeps,
+//! the range of b/r0 the program uses it in without a warning, and the
+//! slope below which it stalls (fn. 7).
+//!
+//! Every model's radius only grows (`π r² = π r0² + b x`, eq. (8), or
+//! `r_k = r0 + k b`, eq. (74)), so b/r is largest at the start: a run
+//! leaves a model's range exactly when its scenario does, and
+//! [`validity_warnings`] needs only the model and the scenario.
+
+use serde::Serialize;
+
+use super::{first_turn_stall_slope, ModelKind, TurnVariant};
+use crate::scenario::Scenario;
+use crate::units::{Meters, Radians};
+
+/// Largest b/r0 at which the program uses a thin-snow model without a
+/// warning. The first-order models drop terms one order of b/r below the
+/// snow terms they keep, and the circular models rest on an assumption
+/// (snow spread over the whole log at once) that only thin snow makes
+/// harmless; at b/r0 = 0.1 the dropped terms change snow effects such as the
+/// stall slope by about 10 % (the `paper` report's table of where the turn
+/// models part ways).
+pub const THIN_SNOW_MAX_B_OVER_R0: f64 = 0.1;
+
+/// A model's range of validity.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Validity {
+    /// The order in b/r its derivation keeps: `Some(1)` for first-order
+    /// truncations, `Some(0)` for the snowless model, `None` when no term in
+    /// b/r is dropped (exact within the model's assumptions).
+    pub order_in_b_over_r: Option<u32>,
+    /// Largest b/r0 it is used at without a warning; `None`: no limit.
+    pub max_b_over_r0: Option<f64>,
+    /// Its assumptions and range, in words.
+    pub statement: &'static str,
+}
+
+/// How a model fails to roll on a slope that is too gentle (fn. 7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StallKind {
+    /// From rest its acceleration is not positive: it does not start (§2).
+    DoesNotStart,
+    /// It starts at a = 2G/3 but stalls inside its first turn (§3).
+    StallsInFirstTurn,
+}
+
+/// The slope below which a model started from rest does not roll on.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StallThreshold {
+    /// The critical slope α*, rad.
+    pub slope: Radians,
+    /// What happens below it.
+    pub kind: StallKind,
+}
+
+impl ModelKind {
+    /// The model's range of validity (see [`Validity`]).
+    pub fn validity(self) -> Validity {
+        let thin = Some(THIN_SNOW_MAX_B_OVER_R0);
+        let (order, max, statement) = match self {
+            ModelKind::Snowless => (
+                Some(0),
+                Some(0.0),
+                "no snow: the b = 0 limit of every model (App. A)",
+            ),
+            ModelKind::TorqueCm
+            | ModelKind::TorqueContact
+            | ModelKind::Energy
+            | ModelKind::LagrangianPrinted
+            | ModelKind::Loney => (
+                None,
+                thin,
+                "circular at all times (unphysical, §2.1.3); no term in b/r dropped within that assumption, which only thin snow makes harmless",
+            ),
+            ModelKind::EnergyThin => (
+                Some(1),
+                thin,
+                "circular at all times (§2.1.3) and first order in b/r (eq. (15) drops the b² terms of eq. (14))",
+            ),
+            ModelKind::QuasiCircular | ModelKind::QuasiCircularLift => (
+                Some(1),
+                thin,
+                "approximately circular (§2.4): first order in b/r, eqs. (23)–(30) are approximations",
+            ),
+            ModelKind::Turns => (
+                Some(1),
+                thin,
+                "turn by turn, I_C and V to first order in b/r_k (eqs. (73), (76)); collision idealised (eq. (89))",
+            ),
+            ModelKind::TurnsExact => (
+                None,
+                None,
+                "turn by turn with the exact mass properties of the disk and layer; collision idealised (eq. (89))",
+            ),
+        };
+        Validity {
+            order_in_b_over_r: order,
+            max_b_over_r0: max,
+            statement,
+        }
+    }
+
+    /// The slope below which the model, started from rest with snow depth
+    /// `b` and radius `r0`, does not roll on (fn. 7): for the circular
+    /// models with a lift term, where a(0) ≤ 0
+    /// ([`Coefficients::stall_slope`](super::Coefficients::stall_slope)); for
+    /// the turn models, where the log stalls inside turn 0
+    /// ([`first_turn_stall_slope`]). `None` for models that always roll on.
+    pub fn stall_threshold(self, b: Meters, r0: Meters) -> Option<StallThreshold> {
+        if let Some(variant) = TurnVariant::of(self) {
+            return first_turn_stall_slope(variant, r0, b).map(|slope| StallThreshold {
+                slope,
+                kind: StallKind::StallsInFirstTurn,
+            });
+        }
+        self.derivation()
+            .and_then(|d| d.coefficients().stall_slope(b, r0))
+            .map(|slope| StallThreshold {
+                slope,
+                kind: StallKind::DoesNotStart,
+            })
+    }
+}
+
+/// A run outside its model's range of validity, in words.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ValidityWarning {
+    /// The model.
+    pub model: ModelKind,
+    /// What is wrong, one sentence.
+    pub message: String,
+}
+
+impl std::fmt::Display for ValidityWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+/// The warnings for running `kind` on `scenario`: b/r0 beyond the model's
+/// range ([`ModelKind::validity`]), and, for the first-order turn model
+/// started from rest, a slope on which it and the exact geometry disagree
+/// about stalling in the first turn. Empty when the run is in range.
+///
+/// ```
+/// use snowroll::{validity_warnings, ModelKind, Scenario, ScenarioFile};
+/// assert!(validity_warnings(ModelKind::Turns, &Scenario::default()).is_empty());
+/// let thick = Scenario::new(ScenarioFile {
+///     slope_deg: 40.0,
+///     snow_depth_m: 0.2,
+///     r0_m: 0.15,
+///     ..ScenarioFile::default()
+/// })?;
+/// let w = validity_warnings(ModelKind::Turns, &thick);
+/// assert_eq!(w.len(), 2); // b/r0 = 1.33, and turns-exact stalls in turn 0 here
+/// # Ok::<(), snowroll::ParamError>(())
+/// ```
+pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWarning> {
+    let (b, r0) = (scenario.snow_depth(), scenario.initial_radius());
+    let ratio = b / r0;
+    let validity = kind.validity();
+    let mut out = Vec::new();
+    let mut warn = |message: String| {
+        out.push(ValidityWarning {
+            model: kind,
+            message,
+        });
+    };
+    match validity.max_b_over_r0 {
+        Some(max) if kind == ModelKind::Snowless && b > max => warn(format!(
+            "{} ignores the snow (snow_depth = {b} m): it is the b = 0 limit of the other models",
+            kind.id()
+        )),
+        Some(max) if ratio > max => warn(format!(
+            "{} is valid for thin snow, b/r0 <= {max} ({}); here b/r0 = {ratio:.3}: \
+             the terms it neglects are not small (compare {})",
+            kind.id(),
+            validity.statement,
+            ModelKind::TurnsExact.id()
+        )),
+        _ => {}
+    }
+    if kind == ModelKind::Turns && scenario.initial_speed() <= 0.0 {
+        let alpha = scenario.slope_angle();
+        let first = first_turn_stall_slope(TurnVariant::Paper, r0, b);
+        let exact = first_turn_stall_slope(TurnVariant::Exact, r0, b);
+        if let (Some(first), Some(exact)) = (first, exact) {
+            let stalls = |threshold: f64| alpha < threshold;
+            if stalls(first) != stalls(exact) {
+                let (this, other) = if stalls(exact) {
+                    ("rolls through", "stalls in")
+                } else {
+                    ("stalls in", "rolls through")
+                };
+                warn(format!(
+                    "at alpha = {:.4} degrees {} {this} its first turn, but with exact geometry ({}) \
+                     the log {other} it (turn-0 stall slopes: {:.4} and {:.4} degrees): the models part ways here",
+                    alpha.to_degrees(),
+                    kind.id(),
+                    ModelKind::TurnsExact.id(),
+                    first.to_degrees(),
+                    exact.to_degrees()
+                ));
+            }
+        }
+    }
+    out
+}
