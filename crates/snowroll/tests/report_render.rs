@@ -12,8 +12,8 @@ use std::path::Path;
 use snowroll::output::VERSION;
 use snowroll::plot::{png_size, Axis, Chart, PlotError, Provenance, Series, Style};
 use snowroll::report::{
-    figure_csv, Animation, Claim, ClaimResult, Figure, Metadata, Report, ReportError, Tolerance,
-    Verdict,
+    figure_csv, Animation, Claim, ClaimResult, Criterion, Figure, Metadata, Report, ReportError,
+    Tolerance, Verdict,
 };
 use snowroll::{ModelKind, Sampling, Scenario, ScenarioFile, SimOptions, Trajectory};
 
@@ -271,7 +271,11 @@ static HOLDS: Claim = Claim {
     paper_ref: "App. A",
     statement: "A <b>bold</b> claim & more | with a pipe.",
     method: "m",
-    tolerance: Tolerance::Relative { value: 1e-8 },
+    tolerances: &[Criterion {
+        quantity: "q",
+        tolerance: Tolerance::Relative { value: 1e-8 },
+        reason: "why",
+    }],
     expected: Verdict::Holds,
 };
 
@@ -280,8 +284,8 @@ static CORRECTED: Claim = Claim {
     paper_ref: "eq. (21)",
     statement: "s",
     method: "m",
-    tolerance: Tolerance::Exact,
-    expected: Verdict::HoldsAfterCorrection("errata §2.1"),
+    tolerances: &[],
+    expected: Verdict::HoldsAfterCorrection("docs/errata.md (21)"),
 };
 
 fn small_report() -> Report {
@@ -387,7 +391,7 @@ fn claims_json_carries_verdicts_errata_and_mismatches() {
     assert_eq!(claims[0]["id"], "demo-holds");
     assert_eq!(claims[0]["verdict"]["verdict"], "holds");
     assert_eq!(claims[0]["as_expected"], true);
-    assert_eq!(claims[1]["expected"]["erratum"], "errata §2.1");
+    assert_eq!(claims[1]["expected"]["erratum"], "docs/errata.md (21)");
     assert_eq!(claims[1]["verdict"]["verdict"], "refuted");
     assert_eq!(claims[1]["as_expected"], false);
     assert_eq!(v["tally"]["unexpected"], 1);

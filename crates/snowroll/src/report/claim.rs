@@ -1,9 +1,13 @@
 //! Claims of the note and what the program found about them.
 //!
 //! A [`Claim`] is a static table entry: where in the note, what it says, how
-//! the program checks it, with which tolerance, and the verdict we expect. A
+//! the program checks it, with which tolerances, and the verdict we expect. A
 //! [`ClaimResult`] pairs a claim with the measured numbers, the verdict the
 //! check reached and the evidence for it.
+//!
+//! The tolerances a claim shows are the ones its check uses: each is a
+//! [`Criterion`] constant that the table lists and the check calls
+//! ([`Criterion::accepts`]), so the two cannot drift apart.
 
 use std::fmt;
 
@@ -15,10 +19,13 @@ use serde::Serialize;
 pub enum Verdict {
     /// The claim holds as printed.
     Holds,
-    /// The claim holds once the named erratum is applied (e.g. `errata §2.1`).
+    /// The claim holds once the named erratum of `docs/errata.md` is applied.
     HoldsAfterCorrection(&'static str),
-    /// The claim does not hold; the evidence says why.
+    /// The claim does not hold, and the check established what holds instead.
     Refuted,
+    /// The check could establish neither the claim nor what holds instead
+    /// (a wrong model, a non-finite number): never an expected verdict.
+    Inconclusive,
 }
 
 impl Verdict {
@@ -30,15 +37,18 @@ impl Verdict {
                 format!("holds after correction ({erratum})")
             }
             Verdict::Refuted => "refuted".to_string(),
+            Verdict::Inconclusive => "inconclusive".to_string(),
         }
     }
 
-    /// A short machine-friendly class name: `holds`, `corrected`, `refuted`.
+    /// A short machine-friendly class name: `holds`, `corrected`, `refuted`,
+    /// `inconclusive`.
     pub fn class(self) -> &'static str {
         match self {
             Verdict::Holds => "holds",
             Verdict::HoldsAfterCorrection(_) => "corrected",
             Verdict::Refuted => "refuted",
+            Verdict::Inconclusive => "inconclusive",
         }
     }
 
@@ -48,6 +58,7 @@ impl Verdict {
             Verdict::Holds => "✓",
             Verdict::HoldsAfterCorrection(_) => "✎",
             Verdict::Refuted => "✗",
+            Verdict::Inconclusive => "?",
         }
     }
 }
@@ -74,8 +85,45 @@ pub enum Tolerance {
         /// Its unit, e.g. `m/s²`; `1` for a ratio.
         unit: &'static str,
     },
-    /// The check is exact or qualitative (a sign, an ordering, an identity of formulae).
+    /// `|measured − expected| ≥ value`, in `unit`: a separation that shows
+    /// two things differ (a printed form from the corrected one).
+    AtLeast {
+        /// The smallest difference that counts as different.
+        value: f64,
+        /// Its unit.
+        unit: &'static str,
+    },
+    /// The check is exact or qualitative (a sign, an ordering, a stop reason).
     Exact,
+}
+
+impl Tolerance {
+    /// The deviation this tolerance bounds: relative for [`Tolerance::Relative`],
+    /// absolute otherwise (0 or ∞ for [`Tolerance::Exact`]).
+    pub fn deviation(self, measured: f64, expected: f64) -> f64 {
+        let diff = (measured - expected).abs();
+        match self {
+            Tolerance::Relative { .. } => diff / expected.abs(),
+            Tolerance::Absolute { .. } | Tolerance::AtLeast { .. } => diff,
+            Tolerance::Exact if diff <= 0.0 => 0.0,
+            Tolerance::Exact => f64::INFINITY,
+        }
+    }
+
+    /// Whether a deviation (as [`Tolerance::deviation`] measures it) passes.
+    /// A NaN deviation never passes.
+    pub fn accepts_deviation(self, deviation: f64) -> bool {
+        match self {
+            Tolerance::Relative { value } | Tolerance::Absolute { value, .. } => deviation <= value,
+            Tolerance::AtLeast { value, .. } => deviation >= value,
+            Tolerance::Exact => deviation <= 0.0,
+        }
+    }
+
+    /// Whether `measured` passes against `expected`.
+    pub fn accepts(self, measured: f64, expected: f64) -> bool {
+        self.accepts_deviation(self.deviation(measured, expected))
+    }
 }
 
 impl fmt::Display for Tolerance {
@@ -83,8 +131,55 @@ impl fmt::Display for Tolerance {
         match self {
             Tolerance::Relative { value } => write!(f, "relative {value:e}"),
             Tolerance::Absolute { value, unit } => write!(f, "absolute {value:e} {unit}"),
+            Tolerance::AtLeast { value, unit } => write!(f, "at least {value:e} {unit} apart"),
             Tolerance::Exact => f.write_str("exact"),
         }
+    }
+}
+
+/// One tolerance of a check: what it bounds, how much, and why that much.
+/// The claims table lists these constants and the checks call them, so the
+/// tolerance shown is the tolerance used.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Criterion {
+    /// The quantity compared, e.g. `a/G against the derived limit`.
+    pub quantity: &'static str,
+    /// The tolerance.
+    pub tolerance: Tolerance,
+    /// Why this tolerance, one line.
+    pub reason: &'static str,
+}
+
+impl Criterion {
+    /// [`Tolerance::deviation`].
+    pub fn deviation(&self, measured: f64, expected: f64) -> f64 {
+        self.tolerance.deviation(measured, expected)
+    }
+
+    /// [`Tolerance::accepts_deviation`].
+    pub fn accepts_deviation(&self, deviation: f64) -> bool {
+        self.tolerance.accepts_deviation(deviation)
+    }
+
+    /// [`Tolerance::accepts`].
+    pub fn accepts(&self, measured: f64, expected: f64) -> bool {
+        self.tolerance.accepts(measured, expected)
+    }
+
+    /// The bound's value (0 for [`Tolerance::Exact`]), for evidence text.
+    pub fn value(&self) -> f64 {
+        match self.tolerance {
+            Tolerance::Relative { value }
+            | Tolerance::Absolute { value, .. }
+            | Tolerance::AtLeast { value, .. } => value,
+            Tolerance::Exact => 0.0,
+        }
+    }
+}
+
+impl fmt::Display for Criterion {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {} ({})", self.quantity, self.tolerance, self.reason)
     }
 }
 
@@ -99,10 +194,22 @@ pub struct Claim {
     pub statement: &'static str,
     /// How the program checks it: models, scenarios, quantity compared.
     pub method: &'static str,
-    /// The tolerance of the check.
-    pub tolerance: Tolerance,
-    /// The verdict we expect the check to reach.
+    /// The tolerances of the check: the constants it compares with.
+    pub tolerances: &'static [Criterion],
+    /// The verdict we expect the check to reach (recorded here, checked by
+    /// `tests/claims.rs` and by `snowroll paper --strict`).
     pub expected: Verdict,
+}
+
+impl Claim {
+    /// The tolerances in one line, `; `-separated.
+    pub fn tolerances_text(&self) -> String {
+        self.tolerances
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
 }
 
 /// What a check found about one claim.
@@ -134,6 +241,8 @@ pub struct Tally {
     pub holds_after_correction: usize,
     /// Claims refuted.
     pub refuted: usize,
+    /// Checks that established neither the claim nor its refutation.
+    pub inconclusive: usize,
     /// Results whose verdict differs from the expected one.
     pub unexpected: usize,
 }
@@ -147,6 +256,7 @@ impl Tally {
                 Verdict::Holds => t.holds += 1,
                 Verdict::HoldsAfterCorrection(_) => t.holds_after_correction += 1,
                 Verdict::Refuted => t.refuted += 1,
+                Verdict::Inconclusive => t.inconclusive += 1,
             }
             if !r.as_expected() {
                 t.unexpected += 1;
@@ -155,9 +265,14 @@ impl Tally {
         t
     }
 
-    /// One sentence: `5 claims: 3 hold, 1 holds after correction, 1 refuted; all as expected.`
+    /// One sentence: `5 claims: 3 hold, 1 holds after correction, 1 refuted; every verdict as expected.`
     pub fn sentence(&self) -> String {
-        let total = self.holds + self.holds_after_correction + self.refuted;
+        let total = self.holds + self.holds_after_correction + self.refuted + self.inconclusive;
+        let inconclusive = if self.inconclusive > 0 {
+            format!(", {} inconclusive", self.inconclusive)
+        } else {
+            String::new()
+        };
         let expectation = if self.unexpected == 0 {
             "every verdict as expected".to_string()
         } else {
@@ -167,11 +282,14 @@ impl Tally {
             )
         };
         format!(
-            "{total} claims: {} hold, {} hold after correction, {} refuted; {expectation}.",
+            "{total} claims: {} hold, {} hold after correction, {} refuted{inconclusive}; {expectation}.",
             self.holds, self.holds_after_correction, self.refuted
         )
     }
 }
+
+/// What "every verdict as expected" means, one sentence for the report.
+pub const EXPECTATION_NOTE: &str = "“As expected” means that each verdict equals the one recorded for its claim in the program's claim table (`report::CLAIMS`, field `expected`); the test suite (`tests/claims.rs`) and `snowroll paper --strict` fail when any verdict differs, and a claim is marked refuted only when its check also measured what holds instead.";
 
 #[cfg(test)]
 mod tests {
@@ -182,15 +300,19 @@ mod tests {
         paper_ref: "eq. (35)",
         statement: "s",
         method: "m",
-        tolerance: Tolerance::Relative { value: 1e-6 },
-        expected: Verdict::HoldsAfterCorrection("errata §2.1"),
+        tolerances: &[Criterion {
+            quantity: "q",
+            tolerance: Tolerance::Relative { value: 1e-6 },
+            reason: "r",
+        }],
+        expected: Verdict::HoldsAfterCorrection("docs/errata.md (21)"),
     };
 
     #[test]
     fn verdict_json_names_the_erratum() {
-        let v = serde_json::to_value(Verdict::HoldsAfterCorrection("errata §2.1")).unwrap();
+        let v = serde_json::to_value(Verdict::HoldsAfterCorrection("docs/errata.md (21)")).unwrap();
         assert_eq!(v["verdict"], "holds-after-correction");
-        assert_eq!(v["erratum"], "errata §2.1");
+        assert_eq!(v["erratum"], "docs/errata.md (21)");
         let v = serde_json::to_value(Verdict::Refuted).unwrap();
         assert_eq!(v["verdict"], "refuted");
     }
@@ -205,14 +327,34 @@ mod tests {
         };
         let results = [
             r(Verdict::Holds),
-            r(Verdict::HoldsAfterCorrection("errata §2.1")),
+            r(Verdict::HoldsAfterCorrection("docs/errata.md (21)")),
             r(Verdict::Refuted),
-            r(Verdict::HoldsAfterCorrection("errata §2.1")),
+            r(Verdict::HoldsAfterCorrection("docs/errata.md (21)")),
         ];
         let t = Tally::of(&results);
         assert_eq!(
             (t.holds, t.holds_after_correction, t.refuted, t.unexpected),
             (1, 2, 1, 2)
         );
+        let t = Tally::of(&[r(Verdict::Inconclusive)]);
+        assert_eq!((t.inconclusive, t.unexpected), (1, 1));
+        assert!(t.sentence().contains("1 inconclusive"));
+    }
+
+    #[test]
+    fn tolerances_fail_on_nan_and_at_least_means_apart() {
+        let rel = Tolerance::Relative { value: 1e-3 };
+        assert!(rel.accepts(1.0005, 1.0));
+        assert!(!rel.accepts(1.002, 1.0));
+        assert!(!rel.accepts(f64::NAN, 1.0));
+        let apart = Tolerance::AtLeast {
+            value: 0.1,
+            unit: "1",
+        };
+        assert!(apart.accepts(1.2, 1.0));
+        assert!(!apart.accepts(1.05, 1.0));
+        assert!(!apart.accepts(f64::NAN, 1.0));
+        assert!(Tolerance::Exact.accepts(2.0, 2.0));
+        assert!(!Tolerance::Exact.accepts(2.0, 2.5));
     }
 }

@@ -10,7 +10,7 @@
 
 use std::fmt::Write as _;
 
-use super::{ClaimResult, Report, ReportError, Tally};
+use super::{ClaimResult, Report, ReportError, Tally, EXPECTATION_NOTE};
 
 const CSS: &str = include_str!("../../assets/report.css");
 const SCRIPT: &str = include_str!("../../assets/report.js");
@@ -113,10 +113,12 @@ fn claims_section(h: &mut String, claims: &[ClaimResult]) {
     let tally = Tally::of(claims);
     h.push_str("<section id=\"claims\">\n<h2>Claims of the note</h2>\n");
     let _ = writeln!(h, "<p class=\"tally\">{}</p>", esc(&tally.sentence()));
+    let _ = writeln!(h, "<p class=\"expectation\">{}</p>", esc(EXPECTATION_NOTE));
     h.push_str(
         "<p class=\"legend\"><span class=\"verdict holds\">✓ holds</span> \
          <span class=\"verdict corrected\">✎ holds after correction</span> \
-         <span class=\"verdict refuted\">✗ refuted</span></p>\n",
+         <span class=\"verdict refuted\">✗ refuted</span> \
+         <span class=\"verdict inconclusive\">? inconclusive</span></p>\n",
     );
     h.push_str(
         "<div class=\"table-wrap\"><table id=\"claims-table\" class=\"claims\">\n<thead><tr>\
@@ -139,7 +141,7 @@ fn claims_section(h: &mut String, claims: &[ClaimResult]) {
             "<tr id=\"claim-{id}\" data-verdict=\"{class}\" data-as-expected=\"{ok}\">\
              <td data-label=\"Claim\"><strong>{paper}</strong><br><code>{id}</code></td>\
              <td data-label=\"Statement\">{statement}</td>\
-             <td data-label=\"How checked\">{method}<br><span class=\"tol\">tolerance: {tol}</span></td>\
+             <td data-label=\"How checked\">{method}<br><span class=\"tol\">tolerances: {tol}</span></td>\
              <td data-label=\"Measured\">{measured}</td>\
              <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td>\
              <td data-label=\"Evidence\">{evidence}</td></tr>",
@@ -149,7 +151,7 @@ fn claims_section(h: &mut String, claims: &[ClaimResult]) {
             paper = esc(c.paper_ref),
             statement = esc(c.statement),
             method = esc(c.method),
-            tol = esc(&c.tolerance.to_string()),
+            tol = esc(&c.tolerances_text()),
             measured = esc(&r.measured),
             symbol = r.verdict.symbol(),
             label = esc(&r.verdict.label()),

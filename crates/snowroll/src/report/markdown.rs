@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use super::{Report, Tally};
+use super::{Report, Tally, EXPECTATION_NOTE};
 
 /// Makes text safe inside a Markdown table cell: no pipes, no line breaks,
 /// no raw HTML.
@@ -27,7 +27,12 @@ pub(super) fn render(report: &Report) -> String {
     );
 
     md.push_str("## Claims of the note\n\n");
-    let _ = writeln!(md, "{}\n", Tally::of(&report.claims).sentence());
+    let _ = writeln!(
+        md,
+        "{} {}\n",
+        Tally::of(&report.claims).sentence(),
+        EXPECTATION_NOTE
+    );
     md.push_str("| Claim | Note | Statement | How checked | Measured | Verdict | Evidence |\n");
     md.push_str("|---|---|---|---|---|---|---|\n");
     for r in &report.claims {
@@ -38,12 +43,12 @@ pub(super) fn render(report: &Report) -> String {
         }
         let _ = writeln!(
             md,
-            "| `{}` | {} | {} | {} (tolerance: {}) | {} | **{}** | {} |",
+            "| `{}` | {} | {} | {} (tolerances: {}) | {} | **{}** | {} |",
             cell(c.id),
             cell(c.paper_ref),
             cell(c.statement),
             cell(c.method),
-            c.tolerance,
+            cell(&c.tolerances_text()),
             cell(&r.measured),
             cell(&verdict),
             cell(&r.evidence),

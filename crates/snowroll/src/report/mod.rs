@@ -21,8 +21,8 @@
 mod claim;
 mod claims;
 
-pub use claim::{Claim, ClaimResult, Tally, Tolerance, Verdict};
-pub use claims::{ClaimCheck, Finding, Lab, CLAIMS};
+pub use claim::{Claim, ClaimResult, Criterion, Tally, Tolerance, Verdict, EXPECTATION_NOTE};
+pub use claims::{ClaimCheck, Finding, Lab, Runner, CLAIMS};
 
 #[cfg(feature = "plot")]
 mod animation;
