@@ -11,7 +11,7 @@ import pathlib
 import re
 import sys
 
-VERDICT_WORDS = ("holds", "holds after correction", "refuted")
+VERDICT_WORDS = ("holds", "holds after correction", "refuted", "inconclusive")
 
 
 class Dom(html.parser.HTMLParser):

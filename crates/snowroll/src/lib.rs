@@ -3,7 +3,7 @@
 //! A log (or snowball) rolling without slipping down a slope of angle α
 //! covered by snow of depth b, picking up all the snow it meets: every
 //! analysis of K. T. McDonald, "Snowball/Log Rolling down a Snowy Slope",
-//! with the corrections of its errata.
+//! with the corrections of `docs/errata.md`.
 //!
 //! ## The physics on one page
 //! * §2 takes the log as circular at all times, radius `π r² = π r0² + b x`

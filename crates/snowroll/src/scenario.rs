@@ -10,7 +10,7 @@ use crate::units::{
 /// A validated scenario: a log of radius `r0` starting at `x = 0` with speed
 /// `v0` on a slope of angle `alpha` covered by snow of depth `b` (normal to
 /// the slope; the snow occupies `-b < y < 0` below the plane the core rolls
-/// on, errata §4 row 1).
+/// on, `docs/turn-model.md`, Conventions).
 ///
 /// Build it with [`Scenario::new`] from a [`ScenarioFile`]; every field is
 /// checked there, so a `Scenario` that exists is a valid one.

@@ -27,7 +27,7 @@ pub struct Sample {
 /// Extra state of the turn-by-turn models (§3), one per sample.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct TurnState {
-    /// Turn number k, 0-based (errata §4 row 3).
+    /// Turn number k, 0-based (`docs/turn-model.md`, Conventions).
     pub turn: u64,
     /// Angle rolled in this turn, rad, in [0, 2π].
     pub theta_rad: Radians,
@@ -46,7 +46,7 @@ pub enum StopReason {
     Distance,
     /// Completed the requested number of turns.
     Turns,
-    /// The speed returned to zero (the log would have to shed snow to roll back, errata §4 row 8).
+    /// The speed returned to zero (the log would have to shed snow to roll back, `docs/turn-model.md`, Conventions).
     Stalled,
     /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7).
     DoesNotStart,

@@ -91,7 +91,7 @@ fn fn4_loney_model_positions_match_integrated_eq4_at_requested_times() {
     }
 }
 
-/// fn. 4: the decaying term is 7bK/6 (errata), so a(x) = ½ du/dx exactly:
+/// fn. 4: the decaying term is 7bK/6 (`docs/errata.md`, fn. 4), so a(x) = ½ du/dx exactly:
 /// check the closed-form acceleration against a finite difference of u(x).
 /// A central difference with h = 1e-3 m on a function varying on the scale
 /// of r0 = 0.1 m has truncation error ~(h/r0)² ≈ 1e-4 relative; 1e-6 is the
@@ -372,7 +372,7 @@ fn stall_during_a_run_is_reported_not_integrated_through() {
 }
 
 /// eq. (21) as printed differs from eq. (14); the corrected Lagrangian
-/// (errata §2.1, with ∂T/∂x = (3/4)ρ l b v²) is eq. (14) term by term.
+/// (`docs/errata.md`, (19)–(21), with ∂T/∂x = (3/4)ρ l b v²) is eq. (14) term by term.
 #[test]
 fn eq21_as_printed_differs_from_eq14_and_corrected_equals_it() {
     let s = scenario(30.0, 0.02, 0.1, 0.0);

@@ -418,7 +418,8 @@ fn html_is_self_contained_and_holds_claims_figures_and_animation() {
     assert!(html.contains("A &lt;b&gt;bold&lt;/b&gt; claim &amp; more"));
     assert!(html.contains("✓ holds</span>"));
     assert!(html.contains("✗ refuted</span>"));
-    assert!(html.contains("expected: holds after correction (errata §2.1)"));
+    assert!(html.contains("class=\"expectation\""));
+    assert!(html.contains("expected: holds after correction (docs/errata.md (21))"));
     for name in ["speed", "radius"] {
         let start = html
             .find(&format!("<figure id=\"fig-{name}\""))
@@ -455,7 +456,11 @@ fn markdown_has_the_claims_table_and_links_every_figure() {
     assert!(md.contains(
         "| `demo-holds` | App. A | A &lt;b&gt;bold&lt;/b&gt; claim &amp; more \\| with a pipe."
     ));
-    assert!(md.contains("**✗ refuted (expected: holds after correction (errata §2.1))**"));
+    assert!(md.contains("**✗ refuted (expected: holds after correction (docs/errata.md (21)))**"));
+    // The tolerances shown are the checks' own, with their reasons, and the
+    // report says what "as expected" means.
+    assert!(md.contains("(tolerances: q: relative 1e-8 (why))"));
+    assert!(md.contains(snowroll::report::EXPECTATION_NOTE));
     for name in ["speed", "radius"] {
         assert!(md.contains(&format!("](figures/{name}.svg)")));
         assert!(md.contains(&format!("(data/{name}.csv)")));
@@ -474,7 +479,7 @@ fn two_figures_with_one_name_are_refused() {
     ));
 }
 
-/// A trajectory laid out as the turn model of `turn-model.md` records it:
+/// A trajectory laid out as the turn model of `docs/turn-model.md` records it:
 /// turn k has nominal radius r_k = r0 + k b and starts at X_k = Σ_{j<k} 2π r_j;
 /// within it x = X_k + r_k θ. (No turn model exists yet, so the samples are
 /// built from these formulae; the model tag is only a label.)

@@ -4,7 +4,7 @@
 //! against the note's first-order forms and against direct quadrature, the
 //! stall threshold, and the long-run means the note's eqs. (77)–(79) leave open.
 //!
-//! Reference formulae are written out here from the note (and `turn-model.md`)
+//! Reference formulae are written out here from the note (and `docs/turn-model.md`)
 //! rather than taken from the library.
 
 use std::f64::consts::PI;
@@ -103,7 +103,7 @@ fn log_slope(points: &[(f64, f64)]) -> f64 {
 /// `T_beg − T_end − V_end` with `T_beg = 3m_k v_beg²/4` (eq. (82)),
 /// `T_end = m_{k+1}(1 + r_{k+1}²/2r_k²) v_end²/2` (eq. (86)),
 /// `V_end = (m_{k+1} − m_k) g (r_k + b/2) cos α − [m_{k+1} − ½(m_{k+1} − m_k)] g 2πr_k sin α`
-/// (errata, row (87)). Returned over the work scale `m_k G 2π r_k`.
+/// (`docs/errata.md`, (87)). Returned over the work scale `m_k G 2π r_k`.
 fn eq88_residual(s: &Scenario, row: &TurnRow) -> f64 {
     let k = row.turn;
     let (r, r1, b) = (radius(s, k), radius(s, k + 1), s.snow_depth());
@@ -115,7 +115,7 @@ fn eq88_residual(s: &Scenario, row: &TurnRow) -> f64 {
     (t_beg - t_end - v_end) / (m * gs * 2.0 * PI * r)
 }
 
-/// `I/m_k` and `W/m_k` of the `paper` variant, as `turn-model.md` states them.
+/// `I/m_k` and `W/m_k` of the `paper` variant, as `docs/turn-model.md` states them.
 fn paper_inertia_potential(s: &Scenario, r: f64, theta: f64) -> (f64, f64) {
     let (b, gs, gc) = (s.snow_depth(), s.g_along(), s.g_normal());
     let i = 1.5 * r * r + (2.0 * b * r / PI) * (theta - theta.sin());
@@ -165,7 +165,7 @@ fn energy_is_conserved_within_each_turn() {
             .simulate(&s, &opts(20, Tolerances::default()))
             .unwrap();
         assert_eq!(traj.samples.len(), traj.turn_states.len());
-        // Energy per turn: the truncated one of turn-model.md for `turns`,
+        // Energy per turn: the truncated one of docs/turn-model.md for `turns`,
         // the exact I_C ω²/2 + V of the disk plus sector for `turns-exact`.
         // Per unit m_k, J/kg.
         let energy = |k: u64, theta: f64, omega: f64| -> f64 {
@@ -279,7 +279,7 @@ fn turns_and_turns_exact_agree_to_second_order_on_the_first_turn() {
 }
 
 /// dv/dt of the first turn from the note's equations as written (with the
-/// errata), for one (θ, v): eqs. (55) (in θ̈), (58), (64), (69) via (67)–(68).
+/// corrections of `docs/errata.md`), for one (θ, v): eqs. (55) (in θ̈), (58), (64), (69) via (67)–(68).
 fn note_first_turn_accelerations(s: &Scenario, theta: f64, v: f64) -> [f64; 4] {
     let (b, r0, g, alpha) = (
         s.snow_depth(),
@@ -298,11 +298,11 @@ fn note_first_turn_accelerations(s: &Scenario, theta: f64, v: f64) -> [f64; 4] {
     let theta_dd = (m0 * g * bracket - (m0 * b * r0 / PI) * (1.0 - theta.cos()) * omega * omega)
         / (m0 * (1.5 * r0 * r0 + (b * r0 / PI) * (2.0 * theta - 2.0 * theta.sin())));
     let eq55 = r0 * theta_dd;
-    // (58) with m → m0 (errata): I_C dv/dt + m0bv²(1 − cos θ)/π ≈ m0 g r0 [..]
+    // (58) with m → m0 (`docs/errata.md`): I_C dv/dt + m0bv²(1 − cos θ)/π ≈ m0 g r0 [..]
     let eq58 = (m0 * g * r0 * bracket - m0 * b * v * v * (1.0 - theta.cos()) / PI) / i_c;
     // (64): I_C dv/dt = m0 g r0 [..] − m0bv²(1 − cos θ)/π
     let eq64 = (m0 * g * r0 * bracket - m0 * b * v * v * (1.0 - theta.cos()) / PI) / i_c;
-    // (67) = (68) with r → r0 and b/π → bθ/π (errata):
+    // (67) = (68) with r → r0 and b/π → bθ/π (`docs/errata.md`):
     // (I_C/r0) dv/dt + 2m0bv²(1 − cos θ)/(πr0) = m0bv²(1 − cos θ)/(πr0)
     //   + m0 g sin α (r0 + bθ/π − (b/π) sin θ) − m0 g cos α (b/π)(1 − cos θ)
     let d_dtheta_l = m0 * b * v * v * (1.0 - theta.cos()) / (PI * r0)
@@ -522,7 +522,7 @@ fn range_of_a_in_a_turn_matches_a_fine_scan_of_the_energy_integral() {
     for row in table.iter().filter(|r| r.turn < 5 || r.turn == 59) {
         let r = radius(&s, row.turn);
         let omega0 = row.v_start_m_s / r;
-        // a(θ) = r(−W′ − ½I′θ̇²)/I with θ̇² = [I(0)θ̇₀² − 2W]/I (turn-model.md, item 2).
+        // a(θ) = r(−W′ − ½I′θ̇²)/I with θ̇² = [I(0)θ̇₀² − 2W]/I (docs/turn-model.md, multi-turn algorithm, step 2).
         let a = |theta: f64| {
             let (i, w) = paper_inertia_potential(&s, r, theta);
             let di = (2.0 * b * r / PI) * (1.0 - theta.cos());

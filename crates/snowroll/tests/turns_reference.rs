@@ -2,7 +2,7 @@
 //! `tests/data/turns_reference.csv`, written by `make_turns_reference.py`
 //! from the energy integral of each turn and SciPy's adaptive quadrature for
 //! the turn's duration, with the collision rule of eq. (89) (no ODE solver,
-//! formulae typed independently from turn-model.md).
+//! formulae typed independently from docs/turn-model.md).
 
 use snowroll::{run_turns, ModelKind, Scenario, SimOptions};
 

@@ -31,19 +31,19 @@ pub enum Derivation {
     TorqueAboutContact,
     /// §2.2, eq. (14): energy conservation of eq. (11) with the b² terms,
     /// `a(1 + b²/6π²r²) = 2G/3 − bv²/(2πr²) − C(3br + b²)/(3πr²)`.
-    /// Also the corrected Lagrangian result (errata §2.1).
+    /// Also the corrected Lagrangian result (`docs/errata.md`, (19)–(21)).
     Energy,
     /// §2.2, eq. (15): eq. (14) to first order in b,
     /// `a = 2G/3 − bv²/(2πr²) − gb cos α/(πr)`.
     EnergyLinearised,
     /// §2.3, eq. (21) exactly as printed,
     /// `a(1 + b²/6π²r²) = 2G/3 − bv²/(πr²) − C(3rb + b²)/(3πr²)`;
-    /// it omits ∂T/∂x in eq. (19) (errata §2.1), the corrected form is eq. (14).
+    /// it omits ∂T/∂x in eq. (19) (`docs/errata.md`, (19)–(21)), the corrected form is eq. (14).
     LagrangianPrinted,
     /// §2.4, eq. (32): `a = 2G/3 − bv²/(2πr²)`, r from eq. (27).
     QuasiCircular,
     /// §2.4, eq. (32) plus term (36): `a = 2G/3 − bv²/(2πr²) − gb cos α/(πr)`
-    /// (the same equation as (15); errata §4 row 9 fixes r).
+    /// (the same equation as (15); `docs/turn-model.md` fixes r).
     QuasiCircularLift,
 }
 

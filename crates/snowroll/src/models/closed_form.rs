@@ -10,7 +10,7 @@
 //! (fn. 4 for c_v = 7/6, p = 7/3: `u = 2G s/(5b) + K/s^{7/3}`) and
 //! `a(x) = G·2/(3(1+p)) [1 + p (s0/s)^{p+1}] − (p/2)(b/s0) v0² (s0/s)^{p+1}`,
 //! which tends to `2G/(3(1+p))` (G/5 for eq. (4)). The coefficient of the
-//! decaying term is `7bK/6` for eq. (4), not `7bK/3` as printed (errata, fn. 4).
+//! decaying term is `7bK/6` for eq. (4), not `7bK/3` as printed (`docs/errata.md`, fn. 4).
 //! Time follows from `t(x) = ∫ dx/√u` by quadrature, and x(t) by inverting it.
 
 use std::f64::consts::PI;

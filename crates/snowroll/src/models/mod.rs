@@ -84,7 +84,7 @@ pub enum ModelKind {
     #[serde(alias = "eq15")]
     #[cfg_attr(feature = "clap", value(alias = "eq15"))]
     EnergyThin,
-    /// §2.3: the Lagrangian result exactly as printed, eq. (21) (omits ∂T/∂x, errata §2.1).
+    /// §2.3: the Lagrangian result exactly as printed, eq. (21) (omits ∂T/∂x, `docs/errata.md` (19)–(21)).
     #[serde(alias = "eq21")]
     #[cfg_attr(feature = "clap", value(alias = "eq21"))]
     LagrangianPrinted,
@@ -186,7 +186,7 @@ impl ModelKind {
             ModelKind::Energy => "circular log, energy conservation with b^2 terms (§2.2)",
             ModelKind::EnergyThin => "circular log, energy conservation to first order in b (§2.2)",
             ModelKind::LagrangianPrinted => {
-                "circular log, Lagrangian as printed: omits dT/dx (errata §2.1; corrected = eq. 14)"
+                "circular log, Lagrangian as printed: omits dT/dx (docs/errata.md (19)-(21); corrected = eq. 14)"
             }
             ModelKind::QuasiCircular => "approximately circular log, energy rate (§2.4)",
             ModelKind::QuasiCircularLift => "eq. (32) plus the snow-lifting term (36) (§2.4)",

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference for the turn-by-turn model (turn-model.md), without an ODE solver.
+"""Independent reference for the turn-by-turn model (docs/turn-model.md), without an ODE solver.
 
 Both in-turn variants conserve their own energy I(θ)θ̇²/2 + V(θ) during a turn, so the speed at
 the end of each turn follows from the energy integral, the turn's duration from

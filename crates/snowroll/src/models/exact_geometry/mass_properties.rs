@@ -140,7 +140,7 @@ impl SectorBody {
     /// Potential energy relative to θ = 0 (§3.2, eqs. (60)–(62) before
     /// truncation), with the contact line moved by `x = rθ` and the accreted
     /// snow taken from the slope strip `[0, x]` whose centroid is at
-    /// `(x/2, −b/2)` (errata §4 rows 1–2):
+    /// `(x/2, −b/2)` (`docs/turn-model.md`, Conventions):
     /// `V = C[M y_cm − m r + m_s b/2] − G[M x_cm − m_s x/2]`, with
     /// `G = g sin α`, `C = g cos α` in m/s².
     pub fn potential_energy(&self, theta: Radians, g_along: f64, g_normal: f64) -> Joules {

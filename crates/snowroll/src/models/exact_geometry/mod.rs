@@ -6,9 +6,9 @@
 //! radius r plus an annular sector `r < r′ < r + b` over the angle θ. The
 //! equation of motion from energy conservation with these exact `I_C(θ)` and
 //! `V(θ)` ([`exact_turn_coefficients`]) makes eq. (88), with the corrected
-//! (87), an identity of the integrated motion (errata §2 item 4). Torque and
-//! energy differ only at O(b³) in this geometry (errata §2 item 3); the
-//! energy form is used (errata §4 row 5).
+//! (87), an identity of the integrated motion (`docs/errata.md`, (88) vs (73)). Torque and
+//! energy differ only at O(b³) in this geometry (`docs/turn-model.md`, "Torque and energy in the first turn"); the
+//! energy form is used (`docs/turn-model.md`, Conventions).
 
 mod dynamics;
 mod mass_properties;

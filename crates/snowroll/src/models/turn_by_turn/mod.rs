@@ -1,7 +1,7 @@
 //! §3 and §3.4: the log followed turn by turn, not assumed circular, with a
 //! collision at the end of every full turn (eq. (89)).
 //!
-//! Conventions (errata §4, `turn-model.md`): turn k = 0, 1, 2, … starts with a
+//! Conventions (`docs/turn-model.md`): turn k = 0, 1, 2, … starts with a
 //! circular log of radius `r_k = r0 + k b` and mass `m_k = πρl r_k²` at
 //! `X_k = 2πk r0 + k(k − 1)πb` (eq. (74), 0-based). During the turn the log
 //! is the disk plus an annular sector of the snow it has picked up; the
@@ -24,7 +24,7 @@
 //! (eq. (89): angular momentum about the contact line conserved) resets the
 //! state to `[0, θ̇′]` of turn k + 1; the integrator applies the reset. If θ̇
 //! reaches 0 first the log stalls and the run stops (rolling back would
-//! un-accrete snow, errata §4 row 8). Valid to O(b/r_k) (`Paper`); the
+//! un-accrete snow, `docs/turn-model.md`). Valid to O(b/r_k) (`Paper`); the
 //! collision model itself is the note's idealisation (§3.4).
 //!
 //! Samples report `r_m = r_k` (nominal) and `mass_kg = m_k + m_s(θ)` in the
@@ -53,7 +53,7 @@ use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Radi
 /// Full turn, rad.
 const TWO_PI: f64 = 2.0 * PI;
 
-/// Which mass properties the turn uses (`turn-model.md`, errata §4 row 4).
+/// Which mass properties the turn uses (`docs/turn-model.md`, Conventions).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum TurnVariant {
     /// Eqs. (73), (76): `I_C`, V to first order in b/r_k (model `turns`).

@@ -1,5 +1,5 @@
 //! One row per completed turn of §3.4, and the long-run statistics of the
-//! acceleration that eqs. (77)–(79) leave open (errata §2 item 2).
+//! acceleration that eqs. (77)–(79) leave open (`docs/errata.md`, (78)–(79)).
 //!
 //! The rows come from the integrator's events (v before and after each
 //! collision) and, for the range of a within a turn, from the energy

@@ -1,4 +1,4 @@
-//! Checks of the first turn, §3.1–3.3, and of the errata a computation shows there.
+//! Checks of the first turn, §3.1–3.3, and of the errata (`docs/errata.md`) a computation shows there.
 //!
 //! The note's formulae are typed here as printed (and as corrected), not taken
 //! from [`crate::models::InTurnCoefficients`]; the body's masses, centres and
