@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The project's test command (README): every Rust test of the workspace, then
-# the browser test of the report that `snowroll paper` writes (installs
+# `snowroll paper --strict` (fails when any verdict differs from the one the
+# claims table expects) and the browser test of the report it writes (installs
 # Debian's chromium first if it is missing; needs root or sudo for that).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,7 +10,7 @@ cargo test --workspace --all-features
 
 report_dir=$(mktemp -d)
 trap 'rm -rf "$report_dir"' EXIT
-cargo run --release --quiet -- paper --quiet --out "$report_dir"
+cargo run --release --quiet -- paper --strict --quiet --out "$report_dir"
 bash .ci/browser-test.sh "$report_dir"
 # Keep the screenshots as artifacts of the run.
 mkdir -p target/browser-test

@@ -70,13 +70,17 @@ pub struct PaperArgs {
     #[arg(long, short, value_name = "DIR", default_value = PAPER_OUT_DEFAULT)]
     pub out: PathBuf,
 
-    /// Turns of the long runs behind the multi-turn claims (eqs. (77)-(79)), N >= 10
+    /// Turns of the long runs behind the multi-turn claims (eqs. (77)-(79)), N >= 10; their tolerances need N >= 10^4
     #[arg(long, value_name = "N", default_value_t = PAPER_TURNS_DEFAULT, value_parser = clap::value_parser!(u64).range(10..))]
     pub turns: u64,
 
     /// Do not show the progress bar
     #[arg(long)]
     pub quiet: bool,
+
+    /// Exit with an error when any verdict differs from the one the claims table expects (the report is still written)
+    #[arg(long)]
+    pub strict: bool,
 }
 
 /// Turns run by `snowroll turns` when neither `--turns` nor the config

@@ -953,6 +953,99 @@ fn models_stall_slope_is_the_threshold_of_eq14_and_of_simulate() {
     assert_eq!(reason(stall_deg * 1.01), "end-time");
 }
 
+/// The turn-0 stall slope of eq. (73) from a grid of 10⁶ points over (0, 2π]:
+/// the grid misses the maximum of Q/P by ~(Q/P)″h²/8 ≈ 1e-12 relative.
+const GRID_STALL_TOL: f64 = 1e-9;
+
+#[test]
+fn models_turn_stall_slope_is_where_the_turn_model_stalls_in_its_first_turn() {
+    let out = snowroll()
+        .args(["models", "--format", "json"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("stalls-in-first-turn"));
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    let turns = doc["models"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|m| m["id"] == "turns")
+        .unwrap();
+    assert_eq!(turns["stall_kind"], "stalls-in-first-turn");
+    let stall_deg = turns["stall_slope_deg"].as_f64().unwrap();
+    // From rest, eq. (73) gives θ̇² = −2W/I in turn 0: the log completes the
+    // turn iff tan α > max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)), ε = b/(πr0).
+    let (b, r0) = (
+        doc["stall_snow_depth_m"].as_f64().unwrap(),
+        doc["stall_r0_m"].as_f64().unwrap(),
+    );
+    let eps = b / (PI * r0);
+    let want = (1..=1_000_000)
+        .map(|i| {
+            let t = 2.0 * PI * f64::from(i) / 1e6;
+            eps * (t - t.sin()) / (t + eps * (t * t / 2.0 - 1.0 + t.cos()))
+        })
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert_close(stall_deg.to_radians().tan(), want, GRID_STALL_TOL);
+    assert!((stall_deg - 2.09).abs() < 0.01, "{stall_deg}");
+    // simulate: just below, the log starts and stalls inside turn 0; just above it completes the turn.
+    let stop = |alpha: f64| {
+        let a = alpha.to_string();
+        json(&simulate(&[
+            "--model",
+            "turns",
+            "--alpha-deg",
+            &a,
+            "--turns",
+            "1",
+            "--format",
+            "json",
+        ]))["stop"]
+            .clone()
+    };
+    let below = stop(stall_deg * 0.99);
+    assert_eq!(below["reason"], "stalled");
+    assert!(below["x_m"].as_f64().unwrap() < 2.0 * PI * r0);
+    assert_eq!(stop(stall_deg * 1.01)["reason"], "turns");
+}
+
+#[test]
+fn thick_snow_warns_on_stderr_and_in_the_output_metadata() {
+    // The case of issue 8: alpha 40 degrees, b 0.2 m, r0 0.15 m. The exact
+    // model stalls in turn 0 while the first-order one rolls on.
+    let thick = ["--alpha-deg", "40", "--snow-depth", "0.2", "--r0", "0.15"];
+    let out = snowroll()
+        .args(["turns", "--model", "turns", "--turns", "3"])
+        .args(thick)
+        .assert()
+        .success()
+        .stderr(
+            predicate::str::contains("warning: turns is used beyond its range: b/r0 = 1.333")
+                .and(predicate::str::contains("part ways")),
+        );
+    let csv = std::str::from_utf8(&out.get_output().stdout).unwrap();
+    assert_eq!(csv.matches("# warning = ").count(), 2, "{csv}");
+    let out = snowroll()
+        .args(["simulate", "--model", "turns-exact", "--format", "json"])
+        .args(thick)
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("warning").not());
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert_eq!(doc["stop"]["reason"], "stalled");
+    assert!((doc["stop"]["t_s"].as_f64().unwrap() - 0.936).abs() < 1e-3);
+    // In range: no warning, and no `warnings` key.
+    let out = snowroll()
+        .args([
+            "simulate", "--model", "turns", "--turns", "2", "--format", "json",
+        ])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("warning").not());
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert!(doc["params"].get("warnings").is_none());
+}
+
 // ---------------------------------------------------------------- help
 
 #[test]

@@ -12,9 +12,10 @@ use snowroll::report::CLAIMS;
 fn paper_writes_the_report_with_every_claim_as_expected() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("report");
-    // 2000 turns keep the test fast; the verdicts do not depend on it.
+    // 10^4 turns keep the test fast and are enough for the long-run
+    // claims' tolerances; --strict makes any unexpected verdict a failure.
     let assert = cargo_bin_cmd!("snowroll")
-        .args(["paper", "--quiet", "--turns", "2000", "--out"])
+        .args(["paper", "--quiet", "--strict", "--turns", "10000", "--out"])
         .arg(&out)
         .assert()
         .success()
@@ -50,6 +51,9 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
     assert!(text.contains(env!("CARGO_PKG_VERSION")));
     let md = fs::read_to_string(out.join("report.md")).unwrap();
     assert!(md.contains("eq. (79)"));
+    // The report says what "as expected" means, and where the turn models part ways.
+    assert!(md.contains(snowroll::report::EXPECTATION_NOTE));
+    assert!(md.contains("## Where the models part ways"));
     let figures: Vec<String> = fs::read_dir(out.join("figures"))
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
@@ -85,4 +89,25 @@ fn paper_rejects_too_few_turns_with_one_line() {
         .assert()
         .failure()
         .stderr(predicate::str::contains("--turns"));
+}
+
+#[test]
+fn paper_strict_fails_on_an_unexpected_verdict_but_still_writes_the_report() {
+    // 100 turns are too few for the long-run claims to establish their
+    // limits: those verdicts come out inconclusive, not as expected.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report");
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--turns", "100", "--out"])
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("differ from the expected one"));
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--strict", "--turns", "100", "--out"])
+        .arg(&out)
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("--strict").and(predicate::str::contains("inconclusive")));
+    assert!(out.join("report.html").is_file());
 }

@@ -119,7 +119,11 @@ fn claim_ids_are_unique_and_every_claim_cites_the_note_and_states_its_tolerances
             "{}: {r}",
             c.claim.id
         );
-        assert!(!c.claim.tolerances.is_empty(), "{}: no tolerance", c.claim.id);
+        assert!(
+            !c.claim.tolerances.is_empty(),
+            "{}: no tolerance",
+            c.claim.id
+        );
         for t in c.claim.tolerances {
             assert!(
                 !t.reason.is_empty() && !t.quantity.is_empty(),
@@ -255,7 +259,10 @@ fn long_run_refutations_need_both_turn_models_to_reach_the_derived_limits() {
         }
     }
     let free = edited_table(free, |_| {});
-    changes("multi-turn-mean-four-ninths", &lab().with_long_run(true, free));
+    changes(
+        "multi-turn-mean-four-ninths",
+        &lab().with_long_run(true, free),
+    );
     // Both turn models on 20 % deeper snow: v²/(πGk²b) is 0.6, not 1/2.
     let deep = scenario(|f| f.snow_depth_m *= 1.2);
     let wrong = lab()
@@ -276,7 +283,10 @@ fn never_settles_notices_a_model_whose_acceleration_is_steady() {
         r.min_a_m_s2 = r.mean_a_turn_m_s2;
         r.max_a_m_s2 = r.mean_a_turn_m_s2;
     });
-    changes("multi-turn-never-settles", &lab().with_long_run(false, steady));
+    changes(
+        "multi-turn-never-settles",
+        &lab().with_long_run(false, steady),
+    );
 }
 
 #[test]
@@ -284,7 +294,10 @@ fn eq88_notices_a_turn_model_without_exact_geometry() {
     // The first-order turns in place of the exact ones: (88) holds for them
     // only to O((b/r)²).
     let first_order = long_run(ModelKind::Turns, &Scenario::default());
-    changes("eq88-energy-balance", &lab().with_long_run(true, first_order));
+    changes(
+        "eq88-energy-balance",
+        &lab().with_long_run(true, first_order),
+    );
 }
 
 #[test]
@@ -292,13 +305,17 @@ fn collision_potential_jump_notices_wrong_turn_speeds() {
     let faster = edited_table(long_run(ModelKind::Turns, &Scenario::default()), |r| {
         r.v_end_m_s *= 1.1;
     });
-    changes("collision-potential-jump", &lab().with_long_run(false, faster));
+    changes(
+        "collision-potential-jump",
+        &lab().with_long_run(false, faster),
+    );
 }
 
 #[test]
 fn eq73_truncation_notices_when_the_exact_model_is_the_first_order_one() {
     let wrong = lab().with_runner(|kind, s, opts| {
-        (kind == ModelKind::TurnsExact).then(|| TurnModel::new(TurnVariant::Paper).simulate(s, opts))
+        (kind == ModelKind::TurnsExact)
+            .then(|| TurnModel::new(TurnVariant::Paper).simulate(s, opts))
     });
     changes("eq73-truncates-exact", &wrong);
 }
@@ -328,19 +345,27 @@ fn circular_checks_notice_wrong_coefficients() {
         "loney-limit-fifth",
         &d(Derivation::TorqueAboutCentre, |c| c.drag *= 1.01),
     );
-    changes("eq35-terminal-third", &d(Derivation::QuasiCircular, |c| c.drag = 0.55));
+    changes(
+        "eq35-terminal-third",
+        &d(Derivation::QuasiCircular, |c| c.drag = 0.55),
+    );
     changes(
         "eq33-35-terminal-argument",
         &d(Derivation::QuasiCircular, |c| c.drag = 0.52),
     );
-    changes("eq36-slows-approach", &d(Derivation::QuasiCircular, |c| c.drag = 0.6));
+    changes(
+        "eq36-slows-approach",
+        &d(Derivation::QuasiCircular, |c| c.drag = 0.6),
+    );
     // A snow term that does not vanish with b: a lift term in b^0 is not
     // expressible, so use gravity 0.1 % too strong in eq. (4).
     let wrong = lab().with_runner(|kind, s, opts| {
         (kind == ModelKind::TorqueCm).then(|| {
             let mut f = ScenarioFile::from(*s);
             f.g_m_s2 *= 1.001;
-            ModelKind::TorqueCm.build().simulate(&Scenario::new(f)?, opts)
+            ModelKind::TorqueCm
+                .build()
+                .simulate(&Scenario::new(f)?, opts)
         })
     });
     changes("circular-agree-as-b-vanishes", &wrong);
@@ -352,7 +377,9 @@ fn app_a_notices_a_snowless_model_with_the_wrong_acceleration() {
         (kind == ModelKind::Snowless).then(|| {
             let mut f = ScenarioFile::from(*s);
             f.g_m_s2 *= 1.01;
-            ModelKind::Snowless.build().simulate(&Scenario::new(f)?, opts)
+            ModelKind::Snowless
+                .build()
+                .simulate(&Scenario::new(f)?, opts)
         })
     });
     changes("app-a-moving-points", &wrong);
@@ -409,18 +436,24 @@ fn every_errata_row_names_a_claim_a_test_or_a_reason() {
                 .map(|id| id.trim_matches('`'))
                 .all(|id| CLAIMS.iter().any(|c| c.claim.id == id))
         } else if let Some(rest) = shown_by.strip_prefix("test ") {
-            rest.split(", ")
-                .map(|t| t.trim_matches('`'))
-                .all(|t| {
-                    let name = t.rsplit("::").next().unwrap_or(t);
-                    tests.contains(&format!("fn {name}("))
-                })
+            rest.split(", ").map(|t| t.trim_matches('`')).all(|t| {
+                let name = t.rsplit("::").next().unwrap_or(t);
+                tests.contains(&format!("fn {name}("))
+            })
         } else {
             shown_by.starts_with("no computation: ") && shown_by.len() > 40
         };
-        assert!(ok, "errata row {:?}: `{shown_by}` names no existing claim or test, nor a reason", row[0]);
+        assert!(
+            ok,
+            "errata row {:?}: `{shown_by}` names no existing claim or test, nor a reason",
+            row[0]
+        );
         for cell in &row[1..4] {
-            assert!(!cell.is_empty(), "errata row {:?} has an empty cell", row[0]);
+            assert!(
+                !cell.is_empty(),
+                "errata row {:?} has an empty cell",
+                row[0]
+            );
         }
     }
 }
@@ -428,16 +461,20 @@ fn every_errata_row_names_a_claim_a_test_or_a_reason() {
 #[test]
 fn every_erratum_a_verdict_cites_is_a_row_of_the_errata() {
     let text = repo_file("docs/errata.md");
-    let keys: Vec<String> = errata_rows(&text).into_iter().map(|r| r[0].clone()).collect();
+    let keys: Vec<String> = errata_rows(&text)
+        .into_iter()
+        .map(|r| r[0].clone())
+        .collect();
     for c in CLAIMS {
         if let Verdict::HoldsAfterCorrection(label) = c.claim.expected {
-            let cited = label
-                .strip_prefix("docs/errata.md ")
-                .unwrap_or_else(|| panic!("{}: `{label}` does not cite docs/errata.md", c.claim.id));
+            let cited = label.strip_prefix("docs/errata.md ").unwrap_or_else(|| {
+                panic!("{}: `{label}` does not cite docs/errata.md", c.claim.id)
+            });
             let cited = cited.split(':').next().unwrap_or(cited);
             for part in cited.split(", ") {
                 assert!(
-                    keys.iter().any(|k| k == part || k.split(", ").any(|kk| kk == part)),
+                    keys.iter()
+                        .any(|k| k == part || k.split(", ").any(|kk| kk == part)),
                     "{}: `{part}` is not a row of docs/errata.md",
                     c.claim.id
                 );

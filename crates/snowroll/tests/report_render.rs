@@ -308,6 +308,12 @@ fn small_report() -> Report {
                 evidence: "differs".into(),
             },
         ],
+        tables: vec![snowroll::report::Table {
+            title: "Where | they part".into(),
+            caption: "c".into(),
+            header: vec!["a".into(), "b".into()],
+            rows: vec![vec!["1".into(), "<2>".into()]],
+        }],
         figures: vec![
             Figure::new(speed_chart(&runs), "Speeds."),
             Figure::new(
@@ -419,6 +425,7 @@ fn html_is_self_contained_and_holds_claims_figures_and_animation() {
     assert!(html.contains("✓ holds</span>"));
     assert!(html.contains("✗ refuted</span>"));
     assert!(html.contains("class=\"expectation\""));
+    assert!(html.contains("<td>&lt;2&gt;</td>"));
     assert!(html.contains("expected: holds after correction (docs/errata.md (21))"));
     for name in ["speed", "radius"] {
         let start = html
@@ -461,6 +468,8 @@ fn markdown_has_the_claims_table_and_links_every_figure() {
     // report says what "as expected" means.
     assert!(md.contains("(tolerances: q: relative 1e-8 (why))"));
     assert!(md.contains(snowroll::report::EXPECTATION_NOTE));
+    // Extra tables, escaped like the claims.
+    assert!(md.contains("| 1 | &lt;2&gt; |"));
     for name in ["speed", "radius"] {
         assert!(md.contains(&format!("](figures/{name}.svg)")));
         assert!(md.contains(&format!("(data/{name}.csv)")));

@@ -1,13 +1,16 @@
 //! `snowroll models`: every model with its equation, its late-time
-//! acceleration as a fraction of g sin alpha, and (for models with a lift
-//! term) the slope below which it does not start from rest. Every number is
-//! computed by the library ([`ModelKind::terminal_fraction`],
-//! [`snowroll::Coefficients::stall_slope`]).
+//! acceleration as a fraction of g sin alpha, the slope below which it does
+//! not roll on from rest (fn. 7: the circular models with a lift term do not
+//! start; the turn models start but stall inside their first turn), and its
+//! range of validity. Every number is computed by the library
+//! ([`ModelKind::terminal_fraction`], [`ModelKind::stall_threshold`],
+//! [`ModelKind::validity`]).
 
 use std::io::Write;
 
 use anyhow::{Context, Result};
 use serde::Serialize;
+use snowroll::models::{StallKind, Validity};
 use snowroll::{ModelKind, ScenarioFile};
 
 use crate::args::{ModelsArgs, ModelsFormat};
@@ -30,8 +33,12 @@ struct Row {
     terminal_fraction: Option<f64>,
     /// The same as a fraction `p/q`, when it is one.
     terminal_fraction_exact: Option<String>,
-    /// Below this slope the model does not start from rest, for the default b and r0 (fn. 7).
+    /// Below this slope the model does not roll on from rest, for the default b and r0 (fn. 7).
     stall_slope_deg: Option<f64>,
+    /// What happens below `stall_slope_deg`.
+    stall_kind: Option<StallKind>,
+    /// The order in b/r the model keeps and where it is used without a warning.
+    validity: Validity,
 }
 
 /// The listing.
@@ -61,10 +68,9 @@ fn listing() -> Listing {
                 terminal_fraction_exact: terminal
                     .and_then(as_fraction)
                     .map(|(p, q)| format!("{p}/{q}")),
-                stall_slope_deg: kind
-                    .derivation()
-                    .and_then(|dv| dv.coefficients().stall_slope(b, r0))
-                    .map(f64::to_degrees),
+                stall_slope_deg: kind.stall_threshold(b, r0).map(|t| t.slope.to_degrees()),
+                stall_kind: kind.stall_threshold(b, r0).map(|t| t.kind),
+                validity: kind.validity(),
             }
         })
         .collect();
@@ -152,19 +158,50 @@ fn table(listing: &Listing) -> String {
     text.push_str(
         "\na_inf: late-time acceleration with snow (b > 0), from the model's coefficients.\n",
     );
-    let stalls: Vec<_> = listing
-        .models
-        .iter()
-        .filter_map(|m| m.stall_slope_deg.map(|s| (m.id, s)))
-        .collect();
-    if !stalls.is_empty() {
+    let stalls = |kind: StallKind| -> Vec<(&str, f64)> {
+        listing
+            .models
+            .iter()
+            .filter(|m| m.stall_kind == Some(kind))
+            .filter_map(|m| m.stall_slope_deg.map(|s| (m.id, s)))
+            .collect()
+    };
+    for (kind, what) in [
+        (StallKind::DoesNotStart, "do not start from rest"),
+        (
+            StallKind::StallsInFirstTurn,
+            "start from rest (a = 2G/3) but stall inside their first turn",
+        ),
+    ] {
+        let list = stalls(kind);
+        if list.is_empty() {
+            continue;
+        }
         text.push_str(&format!(
-            "Stall (fn. 7): with b = {} m, r0 = {} m these models do not start from rest unless alpha exceeds:\n",
+            "Stall (fn. 7): with b = {} m, r0 = {} m these models {what} unless alpha exceeds:\n",
             listing.stall_snow_depth_m, listing.stall_r0_m
         ));
-        for (id, slope) in stalls {
+        for (id, slope) in list {
             text.push_str(&format!("  {id:<w$}  {slope:.4} degrees\n", w = widths[0]));
         }
+    }
+    text.push_str("Validity (order in b/r kept; largest b/r0 used without a warning on stderr):\n");
+    for m in &listing.models {
+        let order = match m.validity.order_in_b_over_r {
+            Some(0) => "b = 0".to_string(),
+            Some(n) => format!("order {n}"),
+            None => "no term dropped".to_string(),
+        };
+        let max = m
+            .validity
+            .max_b_over_r0
+            .map_or_else(|| "any".to_string(), |x| x.to_string());
+        text.push_str(&format!(
+            "  {:<w$}  {order:<15}  b/r0 <= {max:<4}  {}\n",
+            m.id,
+            m.validity.statement,
+            w = widths[0]
+        ));
     }
     text
 }

@@ -1,11 +1,12 @@
 //! `snowroll paper`: every claim of the note judged, and the report written.
 //! The physics, the claims and the report are the library's
 //! ([`snowroll::report`]); this command shows progress and says where the
-//! report is.
+//! report is. With `--strict` it fails when any verdict differs from the one
+//! the claims table expects (after writing the report, so it can be read).
 
 use std::io::{IsTerminal, Write};
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use snowroll::report::{build_paper_report, paper_steps, Lab, Tally};
 use snowroll::Scenario;
@@ -58,7 +59,8 @@ pub fn run(args: &PaperArgs) -> Result<()> {
             c.claim.paper_ref,
         )?;
     }
-    writeln!(out, "{}", Tally::of(&report.claims).sentence())?;
+    let tally = Tally::of(&report.claims);
+    writeln!(out, "{}", tally.sentence())?;
     let html = args.out.join("report.html");
     writeln!(
         out,
@@ -67,5 +69,23 @@ pub fn run(args: &PaperArgs) -> Result<()> {
         written.len(),
         args.out.display()
     )?;
+    if args.strict && tally.unexpected > 0 {
+        let ids: Vec<String> = report
+            .claims
+            .iter()
+            .filter(|c| !c.as_expected())
+            .map(|c| {
+                format!(
+                    "{} ({}, expected {})",
+                    c.claim.id, c.verdict, c.claim.expected
+                )
+            })
+            .collect();
+        bail!(
+            "--strict: {} verdict(s) differ from the claims table's expectation: {}",
+            tally.unexpected,
+            ids.join("; ")
+        );
+    }
     Ok(())
 }

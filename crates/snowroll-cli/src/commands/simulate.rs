@@ -2,8 +2,8 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
-    write_trajectory, ModelKind, RunParams, Sampling, Scenario, SimOptions, StopReason, Trajectory,
-    TurnVariant,
+    validity_warnings, write_trajectory, ModelKind, RunParams, Sampling, Scenario, SimOptions,
+    StopReason, Trajectory, TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -32,6 +32,10 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     let opts = options(&args)?;
     opts.validate()?;
     let format = args.output.format.unwrap_or_default();
+    let warnings = validity_warnings(model, &scenario);
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
 
     // Open the destination before the run, so that a bad path fails at once.
     let mut sink = Sink::open(args.output.output.as_deref())?;
@@ -40,7 +44,8 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         .build()
         .simulate(&scenario, &opts)
         .with_context(|| format!("simulating {} ({})", model.id(), model.equation()))?;
-    let params = RunParams::new(&scenario, &opts);
+    let mut params = RunParams::new(&scenario, &opts);
+    params.warnings = warnings.iter().map(ToString::to_string).collect();
     write_trajectory(&mut sink, format, &traj, &params)
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))

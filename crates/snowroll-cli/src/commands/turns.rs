@@ -5,8 +5,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    run_turns, write_turn_table, RunParams, Sampling, StopReason, TurnSummary, TurnTable,
-    TurnVariant,
+    run_turns, validity_warnings, write_turn_table, RunParams, Sampling, StopReason, TurnSummary,
+    TurnTable, TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -48,6 +48,10 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted));
     opts.validate()?;
     let format = args.output.format.unwrap_or_default();
+    let warnings = validity_warnings(model, &scenario);
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
 
     // Open the destination before the run, so that a bad path fails at once.
     let mut sink = Sink::open(args.output.output.as_deref())?;
@@ -56,6 +60,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         .with_context(|| format!("running {} ({})", model.id(), model.equation()))?;
     let mut params = RunParams::new(&scenario, &opts);
     params.sampling = "one row per turn".to_string();
+    params.warnings = warnings.iter().map(ToString::to_string).collect();
     write_turn_table(&mut sink, format, &table, &params)
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))

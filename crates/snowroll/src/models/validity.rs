@@ -173,8 +173,8 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
             kind.id()
         )),
         Some(max) if ratio > max => warn(format!(
-            "{} is valid for thin snow, b/r0 <= {max} ({}); here b/r0 = {ratio:.3}: \
-             the terms it neglects are not small (compare {})",
+            "{} is used beyond its range: b/r0 = {ratio:.3} > {max}, so the terms it neglects are not small. \
+             Its range: {}. Compare {}.",
             kind.id(),
             validity.statement,
             ModelKind::TurnsExact.id()

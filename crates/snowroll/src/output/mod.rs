@@ -45,6 +45,9 @@ pub struct RunParams {
     pub atol: f64,
     /// Sampling, in words.
     pub sampling: String,
+    /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 impl RunParams {
@@ -63,6 +66,7 @@ impl RunParams {
                 Sampling::Every(dt) => format!("every {dt} s"),
                 Sampling::Ends => "start and end".to_string(),
             },
+            warnings: Vec::new(),
         }
     }
 
@@ -88,6 +92,9 @@ impl RunParams {
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
         ]
+        .into_iter()
+        .chain(self.warnings.iter().map(|w| ("warning".into(), w.clone())))
+        .collect()
     }
 }
 

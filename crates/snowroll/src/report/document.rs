@@ -126,13 +126,29 @@ impl Figure {
     }
 }
 
-/// Everything `snowroll paper` shows: metadata, claim results, figures, animation.
+/// A small table of text cells shown after the claims (e.g. where the turn
+/// models part ways).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// Section title.
+    pub title: String,
+    /// One or two sentences under the title: what the table shows.
+    pub caption: String,
+    /// Column headers.
+    pub header: Vec<String>,
+    /// Rows of cells, as many as headers each.
+    pub rows: Vec<Vec<String>>,
+}
+
+/// Everything `snowroll paper` shows: metadata, claim results, tables, figures, animation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Report {
     /// Title, version, parameters.
     pub metadata: Metadata,
     /// One result per claim, in table order.
     pub claims: Vec<ClaimResult>,
+    /// Tables shown after the claims.
+    pub tables: Vec<Table>,
     /// Figures, in display order.
     pub figures: Vec<Figure>,
     /// The rolling-log animation, if any.
@@ -154,6 +170,7 @@ impl Report {
         Self {
             metadata,
             claims: Vec::new(),
+            tables: Vec::new(),
             figures: Vec::new(),
             animation: None,
         }

@@ -85,6 +85,9 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
         "<a href=\"#figures\">Figures</a><a href=\"#parameters\">Parameters</a></nav></header>\n<main>\n",
     );
     claims_section(&mut h, &report.claims);
+    for (i, t) in report.tables.iter().enumerate() {
+        table_section(&mut h, i, t);
+    }
     if let Some(anim) = &report.animation {
         animation_section(&mut h, anim);
     }
@@ -157,6 +160,28 @@ fn claims_section(h: &mut String, claims: &[ClaimResult]) {
             label = esc(&r.verdict.label()),
             evidence = esc(&r.evidence),
         );
+    }
+    h.push_str("</tbody></table></div>\n</section>\n");
+}
+
+fn table_section(h: &mut String, index: usize, t: &super::Table) {
+    let _ = writeln!(
+        h,
+        "<section id=\"table-{index}\">\n<h2>{}</h2>\n<p>{}</p>",
+        esc(&t.title),
+        esc(&t.caption)
+    );
+    h.push_str("<div class=\"table-wrap\"><table class=\"parting\">\n<thead><tr>");
+    for c in &t.header {
+        let _ = write!(h, "<th scope=\"col\">{}</th>", esc(c));
+    }
+    h.push_str("</tr></thead>\n<tbody>\n");
+    for row in &t.rows {
+        h.push_str("<tr>");
+        for c in row {
+            let _ = write!(h, "<td>{}</td>", esc(c));
+        }
+        h.push_str("</tr>\n");
     }
     h.push_str("</tbody></table></div>\n</section>\n");
 }

@@ -55,6 +55,27 @@ pub(super) fn render(report: &Report) -> String {
         );
     }
 
+    for t in &report.tables {
+        let _ = writeln!(md, "\n## {}\n\n{}\n", t.title.replace('\n', " "), t.caption);
+        let _ = writeln!(
+            md,
+            "| {} |",
+            t.header
+                .iter()
+                .map(|h| cell(h))
+                .collect::<Vec<_>>()
+                .join(" | ")
+        );
+        let _ = writeln!(md, "|{}", "---|".repeat(t.header.len()));
+        for row in &t.rows {
+            let _ = writeln!(
+                md,
+                "| {} |",
+                row.iter().map(|c| cell(c)).collect::<Vec<_>>().join(" | ")
+            );
+        }
+    }
+
     if let Some(anim) = &report.animation {
         md.push_str("\n## Animation\n\n");
         let _ = writeln!(

@@ -20,9 +20,11 @@
 
 mod claim;
 mod claims;
+mod part_ways;
 
 pub use claim::{Claim, ClaimResult, Criterion, Tally, Tolerance, Verdict, EXPECTATION_NOTE};
 pub use claims::{ClaimCheck, Finding, Lab, Runner, CLAIMS};
+pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
 
 #[cfg(feature = "plot")]
 mod animation;
@@ -40,7 +42,7 @@ mod paper;
 #[cfg(feature = "plot")]
 pub use animation::{Animation, Frame};
 #[cfg(feature = "plot")]
-pub use document::{params_of, Figure, Metadata, RenderedFigure, Report};
+pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};
 #[cfg(feature = "plot")]
 pub use files::{figure_csv, ReportError};
 #[cfg(feature = "plot")]

@@ -5,7 +5,11 @@
 //! scenario, the long multi-turn runs the claims already computed, and their
 //! per-turn tables.
 
-use super::{Animation, ClaimResult, Figure, Lab, Metadata, Report, ReportError, CLAIMS};
+use super::{
+    where_turn_models_part_ways, Animation, ClaimResult, Figure, FirstTurn, Lab, Metadata, Report,
+    ReportError, Table, CLAIMS,
+};
+use crate::models::THIN_SNOW_MAX_B_OVER_R0;
 use crate::models::{
     kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, ModelKind, TurnTable,
 };
@@ -42,7 +46,53 @@ pub struct Progress<'a> {
 
 /// Number of progress steps of [`build_paper_report`].
 pub fn paper_steps() -> usize {
-    CLAIMS.len() + 4
+    CLAIMS.len() + 5
+}
+
+/// The table of where the turn models part ways (see [`where_turn_models_part_ways`]).
+fn parting_table(lab: &Lab) -> Result<Table, ReportError> {
+    let rows = where_turn_models_part_ways(lab.scenario())?;
+    let outcome = |f: FirstTurn| match f {
+        FirstTurn::Completed { v_end_m_s } => format!("rolls on, v = {v_end_m_s:.4} m/s"),
+        FirstTurn::Stalled { t_s } => format!("stalls at t = {t_s:.3} s"),
+    };
+    Ok(Table {
+        title: "Where the models part ways".to_string(),
+        caption: format!(
+            "The first-order turn model (turns, eq. (73)) against the exact geometry (turns-exact), from rest, in turn 0. \
+             Their stall slopes (fn. 7 in §3) differ by a relative O(b/r0); for thick snow one stalls where the other rolls on. \
+             snowroll simulate and snowroll turns warn on stderr when turns runs beyond b/r0 = {THIN_SNOW_MAX_B_OVER_R0} or where the two disagree about stalling."
+        ),
+        header: [
+            "α (°)",
+            "b (m)",
+            "r0 (m)",
+            "b/r0",
+            "stall slope, turns (°)",
+            "stall slope, turns-exact (°)",
+            "turn 0, turns",
+            "turn 0, turns-exact",
+            "warnings for turns",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows: rows
+            .iter()
+            .map(|r| {
+                vec![
+                    format!("{}", r.slope_deg),
+                    format!("{}", r.snow_depth_m),
+                    format!("{}", r.r0_m),
+                    format!("{:.3}", r.snow_depth_m / r.r0_m),
+                    format!("{:.4}", r.stall_slope_deg.0),
+                    format!("{:.4}", r.stall_slope_deg.1),
+                    outcome(r.first_turn.0),
+                    outcome(r.first_turn.1),
+                    r.turns_warnings.to_string(),
+                ]
+            })
+            .collect(),
+    })
 }
 
 fn log_times() -> Vec<f64> {
@@ -109,6 +159,9 @@ pub fn build_paper_report(
         tick(check.claim.id);
         claims.push(check.run(lab)?);
     }
+
+    tick("where the turn models part ways");
+    let parting = parting_table(lab)?;
 
     tick("trajectories of every model");
     let timed = SimOptions {
@@ -401,6 +454,7 @@ pub fn build_paper_report(
     Ok(Report {
         metadata,
         claims,
+        tables: vec![parting],
         figures,
         animation: Some(animation),
     })
