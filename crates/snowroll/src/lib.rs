@@ -20,8 +20,16 @@
 //!   over many turns its mean tends to g sin α/3 within the turns and to
 //!   g sin α/4 including the collisions (measured by [`run_turns`]; the note's
 //!   4 g sin α/9 of eq. (79) does not hold).
+//! * Every model states its range of validity, the order in b/r it keeps
+//!   ([`ModelKind::validity`]); [`validity_warnings`] says when a scenario
+//!   leaves it (e.g. `turns` on thick snow, where `turns-exact` stalls in
+//!   its first turn while `turns` rolls on).
 //! * [`report::CLAIMS`] is the table of the note's claims with the computation
-//!   that judges each; `snowroll paper` renders it with plots.
+//!   that judges each; `snowroll paper` renders it with plots. The checks type
+//!   the note's equations themselves and observe the models only through
+//!   their runs, so a wrong model changes a verdict (`tests/claims.rs`).
+//!   The errata are `docs/errata.md`, the turn model's conventions
+//!   `docs/turn-model.md`.
 //!
 //! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
 //! one integrator ([`integrate`]): DOP853 with dense output and events.
@@ -57,7 +65,8 @@
 //! | eq. (32), (36) | [`Derivation::QuasiCircular`], [`Derivation::QuasiCircularLift`] |
 //! | eq. (35) and every terminal value | [`Coefficients::terminal_fraction`] |
 //! | fn. 4 | [`LoneyModel`], [`DragOnlyClosedForm`] |
-//! | fn. 7 | [`Coefficients::stall_slope`] |
+//! | fn. 7 | [`Coefficients::stall_slope`] (§2: does not start), [`first_turn_stall_slope`] (§3: stalls in turn 0), [`ModelKind::stall_threshold`] |
+//! | range of validity (order in b/r) | [`ModelKind::validity`], [`validity_warnings`] |
 //! | eq. (95) | [`Derivation::Snowless`] |
 //! | eqs. (37)–(43), (48), (56), (60)–(62), exact | [`SectorBody`] |
 //! | eqs. (58), (64), (69), (71)–(76) | [`TurnDynamics`], [`InTurnCoefficients::paper`] |

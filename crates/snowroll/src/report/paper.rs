@@ -439,13 +439,22 @@ pub fn build_paper_report(
             .param("v0_m_s", file.v0_m_s)
             .param("rtol", format!("{:e}", opts.tolerances.rtol))
     };
+    // The terminal values in the caption come from the library's coefficients.
+    let terminal_values = circular
+        .iter()
+        .filter_map(|k| {
+            k.terminal_fraction()
+                .map(|f| format!("{f:.4} for {}", k.equation()))
+        })
+        .collect::<Vec<_>>()
+        .join(", ");
     let figures: Vec<Figure> = vec![
-        Figure::new(accel, "a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value (2/3 without snow, 1/5 for eq. (4), 1/6 for eq. (6), 1/3 for eqs. (14), (15), (32), 2/9 for eq. (21) as printed); the turn-by-turn models (markers: the mean over each turn) settle near 1/3 within a turn."),
+        Figure::new(accel, &format!("a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value ({terminal_values}); the turn-by-turn models (markers: the mean over each turn) settle near {:.4} within a turn over the last decade of the long run.", paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g))),
         Figure::new(speed, "Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration."),
         Figure::new(radius, "Radius against time: π r² = π r0² + b x (eq. (8)); the turn models grow by b per full turn."),
         Figure::new(approach, "How fast each circular model approaches its terminal acceleration: |a − a_term| against x. Models with only the v² term approach as a power r^−2(1+2c_v) (x^−10/3 for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at 1e-10, the accuracy of the integration."),
         Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties."),
-        Figure::new(means, "Mean acceleration over many turns, against the number of turns K: within turns it tends to G/3, including the collisions to G/4, not the note's 4G/9 (eq. (79))."),
+        Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {:.4} G within turns and {:.4} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g), paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g))),
         Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed."),
     ]
     .into_iter()

@@ -25,8 +25,8 @@ use super::multi_turn::{
     JUMP_ORDER, LONG_RUN, NOTE_APART, SWING, TRUNCATION_ORDER,
 };
 use super::stall::{
-    stall_in_first_turn, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_ORDER, TURN_START,
-    TURN_START_EXACT,
+    stall_in_first_turn, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_MARGIN,
+    TURN_STALL_ORDER, TURN_START, TURN_START_EXACT,
 };
 use super::terminal::{
     eq33_35_argument, eq35_third, eq36_slows, terminal_values, APPROACH_POWER, EQ33_DERIVATIVE,
@@ -164,7 +164,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: "fn7-stall-threshold",
             paper_ref: "fn. 7, eqs. (14), (15)",
             statement: "A log too light for the snow does not start: it must lift the snow it collects.",
-            method: "closed-form critical slope from a(0) = 0 in the printed eqs. (14), (15), against bisection on the simulated models; runs 0.01° below (must not start) and above (must keep rolling)",
+            method: "closed-form critical slope from a(0) = 0 in the printed eqs. (14), (15), against bisection on the simulated models; runs just below (must not start) and just above (must keep rolling)",
             tolerances: &[STALL_BISECTION, STALL_MARGIN],
             expected: Verdict::Holds,
         },
@@ -175,8 +175,15 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: "fn7-stall-in-first-turn",
             paper_ref: "fn. 7, §3, eqs. (62), (73)",
             statement: "In the setting of §3 a log that is too light for the snow starts (a(0) = 2G/3) but stalls inside its first turn.",
-            method: "bisection in α on the simulated turns and turns-exact (stall inside turn 0 or not), against the closed form max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)) typed from (62), the library's threshold (shown by `snowroll models`), and the leading-order forms in ε = b/(πr0)",
-            tolerances: &[TURN_START, TURN_START_EXACT, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_ORDER],
+            method: "bisection in α on the simulated turns and turns-exact (stall inside turn 0 or not), against the closed form max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)) typed from (62), the library's threshold (shown by `snowroll models`), and the leading-order forms in ε = b/(πr0); runs just below (must start, then stall in turn 0) and just above (must roll on)",
+            tolerances: &[
+                TURN_START,
+                TURN_START_EXACT,
+                TURN_STALL_FORMULA,
+                TURN_STALL_LIBRARY,
+                TURN_STALL_ORDER,
+                TURN_STALL_MARGIN,
+            ],
             expected: Verdict::Holds,
         },
         check: stall_in_first_turn,
