@@ -22,6 +22,10 @@ use crate::units::{Meters, Radians};
 /// models part ways).
 pub const THIN_SNOW_MAX_B_OVER_R0: f64 = 0.1;
 
+/// Relative slack on a range's limit, so that the rounding of b/r0 alone (the
+/// defaults b = 0.01 m, r0 = 0.1 m sit on the thin-snow limit) never warns.
+const B_OVER_R0_ROUNDING: f64 = 1e-12;
+
 /// A model's range of validity.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Validity {
@@ -172,7 +176,7 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
             "{} ignores the snow (snow_depth = {b} m): it is the b = 0 limit of the other models",
             kind.id()
         )),
-        Some(max) if ratio > max => warn(format!(
+        Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(format!(
             "{} is used beyond its range: b/r0 = {ratio:.3} > {max}, so the terms it neglects are not small. \
              Its range: {}. Compare {}.",
             kind.id(),
@@ -206,4 +210,68 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::ScenarioFile;
+
+    fn scenario(edit: impl FnOnce(&mut ScenarioFile)) -> Scenario {
+        let mut f = ScenarioFile::default();
+        edit(&mut f);
+        Scenario::new(f).unwrap()
+    }
+
+    #[test]
+    fn the_defaults_are_in_range_for_every_model_with_snow() {
+        let s = Scenario::default();
+        for kind in ModelKind::ALL {
+            let w = validity_warnings(kind, &s);
+            assert_eq!(
+                w.len(),
+                usize::from(kind == ModelKind::Snowless),
+                "{kind}: {w:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn thick_snow_warns_every_thin_snow_model_but_not_the_exact_turns() {
+        let s = scenario(|f| f.snow_depth_m = 0.03);
+        for kind in ModelKind::ALL {
+            let warned = !validity_warnings(kind, &s).is_empty();
+            assert_eq!(warned, kind != ModelKind::TurnsExact, "{kind}");
+        }
+    }
+
+    #[test]
+    fn turns_warns_where_the_turn_models_disagree_about_stalling() {
+        // Thin snow (b/r0 = 0.1) on a slope between the two turn-0 stall
+        // slopes (2.09° and 2.30°): only the disagreement warns.
+        let s = scenario(|f| f.slope_deg = 2.2);
+        let w = validity_warnings(ModelKind::Turns, &s);
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(w[0].message.contains("part ways"));
+        // Pushed, the comparison from rest does not apply.
+        let s = scenario(|f| {
+            f.slope_deg = 2.2;
+            f.v0_m_s = 1.0;
+        });
+        assert!(validity_warnings(ModelKind::Turns, &s).is_empty());
+    }
+
+    #[test]
+    fn stall_thresholds_say_what_happens_below_them() {
+        let (b, r0) = (0.01, 0.1);
+        assert_eq!(
+            ModelKind::Energy.stall_threshold(b, r0).map(|t| t.kind),
+            Some(StallKind::DoesNotStart)
+        );
+        assert_eq!(
+            ModelKind::TurnsExact.stall_threshold(b, r0).map(|t| t.kind),
+            Some(StallKind::StallsInFirstTurn)
+        );
+        assert!(ModelKind::TorqueCm.stall_threshold(b, r0).is_none());
+    }
 }

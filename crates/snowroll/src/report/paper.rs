@@ -80,9 +80,9 @@ fn parting_table(lab: &Lab) -> Result<Table, ReportError> {
             .iter()
             .map(|r| {
                 vec![
-                    format!("{}", r.slope_deg),
-                    format!("{}", r.snow_depth_m),
-                    format!("{}", r.r0_m),
+                    format!("{:.0}", r.slope_deg),
+                    format!("{:.3}", r.snow_depth_m),
+                    format!("{:.2}", r.r0_m),
                     format!("{:.3}", r.snow_depth_m / r.r0_m),
                     format!("{:.4}", r.stall_slope_deg.0),
                     format!("{:.4}", r.stall_slope_deg.1),

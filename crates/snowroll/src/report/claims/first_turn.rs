@@ -108,7 +108,9 @@ pub(super) fn first_turn_equivalence(lab: &Lab) -> Result<Finding, SimError> {
             "max |Δa|/G over θ ∈ (0, 2π), 3 speeds: corrected (58) vs (64) vs (69): {worst_corr:.1e}; printed (58) vs corrected: {worst_58:.2e}; printed (63): {worst_63:.3}; printed (69): {worst_69:.2e}"
         ),
         verdict: corrected_if(
-            false,
+            [worst_58, worst_63, worst_69]
+                .iter()
+                .all(|d| FIRST_TURN_AGREE.accepts_deviation(*d)),
             corrected_ok,
             apart,
             ERRATUM_58_69,
@@ -229,7 +231,13 @@ pub(super) fn eq47_48_angular_momentum(lab: &Lab) -> Result<Finding, SimError> {
             "at θ = {theta} rad: |ẋ′ − (47)|/(r0θ̇) ≤ {worst_47:.1e} corrected, ≥ {least_47p:.2} printed; ∫ integrand of (48) against ∫ dm (x′ − x_cm) × v′: {dev_48:.1e} corrected, {dev_48p:.2} printed (disk alone: printed {disk_printed:.3e} m⁴ against πr0⁴/2 = {:.3e} m⁴); |L_cm exact − (48)| shrinks {order_ratio:.1}-fold for a tenfold smaller b",
             PI * r0.powi(4) / 2.0
         ),
-        verdict: corrected_if(false, corrected_ok, apart, ERRATUM_47_48, &numbers),
+        verdict: corrected_if(
+            EQ47_48_MATCH.accepts_deviation(least_47p) && EQ47_48_MATCH.accepts_deviation(dev_48p),
+            corrected_ok,
+            apart,
+            ERRATUM_47_48,
+            &numbers,
+        ),
         evidence: format!(
             "the element velocity is ((r0 − r′ cos θ′)θ̇, r′θ̇ sin θ′) and the corrected integrand of (48) is the cross product term by term ({}); the final L_cm = −(m0r0²/2 + m0br0θ/π)θ̇ of (48) is right to O(b) (remainder second order: {}); the printed ẋ′ and integrand are not",
             bound(&EQ47_48_MATCH, EQ47_48_MATCH.accepts_deviation(worst_47.max(dev_48))),

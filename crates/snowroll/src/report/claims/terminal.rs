@@ -360,7 +360,13 @@ pub(super) fn eq33_35_argument(lab: &Lab) -> Result<Finding, SimError> {
         measured: format!(
             "eq. (32) at t = 0.2–2 s: max relative |v̈ − (33) corrected| = {worst_33:.1e}, smallest relative |v̈ − (33) printed| = {least_33p:.2}; at x = 1000 km (t = {t:.1} s): |a − bv²/(2πr²)|/a = {dev_34:.1e}, |a − bv²/(2πr³)|/a = {dev_34p:.2}, |πr²/(bx) − 1| = {dev_27:.1e}, |a t²/2 − x|/x = {dev_x:.1e}"
         ),
-        verdict: corrected_if(false, corrected_ok, printed_apart, ERRATUM_33_35, &numbers),
+        verdict: corrected_if(
+            EQ33_DERIVATIVE.accepts_deviation(least_33p) && EQ34_LATE.accepts_deviation(dev_34p),
+            corrected_ok,
+            printed_apart,
+            ERRATUM_33_35,
+            &numbers,
+        ),
         evidence: format!(
             "differentiating (32) with ṙ = bv/(2πr) (eq. (29)) gives v̈ = (bv/πr²)(bv²/(2πr²) − v̇): v̈ = 0 at a_term = bv²/(2πr²), which with (32) is G/3; late on x ≈ a_term t²/2 and πr² ≈ bx (eq. (27), not (31)). The corrected forms are {}; the printed (33) and (34) have the wrong units",
             bound(&EQ33_DERIVATIVE, corrected_ok)
