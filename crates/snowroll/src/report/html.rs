@@ -78,6 +78,9 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
         esc(&m.software)
     );
     h.push_str("<nav><a href=\"#claims\">Claims</a>");
+    for (i, t) in report.tables.iter().enumerate() {
+        let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
+    }
     if report.animation.is_some() {
         h.push_str("<a href=\"#animation\">Animation</a>");
     }
