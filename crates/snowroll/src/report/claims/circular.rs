@@ -8,7 +8,9 @@
 
 use std::f64::consts::PI;
 
-use super::{corrected_if, edited, finite, holds_if, pass, refuted_if, Edit, Finding, Lab};
+use super::{
+    corrected_if, edited, finite, holds_if, pass, refuted_if, symbols, Edit, Finding, Lab, Symbols,
+};
 use crate::error::SimError;
 use crate::models::ModelKind;
 use crate::report::{Criterion, Tolerance, Verdict};
@@ -167,12 +169,7 @@ pub(super) const LAGRANGE_APART: Criterion = Criterion {
 /// printed (21) differs from (14) by exactly `−(b v²/(2πr²))/(1 + b²/(6π²r²))`.
 pub(super) fn lagrangian_vs_energy(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (b, gs, gc, r0) = (
-        s.snow_depth(),
-        s.g_along(),
-        s.g_normal(),
-        s.initial_radius(),
-    );
+    let Symbols { b, gs, gc, r0, .. } = symbols(s);
     let mut worst_corrected: f64 = 0.0;
     let mut worst_difference: f64 = 0.0;
     let mut largest_gap: f64 = 0.0;
@@ -317,12 +314,8 @@ pub(super) const LONEY_PRINTED_APART: Criterion = Criterion {
 /// fn. 4's decaying term: 7bK/6, not 7bK/3.
 pub(super) fn loney_coefficient(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (g, b, r0, v0) = (
-        s.g_along(),
-        s.snow_depth(),
-        s.initial_radius(),
-        s.initial_speed(),
-    );
+    let Symbols { gs: g, b, r0, .. } = symbols(s);
+    let v0 = s.initial_speed();
     let x = 0.05;
     let h = 1e-6;
     let u = |x| loney_u(g, b, r0, v0, x).0;
@@ -367,12 +360,8 @@ pub(super) const LONEY_LIMIT: Criterion = Criterion {
 /// fn. 4's limit g sin α / 5 for eq. (4).
 pub(super) fn loney_limit(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (g, b, r0, v0) = (
-        s.g_along(),
-        s.snow_depth(),
-        s.initial_radius(),
-        s.initial_speed(),
-    );
+    let Symbols { gs: g, b, r0, .. } = symbols(s);
+    let v0 = s.initial_speed();
     let x = 1e7 * r0;
     let h = 1e-3 * x;
     let u = |x| loney_u(g, b, r0, v0, x).0;

@@ -7,7 +7,7 @@
 use std::f64::consts::PI;
 
 use super::quadrature::{integrate, mass_properties, Sector};
-use super::{bound, corrected_if, holds_if, pass, Finding, Lab};
+use super::{bound, corrected_if, holds_if, pass, symbols, Finding, Lab, Symbols};
 use crate::error::SimError;
 use crate::models::ModelKind;
 use crate::report::{Criterion, Tolerance};
@@ -52,12 +52,7 @@ pub(super) const FIRST_TURN_APART: Criterion = Criterion {
 /// as printed are not.
 pub(super) fn first_turn_equivalence(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (r0, b, gs, gc) = (
-        s.initial_radius(),
-        s.snow_depth(),
-        s.g_along(),
-        s.g_normal(),
-    );
+    let Symbols { r0, b, gs, gc, .. } = symbols(s);
     let mut worst_corr: f64 = 0.0;
     let mut worst_58: f64 = 0.0;
     let mut worst_63: f64 = 0.0;
@@ -154,7 +149,7 @@ pub(super) const EQ47_48_APART: Criterion = Criterion {
 /// its angular momentum about the centre of mass, element by element.
 pub(super) fn eq47_48_angular_momentum(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (r0, b, rho_l) = (s.initial_radius(), s.snow_depth(), s.density() * s.length());
+    let Symbols { r0, b, rho_l, .. } = symbols(s);
     let theta = 2.3;
     // (47): the element at (r′, θ′₀) is at θ′ = θ′₀ + θ, x′ = r0θ − r′ sin θ′
     // (θ̇ = 1 rad/s); its ẋ′ by central difference against r0 − r′ cos θ′.
@@ -325,12 +320,9 @@ pub(super) const ACCRETING_ORDER: Criterion = Criterion {
 /// `b³ρl(2C + 3bθ̇² + 4r0θ̇²)/24` only, and both reduce to (55) at O(b).
 pub(super) fn eq51_55_accreting_body(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (r0, rho_l, gs, gc) = (
-        s.initial_radius(),
-        s.density() * s.length(),
-        s.g_along(),
-        s.g_normal(),
-    );
+    let Symbols {
+        r0, rho_l, gs, gc, ..
+    } = symbols(s);
     // The body at θ: disk plus layer over [0, θ], contact line at (r0θ, 0).
     let body = |b: f64, th: f64| {
         [
@@ -461,7 +453,7 @@ pub(super) const MASS_PRINTED_APART: Criterion = Criterion {
 /// and against the masses the two turn models report at θ = 2π.
 pub(super) fn eq70_mass(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (rho_l, r0, b) = (s.density() * s.length(), s.initial_radius(), s.snow_depth());
+    let Symbols { rho_l, r0, b, .. } = symbols(s);
     let r1 = r0 + b;
     let integrated = mass_properties(
         &[

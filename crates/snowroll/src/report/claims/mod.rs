@@ -279,6 +279,32 @@ pub(super) fn edited(s: &Scenario, edit: Edit) -> Result<Scenario, SimError> {
     Ok(Scenario::new(f)?)
 }
 
+/// The scenario in the note's symbols.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Symbols {
+    /// Snow depth b, m.
+    pub b: f64,
+    /// Initial radius r0, m.
+    pub r0: f64,
+    /// G = g sin α, m/s².
+    pub gs: f64,
+    /// C = g cos α, m/s².
+    pub gc: f64,
+    /// ρl, kg/m.
+    pub rho_l: f64,
+}
+
+/// `s` in the note's symbols.
+pub(super) fn symbols(s: &Scenario) -> Symbols {
+    Symbols {
+        b: s.snow_depth(),
+        r0: s.initial_radius(),
+        gs: s.g_along(),
+        gc: s.g_normal(),
+        rho_l: s.density() * s.length(),
+    }
+}
+
 /// The scenario's slope, degrees.
 pub(super) fn slope_deg(s: &Scenario) -> f64 {
     s.slope_angle().to_degrees()

@@ -8,7 +8,10 @@
 use std::f64::consts::PI;
 
 use super::quadrature::{mass_properties, Sector};
-use super::{bound, corrected_if, edited, finite, holds_if, pass, refuted_if, Edit, Finding, Lab};
+use super::{
+    bound, corrected_if, edited, finite, holds_if, pass, refuted_if, symbols, Edit, Finding, Lab,
+    Symbols,
+};
 use crate::error::SimError;
 use crate::models::{ModelKind, TurnCheckpoint, TurnRow, TurnTable};
 use crate::report::{Criterion, Tolerance, Verdict};
@@ -299,8 +302,7 @@ pub(super) const COLLISION_T: Criterion = Criterion {
 /// v_after/r_{k+1}).
 pub(super) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (b, r0) = (s.snow_depth(), s.initial_radius());
-    let rho_l = s.density() * s.length();
+    let Symbols { b, r0, rho_l, .. } = symbols(s);
     let mut worst_l: f64 = 0.0;
     let mut worst_t: f64 = 0.0;
     let mut first_loss = f64::NAN;
@@ -356,13 +358,13 @@ pub(super) const JUMP_ORDER: Criterion = Criterion {
 /// ratio falls like b/r_k, to `C b/(2πG r_k)`.
 pub(super) fn collision_potential_jump(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (b, r0, gs, gc) = (
-        s.snow_depth(),
-        s.initial_radius(),
-        s.g_along(),
-        s.g_normal(),
-    );
-    let rho_l = s.density() * s.length();
+    let Symbols {
+        b,
+        r0,
+        gs,
+        gc,
+        rho_l,
+    } = symbols(s);
     let table = lab.long_run(false)?;
     let ratio_of = |row: &TurnRow| {
         let r = r0 + row.turn as f64 * b;
@@ -426,13 +428,13 @@ pub(super) const EQ88_APART: Criterion = Criterion {
 /// (88) with (87): the energy balance of a turn, in the 0-based index of (73).
 pub(super) fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
-    let (b, r0, gs, gc) = (
-        s.snow_depth(),
-        s.initial_radius(),
-        s.g_along(),
-        s.g_normal(),
-    );
-    let rho_l = s.density() * s.length();
+    let Symbols {
+        b,
+        r0,
+        gs,
+        gc,
+        rho_l,
+    } = symbols(s);
     let exact = lab.long_run(true)?;
     let paper = lab.long_run(false)?;
     /// How (80)–(88) are read.
