@@ -51,6 +51,12 @@ res = sp.expand(res * rr)  # polynomial in r and 1/r
 sol = sp.solve([res.coeff(rr, 2), res.coeff(rr, 1), res.coeff(rr, 0)], [K1, L1, M1], dict=True)[0]
 same("u = v^2 = K r + L + ..., K = G/((1+k) D)", sol[K1], G / ((1 + kI) * D))
 same("L = -K (c_v b/(pi D) + b/(4 pi D)) = -K (r_x + b/(4 pi D))", sol[L1], -sol[K1] * (cv * b / (pi * D) + b / (4 * pi * D)))
+# with a lift term -ell C b/(pi r) (energy-type models): L gains -ell C b/(pi D)
+ell = sp.symbols("ell", positive=True)
+resl = sp.diff(ans, rr) - (4 * pi * rr / b) * (G / (1 + kI) - cv * b * ans / (pi * rr**2) - D * ans / rr - ell * C * b / (pi * rr))
+resl = sp.expand(resl * rr)
+soll = sp.solve([resl.coeff(rr, 2), resl.coeff(rr, 1), resl.coeff(rr, 0)], [K1, L1, M1], dict=True)[0]
+same("with lift: L = -K (r_x + b/(4 pi D)) - ell C b/(pi D)", soll[L1], -soll[K1] * (cv * b / (pi * D) + b / (4 * pi * D)) - ell * C * b / (pi * D))
 Dlog = rhoa * Cd / (pi * rho * (1 + kI))
 same("log: D = rho_a C_d/(pi rho (1+k)) gives K = pi rho G/(rho_a C_d)", (G / ((1 + kI) * D)).subs(D, Dlog), pi * rho * G / (rhoa * Cd))
 same("log: crossover r_x = c_v b/(pi D) = (1+k) c_v rho b/(rho_a C_d)", (cv * b / (pi * D)).subs(D, Dlog), (1 + kI) * cv * rho * b / (rhoa * Cd))
@@ -122,12 +128,28 @@ want_P = {
     "eq. (32)": C * (3 * b / (2 * pi * r_cyl) + b**2 / (2 * pi * r_cyl**2)) + b**2 / (4 * pi**2 * r_cyl**2) * (2 * G / 3 - q / 2),
     "eq. (15)": C * b**2 / (2 * pi * r_cyl**2) + b**2 / (4 * pi**2 * r_cyl**2) * (2 * G / 3 - q / 2 - C * b / (pi * r_cyl)),
 }
+want_P["eq. (32)+(36)"] = want_P["eq. (15)"]
 for name, acc in models.items():
     P = power(acc, False)
     if name in want_P:
         same(f"{name}: P/(M v) = {sp.sstr(want_P[name])[:80]}", P / (M * v), want_P[name])
     else:
         print(f"     {name}: P/(M v) = {sp.factor(sp.simplify(P / (M * v)))}")
+# eq. (4) lossless from rest: the energy its equation destroys, in closed form (Loney's u(s), fn. 4)
+sv, s0v = sp.symbols("s s0", positive=True)
+A4 = 2 * G / (5 * b)
+u4 = A4 * sv * (1 - (s0v / sv) ** sp.Rational(10, 3))
+r_s = sp.sqrt(sv / pi)
+x_s = (sv - s0v) / b
+su = sp.symbols("su", positive=True)
+int_u = sp.integrate(u4.subs(sv, su), (su, s0v, sv))
+int_u_over_s = sp.integrate((u4 / sv).subs(sv, su), (su, s0v, sv))
+W4 = rho * l * int_u - rho * l * C * (pi * (r_s**3 - sp.sqrt(s0v / pi) ** 3) + b**2 * x_s / 2) \
+    - rho * l * b**2 / (4 * pi) * (2 * G / 3 * x_s - sp.Rational(7, 6) * int_u_over_s)
+P4s = (want_P["eq. (4)"] * M).subs(v, sp.sqrt(u4)).subs(x, x_s).subs(r0, sp.sqrt(s0v / pi))  # P/v as a function of s
+same("eq. (4) from rest: W_4(s) = rho l int u ds - rho l C (pi (r^3 - r0^3) + b^2 x/2) - (rho l b^2/4pi)(2G x/3 - (7/6) int u/s ds), dW/dx = -P/v",
+     sp.diff(W4, sv) * b + P4s, 0)
+same("... W_4(s0) = 0", W4.subs(sv, s0v), 0)
 same("eq. (32)+(36) = eq. (15): same P", power(models["eq. (32)+(36)"], False), power(models["eq. (15)"], False))
 # with losses added to a non-energy model the same way (G -> G - losses/M), P changes only through the b^2 inertia
 a4L = sp.solve(sp.Eq(a, 2 * G / 3 - sp.Rational(7, 6) * q - sp.Rational(2, 3) * (Fd + crr * M * N_over_M + Fc) / M), a)[0]

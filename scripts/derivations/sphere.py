@@ -108,6 +108,18 @@ same("sphere N/M = C + lam r' v^2 + r' a + r'' v^2", N_sph, C + lam_s * rp_s * v
 same("sphere (w=2r) N/M = C + b a/(2 pi r) + b^2 v^2/(2 pi^2 r^3)", N_sph, C + b * a / (2 * pi * r_sph) + b**2 * v**2 / (2 * pi**2 * r_sph**3))
 same("sphere F/M = G - a - (3/2) b v^2/(pi r^2)", F_sph, G - a - sp.Rational(3, 2) * qs)
 
+print("== potential energy (zero at the start; slab snow from -b/2): V = C[M r - M0 r0 + (b/2)(M - M0)] - G int_0^x M dx'")
+xp = sp.symbols("xp", positive=True)
+for shape, M_, r_ in (("cylinder", M_cyl, r_cyl), ("sphere", M_sph, r_sph)):
+    M0 = M_.subs(x, 0)
+    # direct definition: body at height r, minus start, plus the collected slab (centroid (x', -b/2))
+    V_direct = M_ * (r_ * C - x * G) - M0 * r0 * C + sp.integrate((sp.diff(M_, x) * (b * C / 2 + x * G)).subs(x, xp), (xp, 0, x))
+    V_form = C * (M_ * r_ - M0 * r0 + b / 2 * (M_ - M0)) - G * sp.integrate(M_.subs(x, xp), (xp, 0, x))
+    same(f"{shape}: V = C[M r - M0 r0 + (b/2)(M - M0)] - G int M dx", V_direct, V_form)
+same("cylinder: int_0^x M dx = rho l (pi r0^2 x + b x^2/2)", sp.integrate(M_cyl.subs(x, xp), (xp, 0, x)), rho * l * (pi * r0**2 * x + b * x**2 / 2))
+same("sphere (w = 2r): int_0^x M dx = 8 pi^2 rho (r^5 - r0^5)/(15 b)", sp.integrate(M_sph.subs(x, xp), (xp, 0, x)),
+     8 * pi**2 * rho * (r_sph**5 - r0**5) / (15 * b))
+
 print("== terminal fractions a_inf/(g sin alpha), w = 2r (u = v^2 linear in s = pi r^2)")
 s_, s0 = sp.symbols("s s0", positive=True)
 Ainf = sp.symbols("A_inf")

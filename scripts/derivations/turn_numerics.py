@@ -134,6 +134,8 @@ def turn_extremes(turn, w0, th_end, g, want_f=True):
     th_n, nmin = minimise(n_over_mg, 0.0, th_end)
     if not want_f:
         return nmin, th_n, math.nan, math.nan
+    if nmin <= 0:  # N reaches 0: no friction ratio (the log hops)
+        return nmin, th_n, math.inf, math.nan
     th_f, rneg = minimise(neg_ratio, 0.0, th_end)
     return nmin, th_n, -rneg, th_f
 
