@@ -336,7 +336,7 @@ def main():
     close("critical angle within 2000 turns -> atan 2 (2e-4 rel)", rows[-1][1], math.degrees(math.atan(2)), rel=2e-4)
     with open(os.path.join(REF, "hop_angles.csv"), "w") as fh:
         fh.write("# made by scripts/derivations/turn_numerics.py; defaults b=0.01 m, r0=0.1 m, g=9.81, v0=0, collision note\n")
-        fh.write("# alpha_crit_deg: smallest slope at which N reaches 0 within the first K turns (bisection to 1e-9 deg)\n")
+        fh.write("# alpha_crit_deg: smallest slope at which N reaches 0 within the first K turns (bisection, to 4e-8 deg)\n")
         fh.write("# closed_form_deg: atan((1 + e c_C)/(1/2 - e c_G)), e = b/r_{K-1}, c_C = 3/2 + 8/(13 pi), c_G = 1/pi + 14/39 - 1\n")
         fh.write("turns,alpha_crit_turns_deg,alpha_crit_turns_exact_deg,closed_form_deg\n")
         for K, a_num, a_ex, a_cf in rows:
