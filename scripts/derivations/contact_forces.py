@@ -283,18 +283,18 @@ for label, charge in [("note", 0), ("charged", sp.Rational(4, 3) * C * b)]:
     }[label]
     same(f"{label}: N(3pi/2)/m_k = C - G/2 + (b/r_k)(c_C C + c_G G) + O((b/r_k)^2)", n1, n1_want)
 
-# general collision law v'^2 = v_end^2 (1 - beta b/r): A = (8 pi/3) G b/(14/3 + beta), kappa = b th'^2/(pi G)
-beta = sp.symbols("beta", positive=True)
-A_gen = 8 * pi * G * b / 3 / (sp.Rational(14, 3) + beta)
+# general collision law v'^2 = v_end^2 (1 - gamma b/r): A = (8 pi/3) G b/(14/3 + gamma), kappa = b th'^2/(pi G)
+gam = sp.symbols("gamma", positive=True)  # collision loss: v^2 -> v^2 (1 - gamma b/r), docs/turn-model.md
+A_gen = 8 * pi * G * b / 3 / (sp.Rational(14, 3) + gam)
 kappa = sp.simplify(A_gen / (pi * b * G))
-same("kappa = (b/pi) th'^2/G -> 8/(14 + 3 beta)", kappa, 8 / (14 + 3 * beta))
-same("note collision: beta = 2/3", sp.series(((((r0 + b) ** 2 + 2 * r0**2) / (3 * r0 * (r0 + b))) ** 2 - 1) / (b / r0), b, 0, 1).removeO(), -sp.Rational(2, 3))
-same("kappa(2/3) = 1/2", kappa.subs(beta, sp.Rational(2, 3)), sp.Rational(1, 2))
-same("mean a with collisions = 4G/(14 + 3 beta) -> G/4", (4 / (14 + 3 * beta)).subs(beta, sp.Rational(2, 3)), sp.Rational(1, 4))
+same("kappa = (b/pi) th'^2/G -> 8/(14 + 3 gamma), gamma = collision loss v^2 -> v^2 (1 - gamma b/r)", kappa, 8 / (14 + 3 * gam))
+same("note collision: gamma = 2/3", sp.series(((((r0 + b) ** 2 + 2 * r0**2) / (3 * r0 * (r0 + b))) ** 2 - 1) / (b / r0), b, 0, 1).removeO(), -sp.Rational(2, 3))
+same("kappa(2/3) = 1/2", kappa.subs(gam, sp.Rational(2, 3)), sp.Rational(1, 2))
+same("mean a with collisions = 4G/(14 + 3 gamma) -> G/4", (4 / (14 + 3 * gam)).subs(gam, sp.Rational(2, 3)), sp.Rational(1, 4))
 same(
-    "mean a in-turn (2/3 - 2 kappa/3) G -> G/3, with collisions minus beta kappa G/4",
-    sp.Rational(2, 3) - 2 * kappa / 3 - beta * kappa / 4,
-    4 / (14 + 3 * beta),
+    "mean a in-turn (2/3 - 2 kappa/3) G -> G/3, with collisions minus gamma kappa G/4",
+    sp.Rational(2, 3) - 2 * kappa / 3 - gam * kappa / 4,
+    4 / (14 + 3 * gam),
 )
 
 # late-turn forces, leading order: th'^2 = kappa pi G/b, a = r th'' from eq. (73)
