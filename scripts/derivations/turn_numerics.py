@@ -436,15 +436,14 @@ def main():
                 w_minus = out["v_end"] / R0
                 fh.write(f"{'turns-exact' if exact else 'turns'},{al},{p['theta_c']:.12g},{p['d']:.12g},{w_minus:.12g},{p['w_plus']:.12g},"
                          f"{p['jx']:.12g},{p['jy']:.12g},{p['n_start']:.12g},{p['nmin_pivot']:.12g},{p['w_end']:.12g},{p['w_next']:.12g}\n")
-    # stuck: a shallow slope with an initial speed just enough to reach the corner
-    found = None
-    for v0 in [0.05 * i for i in range(1, 200)]:
-        rr = run(1.0, 3, collision="pivot", v0=v0, hop_stops=False)
-        if rr["stuck"] is not None and rr["stall"] is None:
-            found = (v0, rr["stuck"])
-            break
-    print(f"     pivot stuck example: alpha = 1 deg, v0 = {found}")
-    check("pivot: a stuck case exists on a shallow slope (1 deg) with some v0", found is not None)
+    # stuck: a shallow slope with an initial speed just enough to reach the step (window 0.4 <= v0 <= 0.5 m/s)
+    for coll in ("pivot", "charged"):
+        for exact in (False, True):
+            rr = run(1.0, 3, exact=exact, collision=coll, v0=0.45, want_f=False)
+            check(f"{coll} ({'turns-exact' if exact else 'turns'}), 1 deg, v0 = 0.45 m/s: stuck at the first step",
+                  rr["stuck"] == 0 and rr["stall"] is None and rr["pivot_hop"] is None)
+    rr = run(1.0, 3, collision="note", v0=0.45, want_f=False)
+    check("note, 1 deg, v0 = 0.45 m/s: no stuck (the jump is free), completes turn 0", rr["stuck"] is None and rr["turns"] >= 1)
 
     rk4_crosscheck()
     finish()
