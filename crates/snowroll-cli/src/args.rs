@@ -66,7 +66,7 @@ pub const PAPER_TURNS_DEFAULT: u64 = 100_000;
 /// Flags of `snowroll paper`.
 #[derive(Debug, Clone, PartialEq, clap::Args)]
 pub struct PaperArgs {
-    /// Directory for report.html, report.md, claims.json, figures/ and data/ (created if missing; files in it are replaced)
+    /// Directory for report.html, report.md, claims.json, figures/ and data/ (built beside it, then moved into place whole; an existing report there is replaced, any other existing directory refused)
     #[arg(long, short, value_name = "DIR", default_value = PAPER_OUT_DEFAULT)]
     pub out: PathBuf,
 
@@ -254,7 +254,7 @@ pub struct OutputArgs {
     )]
     pub format: Option<Format>,
 
-    /// Write to this file instead of stdout (written in full, then renamed into place)
+    /// Write to this file instead of stdout, `-` for stdout (written in full, then renamed into place; a device or FIFO is written through)
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
 

@@ -1,26 +1,15 @@
-//! `snowroll`: the command-line front end of the snowroll library.
-//!
-//! A thin layer: each subcommand turns its arguments into library types
-//! ([`snowroll::Scenario`], [`snowroll::SimOptions`], [`snowroll::ModelKind`]),
-//! calls the library, and writes the results. There is no physics here.
-
-mod args;
-mod commands;
-mod config;
-mod sink;
+//! The `snowroll` program: signal handlers, then [`snowroll_cli::run_from`].
 
 use std::process::ExitCode;
 
-use clap::Parser;
-
-use crate::args::Args;
-
 fn main() -> ExitCode {
-    match commands::run(Args::parse()) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e:#}");
-            ExitCode::FAILURE
-        }
+    if let Err(e) = snowroll_cli::install_signal_handlers() {
+        // Runs still work; only the clean-up on SIGINT/SIGTERM is lost.
+        use std::io::Write;
+        let _ = writeln!(
+            std::io::stderr(),
+            "warning: temporary files will not be removed on SIGINT or SIGTERM: {e}"
+        );
     }
+    ExitCode::from(snowroll_cli::run_from(std::env::args_os()))
 }

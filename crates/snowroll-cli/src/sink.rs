@@ -1,78 +1,161 @@
-//! Where results go: stdout, or a file that appears only when complete.
+//! Where results go: stdout, or the path of `-o`, treated by what is there.
 //!
-//! A file is written to a temporary file in the same directory and renamed
-//! over the destination by [`Sink::commit`]; if anything fails first, the
-//! temporary file is deleted when the [`Sink`] is dropped, and an existing
-//! destination is left untouched.
+//! | at the path | what `-o` does |
+//! |---|---|
+//! | nothing | a new file, written in full to a temporary file beside it, then renamed into place |
+//! | a regular file | replaced the same way, keeping its permission bits (and its owner where allowed) |
+//! | a read-only file | refused, even for root: the shell's `>` would refuse it too |
+//! | a file with several hard links | refused: replacing it would break the links, writing in place would not survive a crash |
+//! | a symbolic link | followed; its target is treated as above (replaced atomically in the target's directory) |
+//! | a device, FIFO, socket, or a handle in `/proc` (`/dev/stdout`, `/proc/self/fd/N`) | written through in place, as the shell's `>` does: no temporary file, no rename |
+//! | a directory | refused: "is a directory" |
+//! | `-` | stdout |
+//! | the run's own `--config` file | refused |
+//!
+//! The temporary file is a [`Scratch`]: removed on error and on SIGINT or
+//! SIGTERM, and cleaned up by the next run after SIGKILL. Error messages
+//! name the path given, never the temporary file. `docs/reliability.md`
+//! gives the reasons.
 
-use std::io::{self, BufWriter, StdoutLock, Write};
+use std::fs::{self, File, Metadata, OpenOptions};
+use std::io::{self, BufWriter, Write};
+use std::os::unix::fs::{MetadataExt, PermissionsExt};
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
-use tempfile::NamedTempFile;
+use anyhow::{bail, Context, Result};
+use rustix::fs::{accessat, Access, AtFlags, CWD};
+use rustix::io::Errno;
+
+use crate::args::OutputArgs;
+use crate::console::{self, note_broken_pipe};
+use crate::scratch::{clean_stale, plain, Scratch};
+
+/// Symbolic links followed before giving up, as Linux's `ELOOP` limit.
+const MAX_LINKS: usize = 40;
+/// Permission bits of a new file, less the umask: what the shell's `>` gives.
+const NEW_FILE_MODE: u32 = 0o666;
+/// Permission bits of the temporary file that replaces an existing one,
+/// until it is given the existing file's.
+const PRIVATE_MODE: u32 = 0o600;
+/// Any write permission bit.
+const WRITE_BITS: u32 = 0o222;
+/// Set-user-ID and set-group-ID bits.
+const SET_ID_BITS: u32 = 0o6000;
+/// The bits `chmod` sets.
+const MODE_BITS: u32 = 0o7777;
 
 /// An open destination for results.
+#[derive(Debug)]
 pub enum Sink {
     /// Standard output.
-    Stdout(BufWriter<PipeOut>),
-    /// A temporary file, renamed to `path` on commit.
-    File {
-        /// The temporary file.
-        tmp: BufWriter<NamedTempFile>,
-        /// The destination.
+    Stdout(BufWriter<console::Stdout>),
+    /// A path that is not a regular file, written in place.
+    Through {
+        /// The open device, FIFO or handle.
+        file: BufWriter<Piped>,
+        /// The path as given.
+        path: PathBuf,
+    },
+    /// A temporary file, renamed over `target` on commit.
+    Replace {
+        /// The temporary file, open for writing.
+        file: BufWriter<File>,
+        /// Its name and lock; removes it unless renamed.
+        scratch: Scratch,
+        /// The regular file (or place for one) that it will replace.
+        target: PathBuf,
+        /// The path as given.
         path: PathBuf,
     },
 }
 
+/// What a path names, and so how it is written.
+#[derive(Debug)]
+enum Destination {
+    Stdout,
+    Through,
+    /// A regular file or none: `target` is the file after symbolic links.
+    Replace {
+        target: PathBuf,
+        existing: Option<Metadata>,
+    },
+}
+
 impl Sink {
-    /// Opens stdout, or a temporary file next to `path`.
-    pub fn open(path: Option<&Path>) -> Result<Self> {
-        let Some(path) = path else {
-            return Ok(Sink::Stdout(BufWriter::new(PipeOut {
-                out: io::stdout().lock(),
-                closed: false,
-            })));
+    /// Standard output.
+    pub fn stdout() -> Sink {
+        Sink::Stdout(BufWriter::new(console::Stdout))
+    }
+
+    /// Opens the destination of `-o` (stdout without one), refusing the
+    /// paths the [module docs](self) list.
+    pub fn open(args: &OutputArgs) -> Result<Sink> {
+        let Some(path) = args.output.as_deref() else {
+            return Ok(Sink::stdout());
         };
-        let dir = match path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p,
-            _ => Path::new("."),
-        };
-        let mut builder = tempfile::Builder::new();
-        builder.prefix(".snowroll-").suffix(".tmp");
-        #[cfg(unix)]
-        {
-            // Read/write for all, less the umask: what a plain `File::create`
-            // gives, rather than the 0600 of a temporary file.
-            use std::os::unix::fs::PermissionsExt;
-            builder.permissions(std::fs::Permissions::from_mode(0o666));
+        let shown = path.display();
+        if let Some(config) = args.config.as_deref() {
+            if same_file(path, config) {
+                bail!(
+                    "cannot write {shown}: it is this run's --config file {}",
+                    config.display()
+                );
+            }
         }
-        let tmp = builder
-            .tempfile_in(dir)
-            .with_context(|| format!("cannot write {}", path.display()))?;
-        Ok(Sink::File {
-            tmp: BufWriter::new(tmp),
-            path: path.to_path_buf(),
-        })
+        match resolve(path).with_context(|| format!("cannot write {shown}"))? {
+            Destination::Stdout => Ok(Sink::stdout()),
+            Destination::Through => {
+                let file = OpenOptions::new()
+                    .write(true)
+                    .truncate(true)
+                    .open(path)
+                    .with_context(|| format!("cannot write {shown}"))?;
+                Ok(Sink::Through {
+                    file: BufWriter::new(Piped(file)),
+                    path: path.to_path_buf(),
+                })
+            }
+            Destination::Replace { target, existing } => {
+                let (scratch, file) = temporary_beside(&target, existing.as_ref())
+                    .with_context(|| format!("cannot write {shown}"))?;
+                Ok(Sink::Replace {
+                    file: BufWriter::new(file),
+                    scratch,
+                    target,
+                    path: path.to_path_buf(),
+                })
+            }
+        }
     }
 
     /// Flushes everything and, for a file, renames it into place.
     pub fn commit(self) -> io::Result<()> {
         match self {
             Sink::Stdout(mut out) => out.flush(),
-            Sink::File { tmp, path } => {
-                let tmp = tmp.into_inner().map_err(|e| e.into_error())?;
-                tmp.as_file().sync_all()?;
-                tmp.persist(&path).map_err(|e| e.error)?;
+            Sink::Through { mut file, .. } => file.flush(),
+            Sink::Replace {
+                file,
+                scratch,
+                target,
+                ..
+            } => {
+                let file = file.into_inner().map_err(|e| plain(e.into_error()))?;
+                file.sync_all().map_err(plain)?;
+                scratch.rename_to(&target)?;
+                // Make the rename itself durable; a failure here cannot undo it.
+                if let Ok(dir) = File::open(parent_or_dot(&target)) {
+                    let _ = dir.sync_all();
+                }
                 Ok(())
             }
         }
     }
 
-    /// A description for error messages.
+    /// A description for error messages: the path as given, or stdout.
     pub fn name(&self) -> String {
         match self {
             Sink::Stdout(_) => "stdout".to_string(),
-            Sink::File { path, .. } => path.display().to_string(),
+            Sink::Through { path, .. } | Sink::Replace { path, .. } => path.display().to_string(),
         }
     }
 }
@@ -81,53 +164,156 @@ impl Write for Sink {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
         match self {
             Sink::Stdout(w) => w.write(buf),
-            Sink::File { tmp, .. } => tmp.write(buf),
+            Sink::Through { file, .. } => file.write(buf),
+            Sink::Replace { file, .. } => file.write(buf).map_err(plain),
         }
     }
 
     fn flush(&mut self) -> io::Result<()> {
         match self {
             Sink::Stdout(w) => w.flush(),
-            Sink::File { tmp, .. } => tmp.flush(),
+            Sink::Through { file, .. } => file.flush(),
+            Sink::Replace { file, .. } => file.flush().map_err(plain),
         }
     }
 }
 
-/// Standard output that discards everything once the reader has gone.
-pub struct PipeOut {
-    out: StdoutLock<'static>,
-    /// The reader closed the pipe.
-    closed: bool,
-}
+/// A file written in place whose reader may go away (a FIFO, a pipe behind
+/// `/dev/stdout`): a broken pipe ends the run quietly, as on stdout.
+#[derive(Debug)]
+pub struct Piped(File);
 
-impl PipeOut {
-    /// Passes `result` through, except that a closed pipe counts as
-    /// success from now on.
-    fn quiet<T>(&mut self, result: io::Result<T>, discarded: T) -> io::Result<T> {
-        match result {
-            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => {
-                self.closed = true;
-                Ok(discarded)
-            }
-            other => other,
-        }
-    }
-}
-
-impl Write for PipeOut {
+impl Write for Piped {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
-        if self.closed {
-            return Ok(buf.len());
-        }
-        let result = self.out.write(buf);
-        self.quiet(result, buf.len())
+        self.0.write(buf).map_err(note_broken_pipe)
     }
 
     fn flush(&mut self) -> io::Result<()> {
-        if self.closed {
-            return Ok(());
-        }
-        let result = self.out.flush();
-        self.quiet(result, ())
+        self.0.flush().map_err(note_broken_pipe)
     }
+}
+
+/// The directory part of `path`, `.` for a bare name.
+pub fn parent_or_dot(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+/// Whether `a` and `b` name the same existing file (device and inode, after
+/// symbolic links).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (fs::metadata(a), fs::metadata(b)) {
+        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+        _ => false,
+    }
+}
+
+/// Whether `dir` (an existing directory) lies in a pseudo-file system whose
+/// entries are handles, not files: `/proc` and `/sys`.
+fn is_pseudo(dir: &Path) -> bool {
+    fs::canonicalize(dir)
+        .map(|d| d.starts_with("/proc") || d.starts_with("/sys"))
+        .unwrap_or(false)
+}
+
+/// What `path` names, following symbolic links one at a time so that a
+/// link's target, not the link, is replaced.
+fn resolve(path: &Path) -> Result<Destination> {
+    if path.as_os_str() == "-" {
+        return Ok(Destination::Stdout);
+    }
+    if path.as_os_str().is_empty() {
+        bail!("the output path is empty");
+    }
+    if path.as_os_str().as_encoded_bytes().ends_with(b"/") {
+        bail!("is a directory name (it ends with /), not a file name");
+    }
+    let mut p = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        let meta = match fs::symlink_metadata(&p) {
+            Ok(meta) => meta,
+            Err(e) if e.kind() == io::ErrorKind::NotFound => {
+                return Ok(Destination::Replace {
+                    target: p,
+                    existing: None,
+                });
+            }
+            Err(e) => return Err(e.into()),
+        };
+        let kind = meta.file_type();
+        let dir = parent_or_dot(&p);
+        if kind.is_symlink() {
+            // `/dev/stdout` leads to `/proc/self/fd/1`: a handle to whatever
+            // stdout is, whose "target" may be `pipe:[1234]`.
+            if is_pseudo(dir) {
+                return Ok(Destination::Through);
+            }
+            let link = fs::read_link(&p)?;
+            p = dir.join(link);
+        } else if kind.is_dir() {
+            bail!("is a directory");
+        } else if kind.is_file() && !is_pseudo(dir) {
+            check_replaceable(&p, &meta)?;
+            return Ok(Destination::Replace {
+                target: p,
+                existing: Some(meta),
+            });
+        } else {
+            return Ok(Destination::Through);
+        }
+    }
+    bail!("too many levels of symbolic links")
+}
+
+/// Refuses an existing regular file that `>` would refuse (no write
+/// permission for us, judged by the mode bits even for root, who passes
+/// every permission check), and one with other hard links.
+fn check_replaceable(path: &Path, meta: &Metadata) -> Result<()> {
+    let mode = meta.mode() & MODE_BITS;
+    if mode & WRITE_BITS == 0 {
+        bail!("it is read-only (mode {mode:04o}); make it writable (chmod u+w) or remove it first");
+    }
+    // Owner, group, other bits and ACLs: the kernel's answer for our
+    // effective ids is the one `>` would get.
+    let access = accessat(CWD, path, Access::WRITE_OK, AtFlags::EACCESS);
+    if access == Err(Errno::ACCESS) {
+        bail!("it is not writable by you (mode {mode:04o}); make it writable or remove it first");
+    }
+    check_links(meta)
+}
+
+/// Refuses a file with more than one name.
+fn check_links(meta: &Metadata) -> Result<()> {
+    let links = meta.nlink();
+    if links > 1 {
+        bail!(
+            "it has {links} hard links; replacing it would leave the other names with the old \
+             contents and writing it in place would not survive a crash: remove it or choose \
+             another name"
+        );
+    }
+    Ok(())
+}
+
+/// A temporary file in `target`'s directory, with `existing`'s owner (where
+/// allowed) and permission bits, or those of a new file.
+fn temporary_beside(target: &Path, existing: Option<&Metadata>) -> io::Result<(Scratch, File)> {
+    let dir = parent_or_dot(target);
+    clean_stale(dir);
+    let Some(meta) = existing else {
+        return Scratch::file_in(dir, NEW_FILE_MODE);
+    };
+    let (scratch, file) = Scratch::file_in(dir, PRIVATE_MODE)?;
+    let mut mode = meta.mode() & MODE_BITS;
+    // Owner first: changing it clears the set-id bits.
+    let owned = std::os::unix::fs::fchown(&file, Some(meta.uid()), Some(meta.gid())).is_ok();
+    if !owned {
+        // Our file must not carry someone else's set-id bits.
+        mode &= !SET_ID_BITS;
+    }
+    file.set_permissions(fs::Permissions::from_mode(mode))
+        .map_err(plain)?;
+    Ok((scratch, file))
 }

@@ -100,7 +100,7 @@ pub fn run(args: &ModelsArgs) -> Result<()> {
         ModelsFormat::Json => serde_json::to_string_pretty(&listing)? + "\n",
         ModelsFormat::Table => table(&listing),
     };
-    let mut out = Sink::open(None)?;
+    let mut out = Sink::stdout();
     out.write_all(text.as_bytes())
         .and_then(|()| out.commit())
         .context("writing to stdout")

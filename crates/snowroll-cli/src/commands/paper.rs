@@ -4,19 +4,23 @@
 //! report is. With `--strict` it fails when any verdict differs from the one
 //! the claims table expects (after writing the report, so it can be read).
 
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
-use snowroll::report::{build_paper_report, paper_steps, Lab, Tally};
+use snowroll::report::{build_paper_report, paper_steps, Lab, ReportError, Tally};
 use snowroll::Scenario;
 
 use crate::args::PaperArgs;
+use crate::console;
+use crate::outdir::StagedDir;
 
 /// Runs the claims and figures, writes the report, prints the claims table.
 pub fn run(args: &PaperArgs) -> Result<()> {
+    // Check --out before the long computation, so that a bad path fails at once.
+    let staged = StagedDir::open(&args.out)?;
     let lab = Lab::new(Scenario::default(), args.turns);
-    let bar = if args.quiet || !std::io::stderr().is_terminal() {
+    let bar = if args.quiet || !console::stderr_is_terminal() {
         ProgressBar::hidden()
     } else {
         ProgressBar::new(paper_steps() as u64)
@@ -32,11 +36,19 @@ pub fn run(args: &PaperArgs) -> Result<()> {
     .context("building the report")?;
     bar.set_message("writing files");
     let written = report
-        .write_to(&args.out)
+        .write_to(staged.path())
+        .map_err(|e| match e {
+            // Name the file as it will be once in place, not the temporary one.
+            ReportError::Io { path, source } => {
+                anyhow!("{}: {source}", staged.shown(&path).display())
+            }
+            other => other.into(),
+        })
         .with_context(|| format!("writing the report to {}", args.out.display()))?;
+    staged.commit()?;
     bar.finish_and_clear();
 
-    let mut out = std::io::stdout().lock();
+    let mut out = console::Stdout;
     let id_width = report
         .claims
         .iter()

@@ -9,6 +9,7 @@ use snowroll::{
 use super::inputs::{self, id_list, turn_models};
 use crate::args::SimulateArgs;
 use crate::config;
+use crate::console::report;
 use crate::sink::Sink;
 
 /// Merges flags over the config file, runs the model, writes the trajectory.
@@ -38,7 +39,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     }
 
     // Open the destination before the run, so that a bad path fails at once.
-    let mut sink = Sink::open(args.output.output.as_deref())?;
+    let mut sink = Sink::open(&args.output)?;
     let name = sink.name();
     let traj = model
         .build()
@@ -51,7 +52,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         .and_then(|()| Ok(sink.commit()?))
         .with_context(|| format!("writing {name}"))?;
     if let Some(note) = stop_note(&traj, &scenario, &opts) {
-        eprintln!("note: {note}");
+        report!("note: {note}");
     }
     Ok(())
 }

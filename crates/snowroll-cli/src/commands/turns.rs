@@ -12,6 +12,7 @@ use snowroll::{
 use super::inputs::{self, id_list, turn_models};
 use crate::args::{TurnsArgs, TURNS_DEFAULT, TURNS_T_END_S};
 use crate::config;
+use crate::console::report;
 use crate::sink::Sink;
 
 /// The note's long-run mean acceleration over g sin α, eq. (79): 4/9.
@@ -54,7 +55,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     }
 
     // Open the destination before the run, so that a bad path fails at once.
-    let mut sink = Sink::open(args.output.output.as_deref())?;
+    let mut sink = Sink::open(&args.output)?;
     let name = sink.name();
     let table = run_turns(model, &scenario, &opts)
         .with_context(|| format!("running {} ({})", model.id(), model.equation()))?;
@@ -66,9 +67,9 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         .and_then(|()| Ok(sink.commit()?))
         .with_context(|| format!("writing {name}"))?;
     if let Some(note) = stop_note(&table, wanted, opts.t_end) {
-        eprintln!("note: {note}");
+        report!("note: {note}");
     }
-    eprint!("{}", summary(&table));
+    report!("{}", summary(&table).trim_end());
     Ok(())
 }
 

@@ -16,8 +16,9 @@ use super::{Figure, Metadata, RenderedFigure, Report, Tally};
 #[derive(Debug, Error)]
 #[non_exhaustive]
 pub enum ReportError {
-    /// Reading or writing a file failed.
-    #[error("{path}: {source}")]
+    /// Reading or writing a file failed. The message names the file; the
+    /// cause is the error's `source`, so that a chain of messages names it once.
+    #[error("{}", path.display())]
     Io {
         /// The file or folder.
         path: PathBuf,

@@ -1,0 +1,143 @@
+//! The program's standard output and standard error, written so that no I/O
+//! error can panic, and captured per thread when [`capture`] asks (the fuzz
+//! harness and in-process tests run commands this way).
+//!
+//! - Everything for people on stderr goes through [`report!`]: a failed write
+//!   (`2>/dev/full`, a closed stderr) is dropped, as there is nowhere left to
+//!   say so.
+//! - Results on stdout go through [`Stdout`]: an error is returned to the
+//!   command, except that a reader who went away (`| head -1`, EPIPE) is
+//!   remembered ([`reader_gone`]) so that the run ends quietly with success
+//!   instead of an error message.
+
+use std::cell::RefCell;
+use std::fmt;
+use std::io::{self, IsTerminal, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Bytes written to stdout and stderr while [`capture`] ran.
+#[derive(Debug, Default, Clone, PartialEq, Eq)]
+pub struct Captured {
+    /// What went to standard output.
+    pub stdout: Vec<u8>,
+    /// What went to standard error.
+    pub stderr: Vec<u8>,
+}
+
+thread_local! {
+    /// The buffers of this thread's [`capture`], if one is running.
+    static CAPTURE: RefCell<Option<Captured>> = const { RefCell::new(None) };
+}
+
+/// Set when a write to stdout (or to a pipe named by `-o`) found that its
+/// reader had gone.
+static READER_GONE: AtomicBool = AtomicBool::new(false);
+
+/// Runs `f` with this thread's stdout and stderr going to memory, and
+/// returns its result with what it wrote.
+pub fn capture<R>(f: impl FnOnce() -> R) -> (R, Captured) {
+    let previous = CAPTURE.with(|c| c.replace(Some(Captured::default())));
+    let result = f();
+    let captured = CAPTURE.with(|c| c.replace(previous)).unwrap_or_default();
+    (result, captured)
+}
+
+/// Whether this thread's output is being captured.
+pub(crate) fn capturing() -> bool {
+    CAPTURE.with(|c| c.borrow().is_some())
+}
+
+/// Whether stderr is a terminal (never while captured): progress bars only
+/// go there.
+pub fn stderr_is_terminal() -> bool {
+    !capturing() && io::stderr().is_terminal()
+}
+
+/// Writes `args` and a newline to stderr; an error is dropped. Use
+/// [`report!`], which calls this.
+pub fn report_line(args: fmt::Arguments<'_>) {
+    let text = format!("{args}\n");
+    let captured = CAPTURE.with(|c| match c.borrow_mut().as_mut() {
+        Some(buf) => {
+            buf.stderr.extend_from_slice(text.as_bytes());
+            true
+        }
+        None => false,
+    });
+    if !captured {
+        // Nowhere left to report a failure to report.
+        let _ = io::stderr().lock().write_all(text.as_bytes());
+    }
+}
+
+/// `eprintln!` that never panics: one message to stderr, a write error
+/// dropped.
+macro_rules! report {
+    ($($arg:tt)*) => {
+        $crate::console::report_line(format_args!($($arg)*))
+    };
+}
+pub(crate) use report;
+
+/// Marks the reader as gone if `e` says so (EPIPE); returns `e`.
+pub fn note_broken_pipe(e: io::Error) -> io::Error {
+    if e.kind() == io::ErrorKind::BrokenPipe {
+        READER_GONE.store(true, Ordering::Relaxed);
+    }
+    e
+}
+
+/// Whether a reader of stdout (or of a pipe named by `-o`) went away; the
+/// run then ends quietly with success.
+pub fn reader_gone() -> bool {
+    READER_GONE.load(Ordering::Relaxed)
+}
+
+/// Forgets an earlier [`reader_gone`] (each in-process run starts clean).
+pub(crate) fn reset_reader_gone() {
+    READER_GONE.store(false, Ordering::Relaxed);
+}
+
+/// Standard output, or this thread's capture.
+#[derive(Debug, Default)]
+pub struct Stdout;
+
+impl Write for Stdout {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        let captured = CAPTURE.with(|c| match c.borrow_mut().as_mut() {
+            Some(b) => {
+                b.stdout.extend_from_slice(buf);
+                true
+            }
+            None => false,
+        });
+        if captured {
+            return Ok(buf.len());
+        }
+        io::stdout().lock().write(buf).map_err(note_broken_pipe)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        if capturing() {
+            return Ok(());
+        }
+        io::stdout().lock().flush().map_err(note_broken_pipe)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn capture_collects_both_streams_and_nests() {
+        let ((), outer) = capture(|| {
+            report!("to stderr {}", 1);
+            Stdout.write_all(b"to stdout").unwrap();
+            let ((), inner) = capture(|| report!("inner"));
+            assert_eq!(inner.stderr, b"inner\n");
+        });
+        assert_eq!(outer.stdout, b"to stdout");
+        assert_eq!(outer.stderr, b"to stderr 1\n");
+    }
+}

@@ -1,0 +1,104 @@
+//! `snowroll`: the command-line front end of the snowroll library.
+//!
+//! A thin layer: each subcommand turns its arguments into library types
+//! ([`snowroll::Scenario`], [`snowroll::SimOptions`], [`snowroll::ModelKind`]),
+//! calls the library, and writes the results. There is no physics here.
+//!
+//! The binary (`src/main.rs`) installs the signal handlers and calls
+//! [`run_from`]; tests and the fuzz harness call [`run_from`] in-process,
+//! with [`console::capture`] collecting what it prints. Nothing here panics
+//! on an I/O error: messages go through [`console`], outputs through
+//! `sink::Sink` (the file semantics of `-o`), temporary files through
+//! `scratch` (removed on error and on SIGINT/SIGTERM/SIGHUP).
+
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
+#[cfg(not(unix))]
+compile_error!(
+    "the snowroll command-line program needs Unix file semantics (flock, signals, modes); \
+     the snowroll library itself builds everywhere"
+);
+
+mod args;
+mod commands;
+mod config;
+pub mod console;
+mod outdir;
+mod scratch;
+mod sink;
+
+use std::ffi::OsString;
+
+use clap::Parser;
+
+use crate::args::Args;
+use crate::console::report;
+
+/// Exit status of a run that succeeded (or whose reader went away).
+pub const EXIT_SUCCESS: u8 = 0;
+/// Exit status of a run that failed: bad input, or a failed write.
+pub const EXIT_FAILURE: u8 = 1;
+/// Exit status of a command line that clap could not parse.
+pub const EXIT_USAGE: u8 = 2;
+
+/// Parses `args` (the program name first, as `std::env::args_os`) and runs
+/// the command; returns the exit status. Errors are one `error: ...` line on
+/// stderr. When the reader of stdout goes away (`| head -1`), the run stops
+/// at its next write and ends quietly with success.
+pub fn run_from<I, T>(args: I) -> u8
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    console::reset_reader_gone();
+    let args = match Args::try_parse_from(args) {
+        Ok(args) => args,
+        Err(e) => return usage(&e),
+    };
+    match commands::run(args) {
+        Ok(()) => EXIT_SUCCESS,
+        Err(_) if console::reader_gone() => EXIT_SUCCESS,
+        Err(e) => {
+            report!("error: {e:#}");
+            EXIT_FAILURE
+        }
+    }
+}
+
+/// Prints clap's message (help, version, or a usage error) where clap
+/// would, in colour on a terminal, without panicking; returns clap's exit
+/// status.
+fn usage(e: &clap::Error) -> u8 {
+    if console::capturing() {
+        let text = e.render().to_string();
+        if e.use_stderr() {
+            report!("{}", text.trim_end());
+        } else {
+            use std::io::Write;
+            let _ = console::Stdout.write_all(text.as_bytes());
+        }
+    } else {
+        // clap returns a failed write (a closed stdout) rather than panic.
+        let _ = e.print();
+    }
+    u8::try_from(e.exit_code()).unwrap_or(EXIT_FAILURE)
+}
+
+/// Removes the run's temporary files on SIGINT, SIGTERM and SIGHUP, then
+/// exits with 128 + the signal's number (130, 143, 129), as a shell reports
+/// a process killed by it.
+///
+/// # Errors
+/// When the handlers cannot be installed.
+pub fn install_signal_handlers() -> std::io::Result<()> {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])?;
+    std::thread::Builder::new()
+        .name("signals".to_string())
+        .spawn(move || {
+            if let Some(signal) = signals.forever().next() {
+                scratch::remove_all_and_exit(128 + signal);
+            }
+        })?;
+    Ok(())
+}
