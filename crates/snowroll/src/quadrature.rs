@@ -57,8 +57,17 @@ fn kronrod(f: &mut impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
     (k * h, ((k - g) * h).abs())
 }
 
+/// Most bisections of one integral: far more than a smooth integrand needs
+/// at machine precision (tens), few enough that one that never meets its
+/// tolerance costs milliseconds, not the 2^40 rule evaluations of a full
+/// bisection tree.
+const MAX_BISECTIONS: u32 = 1000;
+
 /// ∫ₐᵇ f with relative tolerance `rtol` (absolute floor `atol`), by
-/// recursive bisection of the 15-point rule, at most `depth` levels.
+/// recursive bisection of the 15-point rule, at most 40 levels deep and
+/// [`MAX_BISECTIONS`] bisections in all. An interval whose error estimate is
+/// not finite (an integrand that overflowed) is not bisected: its estimate
+/// is returned as it is, for the caller to find non-finite.
 pub(crate) fn integrate(
     f: &mut impl FnMut(f64) -> f64,
     a: f64,
@@ -73,22 +82,26 @@ pub(crate) fn integrate(
         whole: (f64, f64),
         tol: f64,
         depth: u32,
+        budget: &mut u32,
     ) -> f64 {
         let (value, err) = whole;
-        if err <= tol || depth == 0 {
+        if err <= tol || depth == 0 || !err.is_finite() || *budget == 0 {
             return value;
         }
+        *budget -= 1;
         let m = 0.5 * (a + b);
         let left = kronrod(f, a, m);
         let right = kronrod(f, m, b);
-        recurse(f, a, m, left, 0.5 * tol, depth - 1) + recurse(f, m, b, right, 0.5 * tol, depth - 1)
+        recurse(f, a, m, left, 0.5 * tol, depth - 1, budget)
+            + recurse(f, m, b, right, 0.5 * tol, depth - 1, budget)
     }
     if b <= a {
         return 0.0;
     }
     let whole = kronrod(f, a, b);
     let tol = (rtol * whole.0.abs()).max(atol);
-    recurse(f, a, b, whole, tol, 40)
+    let mut budget = MAX_BISECTIONS;
+    recurse(f, a, b, whole, tol, 40, &mut budget)
 }
 
 #[cfg(test)]
@@ -108,6 +121,35 @@ mod tests {
                 0.0
             };
             assert!((v - want).abs() < EXACT_TOL, "degree {k}: {v} vs {want}");
+        }
+    }
+
+    /// Regression of issue 7 (fuzzing): `simulate --model loney --v0 1e308`
+    /// hung, its integrand overflowing so that no interval ever met its
+    /// tolerance and the bisection tree grew to 2^40 leaves.
+    #[test]
+    fn regression_7_an_integrand_that_never_converges_costs_a_bounded_effort() {
+        for f in [
+            (|x: f64| if x > 0.5 { f64::INFINITY } else { x }) as fn(f64) -> f64,
+            |_| f64::NAN,
+            // Not integrable at 0: the error estimate never meets the tolerance.
+            |x| 1.0 / x,
+        ] {
+            let mut calls = 0u64;
+            let _ = integrate(
+                &mut |x| {
+                    calls += 1;
+                    f(x)
+                },
+                0.0,
+                1.0,
+                1e-15,
+                0.0,
+            );
+            assert!(
+                calls <= 15 * (2 * u64::from(MAX_BISECTIONS) + 1),
+                "{calls} evaluations"
+            );
         }
     }
 

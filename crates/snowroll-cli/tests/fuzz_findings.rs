@@ -1,0 +1,26 @@
+//! One regression test for each finding of the fuzz harness
+//! (`tests/fuzz.rs`, `scripts/fuzz.sh`), run on the binary.
+
+use assert_cmd::cargo::cargo_bin_cmd;
+
+/// Runs `snowroll ARGS` to its end; returns the exit code, after checking
+/// that it did not panic.
+fn ends(args: &[&str]) -> i32 {
+    let out = cargo_bin_cmd!("snowroll").args(args).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    let code = out.status.code().unwrap();
+    assert!(code == 0 || code == 1, "{args:?}: exit {code}: {stderr}");
+    code
+}
+
+/// Loney's closed form with v0 = 1e308 m/s (or 1e200) overflowed inside
+/// the quadrature of t(x); the bisection then never met its tolerance and
+/// ran through 2^40 intervals (hours). Now each integral has a budget.
+#[test]
+fn regression_7_loney_with_an_overflowing_speed_ends() {
+    for v0 in ["1e308", "1e200"] {
+        ends(&["simulate", "--model", "loney", "--v0", v0]);
+        ends(&["simulate", "--model", "loney", "--v0", v0, "--dt", "1"]);
+    }
+}
