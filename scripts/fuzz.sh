@@ -23,7 +23,7 @@ rm -f "$summary"
 cargo test --quiet -p snowroll-cli --test fuzz --no-run
 start=$(date +%s)
 status=0
-FUZZ_CASES="$cases" FUZZ_SEED="$seed" FUZZ_SUMMARY="$summary" \
+FUZZ_CASES="$cases" FUZZ_SEED="$seed" FUZZ_SUMMARY="$PWD/$summary" \
     nice -n 19 cargo test --quiet -p snowroll-cli --test fuzz -- --test-threads=1 || status=$?
 end=$(date +%s)
 if [[ -f "$summary" ]]; then

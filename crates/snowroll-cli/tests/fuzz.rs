@@ -816,6 +816,9 @@ fn env_u64(name: &str, default: u64) -> u64 {
 fn fuzz_the_command_line_and_the_config_file() {
     let cases = env_u64("FUZZ_CASES", u64::from(CI_CASES));
     let seed = env_u64("FUZZ_SEED", CI_SEED);
+    // Relative to where the test started, before it changes directory.
+    let summary_path =
+        std::env::var_os("FUZZ_SUMMARY").map(|p| std::env::current_dir().unwrap().join(p));
     let scratch = tempfile::tempdir().unwrap();
     let root = scratch.path().join("root");
     fs::create_dir(&root).unwrap();
@@ -874,7 +877,7 @@ fn fuzz_the_command_line_and_the_config_file() {
         t.slowest_case
     );
     let _ = writeln!(summary, "findings {}", u8::from(result.is_err()));
-    if let Ok(path) = std::env::var("FUZZ_SUMMARY") {
+    if let Some(path) = summary_path {
         fs::write(path, &summary).unwrap();
     }
     std::env::set_current_dir(scratch.path()).unwrap();
