@@ -4,6 +4,9 @@
 # more on the 2-core machine) and the crash-safety test.
 #
 #   scripts/reliability-figures.sh [CASES [SEED]]
+#
+# With FUZZ_REUSE=1, the summary of an earlier `scripts/fuzz.sh CASES SEED`
+# (target/fuzz/summary-SEED.txt) is used instead of running it again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,8 +14,14 @@ cases=${1:-1000000}
 seed=${2:-2026}
 doc=docs/reliability.md
 
-bash scripts/fuzz.sh "$cases" "$seed"
 summary="target/fuzz/summary-$seed.txt"
+if [[ "${FUZZ_REUSE:-0}" != 1 || ! -f "$summary" ]]; then
+    bash scripts/fuzz.sh "$cases" "$seed"
+fi
+if [[ "$(grep '^cases ' "$summary" | cut -d' ' -f2)" != "$cases" ]]; then
+    echo "$summary is not of a campaign of $cases cases" >&2
+    exit 1
+fi
 crash=$(cargo test --quiet -p snowroll-cli --test crash_safety -- --nocapture 2>&1 |
     grep '^crash safety:' | sed 's/^crash safety: //')
 

@@ -2,7 +2,7 @@
 //! error can panic, and captured per thread when [`capture`] asks (the fuzz
 //! harness and in-process tests run commands this way).
 //!
-//! - Everything for people on stderr goes through [`report!`]: a failed write
+//! - Everything for people on stderr goes through `report!`: a failed write
 //!   (`2>/dev/full`, a closed stderr) is dropped, as there is nowhere left to
 //!   say so.
 //! - Results on stdout go through [`Stdout`]: an error is returned to the
@@ -54,7 +54,7 @@ pub fn stderr_is_terminal() -> bool {
 }
 
 /// Writes `args` and a newline to stderr; an error is dropped. Use
-/// [`report!`], which calls this.
+/// `report!`, which calls this.
 pub fn report_line(args: fmt::Arguments<'_>) {
     let text = format!("{args}\n");
     let captured = CAPTURE.with(|c| match c.borrow_mut().as_mut() {
