@@ -200,7 +200,7 @@ fn only_files(dir: &Path) -> Result<Option<PathBuf>> {
     Ok(None)
 }
 
-/// A temporary file that versions before 0.2 left in a report when
+/// A temporary file that earlier versions left in a report when
 /// interrupted: `.NAME.tmpPID`.
 fn is_old_temporary(name: &str) -> bool {
     name.starts_with('.')
@@ -212,6 +212,22 @@ fn is_old_temporary(name: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The path taken where the file system cannot exchange two names.
+    #[test]
+    fn set_aside_and_rename_puts_the_new_report_in_place_and_removes_the_old() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("report");
+        fs::create_dir(&target).unwrap();
+        fs::write(target.join("old.txt"), "old").unwrap();
+        let new = Scratch::dir_in(dir.path(), NEW_DIR_MODE).unwrap();
+        fs::write(new.path().join("new.txt"), "new").unwrap();
+        set_aside_and_rename(new, &target).unwrap();
+        assert_eq!(fs::read_to_string(target.join("new.txt")).unwrap(), "new");
+        assert!(!target.join("old.txt").exists());
+        let left: Vec<_> = fs::read_dir(dir.path()).unwrap().collect();
+        assert_eq!(left.len(), 1, "only the report is left");
+    }
 
     #[test]
     fn old_temporary_names_are_recognised() {
