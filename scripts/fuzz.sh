@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The fuzz campaign of issue 7: random command lines and config files run
 # in-process through `snowroll_cli::run_from` by the harness in
-# crates/snowroll-cli/tests/fuzz.rs (what each case must satisfy is listed
+# crates/snowroll-cli/tests/fuzz/ (what each case must satisfy is listed
 # there), at low priority. CI runs the same harness with 2000 cases.
 #
 #   scripts/fuzz.sh [CASES [SEED]]     (default 1000000 cases, seed 2026)

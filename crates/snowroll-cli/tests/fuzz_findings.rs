@@ -1,5 +1,5 @@
 //! One regression test for each finding of the fuzz harness
-//! (`tests/fuzz.rs`, `scripts/fuzz.sh`), run on the binary.
+//! (`tests/fuzz/`, `scripts/fuzz.sh`), run on the binary.
 
 use assert_cmd::cargo::cargo_bin_cmd;
 
