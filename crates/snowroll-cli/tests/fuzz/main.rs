@@ -42,6 +42,8 @@ use crate::inputs::case;
 
 /// Cases run by `cargo test` (CI): a few seconds.
 const CI_CASES: u32 = 2_000;
+/// A file system in memory, if the machine has one.
+const SCRATCH_IN_MEMORY: &str = "/dev/shm";
 /// Seed of the CI run; the campaign uses others.
 const CI_SEED: u64 = 7;
 /// A case running longer than this is a hang: the watchdog reports it and
@@ -86,7 +88,12 @@ fn fuzz_the_command_line_and_the_config_file() {
     // Relative to where the test started, before it changes directory.
     let summary_path =
         std::env::var_os("FUZZ_SUMMARY").map(|p| std::env::current_dir().unwrap().join(p));
-    let scratch = tempfile::tempdir().unwrap();
+    // In memory where there is such a file system: the fsync of every
+    // output then costs nothing (on a disk it is most of a case's time).
+    // `tests/output_files.rs` covers the file semantics on a disk.
+    let scratch = tempfile::tempdir_in(SCRATCH_IN_MEMORY)
+        .or_else(|_| tempfile::tempdir())
+        .unwrap();
     let root = scratch.path().join("root");
     fs::create_dir(&root).unwrap();
     fs::create_dir(root.join("work")).unwrap();
