@@ -86,13 +86,24 @@ fn usage(e: &clap::Error) -> u8 {
 
 /// Removes the run's temporary files on SIGINT, SIGTERM and SIGHUP, then
 /// exits with 128 + the signal's number (130, 143, 129), as a shell reports
-/// a process killed by it.
+/// a process killed by it. A second signal while that clean-up runs (stuck
+/// on a slow file system) ends the program at once, with the same status.
 ///
 /// # Errors
 /// When the handlers cannot be installed.
 pub fn install_signal_handlers() -> std::io::Result<()> {
     use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
-    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])?;
+    use std::sync::atomic::AtomicBool;
+    use std::sync::Arc;
+
+    const SIGNALS: [i32; 3] = [SIGINT, SIGTERM, SIGHUP];
+    // Armed by the first signal; the shutdown must be registered first.
+    let armed = Arc::new(AtomicBool::new(false));
+    for signal in SIGNALS {
+        signal_hook::flag::register_conditional_shutdown(signal, 128 + signal, Arc::clone(&armed))?;
+        signal_hook::flag::register(signal, Arc::clone(&armed))?;
+    }
+    let mut signals = signal_hook::iterator::Signals::new(SIGNALS)?;
     std::thread::Builder::new()
         .name("signals".to_string())
         .spawn(move || {
