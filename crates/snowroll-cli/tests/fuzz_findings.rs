@@ -24,3 +24,19 @@ fn regression_7_loney_with_an_overflowing_speed_ends() {
         ends(&["simulate", "--model", "loney", "--v0", v0, "--dt", "1"]);
     }
 }
+
+/// Not a defect of the program but of the harness, kept so that the
+/// behaviour it checked stays pinned: a config's `output` spelt as a TOML
+/// literal string (`output = '''x'''`) is the output path like any other.
+#[test]
+fn regression_7_a_config_output_in_any_toml_string_form_is_the_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let config = dir.path().join("c.toml");
+    std::fs::write(&config, "model = 'eq4'\nt-end = 1\noutput = '''x.csv'''\n").unwrap();
+    cargo_bin_cmd!("snowroll")
+        .current_dir(dir.path())
+        .args(["simulate", "--config", "c.toml"])
+        .assert()
+        .success();
+    assert!(dir.path().join("x.csv").is_file());
+}

@@ -87,15 +87,13 @@ pub(crate) fn named_outputs(case: &Case) -> Vec<String> {
             named.push(v.trim_start_matches('=').to_string());
         }
     }
-    if let Some(doc) = &case.config {
-        for line in doc.lines() {
-            if let Some(rest) = line.strip_prefix("output = ") {
-                if let Ok(s) = serde_json::from_str::<String>(rest) {
-                    named.push(s);
-                }
-            }
-        }
-    }
+    // The config's `output`, however the document spells it.
+    let config_output = case
+        .config
+        .as_deref()
+        .and_then(|doc| toml::from_str::<toml::Table>(doc).ok())
+        .and_then(|table| table.get("output")?.as_str().map(str::to_string));
+    named.extend(config_output);
     // `link.csv` and `dangling.csv` write their targets.
     if named.iter().any(|n| n == "link.csv") {
         named.push("out.csv".to_string());
