@@ -325,10 +325,10 @@ pub(crate) fn prepared() -> BoxedStrategy<Prepared> {
 
 /// `simulate` or `turns` with a model first (mostly), flags, and often an
 /// output path last. A turn model under `simulate` always gets `--turns`
-/// (at most [`MAX_TURNS`]): without it, extreme parameters (g = 1e155 m/s^2,
-/// r0 = 1e-300 m) ask for more turns in the end time than the step budget
-/// allows, and such a run ends at that budget only after a minute (issue 7
-/// item 3, the step limit, is tested on its own).
+/// (at most [`MAX_TURNS`]): without it, an extreme parameter (g = 1e155
+/// m/s^2) asks for more turns in the end time than the step budget allows,
+/// and such a run ends at that budget only after a minute (issue 7 item 3,
+/// the step limit, is tested on its own).
 pub(crate) fn model_run(command: &'static str) -> BoxedStrategy<Vec<String>> {
     let first = if command == "turns" {
         pick(TURN_MODELS)
