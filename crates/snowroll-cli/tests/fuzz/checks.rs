@@ -14,6 +14,9 @@ use proptest::test_runner::TestCaseError;
 
 use crate::inputs::Case;
 
+/// Where `paper` writes without `--out`.
+const PAPER_OUT_DEFAULT: &str = "snowroll-report";
+
 /// Whether a non-finite number in an output is tolerated (counted, not a
 /// failure). Issue 7 item 6 (a guard that refuses to write one, and
 /// validation of derived quantities such as the mass of `--r0 1e154`) is
@@ -69,9 +72,13 @@ pub(crate) fn normalise(work: &Path, path: &str) -> PathBuf {
 }
 
 /// Every path a case named as an output: `-o X`, `-oX`, `--output X`,
-/// `--output=X`, `--out X`, the config's `output`.
+/// `--output=X`, `--out X`, the config's `output`, and `paper`'s default
+/// `snowroll-report`.
 pub(crate) fn named_outputs(case: &Case) -> Vec<String> {
     let mut named = Vec::new();
+    if case.args.first().is_some_and(|c| c == "paper") {
+        named.push(PAPER_OUT_DEFAULT.to_string());
+    }
     let mut args = case.args.iter().peekable();
     while let Some(a) = args.next() {
         if ["-o", "--output", "--out"].contains(&a.as_str()) {
