@@ -84,6 +84,8 @@ pub struct Scratch {
     path: PathBuf,
     /// Holds the `flock` that shows a live writer; released on close.
     _lock: File,
+    /// Renamed into place: nothing is left to remove.
+    renamed: bool,
 }
 
 impl Scratch {
@@ -128,7 +130,11 @@ impl Scratch {
         // the name still keeps other runs from removing it while we live.
         let _ = flock(&lock, FlockOperation::NonBlockingLockExclusive);
         registry.push(path.clone());
-        Ok(Scratch { path, _lock: lock })
+        Ok(Scratch {
+            path,
+            _lock: lock,
+            renamed: false,
+        })
     }
 
     /// Where it is.
@@ -138,13 +144,11 @@ impl Scratch {
 
     /// Renames it to `dest`, replacing what is there, as one step that a
     /// signal cannot split.
-    pub fn rename_to(self, dest: &Path) -> io::Result<()> {
+    pub fn rename_to(mut self, dest: &Path) -> io::Result<()> {
         let mut registry = live();
         fs::rename(&self.path, dest).map_err(plain)?;
         registry.retain(|p| p != &self.path);
-        drop(registry);
-        // Renamed: nothing is left to remove.
-        std::mem::forget(self);
+        self.renamed = true;
         Ok(())
     }
 
@@ -159,6 +163,9 @@ impl Scratch {
 
 impl Drop for Scratch {
     fn drop(&mut self) {
+        if self.renamed {
+            return;
+        }
         let mut registry = live();
         // Best effort: an error leaves it for the next run to clean up.
         let _ = remove(&self.path);
@@ -318,6 +325,33 @@ mod tests {
         drop(scratch);
         assert!(!path.exists());
         assert!(!live().contains(&path));
+    }
+
+    /// Open file descriptors of this process.
+    fn open_descriptors() -> usize {
+        fs::read_dir("/proc/self/fd").unwrap().count()
+    }
+
+    /// Regression of issue 7 (fuzzing): a scratch renamed into place kept
+    /// its lock's descriptor open for ever, so that a program running many
+    /// commands in one process (the fuzz harness: after 2.6·10^5 cases) ran
+    /// out of descriptors.
+    #[test]
+    fn regression_7_a_renamed_scratch_closes_its_descriptor() {
+        /// Rename cycles: each leaked descriptor would count once.
+        const CYCLES: usize = 256;
+        /// Descriptors other tests of this binary may hold meanwhile.
+        const OTHERS: usize = 64;
+        let dir = tempfile::tempdir().unwrap();
+        let before = open_descriptors();
+        for i in 0..CYCLES {
+            let (scratch, file) = Scratch::file_in(dir.path(), 0o600).unwrap();
+            drop(file);
+            scratch
+                .rename_to(&dir.path().join(format!("f{i}")))
+                .unwrap();
+        }
+        assert!(open_descriptors() < before + OTHERS);
     }
 
     #[test]

@@ -155,18 +155,20 @@ pub(crate) fn walk(dir: &Path, into: &mut Vec<PathBuf>) {
 }
 
 /// Empties `dir` (making read-only things removable first).
-pub(crate) fn clear(dir: &Path) {
-    if let Ok(entries) = fs::read_dir(dir) {
-        for e in entries.flatten() {
-            let path = e.path();
-            if e.file_type().is_ok_and(|t| t.is_dir()) {
-                let _ = fs::set_permissions(&path, fs::Permissions::from_mode(0o755));
-                let _ = fs::remove_dir_all(&path);
-            } else {
-                let _ = fs::remove_file(&path);
-            }
-        }
+pub(crate) fn clear(dir: &Path) -> std::io::Result<()> {
+    for e in fs::read_dir(dir)? {
+        let e = e?;
+        let path = e.path();
+        let removed = if e.file_type()?.is_dir() {
+            fs::set_permissions(&path, fs::Permissions::from_mode(0o755))?;
+            fs::remove_dir_all(&path)
+        } else {
+            fs::remove_file(&path)
+        };
+        removed
+            .map_err(|err| std::io::Error::new(err.kind(), format!("{}: {err}", path.display())))?;
     }
+    Ok(())
 }
 
 /// Non-finite numbers in the data rows of CSV text.
@@ -201,7 +203,13 @@ pub(crate) struct Tally {
 /// Runs one case in `root/work` and checks it.
 pub(crate) fn check(root: &Path, case: &Case, tally: &Mutex<Tally>) -> Result<(), TestCaseError> {
     let work = root.join("work");
-    clear(root);
+    if let Err(e) = clear(root) {
+        prop_assert!(
+            false,
+            "the previous case left what cannot be removed: {}",
+            e
+        );
+    }
     fs::create_dir(&work).unwrap();
     // The old working directory was removed with the rest.
     std::env::set_current_dir(&work).unwrap();
