@@ -35,7 +35,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     let format = args.output.format.unwrap_or_default();
     let warnings = validity_warnings(model, &scenario);
     for w in &warnings {
-        eprintln!("warning: {w}");
+        report!("warning: {w}");
     }
 
     // Open the destination before the run, so that a bad path fails at once.
