@@ -21,6 +21,7 @@ summary="target/fuzz/summary-$seed.txt"
 rm -f "$summary"
 
 cargo test --quiet -p snowroll-cli --test fuzz --no-run
+commit=$(git describe --always --dirty)
 start=$(date +%s)
 status=0
 FUZZ_CASES="$cases" FUZZ_SEED="$seed" FUZZ_SUMMARY="$PWD/$summary" \
@@ -28,6 +29,7 @@ FUZZ_CASES="$cases" FUZZ_SEED="$seed" FUZZ_SUMMARY="$PWD/$summary" \
 end=$(date +%s)
 if [[ -f "$summary" ]]; then
     echo "wall time $((end - start)) s" >> "$summary"
+    echo "commit $commit" >> "$summary"
     cat "$summary"
 fi
 exit "$status"
