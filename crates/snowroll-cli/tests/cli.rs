@@ -1216,14 +1216,14 @@ fn failed_run_leaves_an_existing_output_untouched_and_no_temporary_file() {
         path.to_str().unwrap(),
     ]);
     assert_one_line_error(&err, &["snow depth"]);
-    // Fails after the output is opened: with g = 1e307 m/s^2, x = g t^2/5
-    // overflows f64 long before t = 100 s.
+    // Fails after the output is opened: by t = 1e200 s, x = g t^2/5 would
+    // be 1e400 m, beyond f64; the integrator gives up on the way.
     let err = fails(&[
         "simulate",
         "--model",
         "eq4",
-        "--g",
-        "1e307",
+        "--t-end",
+        "1e200",
         "--output",
         path.to_str().unwrap(),
     ]);
@@ -1280,8 +1280,12 @@ fn out_of_scale_inputs_fail_with_one_line_not_a_panic() {
     // An absolute tolerance so small that a zero component's error overflows.
     let err = fails(&["simulate", "--model", "eq14", "--atol", "1e-300"]);
     assert_one_line_error(&err, &["atol", "1e-300", "1e-30"]);
-    // g so large that the first steps overflow: the integrator gives up cleanly.
+    // g so large that the first steps would overflow: refused at validation,
+    // with the range of magnitudes the program computes in.
     let err = fails(&["simulate", "--model", "eq14", "--g", "1e300"]);
+    assert_one_line_error(&err, &["g (m/s^2)", "1e300", "1e150"]);
+    // A run that overflows later: the integrator gives up cleanly.
+    let err = fails(&["simulate", "--model", "eq14", "--t-end", "1e200"]);
     assert_one_line_error(&err, &["simulating energy"]);
     assert!(!err.contains("panicked"), "{err}");
 }

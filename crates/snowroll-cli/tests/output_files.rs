@@ -272,10 +272,11 @@ fn regression_7_errors_name_the_path_given_never_the_temporary_file() {
         err.contains("missing/out.csv") && err.contains("No such file"),
         "{err}"
     );
-    // A failure after the temporary file exists: g = 1e307 m/s^2 overflows.
+    // A failure after the temporary file exists: x = g t^2/5 overflows
+    // before t = 1e200 s.
     let path = dir.path().join("out.csv");
     let mut args = short_run(&path);
-    args.extend(["--g", "1e307"].map(String::from));
+    args.extend(["--t-end", "1e200"].map(String::from));
     fails(&args);
     assert!(!path.exists());
     assert!(temporaries(dir.path()).is_empty());

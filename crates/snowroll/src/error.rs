@@ -2,15 +2,7 @@
 
 use thiserror::Error;
 
-/// A number as people read it: plain for ordinary magnitudes, in exponent
-/// form for very small or very large ones (`1e-300`, not 300 zeros).
-fn number(x: f64) -> String {
-    if x != 0.0 && x.is_finite() && !(1e-4..1e9).contains(&x.abs()) {
-        format!("{x:e}")
-    } else {
-        x.to_string()
-    }
-}
+use crate::output::format_number as number;
 
 /// A parameter outside its physical or numerical range.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -33,6 +25,19 @@ pub enum ParamError {
         given: String,
         /// The accepted ids.
         expected: String,
+    },
+    /// A parameter, or a quantity derived from several (a mass, an energy),
+    /// outside the range of magnitudes the program computes in.
+    #[error("{quantity} = {} is out of range: expected {allowed} ({hint})", number(*value))]
+    OutOfScale {
+        /// The quantity, with its formula and unit.
+        quantity: &'static str,
+        /// Its value (may be infinite when it overflowed).
+        value: f64,
+        /// The allowed range, in words, with numbers.
+        allowed: String,
+        /// Which parameters to change.
+        hint: &'static str,
     },
     /// Requested output times that are not finite, negative or not ascending.
     #[error("invalid output times: {reason}")]
@@ -100,4 +105,8 @@ pub enum OutputError {
     /// JSON serialisation failed.
     #[error("writing JSON failed")]
     Json(#[from] serde_json::Error),
+    /// A number about to be written is NaN or infinite; nothing of the
+    /// record was written.
+    #[error(transparent)]
+    NonFinite(#[from] crate::output::NonFinite),
 }

@@ -86,12 +86,124 @@ fn check(
     }
 }
 
+/// The largest magnitude of any parameter or derived quantity (SI units).
+///
+/// The models multiply such quantities in pairs (m v², I ω², b x, r²): two
+/// numbers at most 1e150 have a product at most 1e300, below the largest
+/// `f64` (1.8e308), so a scenario inside this window cannot overflow in its
+/// first steps; what a long run still pushes out of range is refused by the
+/// writers ([`crate::check_finite`]).
+pub const MAX_MAGNITUDE: f64 = 1e150;
+
+/// The smallest non-zero magnitude of any parameter or derived quantity (SI
+/// units): the product of two is at least 1e-300, above the smallest
+/// normal `f64` (2.2e-308), so nothing underflows to zero or loses its
+/// precision to subnormals.
+pub const MIN_MAGNITUDE: f64 = 1e-150;
+
+/// Checks that `value` is zero (when `zero_ok`) or has a magnitude in
+/// [`MIN_MAGNITUDE`, `MAX_MAGNITUDE`].
+pub(crate) fn check_scale(
+    quantity: &'static str,
+    value: f64,
+    zero_ok: bool,
+    hint: &'static str,
+) -> Result<(), ParamError> {
+    let a = value.abs();
+    if (zero_ok && a == 0.0) || (MIN_MAGNITUDE..=MAX_MAGNITUDE).contains(&a) {
+        Ok(())
+    } else {
+        Err(ParamError::OutOfScale {
+            quantity,
+            value,
+            allowed: format!(
+                "{}{MIN_MAGNITUDE:e} <= |value| <= {MAX_MAGNITUDE:e} in SI units",
+                if zero_ok { "0 or " } else { "" }
+            ),
+            hint,
+        })
+    }
+}
+
 impl Scenario {
     /// Validates `file` and converts it to SI (degrees to radians).
     ///
+    /// Each parameter must be in its physical range, and each parameter and
+    /// each quantity derived from them at the start of the run (area, mass,
+    /// moment of inertia, weight, energies) must be zero or of a magnitude
+    /// between [`MIN_MAGNITUDE`] and [`MAX_MAGNITUDE`].
+    ///
     /// # Errors
-    /// [`ParamError::InvalidParameter`] naming the first parameter out of range.
+    /// [`ParamError::InvalidParameter`] naming the first parameter out of
+    /// range; [`ParamError::OutOfScale`] naming the first quantity out of
+    /// scale.
     pub fn new(file: ScenarioFile) -> Result<Self, ParamError> {
+        let s = Self::new_unscaled(file)?;
+        s.check_scales()?;
+        Ok(s)
+    }
+
+    /// The checks of the scales, in the order a reader would change them.
+    fn check_scales(&self) -> Result<(), ParamError> {
+        use std::f64::consts::PI;
+        let (b, r0, g, rho, l, v0) = (self.b, self.r0, self.g, self.rho, self.l, self.v0);
+        check_scale("snow depth b (m)", b, true, "change --snow-depth")?;
+        check_scale("initial radius r0 (m)", r0, false, "change --r0")?;
+        check_scale("g (m/s^2)", g, false, "change --g")?;
+        check_scale("density (kg/m^3)", rho, false, "change --density")?;
+        check_scale("log length (m)", l, false, "change --length")?;
+        check_scale("initial speed v0 (m/s)", v0, true, "change --v0")?;
+        let area = PI * r0 * r0;
+        check_scale(
+            "initial cross-section pi r0^2 (m^2)",
+            area,
+            false,
+            "change --r0",
+        )?;
+        let m0 = self.initial_mass();
+        let hint = "change --density, --length or --r0";
+        check_scale(
+            "initial mass m0 = pi rho l r0^2, eq. (37) (kg)",
+            m0,
+            false,
+            hint,
+        )?;
+        check_scale(
+            "moment of inertia about the contact line 3 m0 r0^2/2, eq. (56) (kg m^2)",
+            1.5 * m0 * r0 * r0,
+            false,
+            hint,
+        )?;
+        let hint = "change --g, --density, --length or --r0";
+        check_scale("weight m0 g (N)", m0 * g, false, hint)?;
+        check_scale(
+            "potential energy scale m0 g r0 (J)",
+            m0 * g * r0,
+            false,
+            hint,
+        )?;
+        check_scale(
+            "initial kinetic energy 3 m0 v0^2/4, eq. (7) (J)",
+            0.75 * m0 * v0 * v0,
+            true,
+            "change --v0, --density, --length or --r0",
+        )?;
+        check_scale(
+            "snow picked up per metre rolled rho l b, eq. (8) (kg/m)",
+            rho * l * b,
+            true,
+            "change --snow-depth, --density or --length",
+        )?;
+        check_scale(
+            "area picked up per metre rolled b/pi relative to r0^2 (1/m)",
+            b / (PI * r0 * r0),
+            true,
+            "change --snow-depth or --r0",
+        )
+    }
+
+    /// [`Scenario::new`] without the checks of scale.
+    fn new_unscaled(file: ScenarioFile) -> Result<Self, ParamError> {
         let alpha_deg = check(
             "slope angle (degrees)",
             file.slope_deg,

@@ -2,8 +2,8 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
-    validity_warnings, write_trajectory, ModelKind, RunParams, Sampling, Scenario, SimOptions,
-    StopReason, Trajectory, TurnVariant,
+    check_turn_scale, validity_warnings, write_trajectory, ModelKind, RunParams, Sampling,
+    Scenario, SimOptions, StopReason, Trajectory, TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -32,6 +32,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     let scenario = inputs::scenario(&args.scenario)?;
     let opts = options(&args)?;
     opts.validate()?;
+    check_turn_scale(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let warnings = validity_warnings(model, &scenario);
     for w in &warnings {

@@ -5,8 +5,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    run_turns, validity_warnings, write_turn_table, RunParams, Sampling, StopReason, TurnSummary,
-    TurnTable, TurnVariant,
+    check_turn_scale, run_turns, validity_warnings, write_turn_table, RunParams, Sampling,
+    StopReason, TurnSummary, TurnTable, TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -48,6 +48,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     // Only the turn ends are recorded, whatever the sampling.
     let opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted));
     opts.validate()?;
+    check_turn_scale(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let warnings = validity_warnings(model, &scenario);
     for w in &warnings {

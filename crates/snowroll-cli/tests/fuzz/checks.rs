@@ -18,10 +18,10 @@ use crate::inputs::Case;
 const PAPER_OUT_DEFAULT: &str = "snowroll-report";
 
 /// Whether a non-finite number in an output is tolerated (counted, not a
-/// failure). Issue 7 item 6 (a guard that refuses to write one, and
-/// validation of derived quantities such as the mass of `--r0 1e154`) is
-/// done on another branch; set this to `false` once it is merged.
-pub(crate) const TOLERATE_NON_FINITE: bool = true;
+/// failure). Not since issue 7 item 6: derived quantities (the mass of
+/// `--r0 1e154`) are checked at validation and the writers refuse NaN and
+/// infinity.
+pub(crate) const TOLERATE_NON_FINITE: bool = false;
 
 /// A file's identity and contents, to see whether a run touched it.
 #[derive(Debug, PartialEq)]

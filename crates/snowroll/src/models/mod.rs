@@ -14,7 +14,7 @@ pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
 pub use exact_geometry::SectorBody;
 pub use turn_by_turn::{
-    collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
+    check_turn_scale, collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
     kinetic_energy_at_turn_start, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics,
     TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
 };

@@ -173,13 +173,16 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
     };
     match validity.max_b_over_r0 {
         Some(max) if kind == ModelKind::Snowless && b > max => warn(format!(
-            "{} ignores the snow (snow_depth = {b} m): it is the b = 0 limit of the other models",
-            kind.id()
+            "{} ignores the snow (snow_depth = {} m): it is the b = 0 limit of the other models",
+            kind.id(),
+            crate::output::format_number(b)
         )),
         Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(format!(
-            "{} is used beyond its range: b/r0 = {ratio:.3} > {max}, so the terms it neglects are not small. \
+            "{} is used beyond its range: b/r0 = {} > {max}, so the terms it neglects are not small. \
              Its range: {}. Compare {}.",
             kind.id(),
+            // Four significant digits, in the form of every other number.
+            crate::output::format_number(format!("{ratio:.3e}").parse().unwrap_or(ratio)),
             validity.statement,
             ModelKind::TurnsExact.id()
         )),

@@ -9,8 +9,31 @@ use crate::error::OutputError;
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sample, Sampling, SimOptions, Stop, Trajectory, TurnState};
 
+mod finite;
 mod turns;
+pub use finite::{check_finite, NonFinite};
 pub use turns::write_turn_table;
+
+/// A number as people read it and programs parse it back exactly: the
+/// shortest decimal digits that round-trip to the same `f64` (Rust's `{}`
+/// and `{:e}` both give those), plain for ordinary magnitudes and in
+/// exponent form for very small or very large ones (`1e-300`, `1e150`, not
+/// hundreds of zeros).
+///
+/// ```
+/// use snowroll::format_number;
+/// assert_eq!(format_number(0.01), "0.01");
+/// assert_eq!(format_number(1e308), "1e308");
+/// assert_eq!(format_number(1.5e-7), "1.5e-7");
+/// assert_eq!(format_number(0.1 + 0.2).parse::<f64>(), Ok(0.1 + 0.2));
+/// ```
+pub fn format_number(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e9).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        x.to_string()
+    }
+}
 
 /// The program version written into every output.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -63,7 +86,7 @@ impl RunParams {
             sampling: match &opts.sampling {
                 Sampling::Steps => "every accepted step".to_string(),
                 Sampling::Times(ts) => format!("{} requested times", ts.len()),
-                Sampling::Every(dt) => format!("every {dt} s"),
+                Sampling::Every(dt) => format!("every {} s", format_number(*dt)),
                 Sampling::Ends => "start and end".to_string(),
             },
             warnings: Vec::new(),
@@ -72,17 +95,18 @@ impl RunParams {
 
     /// `key = value` lines, in a fixed order.
     fn lines(&self) -> Vec<(String, String)> {
-        let opt = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
+        let opt = |v: Option<f64>| v.map_or("none".to_string(), format_number);
+        let n = format_number;
         let s = &self.scenario;
         vec![
-            ("slope_deg".into(), s.slope_deg.to_string()),
-            ("snow_depth_m".into(), s.snow_depth_m.to_string()),
-            ("r0_m".into(), s.r0_m.to_string()),
-            ("g_m_s2".into(), s.g_m_s2.to_string()),
-            ("density_kg_m3".into(), s.density_kg_m3.to_string()),
-            ("length_m".into(), s.length_m.to_string()),
-            ("v0_m_s".into(), s.v0_m_s.to_string()),
-            ("t_end_s".into(), self.t_end_s.to_string()),
+            ("slope_deg".into(), n(s.slope_deg)),
+            ("snow_depth_m".into(), n(s.snow_depth_m)),
+            ("r0_m".into(), n(s.r0_m)),
+            ("g_m_s2".into(), n(s.g_m_s2)),
+            ("density_kg_m3".into(), n(s.density_kg_m3)),
+            ("length_m".into(), n(s.length_m)),
+            ("v0_m_s".into(), n(s.v0_m_s)),
+            ("t_end_s".into(), n(self.t_end_s)),
             ("x_end_m".into(), opt(self.x_end_m)),
             (
                 "turns".into(),
@@ -177,6 +201,8 @@ pub(crate) fn write_csv_header(
     params: &RunParams,
     stop: &Stop,
 ) -> Result<(), OutputError> {
+    check_finite(params, None)?;
+    check_finite(stop, None)?;
     writeln!(w, "# snowroll {VERSION}")?;
     writeln!(w, "# model = {} ({})", model.id(), model.equation())?;
     for (k, v) in params.lines() {
@@ -188,8 +214,8 @@ pub(crate) fn write_csv_header(
         serde_json::to_value(stop.reason)?
             .as_str()
             .unwrap_or_default(),
-        stop.t_s,
-        stop.x_m,
+        format_number(stop.t_s),
+        format_number(stop.x_m),
         stop.reason.describe()
     )?;
     Ok(())
@@ -198,7 +224,8 @@ pub(crate) fn write_csv_header(
 /// Writes `traj` in `format`, recording the version, the model and `params`.
 ///
 /// # Errors
-/// [`OutputError`] when the writer fails.
+/// [`OutputError`] when the writer fails, [`OutputError::NonFinite`] (before
+/// the offending row is written) when a number is NaN or infinite.
 pub fn write_trajectory(
     w: &mut impl Write,
     format: Format,
@@ -211,13 +238,16 @@ pub fn write_trajectory(
             write_csv_header(w, traj.model, params, &traj.stop)?;
             let mut csv = csv::Writer::from_writer(&mut *w);
             if has_turns {
-                for (s, k) in traj.samples.iter().zip(&traj.turn_states) {
-                    csv.serialize(TurnRow::new(s, k))?;
+                for (row, (s, k)) in (1..).zip(traj.samples.iter().zip(&traj.turn_states)) {
+                    let record = TurnRow::new(s, k);
+                    check_finite(&record, Some(row))?;
+                    csv.serialize(record)?;
                 }
             } else if traj.samples.is_empty() {
                 csv.write_record(["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"])?;
             } else {
-                for s in &traj.samples {
+                for (row, s) in (1..).zip(&traj.samples) {
+                    check_finite(s, Some(row))?;
                     csv.serialize(s)?;
                 }
             }
@@ -244,6 +274,8 @@ pub fn write_trajectory(
                     JsonSamples::Plain(&traj.samples)
                 },
             };
+            // serde_json would write a non-finite number as `null`.
+            check_finite(&doc, None)?;
             serde_json::to_writer_pretty(&mut *w, &doc)?;
             writeln!(w)?;
         }
@@ -305,5 +337,35 @@ mod tests {
         assert_eq!(v["stop"]["reason"], "end-time");
         assert_eq!(v["params"]["snow_depth_m"], 0.01);
         assert_eq!(v["samples"][0]["a_m_s2"], 3.27);
+    }
+
+    #[test]
+    fn regression_7_6_a_non_finite_number_is_refused_naming_column_and_row() {
+        let params = RunParams::new(&Scenario::default(), &SimOptions::default());
+        let mut traj = tiny();
+        traj.samples.push(Sample {
+            mass_kg: f64::INFINITY,
+            ..traj.samples[0]
+        });
+        let mut out = Vec::new();
+        let err = write_trajectory(&mut out, Format::Csv, &traj, &params).unwrap_err();
+        let text = err.to_string();
+        assert!(
+            text.contains("mass_kg = inf") && text.contains("row 2"),
+            "{text}"
+        );
+        // The first row went out, the bad one did not.
+        let written = String::from_utf8(out).unwrap();
+        assert_eq!(written.lines().filter(|l| !l.starts_with('#')).count(), 2);
+        // JSON is checked whole before anything is written (serde_json
+        // would write `null`).
+        traj.samples[1].mass_kg = f64::NAN;
+        let mut out = Vec::new();
+        let err = write_trajectory(&mut out, Format::Json, &traj, &params).unwrap_err();
+        assert!(
+            err.to_string().contains("samples[1].mass_kg = NaN"),
+            "{err}"
+        );
+        assert!(out.is_empty());
     }
 }

@@ -6,7 +6,7 @@ use std::io::Write;
 
 use serde::Serialize;
 
-use super::{Format, JsonStop, ModelInfo, RunParams, VERSION};
+use super::{check_finite, Format, JsonStop, ModelInfo, RunParams, VERSION};
 use crate::error::OutputError;
 use crate::models::{TurnRow, TurnSummary, TurnTable};
 
@@ -27,7 +27,8 @@ struct JsonTurnTable<'a> {
 /// [`TurnRow`]. JSON: one object with `summary` and `turns`.
 ///
 /// # Errors
-/// [`OutputError`] when the writer fails.
+/// [`OutputError`] when the writer fails, [`OutputError::NonFinite`] (before
+/// the offending row is written) when a number is NaN or infinite.
 pub fn write_turn_table(
     w: &mut impl Write,
     format: Format,
@@ -38,10 +39,12 @@ pub fn write_turn_table(
         Format::Csv => {
             super::write_csv_header(w, table.model, params, &table.stop)?;
             let s = &table.summary;
+            check_finite(s, None)?;
             writeln!(
                 w,
                 "# summary: {} turns; accelerations over G = g sin(alpha) = {} m/s^2",
-                s.turns, s.g_along_m_s2
+                s.turns,
+                super::format_number(s.g_along_m_s2)
             )?;
             writeln!(
                 w,
@@ -68,7 +71,8 @@ pub fn write_turn_table(
             if table.rows.is_empty() {
                 csv.write_record(COLUMNS)?;
             }
-            for row in &table.rows {
+            for (k, row) in (1..).zip(&table.rows) {
+                check_finite(row, Some(k))?;
                 csv.serialize(row)?;
             }
             csv.flush()?;
@@ -85,6 +89,8 @@ pub fn write_turn_table(
                 summary: &table.summary,
                 turns: &table.rows,
             };
+            // serde_json would write a non-finite number as `null`.
+            check_finite(&doc, None)?;
             serde_json::to_writer_pretty(&mut *w, &doc)?;
             writeln!(w)?;
         }

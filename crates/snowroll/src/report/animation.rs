@@ -220,7 +220,13 @@ impl Animation {
         comment_header(&mut out, software, &lines)?;
         {
             let mut w = csv::Writer::from_writer(&mut out);
-            for f in &self.frames {
+            for (row, f) in (1..).zip(&self.frames) {
+                crate::output::check_finite(f, Some(row)).map_err(|source| {
+                    ReportError::NonFinite {
+                        figure: "animation".to_string(),
+                        source,
+                    }
+                })?;
                 w.serialize(f)?;
             }
             w.flush().map_err(|source| ReportError::Io {

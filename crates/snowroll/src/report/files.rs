@@ -38,6 +38,14 @@ pub enum ReportError {
     /// CSV serialisation failed.
     #[error("CSV: {0}")]
     Csv(#[from] csv::Error),
+    /// A data file would carry NaN or infinity.
+    #[error("{figure}: {source}")]
+    NonFinite {
+        /// The figure or data file.
+        figure: String,
+        /// The number and where it is.
+        source: crate::output::NonFinite,
+    },
     /// Two figures share a name, so their files would collide.
     #[error("two figures are named {name:?}")]
     DuplicateFigure {
@@ -128,8 +136,20 @@ pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportErro
     {
         let mut w = csv::Writer::from_writer(&mut out);
         w.write_record(["series", chart.x.column.as_str(), chart.y.column.as_str()])?;
+        let non_finite = |source| ReportError::NonFinite {
+            figure: chart.name.clone(),
+            source,
+        };
+        let mut row = 0;
         for s in &chart.series {
             for &(x, y) in &s.points {
+                row += 1;
+                for (column, value) in [(&chart.x.column, x), (&chart.y.column, y)] {
+                    crate::output::check_finite(&value, Some(row)).map_err(|mut e| {
+                        e.field.clone_from(column);
+                        non_finite(e)
+                    })?;
+                }
                 w.serialize((s.name.as_str(), x, y))?;
             }
         }

@@ -287,6 +287,37 @@ pub fn kinetic_energy_at_turn_end(
     m_next * (1.0 + r_next * r_next / (2.0 * r_k * r_k)) * v_end * v_end / 2.0
 }
 
+/// Checks the masses the turns asked for reach: after N turns the log has
+/// radius `r_N = r0 + N b` and mass `m_N = π ρ l r_N²` (eq. (37) with
+/// `r_k = r0 + k b`), and its moment of inertia about the contact line is
+/// `3 m_N r_N²/2` (eq. (81)); each must stay within
+/// [`crate::scenario::MAX_MAGNITUDE`] like the quantities of the start.
+/// The turn models check this before they run; callers that want the error
+/// before anything else (the command line) call it themselves.
+///
+/// # Errors
+/// [`ParamError::OutOfScale`](crate::ParamError::OutOfScale) naming the quantity.
+pub fn check_turn_scale(s: &Scenario, opts: &SimOptions) -> Result<(), crate::ParamError> {
+    let Some(n) = opts.turns else {
+        return Ok(());
+    };
+    let r_n = s.initial_radius() + n as f64 * s.snow_depth();
+    let m_n = std::f64::consts::PI * s.density() * s.length() * r_n * r_n;
+    let hint = "ask for fewer --turns, or change --snow-depth, --density, --length or --r0";
+    crate::scenario::check_scale(
+        "mass after the turns asked for pi rho l (r0 + N b)^2, eq. (37) (kg)",
+        m_n,
+        false,
+        hint,
+    )?;
+    crate::scenario::check_scale(
+        "moment of inertia after the turns asked for 3 m_N r_N^2/2, eq. (81) (kg m^2)",
+        1.5 * m_n * r_n * r_n,
+        false,
+        hint,
+    )
+}
+
 /// Event indices of [`TurnSystem`].
 const EVENT_TURN_END: usize = 0;
 const EVENT_STALL: usize = 1;
@@ -490,6 +521,7 @@ impl Model for TurnModel {
 
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
+        check_turn_scale(scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         run_ode(
             self.kind(),

@@ -240,6 +240,7 @@ impl TurnModel {
     /// As [`Model::simulate`](crate::Model::simulate).
     pub fn run_table(&self, scenario: &Scenario, opts: &SimOptions) -> Result<TurnTable, SimError> {
         opts.validate()?;
+        super::check_turn_scale(scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let mut observer = TableObserver {
             rows: Vec::new(),

@@ -1,0 +1,202 @@
+//! Issue 7, items 6 to 9: no silent garbage. Derived quantities that
+//! overflow are refused at validation, loose tolerances are bounded or
+//! warned about, requests that cannot be honoured are noted (stderr and the
+//! output's metadata) or refused, and messages stay short and exact. Each
+//! test is named after the item it pins: `regression_7_<item>_<what>`.
+
+use std::fs;
+use std::path::Path;
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use assert_cmd::Command;
+
+fn snowroll() -> Command {
+    cargo_bin_cmd!("snowroll")
+}
+
+/// Runs a command that must fail with exit 1; its stderr.
+fn fails(args: &[&str]) -> String {
+    let out = snowroll().args(args).assert().code(1);
+    String::from_utf8(out.get_output().stderr.clone()).unwrap()
+}
+
+/// Runs a command that must succeed; (stdout, stderr).
+fn succeeds(args: &[&str]) -> (String, String) {
+    let out = snowroll().args(args).assert().success();
+    let o = out.get_output();
+    (
+        String::from_utf8(o.stdout.clone()).unwrap(),
+        String::from_utf8(o.stderr.clone()).unwrap(),
+    )
+}
+
+/// One `error:` line holding every needle.
+fn assert_error(stderr: &str, needles: &[&str]) {
+    assert_eq!(stderr.lines().count(), 1, "not one line: {stderr:?}");
+    assert!(stderr.starts_with("error: "), "{stderr:?}");
+    for n in needles {
+        assert!(stderr.contains(n), "{stderr:?} lacks {n:?}");
+    }
+}
+
+/// Files in `dir`, sorted.
+fn entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn regression_7_6_overflowing_derived_quantities_are_refused_by_name() {
+    // Each case: arguments, then what the error must name (the quantity and
+    // the allowed range, 1e150 being the largest magnitude allowed).
+    let cases: [(&[&str], &[&str]); 6] = [
+        (
+            &["simulate", "--model", "eq4", "--r0", "1e308"],
+            &["r0", "1e308", "1e150"],
+        ),
+        (
+            &["simulate", "--model", "eq4", "--density", "1e308"],
+            &["density", "1e150"],
+        ),
+        (
+            &["simulate", "--model", "eq4", "--length", "1e308"],
+            &["length", "1e150"],
+        ),
+        // Each parameter in range, their product not: r0 = 1e40 m gives
+        // I_C = 3 m0 r0^2/2 = 1.9e163 kg m^2.
+        (
+            &["simulate", "--model", "eq4", "--r0", "1e40"],
+            &["moment of inertia", "eq. (56)", "1e150"],
+        ),
+        (
+            &["turns", "--model", "turns", "--density", "1e308"],
+            &["density", "1e150"],
+        ),
+        // The turn model's mass grows with the turns: after 100 turns with
+        // b = 1e60 m the radius is 1e62 m and I_C = 3 m r^2/2 ~ 1e252.
+        (
+            &["turns", "--model", "turns", "--snow-depth", "1e60"],
+            &["after the turns asked for", "1e150", "--turns"],
+        ),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.csv");
+    for (args, needles) in cases {
+        for format in ["csv", "json"] {
+            let mut all = args.to_vec();
+            all.extend(["--format", format, "-o", out.to_str().unwrap()]);
+            assert_error(&fails(&all), needles);
+            assert!(entries(dir.path()).is_empty(), "{args:?} left a file");
+        }
+    }
+}
+
+#[test]
+fn regression_7_6_valid_extremes_write_only_finite_numbers() {
+    // The largest and smallest scales the validation allows still give
+    // finite numbers (or a clear error), never inf, NaN or a JSON null.
+    let cases: [&[&str]; 4] = [
+        &["simulate", "--model", "eq4", "--r0", "1e30", "--x-end", "1"],
+        &[
+            "simulate",
+            "--model",
+            "eq14",
+            "--density",
+            "1e100",
+            "--t-end",
+            "1",
+        ],
+        &[
+            "simulate", "--model", "loney", "--v0", "1e50", "--t-end", "1",
+        ],
+        &[
+            "turns",
+            "--model",
+            "turns",
+            "--density",
+            "1e100",
+            "--turns",
+            "3",
+        ],
+    ];
+    for args in cases {
+        for format in ["csv", "json"] {
+            let mut all = args.to_vec();
+            all.extend(["--format", format]);
+            let out = snowroll().args(&all).output().unwrap();
+            let stdout = String::from_utf8(out.stdout).unwrap();
+            let stderr = String::from_utf8(out.stderr).unwrap();
+            assert!(
+                matches!(out.status.code(), Some(0 | 1)),
+                "{all:?}: {stderr}"
+            );
+            let lower = stdout.to_ascii_lowercase();
+            for bad in ["inf", "nan"] {
+                assert!(!lower.contains(bad), "{all:?} wrote {bad}: {stdout}");
+            }
+            if format == "json" && !stdout.is_empty() {
+                let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+                assert_no_null_number(&doc, "", &all);
+            }
+        }
+    }
+}
+
+/// serde_json writes NaN and infinity as `null`: the only nulls allowed
+/// are the options that were not set (`x_end_m`, `turns`).
+fn assert_no_null_number(v: &serde_json::Value, path: &str, args: &[&str]) {
+    match v {
+        serde_json::Value::Null => assert!(
+            path.ends_with("x_end_m") || path.ends_with("turns"),
+            "{args:?}: null at {path}"
+        ),
+        serde_json::Value::Array(items) => {
+            for (i, item) in items.iter().enumerate() {
+                assert_no_null_number(item, &format!("{path}[{i}]"), args);
+            }
+        }
+        serde_json::Value::Object(map) => {
+            for (k, item) in map {
+                assert_no_null_number(item, &format!("{path}.{k}"), args);
+            }
+        }
+        _ => {}
+    }
+}
+
+#[test]
+fn regression_7_9_header_numbers_are_shortest_round_trip_not_hundreds_of_digits() {
+    let (stdout, _) = succeeds(&[
+        "simulate",
+        "--model",
+        "eq4",
+        "--density",
+        "1e100",
+        "--snow-depth",
+        "0.30000000000000004",
+        "--t-end",
+        "1",
+        "--dt",
+        "1e-5",
+    ]);
+    for line in [
+        "# density_kg_m3 = 1e100",
+        "# snow_depth_m = 0.30000000000000004",
+        "# sampling = every 1e-5 s",
+    ] {
+        assert!(
+            stdout.lines().any(|l| l == line),
+            "no {line:?} in\n{stdout}"
+        );
+    }
+    let longest = stdout
+        .lines()
+        .filter(|l| l.starts_with('#'))
+        .map(str::len)
+        .max();
+    assert!(longest < Some(200), "a header line of {longest:?} bytes");
+}
