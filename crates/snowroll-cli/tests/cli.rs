@@ -325,11 +325,12 @@ fn looser_tolerances_take_fewer_steps() {
     };
     let tight = rows(&["--rtol", "1e-12", "--atol", "1e-12"]);
     let loose_rtol = rows(&["--rtol", "1e-4", "--atol", "1e-12"]);
-    let loose_atol = rows(&["--rtol", "1e-12", "--atol", "1"]);
+    // The loosest atol allowed here: 1e-3 of r0 = 0.1 m.
+    let loose_atol = rows(&["--rtol", "1e-12", "--atol", "1e-4"]);
     assert!(loose_rtol.rows.len() < tight.rows.len());
     assert!(loose_atol.rows.len() < tight.rows.len());
     assert_close(loose_rtol.param("rtol"), 1e-4, CLOSED_FORM_TOL);
-    assert_close(loose_atol.param("atol"), 1.0, CLOSED_FORM_TOL);
+    assert_close(loose_atol.param("atol"), 1e-4, CLOSED_FORM_TOL);
 }
 
 #[test]

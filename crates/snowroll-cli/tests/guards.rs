@@ -205,3 +205,70 @@ fn regression_7_9_header_numbers_are_shortest_round_trip_not_hundreds_of_digits(
         "{longest_digits:?} digits in a row"
     );
 }
+
+#[test]
+fn regression_7_7_atol_is_bounded_by_the_scale_of_the_state() {
+    // Default scenario, eq. (4): r0 = 0.1 m < sqrt(g r0) = 0.99 m/s, so the
+    // bound is 1e-3 r0 = 1e-4.
+    for atol in ["1e308", "1e6", "0.001"] {
+        let err = fails(&["simulate", "--model", "eq4", "--atol", atol]);
+        assert_error(&err, &["atol", "atol <= 0.0001", "scale of the state"]);
+    }
+    // Turn models: the state is theta (rad), omega (rad/s); the scale is
+    // min(1, sqrt(g/r0)) = 1, the bound 1e-3.
+    let err = fails(&["turns", "--model", "turns", "--atol", "0.01"]);
+    assert_error(&err, &["atol <= 0.001"]);
+    // At the bound the run goes through, with a warning on stderr and in
+    // the output's metadata.
+    let (stdout, stderr) = succeeds(&[
+        "simulate", "--model", "eq4", "--atol", "1e-4", "--t-end", "1",
+    ]);
+    assert!(stderr.starts_with("warning: tolerances looser"), "{stderr}");
+    assert!(stdout.contains("# warning = tolerances looser"), "{stdout}");
+}
+
+#[test]
+fn regression_7_7_loose_tolerances_are_warned_about_and_tight_ones_are_not() {
+    let (stdout, stderr) = succeeds(&[
+        "simulate", "--model", "eq4", "--rtol", "1e-3", "--t-end", "1", "--format", "json",
+    ]);
+    assert!(stderr.contains("rtol = 1e-3"), "{stderr}");
+    let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let warnings = doc["params"]["warnings"].as_array().unwrap();
+    assert!(warnings
+        .iter()
+        .any(|w| w.as_str().unwrap().contains("looser")));
+    // The defaults (rtol 1e-10, atol 1e-12) and the claims' accuracy
+    // (1e-6 relative) give no warning.
+    for args in [
+        &["simulate", "--model", "eq4", "--t-end", "1"][..],
+        &[
+            "simulate", "--model", "eq4", "--t-end", "1", "--rtol", "1e-6", "--atol", "1e-7",
+        ],
+        &["turns", "--model", "turns", "--turns", "2"],
+    ] {
+        let (_, stderr) = succeeds(args);
+        assert!(!stderr.contains("warning"), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn regression_7_7_a_turn_model_of_huge_radius_works_or_is_refused_clearly() {
+    // r0 = 1e155 m is beyond the magnitudes the program computes in.
+    let err = fails(&["turns", "--model", "turns", "--r0", "1e155"]);
+    assert_error(&err, &["r0", "1e155", "1e150"]);
+    // r0 = 1e20 m: sqrt(g/r0) = 3e-10 rad/s; the default atol shrinks with
+    // the scale, so the log moves as eq. (4)'s start does: from rest, with
+    // a(0) = (2/3) g sin(alpha) for a thin layer, x(t) = g sin(alpha) t^2/3.
+    let (stdout, _) = succeeds(&[
+        "simulate", "--model", "turns", "--r0", "1e20", "--t-end", "1000",
+    ]);
+    let last = stdout.lines().last().unwrap();
+    let x: f64 = last.split(',').nth(1).unwrap().parse().unwrap();
+    let expected = 9.81 * 0.5 * 1000.0f64.powi(2) / 3.0;
+    // b/r0 = 1e-22: the layer changes a by O(b/r0); the integrator's 1e-10.
+    assert!(
+        (x / expected - 1.0).abs() < 1e-8,
+        "x = {x}, expected {expected}"
+    );
+}

@@ -97,9 +97,10 @@ pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
 pub use models::{
-    check_turn_scale, collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
-    kinetic_energy_at_turn_start, run_turns, validity_warnings, CircularModel, Coefficients,
-    Derivation, DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, SectorBody,
+    atol_bound, check_tolerances, check_turn_scale, collision_speed, default_atol,
+    first_turn_stall_slope, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns,
+    state_scale, tolerance_warning, validity_warnings, CircularModel, Coefficients, Derivation,
+    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, SectorBody,
     TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
     Validity, ValidityWarning,
 };

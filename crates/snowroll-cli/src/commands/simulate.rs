@@ -2,8 +2,9 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
-    check_turn_scale, validity_warnings, write_trajectory, ModelKind, RunParams, Sampling,
-    Scenario, SimOptions, StopReason, Trajectory, TurnVariant,
+    check_tolerances, check_turn_scale, default_atol, format_number, tolerance_warning,
+    validity_warnings, write_trajectory, ModelKind, RunParams, Sampling, Scenario, SimOptions,
+    StopReason, Trajectory, TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -30,11 +31,19 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         );
     }
     let scenario = inputs::scenario(&args.scenario)?;
-    let opts = options(&args)?;
+    let mut opts = options(&args)?;
+    if args.scenario.atol.is_none() {
+        opts.tolerances.atol = default_atol(model, &scenario);
+    }
     opts.validate()?;
     check_turn_scale(&scenario, &opts)?;
+    check_tolerances(model, &scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
-    let warnings = validity_warnings(model, &scenario);
+    let mut warnings: Vec<String> = validity_warnings(model, &scenario)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    warnings.extend(tolerance_warning(model, &scenario, &opts));
     for w in &warnings {
         report!("warning: {w}");
     }
@@ -47,7 +56,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         .simulate(&scenario, &opts)
         .with_context(|| format!("simulating {} ({})", model.id(), model.equation()))?;
     let mut params = RunParams::new(&scenario, &opts);
-    params.warnings = warnings.iter().map(ToString::to_string).collect();
+    params.warnings = warnings;
     write_trajectory(&mut sink, format, &traj, &params)
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))
@@ -84,13 +93,14 @@ fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Optio
         return Some(format!(
             "reached t_end = {} s in turn {} (0-based) of the {wanted} asked for; \
              raise --t-end for more",
-            opts.t_end, last.turn
+            format_number(opts.t_end),
+            last.turn
         ));
     }
     let mut note = format!(
         "run stopped at t = {} s, x = {} m: {}",
-        stop.t_s,
-        stop.x_m,
+        format_number(stop.t_s),
+        format_number(stop.x_m),
         stop.reason.describe()
     );
     if stop.reason == StopReason::DoesNotStart {

@@ -5,8 +5,9 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    check_turn_scale, run_turns, validity_warnings, write_turn_table, RunParams, Sampling,
-    StopReason, TurnSummary, TurnTable, TurnVariant,
+    check_tolerances, check_turn_scale, default_atol, format_number, run_turns, tolerance_warning,
+    validity_warnings, write_turn_table, RunParams, Sampling, StopReason, TurnSummary, TurnTable,
+    TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -46,11 +47,19 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let scenario = inputs::scenario(&args.scenario)?;
     let wanted = args.turns.unwrap_or(TURNS_DEFAULT);
     // Only the turn ends are recorded, whatever the sampling.
-    let opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted));
+    let mut opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted));
+    if args.scenario.atol.is_none() {
+        opts.tolerances.atol = default_atol(model, &scenario);
+    }
     opts.validate()?;
     check_turn_scale(&scenario, &opts)?;
+    check_tolerances(model, &scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
-    let warnings = validity_warnings(model, &scenario);
+    let mut warnings: Vec<String> = validity_warnings(model, &scenario)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    warnings.extend(tolerance_warning(model, &scenario, &opts));
     for w in &warnings {
         report!("warning: {w}");
     }
@@ -62,7 +71,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         .with_context(|| format!("running {} ({})", model.id(), model.equation()))?;
     let mut params = RunParams::new(&scenario, &opts);
     params.sampling = "one row per turn".to_string();
-    params.warnings = warnings.iter().map(ToString::to_string).collect();
+    params.warnings = warnings;
     write_turn_table(&mut sink, format, &table, &params)
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))
@@ -82,13 +91,16 @@ fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
     }
     let mut note = format!(
         "run stopped at t = {} s, x = {} m: {}, after {} of the {wanted} turns asked for",
-        stop.t_s,
-        stop.x_m,
+        format_number(stop.t_s),
+        format_number(stop.x_m),
         stop.reason.describe(),
         table.rows.len()
     );
     if stop.reason == StopReason::EndTime {
-        note.push_str(&format!(" (t_end = {t_end} s; raise --t-end for more)"));
+        note.push_str(&format!(
+            " (t_end = {} s; raise --t-end for more)",
+            format_number(t_end)
+        ));
     }
     Some(note)
 }

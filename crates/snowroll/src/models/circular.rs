@@ -331,6 +331,7 @@ impl Model for CircularModel {
 
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
+        super::check_tolerances(self.kind(), scenario, opts)?;
         let coeffs = self.coefficients;
         let mut system = CircularSystem {
             coeffs,

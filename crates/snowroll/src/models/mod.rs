@@ -7,12 +7,17 @@ mod circular;
 mod closed_form;
 pub mod exact_geometry;
 mod ode;
+mod tolerance;
 mod turn_by_turn;
 mod validity;
 
 pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
 pub use exact_geometry::SectorBody;
+pub use tolerance::{
+    atol_bound, check_tolerances, default_atol, state_scale, tolerance_warning, ATOL_MAX_FRACTION,
+    CLAIMS_ACCURACY,
+};
 pub use turn_by_turn::{
     check_turn_scale, collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
     kinetic_energy_at_turn_start, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics,

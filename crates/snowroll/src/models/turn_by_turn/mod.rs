@@ -522,6 +522,7 @@ impl Model for TurnModel {
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
         check_turn_scale(scenario, opts)?;
+        crate::models::check_tolerances(self.kind(), scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         run_ode(
             self.kind(),
