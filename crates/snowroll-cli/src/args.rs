@@ -258,9 +258,41 @@ pub struct OutputArgs {
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Read any of the flags above from this TOML file, as `alpha-deg = 25`; flags on the command line override it
+    /// Read any of the flags above from this TOML file, as `alpha-deg = 25`; flags on the command line override it (one --config only)
     #[arg(long, value_name = "FILE.toml")]
     pub config: Option<PathBuf>,
+}
+
+/// Refuses a second `--config`: every other flag may be repeated (the last
+/// one counts, `args_override_self`), but two config files would silently
+/// replace one another, and merging them is not what anyone would guess.
+/// clap keeps only the last occurrence of an overridable flag, so the
+/// occurrences are counted here, in the arguments before any `--`
+/// (`--config FILE` and `--config=FILE`; clap takes no abbreviations).
+///
+/// # Errors
+/// A clap usage error (exit status 2) naming the repeated flag.
+pub fn config_given_once(argv: &[std::ffi::OsString]) -> Result<(), clap::Error> {
+    let count = argv
+        .iter()
+        .skip(1)
+        .take_while(|a| a.as_encoded_bytes() != b"--")
+        .filter(|a| {
+            let a = a.as_encoded_bytes();
+            a == b"--config" || a.starts_with(b"--config=")
+        })
+        .count();
+    if count > 1 {
+        use clap::CommandFactory;
+        return Err(Args::command().error(
+            clap::error::ErrorKind::ArgumentConflict,
+            format!(
+                "--config was given {count} times; give one config file (flags on the command \
+                 line override its keys)"
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Flags of `snowroll simulate`.
@@ -276,7 +308,7 @@ pub struct SimulateArgs {
         value_delimiter = ',',
         allow_negative_numbers = true,
         conflicts_with = "dt",
-        help = "Write exactly these times, in s, ascending (from the dense output; none after a stop) [default: every accepted step]"
+        help = "Write exactly these times, in s, strictly ascending, each <= t_end (from the dense output; times after an early stop are noted, not written) [default: every accepted step]"
     )]
     pub times: Option<Vec<f64>>,
 

@@ -51,6 +51,10 @@ where
     T: Into<OsString> + Clone,
 {
     console::reset_reader_gone();
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    if let Err(e) = args::config_given_once(&args) {
+        return usage(&e);
+    }
     let args = match Args::try_parse_from(args) {
         Ok(args) => args,
         Err(e) => return usage(&e),

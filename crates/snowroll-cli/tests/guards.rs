@@ -272,3 +272,102 @@ fn regression_7_7_a_turn_model_of_huge_radius_works_or_is_refused_clearly() {
         "x = {x}, expected {expected}"
     );
 }
+
+#[test]
+fn regression_7_8_times_after_t_end_are_refused_with_their_count() {
+    // Known before the run: an error is clearer than a silent drop.
+    let err = fails(&["simulate", "--model", "eq4", "--times", "50,100,150,200"]);
+    assert_error(&err, &["2 of the 4", "t_end = 100 s", "150 s", "--t-end"]);
+    let err = fails(&["simulate", "--model", "eq4", "--times", "150"]);
+    assert_error(&err, &["1 of the 1", "t_end = 100 s"]);
+}
+
+#[test]
+fn regression_7_8_times_after_an_early_stop_are_noted_on_stderr_and_in_the_output() {
+    // x_end = 1 m stops eq. (4) well before t = 5 s (x ~ g sin(alpha) t^2/3 = 1 m at t ~ 0.8 s).
+    let (stdout, stderr) = succeeds(&[
+        "simulate", "--model", "eq4", "--x-end", "1", "--times", "0.5,5,10", "--t-end", "10",
+    ]);
+    let note = "2 of the 3 requested times are after the stop";
+    assert!(stderr.contains(note), "{stderr}");
+    assert!(
+        stdout
+            .lines()
+            .any(|l| l.starts_with("# note = ") && l.contains(note)),
+        "{stdout}"
+    );
+    let rows = stdout.lines().filter(|l| !l.starts_with('#')).count();
+    assert_eq!(rows, 1 + 1, "header and the one time before the stop");
+    let (stdout, _) = succeeds(&[
+        "simulate", "--model", "eq4", "--x-end", "1", "--times", "0.5,5", "--format", "json",
+    ]);
+    let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let notes = doc["params"]["notes"].as_array().unwrap();
+    assert!(
+        notes
+            .iter()
+            .any(|n| n.as_str().unwrap().contains("1 of the 2")),
+        "{notes:?}"
+    );
+}
+
+#[test]
+fn regression_7_8_repeated_times_are_refused() {
+    let err = fails(&["simulate", "--model", "eq4", "--times", "1,1"]);
+    assert_error(&err, &["repeated"]);
+    let err = fails(&["simulate", "--model", "eq4", "--times", "1,2,2,3"]);
+    assert_error(&err, &["repeated"]);
+}
+
+#[test]
+fn regression_7_8_a_second_config_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.toml"), dir.path().join("b.toml"));
+    fs::write(&a, "model = 'eq4'\nt-end = 1\n").unwrap();
+    fs::write(&b, "model = 'eq14'\nt-end = 2\n").unwrap();
+    let joined = format!("--config={}", b.display());
+    for second in [vec!["--config", b.to_str().unwrap()], vec![joined.as_str()]] {
+        let mut args = vec!["simulate", "--config", a.to_str().unwrap()];
+        args.extend(second);
+        let out = snowroll().args(&args).assert().code(2);
+        let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+        assert!(err.contains("--config was given 2 times"), "{err}");
+    }
+    // One config is fine.
+    succeeds(&["simulate", "--config", a.to_str().unwrap()]);
+}
+
+#[test]
+fn regression_7_8_a_turn_run_that_stalls_records_the_stop_and_notes_it() {
+    // alpha = 1 degree is below the first turn's stall slope of the
+    // default scenario: the log stops within its first turn.
+    for format in ["csv", "json"] {
+        let (stdout, stderr) = succeeds(&[
+            "turns",
+            "--model",
+            "turns",
+            "--alpha-deg",
+            "1",
+            "--format",
+            format,
+        ]);
+        let note = "after 0 of the 100 turns asked for";
+        assert!(
+            stderr.contains(note) && stderr.contains("stall"),
+            "{stderr}"
+        );
+        if format == "csv" {
+            assert!(stdout.contains("# stop = stalled"), "{stdout}");
+            assert!(
+                stdout
+                    .lines()
+                    .any(|l| l.starts_with("# note = ") && l.contains(note)),
+                "{stdout}"
+            );
+        } else {
+            let doc: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+            assert_eq!(doc["stop"]["reason"], "stalled");
+            assert!(doc["params"]["notes"][0].as_str().unwrap().contains(note));
+        }
+    }
+}

@@ -39,6 +39,24 @@ pub enum ParamError {
         /// Which parameters to change.
         hint: &'static str,
     },
+    /// Requested output times after the end time: they could never be
+    /// written.
+    #[error(
+        "{count} of the {total} requested output times are after t_end = {} s (the first: {} s); \
+         raise --t-end or drop them",
+        number(*t_end),
+        number(*first)
+    )]
+    TimesAfterEnd {
+        /// How many are after `t_end`.
+        count: usize,
+        /// How many were requested.
+        total: usize,
+        /// The first of them, s.
+        first: f64,
+        /// The end time, s.
+        t_end: f64,
+    },
     /// Requested output times that are not finite, negative or not ascending.
     #[error("invalid output times: {reason}")]
     InvalidTimes {

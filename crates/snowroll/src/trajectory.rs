@@ -99,8 +99,10 @@ pub enum Sampling {
     /// The start and every accepted step (closed forms: 500 even steps).
     #[default]
     Steps,
-    /// Exactly these times, s (ascending, non-negative), from the dense output;
-    /// times after the stop are dropped.
+    /// Exactly these times, s (strictly ascending, non-negative, none after
+    /// `t_end`: [`SimOptions::validate`] refuses those), from the dense
+    /// output; times after an earlier stop (distance, stall) are not
+    /// written, and the command line notes how many.
     Times(Vec<Seconds>),
     /// A regular grid 0, dt, 2dt, … up to the stop, s.
     Every(Seconds),
@@ -120,7 +122,7 @@ impl Sampling {
     /// Checks times and grid spacing.
     ///
     /// # Errors
-    /// [`ParamError::InvalidTimes`] for non-finite, negative or descending
+    /// [`ParamError::InvalidTimes`] for non-finite, negative, descending or repeated
     /// times; [`ParamError::InvalidParameter`] for a grid spacing `dt <= 0`.
     pub fn validate(&self) -> Result<(), ParamError> {
         match self {
@@ -133,6 +135,11 @@ impl Sampling {
                 if ts.windows(2).any(|w| w[1] < w[0]) {
                     return Err(ParamError::InvalidTimes {
                         reason: "times must be in ascending order",
+                    });
+                }
+                if ts.windows(2).any(|w| w[1] <= w[0]) {
+                    return Err(ParamError::InvalidTimes {
+                        reason: "a time is repeated: each time may be asked for once",
                     });
                 }
                 Ok(())
@@ -193,6 +200,17 @@ impl SimOptions {
         if let Some(x) = self.x_end {
             if !(x.is_finite() && x > 0.0) {
                 return Err(bad("x_end (m)", x, "0 < x_end < infinity m"));
+            }
+        }
+        if let Sampling::Times(ts) = &self.sampling {
+            let after: Vec<f64> = ts.iter().copied().filter(|t| *t > self.t_end).collect();
+            if let Some(&first) = after.first() {
+                return Err(ParamError::TimesAfterEnd {
+                    count: after.len(),
+                    total: ts.len(),
+                    first,
+                    t_end: self.t_end,
+                });
             }
         }
         if self.turns == Some(0) {

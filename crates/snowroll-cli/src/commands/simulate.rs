@@ -57,11 +57,13 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         .with_context(|| format!("simulating {} ({})", model.id(), model.equation()))?;
     let mut params = RunParams::new(&scenario, &opts);
     params.warnings = warnings;
+    params.notes = stop_note(&traj, &scenario, &opts).into_iter().collect();
+    params.notes.extend(times_note(&traj, &opts));
     write_trajectory(&mut sink, format, &traj, &params)
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))
         .with_context(|| format!("writing {name}"))?;
-    if let Some(note) = stop_note(&traj, &scenario, &opts) {
+    for note in &params.notes {
         report!("note: {note}");
     }
     Ok(())
@@ -82,6 +84,22 @@ fn options(a: &SimulateArgs) -> Result<SimOptions> {
         sampling,
         a.turns,
     ))
+}
+
+/// How many requested times were not written because the run stopped
+/// before them (times after `t_end` are refused before the run).
+fn times_note(traj: &Trajectory, opts: &SimOptions) -> Option<String> {
+    let Sampling::Times(times) = &opts.sampling else {
+        return None;
+    };
+    let missing = times.len().saturating_sub(traj.samples.len());
+    (missing > 0).then(|| {
+        format!(
+            "{missing} of the {} requested times are after the stop at t = {} s and were not written",
+            times.len(),
+            format_number(traj.stop.t_s)
+        )
+    })
 }
 
 /// One line for stderr when the run ended before its end time, or reached

@@ -72,11 +72,12 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let mut params = RunParams::new(&scenario, &opts);
     params.sampling = "one row per turn".to_string();
     params.warnings = warnings;
+    params.notes = stop_note(&table, wanted, opts.t_end).into_iter().collect();
     write_turn_table(&mut sink, format, &table, &params)
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))
         .with_context(|| format!("writing {name}"))?;
-    if let Some(note) = stop_note(&table, wanted, opts.t_end) {
+    for note in &params.notes {
         report!("note: {note}");
     }
     report!("{}", summary(&table).trim_end());

@@ -71,6 +71,10 @@ pub struct RunParams {
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// Requests the run could not honour (times after an early stop, turns
+    /// short of those asked for), one sentence each; empty when none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
 }
 
 impl RunParams {
@@ -90,6 +94,7 @@ impl RunParams {
                 Sampling::Ends => "start and end".to_string(),
             },
             warnings: Vec::new(),
+            notes: Vec::new(),
         }
     }
 
@@ -118,6 +123,7 @@ impl RunParams {
         ]
         .into_iter()
         .chain(self.warnings.iter().map(|w| ("warning".into(), w.clone())))
+        .chain(self.notes.iter().map(|n| ("note".into(), n.clone())))
         .collect()
     }
 }
