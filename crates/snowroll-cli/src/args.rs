@@ -246,6 +246,7 @@ pub struct OutputArgs {
     #[arg(
         long,
         value_enum,
+        ignore_case = true,
         value_name = "FORMAT",
         help = with_default(
             "Output format: csv (with # lines recording version and parameters) or json",
@@ -329,10 +330,23 @@ pub struct SimulateArgs {
     pub output: OutputArgs,
 }
 
+/// The `--model` of `snowroll turns`: only the turn models are values (so
+/// a typo is matched against them alone), by id or alias, in any case.
+fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    PossibleValuesParser::new(
+        ModelKind::ALL
+            .into_iter()
+            .filter(|k| snowroll::TurnVariant::of(*k).is_some())
+            .map(|k| PossibleValue::new(k.id()).alias(k.alias())),
+    )
+    .try_map(|name| name.parse::<ModelKind>())
+}
+
 /// Flags of `snowroll turns`.
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 #[command(
-    mut_arg("model", |a| a.hide_possible_values(true).help(
+    mut_arg("model", |a| a.hide_possible_values(true).value_parser(turn_model_parser()).help(
         "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry)"
     )),
     mut_arg("t_end", |a| a.help(with_default(
@@ -361,7 +375,7 @@ pub struct TurnsArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModelsArgs {
     /// Output format
-    #[arg(long, value_enum, default_value_t = ModelsFormat::Table)]
+    #[arg(long, value_enum, ignore_case = true, default_value_t = ModelsFormat::Table)]
     pub format: ModelsFormat,
 }
 

@@ -63,7 +63,7 @@ where
         Ok(()) => EXIT_SUCCESS,
         Err(_) if console::reader_gone() => EXIT_SUCCESS,
         Err(e) => {
-            report!("error: {e:#}");
+            report!("error: {}", clip_long_words(&format!("{e:#}")));
             EXIT_FAILURE
         }
     }
@@ -73,8 +73,9 @@ where
 /// would, in colour on a terminal, without panicking; returns clap's exit
 /// status.
 fn usage(e: &clap::Error) -> u8 {
-    if console::capturing() {
-        let text = e.render().to_string();
+    let plain = e.render().to_string();
+    let text = clip_long_words(&plain);
+    if console::capturing() || text != plain {
         if e.use_stderr() {
             report!("{}", text.trim_end());
         } else {
@@ -86,6 +87,33 @@ fn usage(e: &clap::Error) -> u8 {
         let _ = e.print();
     }
     u8::try_from(e.exit_code()).unwrap_or(EXIT_FAILURE)
+}
+
+/// The longest word (a run without white space: a value, a path) echoed
+/// whole in a message; a longer one (a 10 MB bad model name) is cut.
+const MAX_ECHOED_WORD: usize = 200;
+
+/// `text` with every word longer than [`MAX_ECHOED_WORD`] characters cut to
+/// its first 100 characters, followed by how long it was.
+fn clip_long_words(text: &str) -> String {
+    let mut out = String::with_capacity(text.len().min(4 * MAX_ECHOED_WORD));
+    let mut rest = text;
+    while let Some(start) = rest.find(|c: char| !c.is_whitespace()) {
+        out.push_str(&rest[..start]);
+        rest = &rest[start..];
+        let end = rest.find(char::is_whitespace).unwrap_or(rest.len());
+        let word = &rest[..end];
+        let chars = word.chars().count();
+        if chars > MAX_ECHOED_WORD {
+            out.extend(word.chars().take(MAX_ECHOED_WORD / 2));
+            out.push_str(&format!("... ({chars} characters in all)"));
+        } else {
+            out.push_str(word);
+        }
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// Removes the run's temporary files on SIGINT, SIGTERM and SIGHUP, then

@@ -862,7 +862,19 @@ fn turns_flag_with_a_circular_model_is_rejected() {
 
 #[test]
 fn turns_command_rejects_a_circular_model_listing_the_turn_models() {
-    let err = fails(&["turns", "--model", "torque-cm"]);
+    // On the command line, only the turn models are values of `--model`.
+    let out = snowroll()
+        .args(["turns", "--model", "torque-cm"])
+        .assert()
+        .code(2);
+    let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(
+        err.contains("'torque-cm'") && err.contains("[possible values: turns, turns-exact]"),
+        "{err}"
+    );
+    // From a config file, the same one-line error as before.
+    let (_dir, path) = config_file("c.toml", "model = \"torque-cm\"\n");
+    let err = fails(&["turns", "--config", path.to_str().unwrap()]);
     assert_one_line_error(&err, &["turns, turns-exact", "torque-cm"]);
     let err = fails(&["turns"]);
     assert_one_line_error(&err, &["--model", "turns, turns-exact"]);

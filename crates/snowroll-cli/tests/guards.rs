@@ -371,3 +371,95 @@ fn regression_7_8_a_turn_run_that_stalls_records_the_stop_and_notes_it() {
         }
     }
 }
+
+#[test]
+fn regression_7_9_values_are_case_insensitive_everywhere() {
+    let (json, _) = succeeds(&[
+        "simulate", "--model", "EQ4", "--format", "JSON", "--t-end", "0.1",
+    ]);
+    assert!(json.trim_start().starts_with('{'), "{json}");
+    let (csv, _) = succeeds(&[
+        "turns",
+        "--model",
+        "Turns-Exact",
+        "--format",
+        "Csv",
+        "--turns",
+        "1",
+    ]);
+    assert!(csv.starts_with("# snowroll"), "{csv}");
+    let (table, _) = succeeds(&["models", "--format", "JSON"]);
+    assert!(table.trim_start().starts_with('{') || table.trim_start().starts_with('['));
+}
+
+#[test]
+fn regression_7_9_turns_suggests_only_turn_models() {
+    let out = snowroll()
+        .args(["turns", "--model", "turnz"])
+        .assert()
+        .code(2);
+    let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(
+        err.contains("[possible values: turns, turns-exact]"),
+        "{err}"
+    );
+    assert!(err.contains("a similar value exists: 'turns'"), "{err}");
+    assert!(!err.contains("torque-cm"), "{err}");
+}
+
+#[test]
+fn regression_7_9_long_bad_values_are_cut_in_messages() {
+    // On the command line (one argument may hold up to 128 KiB on Linux)...
+    let long = "x".repeat(100_000);
+    let out = snowroll()
+        .args(["simulate", "--model", &long])
+        .assert()
+        .code(2);
+    let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(err.len() < 2_000, "{} bytes of message", err.len());
+    assert!(err.contains("100002 characters in all"), "{err}");
+    // ... and in a config file (10 MB).
+    let dir = tempfile::tempdir().unwrap();
+    let config = dir.path().join("c.toml");
+    fs::write(&config, format!("model = \"{}\"\n", "y".repeat(10_000_000))).unwrap();
+    let err = fails(&["simulate", "--config", config.to_str().unwrap()]);
+    assert!(err.len() < 2_000, "{} bytes of message", err.len());
+    assert_eq!(err.lines().count(), 1, "{err}");
+}
+
+#[test]
+fn regression_7_9_paths_that_cannot_be_outputs_are_named_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("afile");
+    fs::write(&file, "mine\n").unwrap();
+    let err = fails(&[
+        "paper",
+        "--out",
+        file.to_str().unwrap(),
+        "--turns",
+        "10",
+        "--quiet",
+    ]);
+    assert_error(&err, &["not a directory"]);
+    assert_eq!(err.matches("exists").count(), 1, "{err}");
+    let err = fails(&[
+        "simulate",
+        "--model",
+        "eq4",
+        "-o",
+        dir.path().to_str().unwrap(),
+    ]);
+    assert_error(&err, &["is a directory"]);
+    assert!(!err.contains("busy"), "{err}");
+    // `-o` never overwrites the run's own config file.
+    let config = dir.path().join("c.toml");
+    fs::write(&config, "model = 'eq4'\nt-end = 1\n").unwrap();
+    let c = config.to_str().unwrap();
+    let err = fails(&["simulate", "--config", c, "-o", c]);
+    assert_error(&err, &["--config"]);
+    assert_eq!(
+        fs::read_to_string(&config).unwrap(),
+        "model = 'eq4'\nt-end = 1\n"
+    );
+    assert_eq!(fs::read_to_string(&file).unwrap(), "mine\n");
+}
