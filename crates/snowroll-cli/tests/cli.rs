@@ -144,7 +144,7 @@ fn alpha_deg_sets_initial_acceleration_to_two_thirds_g_sin_alpha() {
             two_thirds_g_sin(alpha, G),
             CLOSED_FORM_TOL,
         );
-        assert_close(csv.param("slope_deg"), alpha, CLOSED_FORM_TOL);
+        assert_close(csv.param("alpha_deg"), alpha, CLOSED_FORM_TOL);
     }
 }
 
@@ -364,15 +364,15 @@ fn csv_records_version_model_and_every_parameter_before_the_header() {
     );
     assert_eq!(csv.comments["model"], "energy-thin (eq. (15))");
     for (key, want) in [
-        ("slope_deg", ALPHA_DEG),
-        ("snow_depth_m", 0.02),
-        ("r0_m", 0.3),
-        ("g_m_s2", 9.8),
-        ("density_kg_m3", 300.0),
-        ("length_m", 2.0),
-        ("v0_m_s", 0.5),
-        ("t_end_s", 2.0),
-        ("x_end_m", 1000.0),
+        ("alpha_deg", ALPHA_DEG),
+        ("snow_depth", 0.02),
+        ("r0", 0.3),
+        ("g", 9.8),
+        ("density", 300.0),
+        ("length", 2.0),
+        ("v0", 0.5),
+        ("t_end", 2.0),
+        ("x_end", 1000.0),
         ("rtol", 1e-9),
         ("atol", 1e-11),
     ] {
@@ -395,7 +395,7 @@ fn json_has_the_documented_keys() {
     assert_eq!(doc["model"]["id"], "torque-cm");
     assert_eq!(doc["model"]["equation"], "eq. (4)");
     assert_close(
-        doc["params"]["snow_depth_m"].as_f64().unwrap(),
+        doc["params"]["snow_depth"].as_f64().unwrap(),
         0.01,
         CLOSED_FORM_TOL,
     );
@@ -670,7 +670,7 @@ fn turns_json_records_the_table_and_the_parameters() {
     assert_eq!(doc["stop"]["reason"], "turns");
     let params = &doc["params"];
     assert_eq!(params["turns"], 4);
-    for (key, want) in [("snow_depth_m", 0.02), ("r0_m", 0.15), ("slope_deg", 40.0)] {
+    for (key, want) in [("snow_depth", 0.02), ("r0", 0.15), ("alpha_deg", 40.0)] {
         assert_close(params[key].as_f64().unwrap(), want, CLOSED_FORM_TOL);
     }
     let rows = doc["turns"].as_array().unwrap();
@@ -831,7 +831,7 @@ fn turns_and_a_case_insensitive_model_come_from_the_config_file() {
     let (out, _) = turns(&["--config", config]);
     let csv = Csv::parse(&out);
     assert_eq!(csv.rows.len(), 4);
-    assert_close(csv.param("snow_depth_m"), 0.02, CLOSED_FORM_TOL);
+    assert_close(csv.param("snow_depth"), 0.02, CLOSED_FORM_TOL);
     // The flag overrides the file.
     let (out, _) = turns(&["--config", config, "--turns", "2"]);
     assert_eq!(Csv::parse(&out).rows.len(), 2);

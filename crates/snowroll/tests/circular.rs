@@ -11,12 +11,12 @@ use snowroll::{
     StopReason, Trajectory,
 };
 
-fn scenario(slope_deg: f64, b: f64, r0: f64, v0: f64) -> Scenario {
+fn scenario(alpha_deg: f64, b: f64, r0: f64, v0: f64) -> Scenario {
     Scenario::new(ScenarioFile {
-        slope_deg,
-        snow_depth_m: b,
-        r0_m: r0,
-        v0_m_s: v0,
+        alpha_deg,
+        snow_depth: b,
+        r0,
+        v0,
         ..ScenarioFile::default()
     })
     .unwrap()

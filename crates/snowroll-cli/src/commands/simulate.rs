@@ -16,7 +16,7 @@ use crate::sink::Sink;
 pub fn run(flags: SimulateArgs) -> Result<()> {
     let args = match &flags.output.config {
         Some(path) => {
-            let file = config::load(path)?;
+            let file = config::load(path, config::Origin::Simulate)?;
             flags.over(file)
         }
         None => flags,

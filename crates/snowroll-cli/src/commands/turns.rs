@@ -24,7 +24,7 @@ const NOTE_EQ79_MEAN_OVER_G: f64 = 4.0 / 9.0;
 pub fn run(flags: TurnsArgs) -> Result<()> {
     let args = match flags.output.config.clone() {
         Some(path) => {
-            let file = config::load(&path)?;
+            let file = config::load(&path, config::Origin::Turns)?;
             flags.over(file, &path)?
         }
         None => flags,

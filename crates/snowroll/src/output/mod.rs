@@ -27,16 +27,19 @@ pub enum Format {
     Json,
 }
 
-/// Every parameter of a run, unit-suffixed, as recorded in outputs.
+/// Every parameter of a run, as recorded in outputs, in the one parameter
+/// vocabulary of [`ScenarioFile`] (the command line's long flags in
+/// snake_case). A config file may be an output of snowroll: reading these
+/// keys back reproduces the run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RunParams {
     /// The scenario.
     #[serde(flatten)]
     pub scenario: ScenarioFile,
     /// End time, s.
-    pub t_end_s: f64,
+    pub t_end: f64,
     /// End distance, m.
-    pub x_end_m: Option<f64>,
+    pub x_end: Option<f64>,
     /// Number of turns (turn models).
     pub turns: Option<u64>,
     /// Relative tolerance.
@@ -45,6 +48,12 @@ pub struct RunParams {
     pub atol: f64,
     /// Sampling, in words.
     pub sampling: String,
+    /// The spacing of a regular sampling grid, s (`--dt`), when one was asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    /// The requested sample times, s (`--times`), when they were given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub times: Option<Vec<f64>>,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -53,10 +62,15 @@ pub struct RunParams {
 impl RunParams {
     /// Collects the parameters of a run.
     pub fn new(scenario: &Scenario, opts: &SimOptions) -> Self {
+        let (dt, times) = match &opts.sampling {
+            Sampling::Every(dt) => (Some(*dt), None),
+            Sampling::Times(ts) => (None, Some(ts.clone())),
+            Sampling::Steps | Sampling::Ends => (None, None),
+        };
         Self {
             scenario: ScenarioFile::from(*scenario),
-            t_end_s: opts.t_end,
-            x_end_m: opts.x_end,
+            t_end: opts.t_end,
+            x_end: opts.x_end,
             turns: opts.turns,
             rtol: opts.tolerances.rtol,
             atol: opts.tolerances.atol,
@@ -66,24 +80,28 @@ impl RunParams {
                 Sampling::Every(dt) => format!("every {dt} s"),
                 Sampling::Ends => "start and end".to_string(),
             },
+            dt,
+            times,
             warnings: Vec::new(),
         }
     }
 
-    /// `key = value` lines, in a fixed order.
+    /// `key = value` lines, in a fixed order, keys as in [`ScenarioFile`].
+    /// Numbers are written in Rust's shortest form that reads back to the
+    /// same `f64`, so a CSV header reproduces the run exactly.
     fn lines(&self) -> Vec<(String, String)> {
         let opt = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
         let s = &self.scenario;
-        vec![
-            ("slope_deg".into(), s.slope_deg.to_string()),
-            ("snow_depth_m".into(), s.snow_depth_m.to_string()),
-            ("r0_m".into(), s.r0_m.to_string()),
-            ("g_m_s2".into(), s.g_m_s2.to_string()),
-            ("density_kg_m3".into(), s.density_kg_m3.to_string()),
-            ("length_m".into(), s.length_m.to_string()),
-            ("v0_m_s".into(), s.v0_m_s.to_string()),
-            ("t_end_s".into(), self.t_end_s.to_string()),
-            ("x_end_m".into(), opt(self.x_end_m)),
+        let mut lines: Vec<(String, String)> = vec![
+            ("alpha_deg".into(), s.alpha_deg.to_string()),
+            ("snow_depth".into(), s.snow_depth.to_string()),
+            ("r0".into(), s.r0.to_string()),
+            ("g".into(), s.g.to_string()),
+            ("density".into(), s.density.to_string()),
+            ("length".into(), s.length.to_string()),
+            ("v0".into(), s.v0.to_string()),
+            ("t_end".into(), self.t_end.to_string()),
+            ("x_end".into(), opt(self.x_end)),
             (
                 "turns".into(),
                 self.turns.map_or("none".to_string(), |n| n.to_string()),
@@ -91,10 +109,16 @@ impl RunParams {
             ("rtol".into(), format!("{:e}", self.rtol)),
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
-        ]
-        .into_iter()
-        .chain(self.warnings.iter().map(|w| ("warning".into(), w.clone())))
-        .collect()
+        ];
+        if let Some(dt) = self.dt {
+            lines.push(("dt".into(), dt.to_string()));
+        }
+        if let Some(times) = &self.times {
+            let list: Vec<String> = times.iter().map(ToString::to_string).collect();
+            lines.push(("times".into(), list.join(",")));
+        }
+        lines.extend(self.warnings.iter().map(|w| ("warning".into(), w.clone())));
+        lines
     }
 }
 
@@ -287,7 +311,7 @@ mod tests {
         let mut lines = text.lines();
         assert!(lines.next().unwrap().starts_with("# snowroll "));
         assert!(text.contains("# model = torque-cm (eq. (4))"));
-        assert!(text.contains("# slope_deg = 30"));
+        assert!(text.contains("# alpha_deg = 30"));
         let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
         assert_eq!(header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
     }
@@ -303,7 +327,7 @@ mod tests {
         }
         assert_eq!(v["model"]["id"], "torque-cm");
         assert_eq!(v["stop"]["reason"], "end-time");
-        assert_eq!(v["params"]["snow_depth_m"], 0.01);
+        assert_eq!(v["params"]["snow_depth"], 0.01);
         assert_eq!(v["samples"][0]["a_m_s2"], 3.27);
     }
 }

@@ -80,10 +80,10 @@ fn parting_table(lab: &Lab) -> Result<Table, ReportError> {
             .iter()
             .map(|r| {
                 vec![
-                    format!("{:.0}", r.slope_deg),
-                    format!("{:.3}", r.snow_depth_m),
-                    format!("{:.2}", r.r0_m),
-                    format!("{:.3}", r.snow_depth_m / r.r0_m),
+                    format!("{:.0}", r.alpha_deg),
+                    format!("{:.3}", r.snow_depth),
+                    format!("{:.2}", r.r0),
+                    format!("{:.3}", r.snow_depth / r.r0),
                     format!("{:.4}", r.stall_slope_deg.0),
                     format!("{:.4}", r.stall_slope_deg.1),
                     outcome(r.first_turn.0),
@@ -421,22 +421,22 @@ pub fn build_paper_report(
 
     let file = ScenarioFile::from(*s);
     let metadata = Metadata::new("snowroll: McDonald's snowball/log note, reproduced and judged")
-        .param("slope_deg", file.slope_deg)
-        .param("snow_depth_m", file.snow_depth_m)
-        .param("r0_m", file.r0_m)
-        .param("g_m_s2", file.g_m_s2)
-        .param("density_kg_m3", file.density_kg_m3)
-        .param("length_m", file.length_m)
-        .param("v0_m_s", file.v0_m_s)
+        .param("alpha_deg", file.alpha_deg)
+        .param("snow_depth", file.snow_depth)
+        .param("r0", file.r0)
+        .param("g", file.g)
+        .param("density", file.density)
+        .param("length", file.length)
+        .param("v0", file.v0)
         .param("rtol", format!("{:e}", opts.tolerances.rtol))
         .param("atol", format!("{:e}", opts.tolerances.atol))
         .param("long_run_turns", lab.turns());
     // Each figure's footer names the scenario; the full list is in the metadata.
     let short = |f: Figure| {
-        f.param("slope_deg", file.slope_deg)
-            .param("b_m", file.snow_depth_m)
-            .param("r0_m", file.r0_m)
-            .param("v0_m_s", file.v0_m_s)
+        f.param("alpha_deg", file.alpha_deg)
+            .param("b_m", file.snow_depth)
+            .param("r0", file.r0)
+            .param("v0", file.v0)
             .param("rtol", format!("{:e}", opts.tolerances.rtol))
     };
     // The terminal values in the caption come from the library's coefficients.
