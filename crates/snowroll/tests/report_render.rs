@@ -418,7 +418,10 @@ fn html_is_self_contained_and_holds_claims_figures_and_animation() {
     ] {
         assert!(!html.contains(needle), "found {needle}");
     }
-    assert!(html.contains("<body data-figures=\"2\" data-claims=\"2\">"));
+    assert!(html.contains(&format!(
+        "<body data-figures=\"2\" data-claims=\"2\" data-models=\"{}\">",
+        snowroll::ModelKind::ALL.len()
+    )));
     assert!(html.contains("id=\"claims-table\""));
     // Text is escaped, verdicts are in words as well as colour.
     assert!(html.contains("A &lt;b&gt;bold&lt;/b&gt; claim &amp; more"));
