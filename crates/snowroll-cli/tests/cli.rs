@@ -378,7 +378,10 @@ fn csv_records_version_model_and_every_parameter_before_the_header() {
     ] {
         assert_close(csv.param(key), want, CLOSED_FORM_TOL);
     }
-    assert_eq!(csv.header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+    assert_eq!(
+        csv.header,
+        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio"
+    );
 }
 
 #[test]
@@ -403,7 +406,17 @@ fn json_has_the_documented_keys() {
     assert!(doc["stop"]["t_s"].is_number() && doc["stop"]["x_m"].is_number());
     let samples = doc["samples"].as_array().unwrap();
     assert_eq!(samples.len(), 2);
-    for key in ["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"] {
+    for key in [
+        "t_s",
+        "x_m",
+        "v_m_s",
+        "a_m_s2",
+        "r_m",
+        "mass_kg",
+        "normal_n",
+        "friction_n",
+        "friction_ratio",
+    ] {
         assert!(samples[1][key].is_number(), "sample lacks {key}");
     }
     assert_close(
@@ -785,7 +798,7 @@ fn simulate_turns_stops_after_n_turns_with_the_turn_columns() {
     let csv = Csv::parse(std::str::from_utf8(&out.get_output().stdout).unwrap());
     assert_eq!(
         csv.header,
-        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,turn,theta_rad,omega_rad_s"
+        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio,turn,theta_rad,omega_rad_s"
     );
     assert!(csv.comments["stop"].starts_with("turns "));
     assert_eq!(csv.comments["turns"], "3");

@@ -64,5 +64,6 @@ pub fn options(
             ..d.tolerances
         },
         sampling,
+        ..d
     }
 }

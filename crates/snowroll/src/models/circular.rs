@@ -12,6 +12,7 @@
 
 use std::f64::consts::PI;
 
+use super::contact::circular_forces;
 use super::ode::{run_ode, OdeModel};
 use super::{Model, ModelKind};
 use crate::error::SimError;
@@ -305,13 +306,18 @@ impl OdeModel<2> for CircularSystem {
         } else {
             (s.initial_radius(), s.initial_mass())
         };
+        let a = self.accel.at(x, v);
+        let forces = circular_forces(&self.coeffs, s, x, v, a);
         Sample {
             t_s: t,
             x_m: x,
             v_m_s: v,
-            a_m_s2: self.accel.at(x, v),
+            a_m_s2: a,
             r_m: r,
             mass_kg,
+            normal_n: forces.normal_n,
+            friction_n: forces.friction_n,
+            friction_ratio: forces.friction_ratio(),
         }
     }
 
@@ -350,6 +356,8 @@ impl Model for CircularModel {
                     reason: StopReason::DoesNotStart,
                     t_s: 0.0,
                     x_m: 0.0,
+                    v_m_s: 0.0,
+                    turn: None,
                 },
                 stats: Default::default(),
             });

@@ -127,7 +127,7 @@ pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
         Termination::EndTime => StopReason::EndTime,
         Termination::Event { index } => system.stop_reason(index),
     };
-    let x_m = system.sample(outcome.t, &outcome.y).x_m;
+    let last = system.sample(outcome.t, &outcome.y);
     Ok(Trajectory {
         model: kind,
         samples: recorder.samples,
@@ -135,7 +135,9 @@ pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
         stop: Stop {
             reason,
             t_s: outcome.t,
-            x_m,
+            x_m: last.x_m,
+            v_m_s: last.v_m_s,
+            turn: system.turn_state(outcome.t, &outcome.y),
         },
         stats: outcome.stats,
     })

@@ -131,6 +131,9 @@ struct TurnRow {
     a_m_s2: f64,
     r_m: f64,
     mass_kg: f64,
+    normal_n: f64,
+    friction_n: f64,
+    friction_ratio: f64,
     turn: u64,
     theta_rad: f64,
     omega_rad_s: f64,
@@ -145,6 +148,9 @@ impl TurnRow {
             a_m_s2: s.a_m_s2,
             r_m: s.r_m,
             mass_kg: s.mass_kg,
+            normal_n: s.normal_n,
+            friction_n: s.friction_n,
+            friction_ratio: s.friction_ratio,
             turn: k.turn,
             theta_rad: k.theta_rad,
             omega_rad_s: k.omega_rad_s,
@@ -164,6 +170,13 @@ struct JsonStop {
     description: &'static str,
     t_s: f64,
     x_m: f64,
+    v_m_s: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    turn: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    theta_rad: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    omega_rad_s: Option<f64>,
 }
 
 impl From<Stop> for JsonStop {
@@ -173,6 +186,10 @@ impl From<Stop> for JsonStop {
             description: s.reason.describe(),
             t_s: s.t_s,
             x_m: s.x_m,
+            v_m_s: s.v_m_s,
+            turn: s.turn.map(|k| k.turn),
+            theta_rad: s.turn.map(|k| k.theta_rad),
+            omega_rad_s: s.turn.map(|k| k.omega_rad_s),
         }
     }
 }
@@ -206,14 +223,22 @@ pub(crate) fn write_csv_header(
     for (k, v) in params.lines() {
         writeln!(w, "# {k} = {v}")?;
     }
+    let turn = stop.turn.map_or(String::new(), |k| {
+        format!(
+            " turn = {} theta_rad = {} omega_rad_s = {}",
+            k.turn, k.theta_rad, k.omega_rad_s
+        )
+    });
     writeln!(
         w,
-        "# stop = {} at t_s = {} x_m = {}: {}",
+        "# stop = {} at t_s = {} x_m = {} v_m_s = {}{}: {}",
         serde_json::to_value(stop.reason)?
             .as_str()
             .unwrap_or_default(),
         stop.t_s,
         stop.x_m,
+        stop.v_m_s,
+        turn,
         stop.reason.describe()
     )?;
     Ok(())
@@ -239,7 +264,17 @@ pub fn write_trajectory(
                     csv.serialize(TurnRow::new(s, k))?;
                 }
             } else if traj.samples.is_empty() {
-                csv.write_record(["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"])?;
+                csv.write_record([
+                    "t_s",
+                    "x_m",
+                    "v_m_s",
+                    "a_m_s2",
+                    "r_m",
+                    "mass_kg",
+                    "normal_n",
+                    "friction_n",
+                    "friction_ratio",
+                ])?;
             } else {
                 for s in &traj.samples {
                     csv.serialize(s)?;
@@ -291,12 +326,17 @@ mod tests {
                 a_m_s2: 3.27,
                 r_m: 0.1,
                 mass_kg: 12.566,
+                normal_n: 106.8,
+                friction_n: 20.5,
+                friction_ratio: 20.5 / 106.8,
             }],
             turn_states: vec![],
             stop: Stop {
                 reason: StopReason::EndTime,
                 t_s: 0.0,
                 x_m: 0.0,
+                v_m_s: 0.0,
+                turn: None,
             },
             stats: Default::default(),
         }
@@ -313,7 +353,10 @@ mod tests {
         assert!(text.contains("# model = torque-cm (eq. (4))"));
         assert!(text.contains("# alpha_deg = 30"));
         let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
-        assert_eq!(header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+        assert_eq!(
+            header,
+            "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio"
+        );
     }
 
     #[test]

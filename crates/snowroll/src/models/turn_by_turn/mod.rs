@@ -32,10 +32,13 @@
 //! the exact sector mass for `Exact`), so the mass may jump by O(b²) at a
 //! collision for `Paper`. The per-turn table is [`run_turns`].
 
+mod collision;
+mod contact;
 mod extremes;
 mod stall;
 mod table;
 
+pub use collision::CollisionModel;
 pub use stall::first_turn_stall_slope;
 pub use table::{run_turns, TurnCheckpoint, TurnRow, TurnSummary, TurnTable};
 
@@ -424,6 +427,7 @@ impl OdeModel<2> for TurnSystem {
     fn sample(&self, t: f64, y: &[f64; 2]) -> Sample {
         let (theta, omega) = (y[0], y[1]);
         let r = self.dynamics.radius();
+        let forces = self.dynamics.contact_forces(self.mass, theta, omega);
         Sample {
             t_s: t,
             x_m: self.x_start + r * theta,
@@ -431,6 +435,9 @@ impl OdeModel<2> for TurnSystem {
             a_m_s2: self.dynamics.acceleration(theta, omega),
             r_m: r,
             mass_kg: self.mass * (1.0 + self.dynamics.coeffs.accretion * theta),
+            normal_n: forces.normal_n,
+            friction_n: forces.friction_n,
+            friction_ratio: forces.friction_ratio(),
         }
     }
 

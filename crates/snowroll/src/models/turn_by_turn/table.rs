@@ -259,7 +259,7 @@ impl TurnModel {
             Termination::EndTime => StopReason::EndTime,
             Termination::Event { index } => system.stop_reason(index),
         };
-        let x_m = system.sample(outcome.t, &outcome.y).x_m;
+        let last = system.sample(outcome.t, &outcome.y);
         let summary = TurnSummary::new(&observer.rows, scenario.g_along());
         Ok(TurnTable {
             model: self.variant.kind(),
@@ -267,7 +267,9 @@ impl TurnModel {
             stop: Stop {
                 reason,
                 t_s: outcome.t,
-                x_m,
+                x_m: last.x_m,
+                v_m_s: last.v_m_s,
+                turn: system.turn_state(outcome.t, &outcome.y),
             },
             summary,
             stats: outcome.stats,
