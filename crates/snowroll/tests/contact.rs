@@ -206,3 +206,180 @@ fn turn_forces_are_the_momentum_balance_of_the_run() {
         }
     }
 }
+
+fn turn_opts(turns: u64) -> SimOptions {
+    SimOptions {
+        t_end: 1e7,
+        turns: Some(turns),
+        ..SimOptions::default()
+    }
+}
+
+/// fn. 10, `docs/contact-forces.md` §4.4: at 30° (defaults otherwise) the
+/// log never hops in 2000 turns, and the smallest N/(M g) of the last turn
+/// approaches the late-turn closed form cos α − ½ sin α (§4.2) to O(b/r_K)
+/// ≈ 5e-4: tolerance 1e-3, the doc's check recipe §7.4.
+#[test]
+fn fn10_a_log_at_30_degrees_never_hops_in_2000_turns() {
+    let s = scenario(30.0);
+    let alpha = s.slope_angle();
+    let late = alpha.cos() - 0.5 * alpha.sin();
+    for kind in [ModelKind::Turns, ModelKind::TurnsExact] {
+        let table = snowroll::run_turns(kind, &s, &turn_opts(2000)).unwrap();
+        assert_eq!(table.stop.reason, snowroll::StopReason::Turns, "{kind}");
+        assert_eq!(table.rows.len(), 2000);
+        let last = table.rows.last().unwrap().min_normal_over_mg;
+        assert!((last - late).abs() < 1e-3, "{kind}: {last} vs {late}");
+        assert!(table.rows.iter().all(|r| r.min_normal_over_mg > late));
+    }
+}
+
+/// fn. 10, §4.4: at 80° the log hops in turn 1 (its minimum of N, at
+/// θ = 4.811 rad, is negative; `reference/min_normal_per_turn.csv`). N first
+/// reaches 0 at θ = 3.982884176 rad (`turns`), 3.924131324 rad
+/// (`turns-exact`): bisection on N(θ) of `turn_numerics.py`'s `Turn` from the
+/// reference's turn-1 start speed 2.57226072709 m/s (`turns`; 2.54939869357
+/// for `turns-exact`). Tolerance 1e-8 rad: the start speed is given to 12 digits.
+#[test]
+fn fn10_a_log_at_80_degrees_hops_in_its_second_turn() {
+    let s = scenario(80.0);
+    for (kind, theta) in [
+        (ModelKind::Turns, 3.982_884_176),
+        (ModelKind::TurnsExact, 3.924_131_324),
+    ] {
+        let traj = kind.build().simulate(&s, &turn_opts(10)).unwrap();
+        assert_eq!(traj.stop.reason, snowroll::StopReason::Hop, "{kind}");
+        let at = traj.stop.turn.unwrap();
+        assert_eq!(at.turn, 1);
+        assert!(
+            (at.theta_rad - theta).abs() < 1e-8,
+            "{kind}: {}",
+            at.theta_rad
+        );
+        // At the stop N = 0 (the event's root, to the locator's precision).
+        let last = traj.samples.last().unwrap();
+        assert!(last.normal_n.abs() < 1e-6 * last.mass_kg * s.gravity());
+    }
+}
+
+/// Per-turn minimum of N/(M g) and maximum of |F|/N against the independent
+/// Python computation (`reference/min_normal_per_turn.csv`: the energy
+/// integral of each turn, a fine grid, collision eq. (89)). Both sides are
+/// accurate to ~1e-9; 1e-7 leaves margin for the grid of the reference.
+#[test]
+fn per_turn_contact_extremes_match_the_reference() {
+    let text = include_str!("../../../scripts/derivations/reference/min_normal_per_turn.csv");
+    let mut checked = 0;
+    for alpha in [10.0, 30.0, 45.0, 60.0] {
+        let s = scenario(alpha);
+        for kind in [ModelKind::Turns, ModelKind::TurnsExact] {
+            let table = snowroll::run_turns(kind, &s, &turn_opts(1000)).unwrap();
+            let prefix = format!("{},{},", kind.id(), alpha as u32);
+            for line in text.lines().filter(|l| l.starts_with(&prefix)) {
+                let f: Vec<&str> = line.split(',').collect();
+                let k: usize = f[2].parse().unwrap();
+                let n = |i: usize| f[i].parse::<f64>().unwrap();
+                let Some(row) = table.rows.get(k) else {
+                    continue;
+                };
+                assert!(
+                    (row.min_normal_over_mg - n(4)).abs() < 1e-7,
+                    "{line}: {}",
+                    row.min_normal_over_mg
+                );
+                assert!(
+                    (row.max_friction_ratio - n(6)).abs() < 1e-7 * n(6).max(1.0),
+                    "{line}: {}",
+                    row.max_friction_ratio
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 80, "{checked}");
+}
+
+/// §5.3: the smallest μ that keeps a turn model rolling over 2000 turns is
+/// the largest per-turn |F|/N (`reference/turn_mu_min.csv`), tolerance as above.
+#[test]
+fn turn_mu_min_over_2000_turns_matches_the_reference() {
+    let s = scenario(30.0);
+    for (kind, want) in [
+        (ModelKind::Turns, 0.2202896127),
+        (ModelKind::TurnsExact, 0.2335088413),
+    ] {
+        let table = snowroll::run_turns(kind, &s, &turn_opts(2000)).unwrap();
+        let mu_min = table
+            .rows
+            .iter()
+            .map(|r| r.max_friction_ratio)
+            .fold(0.0, f64::max);
+        assert!((mu_min - want).abs() < 1e-7, "{kind}: {mu_min}");
+        // A μ just below the maximum stops the run with a slip there; just above, it rolls on.
+        let opts = |mu: f64| SimOptions {
+            mu: Some(mu),
+            sampling: Sampling::Ends,
+            ..turn_opts(2000)
+        };
+        let slips = kind
+            .build()
+            .simulate(&s, &opts(mu_min * (1.0 - 1e-6)))
+            .unwrap();
+        assert_eq!(slips.stop.reason, snowroll::StopReason::Slip, "{kind}");
+        let rolls = kind
+            .build()
+            .simulate(&s, &opts(mu_min * (1.0 + 1e-6)))
+            .unwrap();
+        assert_eq!(rolls.stop.reason, snowroll::StopReason::Turns, "{kind}");
+    }
+}
+
+/// §5.2, check recipe §7.5: eq. (4) from rest has the closed form
+/// v² = A s (1 − (s0/s)^{1+2c_v}), s = πr², A = 4G/(3b(1 + 2c_v)), so with
+/// q = b v²/s, F/M = G/3 + (c_v − 1) q and N/M = C + (b/(2πr))(2G/3 + (½ − c_v) q)
+/// are known along the run; the slip event must fall where their ratio
+/// crosses μ (bisection here). Tolerance: the event is located to ~1e-12 s
+/// and the integration is accurate to rtol 1e-10: 1e-8 relative in x.
+#[test]
+fn slip_of_eq4_falls_where_the_closed_form_ratio_crosses_mu() {
+    let s = scenario(30.0);
+    let (g, c, b, r0) = (
+        s.g_along(),
+        s.g_normal(),
+        s.snow_depth(),
+        s.initial_radius(),
+    );
+    let c_v = 7.0 / 6.0;
+    let s0 = PI * r0 * r0;
+    let ratio = |x: f64| {
+        let area = s0 + b * x;
+        let a_coef = 4.0 * g / (3.0 * b * (1.0 + 2.0 * c_v));
+        let u = a_coef * area * (1.0 - (s0 / area).powf(1.0 + 2.0 * c_v));
+        let q = b * u / area;
+        let r = (area / PI).sqrt();
+        let f = g / 3.0 + (c_v - 1.0) * q;
+        let n = c + b / (2.0 * PI * r) * (2.0 * g / 3.0 + (0.5 - c_v) * q);
+        f / n
+    };
+    let mu = 0.5 * (ratio(0.0) + ratio(100.0));
+    let (mut lo, mut hi) = (0.0, 100.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if ratio(mid) < mu {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let opts = SimOptions {
+        mu: Some(mu),
+        ..SimOptions::default()
+    };
+    let traj = ModelKind::TorqueCm.build().simulate(&s, &opts).unwrap();
+    assert_eq!(traj.stop.reason, snowroll::StopReason::Slip);
+    assert!(
+        (traj.stop.x_m - lo).abs() < 1e-8 * lo,
+        "{} vs {lo}",
+        traj.stop.x_m
+    );
+}

@@ -16,9 +16,10 @@ pub use closed_form::{DragOnlyClosedForm, LoneyModel};
 pub use contact::{circular_forces, ContactForces};
 pub use exact_geometry::SectorBody;
 pub use turn_by_turn::{
-    collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
-    kinetic_energy_at_turn_start, run_turns, CollisionModel, InTurnCoefficients, TurnCheckpoint,
-    TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
+    charged_collision_speed, collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
+    kinetic_energy_at_turn_start, run_turns, CollisionModel, ContactRange, InTurnCoefficients,
+    PivotImpact, TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable,
+    TurnVariant,
 };
 pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,

@@ -113,6 +113,29 @@ impl<const N: usize, M: OdeModel<N>> Observer<M, N> for Recorder<'_> {
     fn event(&mut self, _model: &M, _event: &EventRecord<N>) {}
 }
 
+/// The trajectory of a run that stops at its start, `y0` at t = 0, for `reason`.
+pub(crate) fn stopped_at_start<const N: usize, M: OdeModel<N>>(
+    kind: ModelKind,
+    system: &M,
+    y0: [f64; N],
+    reason: StopReason,
+) -> Trajectory {
+    let first = system.sample(0.0, &y0);
+    Trajectory {
+        model: kind,
+        samples: vec![first],
+        turn_states: system.turn_state(0.0, &y0).into_iter().collect(),
+        stop: Stop {
+            reason,
+            t_s: 0.0,
+            x_m: first.x_m,
+            v_m_s: first.v_m_s,
+            turn: system.turn_state(0.0, &y0),
+        },
+        stats: Default::default(),
+    }
+}
+
 /// Runs `system` from `y0` at t = 0 under `opts` and packages the result.
 pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
     kind: ModelKind,

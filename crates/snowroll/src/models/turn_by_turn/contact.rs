@@ -16,7 +16,7 @@
 //! energy equation). Exact for the `Exact` variant, first order in b/r for
 //! `Paper`. As b → 0: N = m C, F = m G/3 (App. A).
 
-use super::{extremes, TurnDynamics, TWO_PI};
+use super::{extremes, TurnDynamics};
 use crate::models::contact::ContactForces;
 use crate::units::Radians;
 
@@ -59,35 +59,114 @@ impl TurnDynamics {
         self.contact_per_mass(theta, omega)
     }
 
-    /// Over a whole turn started with `θ̇(0) = omega0`, from the energy
-    /// integral (no integration): the smallest N/M and the largest |F|/N
-    /// (M = m_k(1 + μθ), the mass of the model's bookkeeping), dimensionless
-    /// after dividing N by g. Returns `(min N/M in m/s², max |F|/N)`; the
-    /// ratio is infinite if N reaches 0 within the turn.
-    pub fn contact_range(&self, omega0: f64) -> (f64, f64) {
+    /// Over a turn started with `θ̇(0) = omega0`, for θ ∈ [0, `theta_max`],
+    /// from the energy integral (no integration): the extremes of N and of
+    /// |F|/N. The ratio is infinite if N reaches 0.
+    pub fn contact_range(&self, omega0: f64, theta_max: Radians) -> ContactRange {
         let mu = self.coeffs.accretion;
+        let g = self.g_along.hypot(self.g_normal);
+        let on_orbit = |theta| self.contact_on_orbit(theta, omega0);
         let (n_min, _) = extremes::range_on(
-            |theta| self.contact_on_orbit(theta, omega0).0 / (1.0 + mu * theta),
+            |theta| on_orbit(theta).0,
             0.0,
-            TWO_PI,
+            theta_max,
             FORCE_GRID,
             FORCE_THETA_TOL,
         );
-        if n_min <= 0.0 {
-            return (n_min, f64::INFINITY);
+        let (n_over_mg_min, _) = extremes::range_on(
+            |theta| on_orbit(theta).0 / ((1.0 + mu * theta) * g),
+            0.0,
+            theta_max,
+            FORCE_GRID,
+            FORCE_THETA_TOL,
+        );
+        let max_friction_ratio = if n_min <= 0.0 {
+            f64::INFINITY
+        } else {
+            extremes::range_on(
+                |theta| {
+                    let (n, f) = on_orbit(theta);
+                    f.abs() / n
+                },
+                0.0,
+                theta_max,
+                FORCE_GRID,
+                FORCE_THETA_TOL,
+            )
+            .1
+        };
+        ContactRange {
+            min_normal_per_mk: n_min,
+            min_normal_over_mg: n_over_mg_min,
+            max_friction_ratio,
         }
-        let (_, ratio_max) = extremes::range_on(
-            |theta| {
-                let (n, f) = self.contact_on_orbit(theta, omega0);
-                f.abs() / n
-            },
-            0.0,
-            TWO_PI,
-            FORCE_GRID,
-            FORCE_THETA_TOL,
-        );
-        (n_min, ratio_max)
     }
+}
+
+impl TurnDynamics {
+    /// The first θ in [0, `theta_max`] where |F| reaches μN on the energy
+    /// integral of a turn started with `θ̇(0) = omega0`, if any: a grid of
+    /// [`FORCE_GRID`] intervals brackets a crossing, or the neighbourhood of
+    /// the largest sampled |F| − μN holds a narrow peak (golden section finds
+    /// its top); bisection then refines the crossing to [`FORCE_THETA_TOL`].
+    /// The slip event of a turn is `θ − θ_slip`, so that a peak of |F|/N
+    /// barely above μ, narrower than a step, is not stepped over.
+    pub fn first_slip(&self, omega0: f64, mu: f64, theta_max: Radians) -> Option<Radians> {
+        let margin = |theta: f64| {
+            let (n, f) = self.contact_on_orbit(theta, omega0);
+            f.abs() - mu * n
+        };
+        let h = theta_max / FORCE_GRID as f64;
+        let bisect = |mut lo: f64, mut hi: f64| {
+            while hi - lo > FORCE_THETA_TOL {
+                let mid = 0.5 * (lo + hi);
+                if margin(mid) >= 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            hi
+        };
+        if margin(0.0) >= 0.0 {
+            return Some(0.0);
+        }
+        let mut best = (0.0, f64::NEG_INFINITY);
+        for i in 1..=FORCE_GRID {
+            let theta = i as f64 * h;
+            let m = margin(theta);
+            if m >= 0.0 {
+                return Some(bisect(theta - h, theta));
+            }
+            if m > best.1 {
+                best = (theta, m);
+            }
+        }
+        // No sampled point slips: look for a narrow peak around the largest sample.
+        let (mut a, mut b) = ((best.0 - h).max(0.0), (best.0 + h).min(theta_max));
+        const INV_PHI: f64 = 0.618_033_988_749_894_9;
+        while b - a > FORCE_THETA_TOL {
+            let (c, d) = (b - INV_PHI * (b - a), a + INV_PHI * (b - a));
+            if margin(c) > margin(d) {
+                b = d;
+            } else {
+                a = c;
+            }
+        }
+        let top = 0.5 * (a + b);
+        (margin(top) >= 0.0).then(|| bisect((best.0 - h).max(0.0), top))
+    }
+}
+
+/// Extremes of the contact forces over (part of) a turn, [`TurnDynamics::contact_range`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactRange {
+    /// Smallest N per unit m_k, m/s².
+    pub min_normal_per_mk: f64,
+    /// Smallest N/(M g), M = m_k(1 + μθ) the mass there.
+    pub min_normal_over_mg: f64,
+    /// Largest |F|/N.
+    pub max_friction_ratio: f64,
 }
 
 #[cfg(test)]
