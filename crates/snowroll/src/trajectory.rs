@@ -110,6 +110,24 @@ pub struct Stop {
     pub turn: Option<TurnState>,
 }
 
+impl Stop {
+    /// Where, for people: `t = … s, x = … m, v = … m/s` and, for the turn
+    /// models, `, turn k, theta = … rad, omega = … rad/s`.
+    pub fn place(&self) -> String {
+        let mut s = format!(
+            "t = {} s, x = {} m, v = {} m/s",
+            self.t_s, self.x_m, self.v_m_s
+        );
+        if let Some(k) = self.turn {
+            s.push_str(&format!(
+                ", turn {} (0-based), theta = {} rad, omega = {} rad/s",
+                k.turn, k.theta_rad, k.omega_rad_s
+            ));
+        }
+        s
+    }
+}
+
 /// The result of one simulation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trajectory {

@@ -54,6 +54,10 @@ pub struct RunParams {
     /// The requested sample times, s (`--times`), when they were given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub times: Option<Vec<f64>>,
+    /// Coefficient of static friction of the slip check; none = no check.
+    pub mu: Option<f64>,
+    /// How the turn models climb each new layer.
+    pub collision: crate::models::CollisionModel,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -82,6 +86,8 @@ impl RunParams {
             },
             dt,
             times,
+            mu: opts.mu,
+            collision: opts.collision,
             warnings: Vec::new(),
         }
     }
@@ -109,7 +115,11 @@ impl RunParams {
             ("rtol".into(), format!("{:e}", self.rtol)),
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
+            ("collision".into(), self.collision.to_string()),
         ];
+        if let Some(mu) = self.mu {
+            lines.push(("mu".into(), mu.to_string()));
+        }
         if let Some(dt) = self.dt {
             lines.push(("dt".into(), dt.to_string()));
         }
