@@ -11,10 +11,10 @@ use snowroll::{
     Scenario, ScenarioFile, SimOptions, StopReason,
 };
 
-fn scenario(slope_deg: f64, v0_m_s: f64) -> Scenario {
+fn scenario(alpha_deg: f64, v0: f64) -> Scenario {
     Scenario::new(ScenarioFile {
-        slope_deg,
-        v0_m_s,
+        alpha_deg,
+        v0,
         ..ScenarioFile::default()
     })
     .unwrap()

@@ -15,9 +15,9 @@ const ROUNDING: f64 = 1e-13;
 /// same closed form: agreement to 1e-12 relative.
 const REFERENCE_TOL: f64 = 1e-12;
 
-fn scenario(slope_deg: f64) -> Scenario {
+fn scenario(alpha_deg: f64) -> Scenario {
     Scenario::new(ScenarioFile {
-        slope_deg,
+        alpha_deg,
         ..ScenarioFile::default()
     })
     .unwrap()
