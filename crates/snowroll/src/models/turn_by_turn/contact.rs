@@ -106,9 +106,9 @@ impl TurnDynamics {
 impl TurnDynamics {
     /// The first θ in [0, `theta_max`] where |F| reaches μN on the energy
     /// integral of a turn started with `θ̇(0) = omega0`, if any: a grid of
-    /// [`FORCE_GRID`] intervals brackets a crossing, or the neighbourhood of
+    /// 32 intervals brackets a crossing, or the neighbourhood of
     /// the largest sampled |F| − μN holds a narrow peak (golden section finds
-    /// its top); bisection then refines the crossing to [`FORCE_THETA_TOL`].
+    /// its top); bisection then refines the crossing to 1e-8 rad.
     /// The slip event of a turn is `θ − θ_slip`, so that a peak of |F|/N
     /// barely above μ, narrower than a step, is not stepped over.
     pub fn first_slip(&self, omega0: f64, mu: f64, theta_max: Radians) -> Option<Radians> {
