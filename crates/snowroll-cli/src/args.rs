@@ -11,7 +11,7 @@ use std::fmt::Display;
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use snowroll::{Format, ModelKind, ScenarioFile, SimOptions};
+use snowroll::{CollisionModel, Format, ModelKind, ScenarioFile, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.
@@ -237,6 +237,29 @@ pub struct ScenarioArgs {
         )
     )]
     pub atol: Option<f64>,
+
+    #[arg(
+        long,
+        value_name = "MU",
+        allow_negative_numbers = true,
+        help = "Coefficient of static friction mu, dimensionless (mu > 0): stop with `slip` where \
+                the friction rolling needs reaches mu times the normal force \
+                [default: none, no slip check]"
+    )]
+    pub mu: Option<f64>,
+
+    #[arg(
+        long,
+        value_enum,
+        value_name = "MODEL",
+        help = with_default(
+            "How a turn model climbs the step of each new layer: note (eq. (89)), charged \
+             (eq. (89) plus the potential energy of the jump), pivot (about the new layer's edge; \
+             may stop with `stuck`)",
+            value_name(CollisionModel::default())
+        )
+    )]
+    pub collision: Option<CollisionModel>,
 }
 
 /// Where and how results are written, and the `--config` file; shared by

@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{anyhow, bail, Context, Result};
 use serde::{Deserialize, Deserializer};
 use serde_json::{Map, Value};
-use snowroll::{Format, ModelKind};
+use snowroll::{CollisionModel, Format, ModelKind};
 
 use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 
@@ -55,6 +55,8 @@ pub struct ConfigFile {
     turns: Option<u64>,
     rtol: Option<f64>,
     atol: Option<f64>,
+    mu: Option<f64>,
+    collision: Option<CollisionModel>,
     #[serde(default, deserialize_with = "format_any_case")]
     format: Option<Format>,
     output: Option<PathBuf>,
@@ -200,7 +202,9 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             continue; // a sentence (the turn table's summary), not a setting
         }
         let value = match key {
-            "model" => Value::String(value.split_whitespace().next().unwrap_or("").into()),
+            "model" | "collision" => {
+                Value::String(value.split_whitespace().next().unwrap_or("").into())
+            }
             "sampling" => {
                 if value == TURN_TABLE_SAMPLING {
                     origin = Origin::Turns;
@@ -279,6 +283,8 @@ impl ScenarioArgs {
             x_end,
             rtol,
             atol,
+            mu,
+            collision,
         } = self;
         ScenarioArgs {
             model: model.or(file.model),
@@ -293,6 +299,8 @@ impl ScenarioArgs {
             x_end: x_end.or(file.x_end),
             rtol: rtol.or(file.rtol),
             atol: atol.or(file.atol),
+            mu: mu.or(file.mu),
+            collision: collision.or(file.collision),
         }
     }
 }

@@ -120,9 +120,10 @@ pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
 pub use models::{
-    collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
-    kinetic_energy_at_turn_start, run_turns, validity_warnings, CircularModel, Coefficients,
-    Derivation, DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, SectorBody,
+    charged_collision_speed, circular_forces, collision_speed, first_turn_stall_slope,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, validity_warnings,
+    CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
+    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody,
     TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
     Validity, ValidityWarning,
 };

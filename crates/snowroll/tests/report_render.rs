@@ -512,6 +512,9 @@ fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajecto
                 a_m_s2: 0.0,
                 r_m: rk,
                 mass_kg: 1.0,
+                normal_n: 1.0,
+                friction_n: 0.0,
+                friction_ratio: 0.0,
             });
             states.push(TurnState {
                 turn: k,
@@ -530,6 +533,8 @@ fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajecto
             reason: StopReason::Turns,
             t_s: end.t_s,
             x_m: end.x_m,
+            v_m_s: end.v_m_s,
+            turn: None,
         },
         stats: Default::default(),
     }

@@ -64,5 +64,8 @@ pub fn options(
             ..d.tolerances
         },
         sampling,
+        mu: a.mu,
+        collision: a.collision.unwrap_or(d.collision),
+        ..d
     }
 }

@@ -87,9 +87,8 @@ fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Optio
         ));
     }
     let mut note = format!(
-        "run stopped at t = {} s, x = {} m: {}",
-        stop.t_s,
-        stop.x_m,
+        "run stopped at {}: {}",
+        stop.place(),
         stop.reason.describe()
     );
     if stop.reason == StopReason::DoesNotStart {

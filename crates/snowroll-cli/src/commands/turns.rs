@@ -80,9 +80,8 @@ fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
         return None;
     }
     let mut note = format!(
-        "run stopped at t = {} s, x = {} m: {}, after {} of the {wanted} turns asked for",
-        stop.t_s,
-        stop.x_m,
+        "run stopped at {}: {}, after {} of the {wanted} turns asked for",
+        stop.place(),
         stop.reason.describe(),
         table.rows.len()
     );

@@ -5,6 +5,7 @@
 
 mod circular;
 mod closed_form;
+mod contact;
 pub mod exact_geometry;
 mod ode;
 mod turn_by_turn;
@@ -12,11 +13,13 @@ mod validity;
 
 pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
+pub use contact::{circular_forces, ContactForces};
 pub use exact_geometry::SectorBody;
 pub use turn_by_turn::{
-    collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
-    kinetic_energy_at_turn_start, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics,
-    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
+    charged_collision_speed, collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
+    kinetic_energy_at_turn_start, run_turns, CollisionModel, ContactRange, InTurnCoefficients,
+    PivotImpact, TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable,
+    TurnVariant,
 };
 pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,

@@ -54,6 +54,10 @@ pub struct RunParams {
     /// The requested sample times, s (`--times`), when they were given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub times: Option<Vec<f64>>,
+    /// Coefficient of static friction of the slip check; none = no check.
+    pub mu: Option<f64>,
+    /// How the turn models climb each new layer.
+    pub collision: crate::models::CollisionModel,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -82,6 +86,8 @@ impl RunParams {
             },
             dt,
             times,
+            mu: opts.mu,
+            collision: opts.collision,
             warnings: Vec::new(),
         }
     }
@@ -109,7 +115,11 @@ impl RunParams {
             ("rtol".into(), format!("{:e}", self.rtol)),
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
+            ("collision".into(), self.collision.to_string()),
         ];
+        if let Some(mu) = self.mu {
+            lines.push(("mu".into(), mu.to_string()));
+        }
         if let Some(dt) = self.dt {
             lines.push(("dt".into(), dt.to_string()));
         }
@@ -131,6 +141,9 @@ struct TurnRow {
     a_m_s2: f64,
     r_m: f64,
     mass_kg: f64,
+    normal_n: f64,
+    friction_n: f64,
+    friction_ratio: f64,
     turn: u64,
     theta_rad: f64,
     omega_rad_s: f64,
@@ -145,6 +158,9 @@ impl TurnRow {
             a_m_s2: s.a_m_s2,
             r_m: s.r_m,
             mass_kg: s.mass_kg,
+            normal_n: s.normal_n,
+            friction_n: s.friction_n,
+            friction_ratio: s.friction_ratio,
             turn: k.turn,
             theta_rad: k.theta_rad,
             omega_rad_s: k.omega_rad_s,
@@ -164,6 +180,13 @@ struct JsonStop {
     description: &'static str,
     t_s: f64,
     x_m: f64,
+    v_m_s: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    turn: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    theta_rad: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    omega_rad_s: Option<f64>,
 }
 
 impl From<Stop> for JsonStop {
@@ -173,6 +196,10 @@ impl From<Stop> for JsonStop {
             description: s.reason.describe(),
             t_s: s.t_s,
             x_m: s.x_m,
+            v_m_s: s.v_m_s,
+            turn: s.turn.map(|k| k.turn),
+            theta_rad: s.turn.map(|k| k.theta_rad),
+            omega_rad_s: s.turn.map(|k| k.omega_rad_s),
         }
     }
 }
@@ -206,14 +233,22 @@ pub(crate) fn write_csv_header(
     for (k, v) in params.lines() {
         writeln!(w, "# {k} = {v}")?;
     }
+    let turn = stop.turn.map_or(String::new(), |k| {
+        format!(
+            " turn = {} theta_rad = {} omega_rad_s = {}",
+            k.turn, k.theta_rad, k.omega_rad_s
+        )
+    });
     writeln!(
         w,
-        "# stop = {} at t_s = {} x_m = {}: {}",
+        "# stop = {} at t_s = {} x_m = {} v_m_s = {}{}: {}",
         serde_json::to_value(stop.reason)?
             .as_str()
             .unwrap_or_default(),
         stop.t_s,
         stop.x_m,
+        stop.v_m_s,
+        turn,
         stop.reason.describe()
     )?;
     Ok(())
@@ -239,7 +274,17 @@ pub fn write_trajectory(
                     csv.serialize(TurnRow::new(s, k))?;
                 }
             } else if traj.samples.is_empty() {
-                csv.write_record(["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"])?;
+                csv.write_record([
+                    "t_s",
+                    "x_m",
+                    "v_m_s",
+                    "a_m_s2",
+                    "r_m",
+                    "mass_kg",
+                    "normal_n",
+                    "friction_n",
+                    "friction_ratio",
+                ])?;
             } else {
                 for s in &traj.samples {
                     csv.serialize(s)?;
@@ -291,12 +336,17 @@ mod tests {
                 a_m_s2: 3.27,
                 r_m: 0.1,
                 mass_kg: 12.566,
+                normal_n: 106.8,
+                friction_n: 20.5,
+                friction_ratio: 20.5 / 106.8,
             }],
             turn_states: vec![],
             stop: Stop {
                 reason: StopReason::EndTime,
                 t_s: 0.0,
                 x_m: 0.0,
+                v_m_s: 0.0,
+                turn: None,
             },
             stats: Default::default(),
         }
@@ -313,7 +363,10 @@ mod tests {
         assert!(text.contains("# model = torque-cm (eq. (4))"));
         assert!(text.contains("# alpha_deg = 30"));
         let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
-        assert_eq!(header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+        assert_eq!(
+            header,
+            "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio"
+        );
     }
 
     #[test]
