@@ -1,8 +1,9 @@
 """Checks the DOM of report.html as Chromium left it after playing for a while.
 
-Usage: check_dom.py DOM_FILE REPORT_DIR
+Usage: check_dom.py DOM_FILE REPORT_DIR [PHONE_DOM_FILE]
 
-DOM_FILE is the output of `chromium --dump-dom` after a virtual time budget.
+DOM_FILE is the output of `chromium --dump-dom` after a virtual time budget;
+PHONE_DOM_FILE the same at a phone's width (400 px), for the layout check.
 Prints one line per check and exits 1 if any fails.
 """
 
@@ -26,6 +27,10 @@ class Dom(html.parser.HTMLParser):
         self.verdict_texts = []
         self.figures = {}  # data-figure -> {"svg": bool}
         self.status = None
+        self.ids = set()
+        self.hrefs = []  # in-page links: (target id, id of the enclosing element with an id)
+        self.model_rows = 0
+        self.figure_supports = {}  # figure id -> claim ids it links to
         self.status_text = ""
         self._verdict_depth = None
         self._verdict_buf = []
@@ -36,6 +41,15 @@ class Dom(html.parser.HTMLParser):
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
+        if "id" in a:
+            self.ids.add(a["id"])
+        if tag == "a" and a.get("href", "").startswith("#"):
+            owner = next((x["id"] for t, x in reversed(self.stack) if "id" in x), None)
+            self.hrefs.append((a["href"][1:], owner))
+            if owner and owner.startswith("fig-") and a["href"].startswith("#claim-"):
+                self.figure_supports.setdefault(owner, []).append(a["href"][len("#claim-"):])
+        if tag == "tr" and a.get("id", "").startswith("model-"):
+            self.model_rows += 1
         if tag == "html":
             self.root_attrs = a
         elif tag == "body":
@@ -80,6 +94,7 @@ class Dom(html.parser.HTMLParser):
 
 def main():
     dom_file, report_dir = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+    phone_file = pathlib.Path(sys.argv[3]) if len(sys.argv) > 3 else None
     dom = Dom()
     dom.feed(dom_file.read_text(encoding="utf-8"))
     failures = []
@@ -113,9 +128,35 @@ def main():
     check(dom.status is not None and ticks > 0 and max_frame > 0,
           f"animation advanced: {ticks} ticks, reached frame {max_frame} ({dom.status_text.strip()!r})")
 
+    broken = sorted({t for t, _ in dom.hrefs if t not in dom.ids})
+    check(dom.hrefs and not broken, f"every in-page link resolves ({len(dom.hrefs)} links; broken: {broken[:5]})")
+    claim_ids = {r.get("id", "")[len("claim-"):] for r in dom.claim_rows}
+    linked_from_claims = {t for t, owner in dom.hrefs if owner and owner.startswith("claim-") and t.startswith("fig-")}
+    figure_ids = {"fig-" + n for n in dom.figures}
+    check(figure_ids and figure_ids <= linked_from_claims,
+          f"every figure is linked from a claim (not linked: {sorted(figure_ids - linked_from_claims)})")
+    unsupported = sorted(f for f in figure_ids if not dom.figure_supports.get(f))
+    bad_back = sorted({c for cs in dom.figure_supports.values() for c in cs if c not in claim_ids})
+    check(not unsupported and not bad_back,
+          f"every figure links back to the claims it supports (none: {unsupported}; unknown claims: {bad_back})")
+    want_models = int(dom.body_attrs.get("data-models", "-1"))
+    check(want_models >= 1 and dom.model_rows == want_models and "problem" in dom.ids and "geometry" in dom.ids,
+          f"the problem section has the geometry drawing and {dom.model_rows} model rows (page declares {want_models})")
+    check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
+          "the errata section is there, with a row per erratum")
+
     raw = (report_dir / "report.html").read_text(encoding="utf-8")
     external = re.findall(r"""(?:src|href)\s*=\s*["']?(?:https?:)?//[^"'\s>]+|url\(\s*["']?(?:https?:)?//[^)]+\)|@import|<link\b""", raw)
     check(not external, f"no external resources referenced ({external[:3]})")
+
+    if phone_file is not None:
+        phone = Dom()
+        phone.feed(phone_file.read_text(encoding="utf-8"))
+        overflow = phone.root_attrs.get("data-layout-overflow")
+        width = phone.root_attrs.get("data-layout-width")
+        check(overflow == "",
+              f"at a phone's width ({width} px) no figure overflows and the page does not scroll sideways "
+              f"(overflowing: {overflow!r})")
 
     if failures:
         print(f"browser-test: {len(failures)} check(s) failed", file=sys.stderr)

@@ -11,7 +11,7 @@ use std::fmt::Display;
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use snowroll::{Format, ModelKind, ScenarioFile, SimOptions};
+use snowroll::{CollisionModel, Format, ModelKind, ScenarioFile, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.
@@ -126,7 +126,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Slope angle alpha, in degrees (0 < alpha < 90)",
-            ScenarioFile::default().slope_deg
+            ScenarioFile::default().alpha_deg
         )
     )]
     pub alpha_deg: Option<f64>,
@@ -137,7 +137,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Snow depth b normal to the slope, in m (b >= 0; 0 = no snow)",
-            ScenarioFile::default().snow_depth_m
+            ScenarioFile::default().snow_depth
         )
     )]
     pub snow_depth: Option<f64>,
@@ -148,7 +148,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Initial radius r0 of the log, in m (r0 > 0)",
-            ScenarioFile::default().r0_m
+            ScenarioFile::default().r0
         )
     )]
     pub r0: Option<f64>,
@@ -159,7 +159,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Gravitational acceleration g, in m/s^2 (g > 0)",
-            ScenarioFile::default().g_m_s2
+            ScenarioFile::default().g
         )
     )]
     pub g: Option<f64>,
@@ -170,7 +170,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Density rho of log and snow, in kg/m^3 (rho > 0)",
-            ScenarioFile::default().density_kg_m3
+            ScenarioFile::default().density
         )
     )]
     pub density: Option<f64>,
@@ -181,7 +181,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Length l of the log, in m (l > 0)",
-            ScenarioFile::default().length_m
+            ScenarioFile::default().length
         )
     )]
     pub length: Option<f64>,
@@ -192,7 +192,7 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Initial speed v0 down the slope, in m/s (v0 >= 0)",
-            ScenarioFile::default().v0_m_s
+            ScenarioFile::default().v0
         )
     )]
     pub v0: Option<f64>,
@@ -237,6 +237,29 @@ pub struct ScenarioArgs {
         )
     )]
     pub atol: Option<f64>,
+
+    #[arg(
+        long,
+        value_name = "MU",
+        allow_negative_numbers = true,
+        help = "Coefficient of static friction mu, dimensionless (mu > 0): stop with `slip` where \
+                the friction rolling needs reaches mu times the normal force \
+                [default: none, no slip check]"
+    )]
+    pub mu: Option<f64>,
+
+    #[arg(
+        long,
+        value_enum,
+        value_name = "MODEL",
+        help = with_default(
+            "How a turn model climbs the step of each new layer: note (eq. (89)), charged \
+             (eq. (89) plus the potential energy of the jump), pivot (about the new layer's edge; \
+             may stop with `stuck`)",
+            value_name(CollisionModel::default())
+        )
+    )]
+    pub collision: Option<CollisionModel>,
 }
 
 /// Where and how results are written, and the `--config` file; shared by
@@ -259,8 +282,8 @@ pub struct OutputArgs {
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
-    /// Read any of the flags above from this TOML file, as `alpha-deg = 25`; flags on the command line override it (one --config only)
-    #[arg(long, value_name = "FILE.toml")]
+    /// Read settings from this file (one --config only); flags on the command line override it. A TOML file with one key per long flag (`alpha-deg = 25` or `alpha_deg = 25`), or a JSON or CSV output of snowroll, which reproduces that run
+    #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
 }
 

@@ -1,42 +1,63 @@
-//! The `--config FILE.toml` of `simulate` and `turns`, and its precedence:
+//! The `--config FILE` of `simulate` and `turns`, and its precedence:
 //! command-line flags, then the file, then the library's defaults.
 //!
-//! The file has one key per long flag of the two commands (kebab-case, e.g.
-//! `alpha-deg = 25`, `model = "eq4"`, `times = [1.0, 2.0]`, `turns = 10`);
-//! unknown keys are an error, and so are keys of the other command
-//! (`times`, `dt` for `turns`). The model is spelt as on the command line:
-//! id or equation alias, in any case.
+//! A config file is one of three things, told apart by its content:
+//! - a TOML file with one key per long flag of the two commands, spelt as
+//!   the flag (`alpha-deg = 25`) or in snake_case (`alpha_deg = 25`), e.g.
+//!   `model = "eq4"`, `times = [1.0, 2.0]`, `turns = 10`;
+//! - a JSON output of snowroll (`--format json`): its `model` and `params`;
+//! - a CSV output of snowroll: its `# key = value` header lines.
+//!
+//! The keys are the project's one parameter vocabulary ([`snowroll::ScenarioFile`],
+//! [`snowroll::RunParams`]), so an output read back reproduces its run byte for
+//! byte, in its own format. Unknown keys are an error, and so are keys of the
+//! other command (`times`, `dt` for `turns`). The model is spelt as on the
+//! command line: id or equation alias, in any case.
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use serde::{Deserialize, Deserializer};
-use snowroll::{Format, ModelKind};
+use serde_json::{Map, Value};
+use snowroll::{CollisionModel, Format, ModelKind};
 
 use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 
 /// The keys of a config file: every long flag of `simulate` and `turns`
-/// except `--config` itself.
+/// except `--config` itself, in snake_case; the flag's own spelling and the
+/// parameter names of earlier outputs are aliases.
 #[derive(Debug, Clone, Default, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+#[serde(deny_unknown_fields)]
 pub struct ConfigFile {
     #[serde(default, deserialize_with = "model_any_case")]
     model: Option<ModelKind>,
+    #[serde(alias = "alpha-deg", alias = "slope_deg")]
     alpha_deg: Option<f64>,
+    #[serde(alias = "snow-depth", alias = "snow_depth_m")]
     snow_depth: Option<f64>,
+    #[serde(alias = "r0_m")]
     r0: Option<f64>,
+    #[serde(alias = "g_m_s2")]
     g: Option<f64>,
+    #[serde(alias = "density_kg_m3")]
     density: Option<f64>,
+    #[serde(alias = "length_m")]
     length: Option<f64>,
+    #[serde(alias = "v0_m_s")]
     v0: Option<f64>,
+    #[serde(alias = "t-end", alias = "t_end_s")]
     t_end: Option<f64>,
+    #[serde(alias = "x-end", alias = "x_end_m")]
     x_end: Option<f64>,
     times: Option<Vec<f64>>,
     dt: Option<f64>,
     turns: Option<u64>,
     rtol: Option<f64>,
     atol: Option<f64>,
+    mu: Option<f64>,
+    collision: Option<CollisionModel>,
+    #[serde(default, deserialize_with = "format_any_case")]
     format: Option<Format>,
     output: Option<PathBuf>,
 }
@@ -48,30 +69,183 @@ fn model_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<ModelKind>, 
     name.parse().map(Some).map_err(serde::de::Error::custom)
 }
 
-/// Reads and parses a config file. Every failure is one line naming the file.
-pub fn load(path: &Path) -> Result<ConfigFile> {
+/// `csv` or `json`, in any case, as `--format` accepts it.
+fn format_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Format>, D::Error> {
+    let name = String::deserialize(d)?;
+    match name.to_ascii_lowercase().as_str() {
+        "csv" => Ok(Some(Format::Csv)),
+        "json" => Ok(Some(Format::Json)),
+        _ => Err(serde::de::Error::custom(format!(
+            "unknown format `{name}`, expected `csv` or `json`"
+        ))),
+    }
+}
+
+/// Which command wrote an output that is read back as a config file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Origin {
+    /// A TOML file written by hand.
+    Toml,
+    /// An output of `snowroll simulate`.
+    Simulate,
+    /// An output of `snowroll turns` (one row per turn).
+    Turns,
+}
+
+/// The keys an output records that are not settings of a run: they are
+/// read back as the output's provenance, not as config keys.
+const RECORD_ONLY: [&str; 5] = ["sampling", "warnings", "warning", "notes", "note"];
+
+/// The `sampling` text of a turn table (`snowroll turns`).
+const TURN_TABLE_SAMPLING: &str = "one row per turn";
+
+/// Reads and parses a config file for command `command` (`simulate` or
+/// `turns`). Every failure is one line naming the file; an output of the
+/// other command is refused (its settings would not reproduce it).
+pub fn load(path: &Path, command: Origin) -> Result<ConfigFile> {
+    let (file, origin) = load_with_origin(path)?;
+    let name = |o: Origin| match o {
+        Origin::Turns => "turns",
+        _ => "simulate",
+    };
+    if origin != Origin::Toml && origin != command {
+        bail!(
+            "config file {} is an output of `snowroll {}`; read it back with that command",
+            path.display(),
+            name(origin)
+        );
+    }
+    Ok(file)
+}
+
+/// Reads and parses a config file and says what wrote it.
+fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
     let text = fs::read_to_string(path)
         .with_context(|| format!("cannot read config file {}", path.display()))?;
-    let file: ConfigFile = toml::from_str(&text).map_err(|e| {
-        anyhow::anyhow!(
-            "config file {}{}: {}",
-            path.display(),
-            e.span()
-                .map(|s| {
-                    let (line, column) = line_column(&text, s.start);
-                    format!(", line {line}, column {column}")
-                })
-                .unwrap_or_default(),
-            one_line(e.message())
-        )
-    })?;
+    let trimmed = text.trim_start();
+    let (file, origin) = if trimmed.starts_with('{') {
+        from_json_output(&text).map_err(|e| anyhow!("config file {}: {e}", path.display()))?
+    } else if trimmed.starts_with("# snowroll") {
+        from_csv_output(&text).map_err(|e| anyhow!("config file {}: {e}", path.display()))?
+    } else {
+        (from_toml(&text, path)?, Origin::Toml)
+    };
     if file.times.is_some() && file.dt.is_some() {
         bail!(
             "config file {}: `times` and `dt` conflict, give one of them",
             path.display()
         );
     }
-    Ok(file)
+    Ok((file, origin))
+}
+
+fn from_toml(text: &str, path: &Path) -> Result<ConfigFile> {
+    toml::from_str(text).map_err(|e| {
+        anyhow!(
+            "config file {}{}: {}",
+            path.display(),
+            e.span()
+                .map(|s| {
+                    let (line, column) = line_column(text, s.start);
+                    format!(", line {line}, column {column}")
+                })
+                .unwrap_or_default(),
+            one_line(e.message())
+        )
+    })
+}
+
+/// The settings of a JSON output of snowroll (`simulate` or `turns`).
+fn from_json_output(text: &str) -> Result<(ConfigFile, Origin)> {
+    let doc: Value = serde_json::from_str(text).map_err(|e| anyhow!("not valid JSON: {e}"))?;
+    let Some(params) = doc.get("params").and_then(Value::as_object) else {
+        bail!("a JSON config file must be an output of snowroll (with `params` and `model`)");
+    };
+    let mut keys = Map::new();
+    if let Some(id) = doc.pointer("/model/id").and_then(Value::as_str) {
+        keys.insert("model".into(), Value::String(id.to_string()));
+    }
+    let sampling = params.get("sampling").and_then(Value::as_str);
+    let origin = if sampling == Some(TURN_TABLE_SAMPLING) {
+        Origin::Turns
+    } else {
+        Origin::Simulate
+    };
+    for (k, v) in params {
+        if !RECORD_ONLY.contains(&k.as_str()) && !v.is_null() {
+            keys.insert(k.clone(), v.clone());
+        }
+    }
+    keys.insert("format".into(), Value::String("json".into()));
+    let file = serde_json::from_value(Value::Object(keys)).map_err(|e| anyhow!("{e}"))?;
+    Ok((file, origin))
+}
+
+/// The settings of a CSV output of snowroll: its `# key = value` lines
+/// before the column header. `# model = torque-cm (eq. (4))` gives the id;
+/// `none` means not set; `times` is a comma-separated list.
+fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
+    let mut keys = Map::new();
+    let mut origin = Origin::Simulate;
+    for line in text.lines() {
+        let Some(comment) = line.strip_prefix('#') else {
+            break;
+        };
+        let Some((key, value)) = comment.split_once(" = ") else {
+            continue;
+        };
+        let (key, value) = (key.trim(), value.trim());
+        if !key
+            .bytes()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
+        {
+            continue; // a sentence (the turn table's summary), not a setting
+        }
+        let value = match key {
+            "model" | "collision" => {
+                Value::String(value.split_whitespace().next().unwrap_or("").into())
+            }
+            "sampling" => {
+                if value == TURN_TABLE_SAMPLING {
+                    origin = Origin::Turns;
+                }
+                continue;
+            }
+            k if RECORD_ONLY.contains(&k) || k == "stop" => continue,
+            _ if value == "none" => continue,
+            "turns" => Value::from(
+                value
+                    .parse::<u64>()
+                    .map_err(|_| anyhow!("`turns = {value}` is not a whole number"))?,
+            ),
+            "times" => Value::Array(
+                value
+                    .split(',')
+                    .map(|t| number(key, t.trim()))
+                    .collect::<Result<_>>()?,
+            ),
+            _ => number(key, value)?,
+        };
+        keys.insert(key.to_string(), value);
+    }
+    if !keys.contains_key("model") {
+        bail!(
+            "a CSV config file must be an output of snowroll (its `# model = ...` line is missing)"
+        );
+    }
+    keys.insert("format".into(), Value::String("csv".into()));
+    let file = serde_json::from_value(Value::Object(keys)).map_err(|e| anyhow!("{e}"))?;
+    Ok((file, origin))
+}
+
+/// A number of a CSV header line, as JSON.
+fn number(key: &str, value: &str) -> Result<Value> {
+    let x: f64 = value
+        .parse()
+        .map_err(|_| anyhow!("`{key} = {value}` is not a number"))?;
+    serde_json::Number::from_f64(x)
+        .map(Value::Number)
+        .ok_or_else(|| anyhow!("`{key} = {value}` is not a finite number"))
 }
 
 /// A possibly multi-line message on one line.
@@ -109,6 +283,8 @@ impl ScenarioArgs {
             x_end,
             rtol,
             atol,
+            mu,
+            collision,
         } = self;
         ScenarioArgs {
             model: model.or(file.model),
@@ -123,6 +299,8 @@ impl ScenarioArgs {
             x_end: x_end.or(file.x_end),
             rtol: rtol.or(file.rtol),
             atol: atol.or(file.atol),
+            mu: mu.or(file.mu),
+            collision: collision.or(file.collision),
         }
     }
 }
@@ -300,9 +478,25 @@ mod tests {
             .message()
             .to_string();
         let (_, list) = err.split_once("expected one of").unwrap();
+        // serde lists the aliases too: the flags' own kebab-case spelling
+        // and the names of earlier outputs. Leave those out; the rest, in
+        // kebab-case, must be exactly the long flags.
+        const EARLIER_OUTPUT_NAMES: [&str; 9] = [
+            "slope_deg",
+            "snow_depth_m",
+            "r0_m",
+            "g_m_s2",
+            "density_kg_m3",
+            "length_m",
+            "v0_m_s",
+            "t_end_s",
+            "x_end_m",
+        ];
         let mut keys: Vec<String> = list
             .split(',')
             .map(|k| k.trim().trim_matches('`').to_string())
+            .filter(|k| !k.contains('-') && !EARLIER_OUTPUT_NAMES.contains(&k.as_str()))
+            .map(|k| k.replace('_', "-"))
             .collect();
         keys.sort_unstable();
         let mut flags = long_flags("simulate");

@@ -144,7 +144,7 @@ fn alpha_deg_sets_initial_acceleration_to_two_thirds_g_sin_alpha() {
             two_thirds_g_sin(alpha, G),
             CLOSED_FORM_TOL,
         );
-        assert_close(csv.param("slope_deg"), alpha, CLOSED_FORM_TOL);
+        assert_close(csv.param("alpha_deg"), alpha, CLOSED_FORM_TOL);
     }
 }
 
@@ -365,21 +365,24 @@ fn csv_records_version_model_and_every_parameter_before_the_header() {
     );
     assert_eq!(csv.comments["model"], "energy-thin (eq. (15))");
     for (key, want) in [
-        ("slope_deg", ALPHA_DEG),
-        ("snow_depth_m", 0.02),
-        ("r0_m", 0.3),
-        ("g_m_s2", 9.8),
-        ("density_kg_m3", 300.0),
-        ("length_m", 2.0),
-        ("v0_m_s", 0.5),
-        ("t_end_s", 2.0),
-        ("x_end_m", 1000.0),
+        ("alpha_deg", ALPHA_DEG),
+        ("snow_depth", 0.02),
+        ("r0", 0.3),
+        ("g", 9.8),
+        ("density", 300.0),
+        ("length", 2.0),
+        ("v0", 0.5),
+        ("t_end", 2.0),
+        ("x_end", 1000.0),
         ("rtol", 1e-9),
         ("atol", 1e-11),
     ] {
         assert_close(csv.param(key), want, CLOSED_FORM_TOL);
     }
-    assert_eq!(csv.header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+    assert_eq!(
+        csv.header,
+        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio"
+    );
 }
 
 #[test]
@@ -396,7 +399,7 @@ fn json_has_the_documented_keys() {
     assert_eq!(doc["model"]["id"], "torque-cm");
     assert_eq!(doc["model"]["equation"], "eq. (4)");
     assert_close(
-        doc["params"]["snow_depth_m"].as_f64().unwrap(),
+        doc["params"]["snow_depth"].as_f64().unwrap(),
         0.01,
         CLOSED_FORM_TOL,
     );
@@ -404,7 +407,17 @@ fn json_has_the_documented_keys() {
     assert!(doc["stop"]["t_s"].is_number() && doc["stop"]["x_m"].is_number());
     let samples = doc["samples"].as_array().unwrap();
     assert_eq!(samples.len(), 2);
-    for key in ["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"] {
+    for key in [
+        "t_s",
+        "x_m",
+        "v_m_s",
+        "a_m_s2",
+        "r_m",
+        "mass_kg",
+        "normal_n",
+        "friction_n",
+        "friction_ratio",
+    ] {
         assert!(samples[1][key].is_number(), "sample lacks {key}");
     }
     assert_close(
@@ -549,7 +562,60 @@ fn turns(args: &[&str]) -> (String, String) {
 
 /// The header of the per-turn table.
 const TURN_COLUMNS: &str = "turn,t_start_s,x_start_m,v_start_m_s,t_end_s,v_end_m_s,v_after_m_s,\
-collision_loss_j,mean_a_turn_m_s2,min_a_m_s2,max_a_m_s2,mean_a_with_collision_m_s2";
+collision_loss_j,mean_a_turn_m_s2,min_a_m_s2,max_a_m_s2,mean_a_with_collision_m_s2,\
+min_normal_n,min_normal_over_mg,max_friction_ratio";
+
+/// Issue 10: at 80° the turn model hops in turn 1 (`docs/contact-forces.md`
+/// §4.4); the note on stderr names t, x, v, turn, theta and omega, and the
+/// CSV records `mu` and `collision`. With `--collision pivot` at 1°, v0 =
+/// 0.45 m/s the log is stuck at the first step (§6.3), and `--mu` below
+/// tan α/3 makes the snowless cylinder slip at once (§5.1).
+#[test]
+fn regression_10_hop_slip_and_stuck_are_reported() {
+    let out = snowroll()
+        .args([
+            "simulate",
+            "--model",
+            "turns",
+            "--alpha-deg",
+            "80",
+            "--turns",
+            "5",
+        ])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("hops"))
+        .stderr(predicate::str::contains("turn 1 (0-based), theta = 3.98"))
+        .stderr(predicate::str::contains("omega = "));
+    let csv = Csv::parse(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    assert!(csv.comments["stop"].starts_with("hop "));
+    assert!(!csv.comments.contains_key("mu"));
+    assert_eq!(csv.comments["collision"], "note");
+    snowroll()
+        .args([
+            "simulate",
+            "--model",
+            "turns",
+            "--collision",
+            "pivot",
+            "--alpha-deg",
+            "1",
+        ])
+        .args(["--v0", "0.45", "--turns", "3"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("stuck"));
+    snowroll()
+        .args(["simulate", "--model", "snowless", "--mu", "0.19"])
+        .assert()
+        .success()
+        .stderr(predicate::str::contains("slips"));
+    snowroll()
+        .args(["simulate", "--model", "snowless", "--mu", "0"])
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("mu"));
+}
 
 #[test]
 fn turns_gives_exactly_n_rows_numbered_from_zero() {
@@ -671,7 +737,7 @@ fn turns_json_records_the_table_and_the_parameters() {
     assert_eq!(doc["stop"]["reason"], "turns");
     let params = &doc["params"];
     assert_eq!(params["turns"], 4);
-    for (key, want) in [("snow_depth_m", 0.02), ("r0_m", 0.15), ("slope_deg", 40.0)] {
+    for (key, want) in [("snow_depth", 0.02), ("r0", 0.15), ("alpha_deg", 40.0)] {
         assert_close(params[key].as_f64().unwrap(), want, CLOSED_FORM_TOL);
     }
     let rows = doc["turns"].as_array().unwrap();
@@ -786,7 +852,7 @@ fn simulate_turns_stops_after_n_turns_with_the_turn_columns() {
     let csv = Csv::parse(std::str::from_utf8(&out.get_output().stdout).unwrap());
     assert_eq!(
         csv.header,
-        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,turn,theta_rad,omega_rad_s"
+        "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio,turn,theta_rad,omega_rad_s"
     );
     assert!(csv.comments["stop"].starts_with("turns "));
     assert_eq!(csv.comments["turns"], "3");
@@ -832,7 +898,7 @@ fn turns_and_a_case_insensitive_model_come_from_the_config_file() {
     let (out, _) = turns(&["--config", config]);
     let csv = Csv::parse(&out);
     assert_eq!(csv.rows.len(), 4);
-    assert_close(csv.param("snow_depth_m"), 0.02, CLOSED_FORM_TOL);
+    assert_close(csv.param("snow_depth"), 0.02, CLOSED_FORM_TOL);
     // The flag overrides the file.
     let (out, _) = turns(&["--config", config, "--turns", "2"]);
     assert_eq!(Csv::parse(&out).rows.len(), 2);

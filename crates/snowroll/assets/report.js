@@ -19,7 +19,7 @@
   var TICK_MS = 40;          // one tick of the clock, ms of wall time
   var HOLD_S = 0.8;          // pause at the end before looping, s of wall time
   var n = A.t.length;
-  var alpha = A.slope_deg * Math.PI / 180;
+  var alpha = A.alpha_deg * Math.PI / 180;
   var rMax = Math.max.apply(null, A.r.concat(A.ring_r)) + (A.circular ? 0 : A.b_m);
   var state = { frame: 0, maxFrame: 0, ticks: 0, simT: A.t[0], playing: true, hold: 0 };
   var W = 960, H = 540;
@@ -125,21 +125,21 @@
       ctx.stroke();
       ctx.restore();
     }
-    disk(A.r0_m * s, WOOD, WOOD_DARK);
+    disk(A.r0 * s, WOOD, WOOD_DARK);
     ctx.strokeStyle = WOOD_DARK;
     ctx.lineWidth = 1;
     for (var g = 1; g <= 3; g++) {
-      ctx.beginPath(); ctx.arc(0, 0, A.r0_m * s * g / 4, 0, TAU); ctx.stroke();
+      ctx.beginPath(); ctx.arc(0, 0, A.r0 * s * g / 4, 0, TAU); ctx.stroke();
     }
     ctx.lineWidth = 3;
-    ctx.beginPath(); ctx.moveTo(0, 0); ctx.lineTo(0, -A.r0_m * s); ctx.stroke();
+    ctx.beginPath(); ctx.moveTo(0, 0); ctx.lineTo(0, -A.r0 * s); ctx.stroke();
     ctx.restore();
     ctx.restore();
 
     // Read-out, smaller on narrow screens.
     var fs = W < 600 ? 11 : 14;
     var lines = [
-      A.model + ' (' + A.equation + '), slope ' + fmt(A.slope_deg, 1) + '°, b = ' + A.b_m + ' m',
+      A.model + ' (' + A.equation + '), slope ' + fmt(A.alpha_deg, 1) + '°, b = ' + A.b_m + ' m',
       't = ' + fmt(A.t[i], 3) + ' s    x = ' + fmt(x, 3) + ' m',
       'v = ' + fmt(A.v[i], 3) + ' m/s    r = ' + fmt(r, 4) + ' m',
       'turn ' + k + ', ' + fmt(inTurn * 180 / Math.PI, 0) + '° into it'

@@ -34,6 +34,29 @@
 //! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
 //! one integrator ([`integrate`]): DOP853 with dense output and events.
 //!
+//! ## Quick start
+//! Build a [`Scenario`] from a [`ScenarioFile`] (its fields are the command
+//! line's flags in snake_case, SI units, angles in degrees), pick a model
+//! by id or equation alias, and read the samples:
+//!
+//! ```
+//! use snowroll::{ModelKind, Sampling, Scenario, ScenarioFile, SimOptions};
+//!
+//! let scenario = Scenario::new(ScenarioFile { alpha_deg: 20.0, snow_depth: 0.02, ..Default::default() })?;
+//! let model: ModelKind = "eq4".parse()?; // torque about the centre, eq. (4)
+//! let opts = SimOptions { t_end: 50.0, sampling: Sampling::Times(vec![0.0, 50.0]), ..Default::default() };
+//! let run = model.build().simulate(&scenario, &opts)?;
+//! let (start, end) = (run.samples[0], run.samples[1]);
+//! // From rest the snow costs nothing yet: a(0) = (2/3) g sin α (eq. (4) at v = 0).
+//! assert!((start.a_m_s2 - 2.0 / 3.0 * scenario.g_along()).abs() < 1e-12);
+//! // Late on, eq. (4) approaches g sin α / 5 (fn. 4).
+//! assert!((end.a_m_s2 / scenario.g_along() - 0.2).abs() < 1e-3);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! `examples/quickstart.rs` runs every model on one scenario and prints a
+//! table; [`integrate`] shows the integrator on a system of your own.
+//!
 //! ## Symbols
 //! | symbol | meaning | Rust name | unit |
 //! |---|---|---|---|
@@ -97,10 +120,11 @@ pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
 pub use models::{
-    atol_bound, check_tolerances, check_turn_scale, collision_speed, default_atol,
-    first_turn_stall_slope, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns,
-    state_scale, tolerance_warning, validity_warnings, CircularModel, Coefficients, Derivation,
-    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, SectorBody,
+    atol_bound, charged_collision_speed, check_tolerances, check_turn_scale, circular_forces,
+    collision_speed, default_atol, first_turn_stall_slope, kinetic_energy_at_turn_end,
+    kinetic_energy_at_turn_start, run_turns, state_scale, tolerance_warning, validity_warnings,
+    CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
+    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody,
     TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
     Validity, ValidityWarning,
 };

@@ -17,7 +17,7 @@ use crate::units::{
 ///
 /// ```
 /// use snowroll::{Scenario, ScenarioFile};
-/// let s = Scenario::new(ScenarioFile { slope_deg: 30.0, ..ScenarioFile::default() })?;
+/// let s = Scenario::new(ScenarioFile { alpha_deg: 30.0, ..ScenarioFile::default() })?;
 /// assert!((s.slope_angle().to_degrees() - 30.0).abs() < 1e-12);
 /// # Ok::<(), snowroll::ParamError>(())
 /// ```
@@ -35,36 +35,50 @@ pub struct Scenario {
     v0: MetersPerSecond,
 }
 
-/// The user-facing, unit-suffixed form of a [`Scenario`] (angles in degrees).
+/// The user-facing form of a [`Scenario`], in the project's one parameter
+/// vocabulary: each field is named as the command line's long flag in
+/// snake_case (`--alpha-deg` is `alpha_deg`, `--snow-depth` is `snow_depth`),
+/// and the same names are the keys of config files, of the parameters every
+/// output records, and of the Python package's keywords. Units are SI, angles
+/// in degrees. The names of earlier outputs (`slope_deg`, `snow_depth_m`,
+/// `r0_m`, `g_m_s2`, `density_kg_m3`, `length_m`, `v0_m_s`) are accepted as
+/// aliases when reading.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ScenarioFile {
     /// Slope angle alpha, degrees, 0 < alpha < 90. Default 30.
-    pub slope_deg: f64,
+    #[serde(alias = "slope_deg", alias = "alpha-deg")]
+    pub alpha_deg: f64,
     /// Snow depth b normal to the slope, m, b >= 0 (0 = no snow). Default 0.01.
-    pub snow_depth_m: f64,
+    #[serde(alias = "snow_depth_m", alias = "snow-depth")]
+    pub snow_depth: f64,
     /// Initial radius r0 of the log, m, > 0. Default 0.1.
-    pub r0_m: f64,
+    #[serde(alias = "r0_m")]
+    pub r0: f64,
     /// Gravitational acceleration g, m/s², > 0. Default 9.81.
-    pub g_m_s2: f64,
+    #[serde(alias = "g_m_s2")]
+    pub g: f64,
     /// Density rho of log and snow, kg/m³, > 0. Default 400.
-    pub density_kg_m3: f64,
+    #[serde(alias = "density_kg_m3")]
+    pub density: f64,
     /// Length l of the log, m, > 0. Default 1.
-    pub length_m: f64,
+    #[serde(alias = "length_m")]
+    pub length: f64,
     /// Initial speed v0 down the slope, m/s, >= 0. Default 0.
-    pub v0_m_s: f64,
+    #[serde(alias = "v0_m_s")]
+    pub v0: f64,
 }
 
 impl Default for ScenarioFile {
     fn default() -> Self {
         Self {
-            slope_deg: 30.0,
-            snow_depth_m: 0.01,
-            r0_m: 0.1,
-            g_m_s2: 9.81,
-            density_kg_m3: 400.0,
-            length_m: 1.0,
-            v0_m_s: 0.0,
+            alpha_deg: 30.0,
+            snow_depth: 0.01,
+            r0: 0.1,
+            g: 9.81,
+            density: 400.0,
+            length: 1.0,
+            v0: 0.0,
         }
     }
 }
@@ -206,31 +220,26 @@ impl Scenario {
     fn new_unscaled(file: ScenarioFile) -> Result<Self, ParamError> {
         let alpha_deg = check(
             "slope angle (degrees)",
-            file.slope_deg,
+            file.alpha_deg,
             |a| a > 0.0 && a < 90.0,
             "0 < alpha < 90 degrees",
         )?;
         Ok(Self {
             alpha: alpha_deg.to_radians(),
             alpha_deg,
-            b: check(
-                "snow depth (m)",
-                file.snow_depth_m,
-                |b| b >= 0.0,
-                "b >= 0 m",
-            )?,
-            r0: check("initial radius r0 (m)", file.r0_m, |r| r > 0.0, "r0 > 0 m")?,
-            g: check("g (m/s^2)", file.g_m_s2, |g| g > 0.0, "g > 0 m/s^2")?,
+            b: check("snow depth (m)", file.snow_depth, |b| b >= 0.0, "b >= 0 m")?,
+            r0: check("initial radius r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?,
+            g: check("g (m/s^2)", file.g, |g| g > 0.0, "g > 0 m/s^2")?,
             rho: check(
                 "density (kg/m^3)",
-                file.density_kg_m3,
+                file.density,
                 |d| d > 0.0,
                 "density > 0 kg/m^3",
             )?,
-            l: check("log length (m)", file.length_m, |l| l > 0.0, "length > 0 m")?,
+            l: check("log length (m)", file.length, |l| l > 0.0, "length > 0 m")?,
             v0: check(
                 "initial speed v0 (m/s)",
-                file.v0_m_s,
+                file.v0,
                 |v| v >= 0.0,
                 "v0 >= 0 m/s",
             )?,
@@ -243,7 +252,7 @@ impl Scenario {
     /// As [`Scenario::new`].
     pub fn with_snow_depth(&self, b: Meters) -> Result<Self, ParamError> {
         Self::new(ScenarioFile {
-            snow_depth_m: b,
+            snow_depth: b,
             ..ScenarioFile::from(*self)
         })
     }
@@ -300,13 +309,13 @@ impl TryFrom<ScenarioFile> for Scenario {
 impl From<Scenario> for ScenarioFile {
     fn from(s: Scenario) -> Self {
         Self {
-            slope_deg: s.alpha_deg,
-            snow_depth_m: s.b,
-            r0_m: s.r0,
-            g_m_s2: s.g,
-            density_kg_m3: s.rho,
-            length_m: s.l,
-            v0_m_s: s.v0,
+            alpha_deg: s.alpha_deg,
+            snow_depth: s.b,
+            r0: s.r0,
+            g: s.g,
+            density: s.rho,
+            length: s.l,
+            v0: s.v0,
         }
     }
 }
@@ -318,14 +327,14 @@ impl Default for Scenario {
         // struct directly so that `default` cannot fail.
         let f = ScenarioFile::default();
         Self {
-            alpha: f.slope_deg.to_radians(),
-            alpha_deg: f.slope_deg,
-            b: f.snow_depth_m,
-            r0: f.r0_m,
-            g: f.g_m_s2,
-            rho: f.density_kg_m3,
-            l: f.length_m,
-            v0: f.v0_m_s,
+            alpha: f.alpha_deg.to_radians(),
+            alpha_deg: f.alpha_deg,
+            b: f.snow_depth,
+            r0: f.r0,
+            g: f.g,
+            rho: f.density,
+            l: f.length,
+            v0: f.v0,
         }
     }
 }
@@ -339,56 +348,56 @@ mod tests {
         let bad = [
             (
                 ScenarioFile {
-                    slope_deg: 90.0,
+                    alpha_deg: 90.0,
                     ..Default::default()
                 },
                 "slope",
             ),
             (
                 ScenarioFile {
-                    slope_deg: 0.0,
+                    alpha_deg: 0.0,
                     ..Default::default()
                 },
                 "slope",
             ),
             (
                 ScenarioFile {
-                    snow_depth_m: -0.1,
+                    snow_depth: -0.1,
                     ..Default::default()
                 },
                 "snow depth",
             ),
             (
                 ScenarioFile {
-                    r0_m: 0.0,
+                    r0: 0.0,
                     ..Default::default()
                 },
                 "r0",
             ),
             (
                 ScenarioFile {
-                    g_m_s2: f64::NAN,
+                    g: f64::NAN,
                     ..Default::default()
                 },
                 "g",
             ),
             (
                 ScenarioFile {
-                    density_kg_m3: -1.0,
+                    density: -1.0,
                     ..Default::default()
                 },
                 "density",
             ),
             (
                 ScenarioFile {
-                    length_m: f64::INFINITY,
+                    length: f64::INFINITY,
                     ..Default::default()
                 },
                 "length",
             ),
             (
                 ScenarioFile {
-                    v0_m_s: -1.0,
+                    v0: -1.0,
                     ..Default::default()
                 },
                 "v0",

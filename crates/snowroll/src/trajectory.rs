@@ -4,8 +4,11 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::ParamError;
 use crate::integrate::{Stats, Tolerances};
+use crate::models::CollisionModel;
 use crate::models::ModelKind;
-use crate::units::{Kilograms, Meters, MetersPerSecond, MetersPerSecondSquared, Radians, Seconds};
+use crate::units::{
+    Kilograms, Meters, MetersPerSecond, MetersPerSecondSquared, Newtons, Radians, Seconds,
+};
 
 /// The state of the log at one time. Column names carry their units.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -22,6 +25,15 @@ pub struct Sample {
     pub r_m: Meters,
     /// Mass of log plus snow as the model counts it, kg.
     pub mass_kg: Kilograms,
+    /// Normal force N of the slope on the log, from the momentum balance of
+    /// the accreting body (`docs/contact-forces.md` §1–§3), N.
+    pub normal_n: Newtons,
+    /// Friction force F that rolling without slipping needs, positive up the
+    /// slope (`docs/contact-forces.md` §1–§3), N.
+    pub friction_n: Newtons,
+    /// |F|/N: the smallest coefficient of static friction that keeps this
+    /// sample rolling; infinite when N ≤ 0 (the log has left the ground).
+    pub friction_ratio: f64,
 }
 
 /// Extra state of the turn-by-turn models (§3), one per sample.
@@ -50,6 +62,16 @@ pub enum StopReason {
     Stalled,
     /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7).
     DoesNotStart,
+    /// The normal force reached zero: the log leaves the ground (fn. 10,
+    /// `docs/contact-forces.md` §4; with `--collision pivot` also at the edge of
+    /// the new layer, §6.3).
+    Hop,
+    /// |F| reached μ N: rolling without slipping needs more friction than
+    /// `mu` (`docs/contact-forces.md` §5).
+    Slip,
+    /// With `--collision charged|pivot`, the kinetic energy after the impact
+    /// cannot lift the log onto the new layer (`docs/contact-forces.md` §6.2, §6.3).
+    Stuck,
 }
 
 impl StopReason {
@@ -63,6 +85,11 @@ impl StopReason {
             StopReason::DoesNotStart => {
                 "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7)"
             }
+            StopReason::Hop => "the normal force reached zero: the log hops (fn. 10)",
+            StopReason::Slip => {
+                "the friction needed reached mu times the normal force: the log slips"
+            }
+            StopReason::Stuck => "the log cannot climb the step onto the new layer of snow (stuck)",
         }
     }
 }
@@ -76,6 +103,29 @@ pub struct Stop {
     pub t_s: Seconds,
     /// Position, m.
     pub x_m: Meters,
+    /// Speed, m/s.
+    pub v_m_s: MetersPerSecond,
+    /// For the turn models, turn, θ and θ̇ at the stop.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub turn: Option<TurnState>,
+}
+
+impl Stop {
+    /// Where, for people: `t = … s, x = … m, v = … m/s` and, for the turn
+    /// models, `, turn k, theta = … rad, omega = … rad/s`.
+    pub fn place(&self) -> String {
+        let mut s = format!(
+            "t = {} s, x = {} m, v = {} m/s",
+            self.t_s, self.x_m, self.v_m_s
+        );
+        if let Some(k) = self.turn {
+            s.push_str(&format!(
+                ", turn {} (0-based), theta = {} rad, omega = {} rad/s",
+                k.turn, k.theta_rad, k.omega_rad_s
+            ));
+        }
+        s
+    }
 }
 
 /// The result of one simulation.
@@ -169,6 +219,15 @@ pub struct SimOptions {
     pub tolerances: Tolerances,
     /// What to record. Default: every step.
     pub sampling: Sampling,
+    /// Coefficient of static friction μ (dimensionless): the run stops with
+    /// [`StopReason::Slip`] where |F| reaches μ N. Default: none (no slip check).
+    pub mu: Option<f64>,
+    /// Whether the run stops with [`StopReason::Hop`] where N reaches 0.
+    /// Default: true (nothing is computed past the model's validity).
+    pub stop_on_hop: bool,
+    /// How the turn models climb the step of each new layer. Default: the
+    /// note's eq. (89), [`CollisionModel::Note`].
+    pub collision: CollisionModel,
 }
 
 impl Default for SimOptions {
@@ -179,6 +238,9 @@ impl Default for SimOptions {
             turns: None,
             tolerances: Tolerances::default(),
             sampling: Sampling::Steps,
+            mu: None,
+            stop_on_hop: true,
+            collision: CollisionModel::Note,
         }
     }
 }
@@ -211,6 +273,11 @@ impl SimOptions {
                     first,
                     t_end: self.t_end,
                 });
+            }
+        }
+        if let Some(mu) = self.mu {
+            if !(mu.is_finite() && mu > 0.0) {
+                return Err(bad("mu", mu, "0 < mu < infinity"));
             }
         }
         if self.turns == Some(0) {

@@ -16,3 +16,5 @@ pub type Kilograms = f64;
 pub type KilogramsPerCubicMeter = f64;
 /// Energy, J.
 pub type Joules = f64;
+/// Force, N.
+pub type Newtons = f64;

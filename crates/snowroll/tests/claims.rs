@@ -159,7 +159,7 @@ fn fn7_stall_in_first_turn_notices_a_turn_model_with_too_much_snow() {
     let wrong = lab().with_runner(|kind, s, opts| {
         (kind == ModelKind::Turns).then(|| {
             let mut f = ScenarioFile::from(*s);
-            f.snow_depth_m *= 1.02;
+            f.snow_depth *= 1.02;
             TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
         })
     });
@@ -219,7 +219,7 @@ fn snowless_limit_notices_a_model_whose_bare_slope_acceleration_is_wrong() {
     let wrong = lab().with_runner(|kind, s, opts| {
         (kind == ModelKind::Energy).then(|| {
             let mut f = ScenarioFile::from(*s);
-            f.g_m_s2 *= 1.001;
+            f.g *= 1.001;
             ModelKind::Energy.build().simulate(&Scenario::new(f)?, opts)
         })
     });
@@ -264,7 +264,7 @@ fn long_run_refutations_need_both_turn_models_to_reach_the_derived_limits() {
         &lab().with_long_run(true, free),
     );
     // Both turn models on 20 % deeper snow: v²/(πGk²b) is 0.6, not 1/2.
-    let deep = scenario(|f| f.snow_depth_m *= 1.2);
+    let deep = scenario(|f| f.snow_depth *= 1.2);
     let wrong = lab()
         .with_long_run(false, long_run(ModelKind::Turns, &deep))
         .with_long_run(true, long_run(ModelKind::TurnsExact, &deep));
@@ -362,7 +362,7 @@ fn circular_checks_notice_wrong_coefficients() {
     let wrong = lab().with_runner(|kind, s, opts| {
         (kind == ModelKind::TorqueCm).then(|| {
             let mut f = ScenarioFile::from(*s);
-            f.g_m_s2 *= 1.001;
+            f.g *= 1.001;
             ModelKind::TorqueCm
                 .build()
                 .simulate(&Scenario::new(f)?, opts)
@@ -376,7 +376,7 @@ fn app_a_notices_a_snowless_model_with_the_wrong_acceleration() {
     let wrong = lab().with_runner(|kind, s, opts| {
         (kind == ModelKind::Snowless).then(|| {
             let mut f = ScenarioFile::from(*s);
-            f.g_m_s2 *= 1.01;
+            f.g *= 1.01;
             ModelKind::Snowless
                 .build()
                 .simulate(&Scenario::new(f)?, opts)

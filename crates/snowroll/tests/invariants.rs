@@ -70,10 +70,10 @@ fn scenario() -> impl Strategy<Value = Scenario> {
         .prop_map(|(lr0, lratio, alpha, v0)| {
             let r0 = 10f64.powf(lr0);
             Scenario::new(ScenarioFile {
-                slope_deg: alpha,
-                snow_depth_m: r0 * 10f64.powf(lratio),
-                r0_m: r0,
-                v0_m_s: v0,
+                alpha_deg: alpha,
+                snow_depth: r0 * 10f64.powf(lratio),
+                r0,
+                v0,
                 ..ScenarioFile::default()
             })
             .expect("drawn inside every range")

@@ -29,7 +29,7 @@ const INK_MAX_RGB_SUM: u32 = 200;
 
 fn scenario(b: f64) -> Scenario {
     Scenario::new(ScenarioFile {
-        snow_depth_m: b,
+        snow_depth: b,
         ..ScenarioFile::default()
     })
     .unwrap()
@@ -119,8 +119,8 @@ fn provenance() -> Provenance {
     Provenance {
         software: format!("snowroll {VERSION}"),
         params: vec![
-            ("slope_deg".into(), "30".into()),
-            ("snow_depth_m".into(), "0.01".into()),
+            ("alpha_deg".into(), "30".into()),
+            ("snow_depth".into(), "0.01".into()),
         ],
     }
 }
@@ -168,7 +168,7 @@ fn png_is_drawn_with_the_embedded_font_and_records_provenance() {
         .map(|t| t.get_text().unwrap())
         .collect();
     assert!(texts.iter().any(|t| t.contains(VERSION)), "{texts:?}");
-    assert!(texts.iter().any(|t| t.contains("snow_depth_m = 0.01")));
+    assert!(texts.iter().any(|t| t.contains("snow_depth = 0.01")));
     let mut buf = vec![0; reader.output_buffer_size().unwrap()];
     let frame = reader.next_frame(&mut buf).unwrap();
     assert_eq!(frame.color_type, png::ColorType::Rgb);
@@ -243,10 +243,10 @@ fn csv_keeps_every_point_even_those_a_log_axis_cannot_draw() {
     .with_series(Series::new("eq. (4)", pts.clone()));
     assert_eq!(chart.omitted_points(), 2);
     let fig = Figure::new(chart, "caption");
-    let meta = Metadata::new("t").param("slope_deg", 30);
+    let meta = Metadata::new("t").param("alpha_deg", 30);
     let csv = figure_csv(&fig, &meta).unwrap();
     assert!(csv.starts_with(&format!("# snowroll {VERSION}\n")));
-    assert!(csv.contains("# slope_deg = 30\n"));
+    assert!(csv.contains("# alpha_deg = 30\n"));
     assert!(csv.contains("# points_not_drawn = 2\n"));
     let body: String = csv
         .lines()
@@ -293,7 +293,7 @@ fn small_report() -> Report {
     let runs = circular_runs();
     let anim_run = run(ModelKind::Energy, &s, 2.0, Sampling::Every(0.02));
     Report {
-        metadata: Metadata::new("Test report").param("slope_deg", 30),
+        metadata: Metadata::new("Test report").param("alpha_deg", 30),
         claims: vec![
             ClaimResult {
                 claim: &HOLDS,
@@ -331,7 +331,7 @@ fn small_report() -> Report {
                 )),
                 "Radii.",
             )
-            .param("snow_depth_m", 0.01),
+            .param("snow_depth", 0.01),
         ],
         animation: Some(Animation::from_trajectory(&anim_run, &s, 300).unwrap()),
     }
@@ -380,10 +380,10 @@ fn write_to_produces_every_file_each_recording_version_and_parameters() {
     ] {
         let text = read(dir.path(), name);
         assert!(text.contains(&tag), "{name} lacks the version");
-        assert!(text.contains("slope_deg"), "{name} lacks the parameters");
+        assert!(text.contains("alpha_deg"), "{name} lacks the parameters");
     }
     // A figure's own parameters replace the report's in its files.
-    assert!(read(dir.path(), "data/radius.csv").contains("# snow_depth_m = 0.01"));
+    assert!(read(dir.path(), "data/radius.csv").contains("# snow_depth = 0.01"));
 }
 
 #[test]
@@ -391,7 +391,7 @@ fn claims_json_carries_verdicts_errata_and_mismatches() {
     let report = small_report();
     let v: serde_json::Value = serde_json::from_str(&report.claims_json().unwrap()).unwrap();
     assert_eq!(v["software"], format!("snowroll {VERSION}"));
-    assert_eq!(v["params"]["slope_deg"], "30");
+    assert_eq!(v["params"]["alpha_deg"], "30");
     let claims = v["claims"].as_array().unwrap();
     assert_eq!(claims.len(), 2);
     assert_eq!(claims[0]["id"], "demo-holds");
@@ -418,7 +418,10 @@ fn html_is_self_contained_and_holds_claims_figures_and_animation() {
     ] {
         assert!(!html.contains(needle), "found {needle}");
     }
-    assert!(html.contains("<body data-figures=\"2\" data-claims=\"2\">"));
+    assert!(html.contains(&format!(
+        "<body data-figures=\"2\" data-claims=\"2\" data-models=\"{}\">",
+        snowroll::ModelKind::ALL.len()
+    )));
     assert!(html.contains("id=\"claims-table\""));
     // Text is escaped, verdicts are in words as well as colour.
     assert!(html.contains("A &lt;b&gt;bold&lt;/b&gt; claim &amp; more"));
@@ -509,6 +512,9 @@ fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajecto
                 a_m_s2: 0.0,
                 r_m: rk,
                 mass_kg: 1.0,
+                normal_n: 1.0,
+                friction_n: 0.0,
+                friction_ratio: 0.0,
             });
             states.push(TurnState {
                 turn: k,
@@ -527,6 +533,8 @@ fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajecto
             reason: StopReason::Turns,
             t_s: end.t_s,
             x_m: end.x_m,
+            v_m_s: end.v_m_s,
+            turn: None,
         },
         stats: Default::default(),
     }

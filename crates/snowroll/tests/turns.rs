@@ -50,10 +50,10 @@ const SAME_EQUATION_TOL: f64 = 1e-14;
 /// 1e-14 (≲ 1e-13 relative) over the slope W′ ≳ 1e-3 G r0 at the root.
 const STALL_THETA_TOL: f64 = 1e-10;
 
-fn scenario(slope_deg: f64, snow_depth_m: f64) -> Scenario {
+fn scenario(alpha_deg: f64, snow_depth: f64) -> Scenario {
     Scenario::new(ScenarioFile {
-        slope_deg,
-        snow_depth_m,
+        alpha_deg,
+        snow_depth,
         ..ScenarioFile::default()
     })
     .unwrap()
@@ -317,10 +317,10 @@ proptest! {
     fn eq58_eq64_eq69_are_one_equation_and_the_turns_model(
         theta in 0.0..2.0 * PI,
         v in 0.0..20.0f64,
-        slope_deg in 1.0..89.0f64,
+        alpha_deg in 1.0..89.0f64,
         b in 0.0..0.05f64,
     ) {
-        let s = scenario(slope_deg, b);
+        let s = scenario(alpha_deg, b);
         let forms = note_first_turn_accelerations(&s, theta, v);
         let model = TurnDynamics::new(TurnVariant::Paper, s.initial_radius(), b, s.g_along(), s.g_normal())
             .acceleration(theta, v / s.initial_radius());

@@ -34,13 +34,13 @@ pub fn model(a: &ScenarioArgs, choices: &[ModelKind]) -> Result<ModelKind> {
 pub fn scenario(a: &ScenarioArgs) -> Result<Scenario, ParamError> {
     let d = ScenarioFile::default();
     Scenario::new(ScenarioFile {
-        slope_deg: a.alpha_deg.unwrap_or(d.slope_deg),
-        snow_depth_m: a.snow_depth.unwrap_or(d.snow_depth_m),
-        r0_m: a.r0.unwrap_or(d.r0_m),
-        g_m_s2: a.g.unwrap_or(d.g_m_s2),
-        density_kg_m3: a.density.unwrap_or(d.density_kg_m3),
-        length_m: a.length.unwrap_or(d.length_m),
-        v0_m_s: a.v0.unwrap_or(d.v0_m_s),
+        alpha_deg: a.alpha_deg.unwrap_or(d.alpha_deg),
+        snow_depth: a.snow_depth.unwrap_or(d.snow_depth),
+        r0: a.r0.unwrap_or(d.r0),
+        g: a.g.unwrap_or(d.g),
+        density: a.density.unwrap_or(d.density),
+        length: a.length.unwrap_or(d.length),
+        v0: a.v0.unwrap_or(d.v0),
     })
 }
 
@@ -64,5 +64,8 @@ pub fn options(
             ..d.tolerances
         },
         sampling,
+        mu: a.mu,
+        collision: a.collision.unwrap_or(d.collision),
+        ..d
     }
 }

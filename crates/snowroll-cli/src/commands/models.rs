@@ -54,7 +54,7 @@ struct Listing {
 
 fn listing() -> Listing {
     let d = ScenarioFile::default();
-    let (b, r0) = (d.snow_depth_m, d.r0_m);
+    let (b, r0) = (d.snow_depth, d.r0);
     let models = ModelKind::ALL
         .into_iter()
         .map(|kind| {

@@ -17,7 +17,7 @@ use crate::sink::Sink;
 pub fn run(flags: SimulateArgs) -> Result<()> {
     let args = match &flags.output.config {
         Some(path) => {
-            let file = config::load(path)?;
+            let file = config::load(path, config::Origin::Simulate)?;
             flags.over(file)
         }
         None => flags,
@@ -116,9 +116,8 @@ fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Optio
         ));
     }
     let mut note = format!(
-        "run stopped at t = {} s, x = {} m: {}",
-        format_number(stop.t_s),
-        format_number(stop.x_m),
+        "run stopped at {}: {}",
+        stop.place(),
         stop.reason.describe()
     );
     if stop.reason == StopReason::DoesNotStart {

@@ -25,7 +25,7 @@ const NOTE_EQ79_MEAN_OVER_G: f64 = 4.0 / 9.0;
 pub fn run(flags: TurnsArgs) -> Result<()> {
     let args = match flags.output.config.clone() {
         Some(path) => {
-            let file = config::load(&path)?;
+            let file = config::load(&path, config::Origin::Turns)?;
             flags.over(file, &path)?
         }
         None => flags,
@@ -91,9 +91,8 @@ fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
         return None;
     }
     let mut note = format!(
-        "run stopped at t = {} s, x = {} m: {}, after {} of the {wanted} turns asked for",
-        format_number(stop.t_s),
-        format_number(stop.x_m),
+        "run stopped at {}: {}, after {} of the {wanted} turns asked for",
+        stop.place(),
         stop.reason.describe(),
         table.rows.len()
     );

@@ -171,19 +171,32 @@ pub(crate) fn clear(dir: &Path) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Non-finite numbers in the data rows of CSV text.
+/// Non-finite numbers in the data rows of CSV text. The friction ratio
+/// |F|/N is documented as `inf` when N <= 0 (the log has left the ground),
+/// the one non-finite value the writers let through (`INFINITE_COLUMNS` of
+/// the library's guard), so `inf` there is not counted.
 pub(crate) fn non_finite_csv(text: &str) -> Option<String> {
-    text.lines()
-        .filter(|l| !l.starts_with('#'))
-        .flat_map(|l| l.split(','))
-        .find(|field| {
+    let mut columns: Vec<&str> = Vec::new();
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        if columns.is_empty() {
+            columns = line.split(',').collect();
+            continue;
+        }
+        for (i, field) in line.split(',').enumerate() {
             let f = field.trim().to_ascii_lowercase();
-            matches!(
-                f.as_str(),
-                "inf" | "-inf" | "+inf" | "nan" | "-nan" | "infinity" | "-infinity"
-            )
-        })
-        .map(str::to_string)
+            let column = columns.get(i).copied().unwrap_or("");
+            let allowed = f == "inf" && column.ends_with("friction_ratio");
+            if !allowed
+                && matches!(
+                    f.as_str(),
+                    "inf" | "-inf" | "+inf" | "nan" | "-nan" | "infinity" | "-infinity"
+                )
+            {
+                return Some(format!("{field} in column {column}"));
+            }
+        }
+    }
+    None
 }
 
 /// What the campaign saw.

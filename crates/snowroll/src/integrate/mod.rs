@@ -20,6 +20,29 @@
 //! to `t_end` or to a stopping event, and reports every accepted step and
 //! every event to an [`Observer`], which decides what is recorded (nothing,
 //! every step, or values at requested times from the dense output).
+//!
+//! # Example: a ball dropped from 1 m, stopped when it reaches the floor
+//! ```
+//! use snowroll::integrate::{integrate, Direction, NoObserver, OdeSystem, Termination, Tolerances};
+//!
+//! /// y = [height, velocity]; one event: the height falling through zero.
+//! struct Drop { g: f64 }
+//! impl OdeSystem<2> for Drop {
+//!     fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
+//!         *dy = [y[1], -self.g];
+//!     }
+//!     fn event_count(&self) -> usize { 1 }
+//!     fn event(&self, _i: usize, _t: f64, y: &[f64; 2]) -> f64 { y[0] }
+//!     fn event_direction(&self, _i: usize) -> Direction { Direction::Falling }
+//! }
+//!
+//! let g = 9.81;
+//! let end = integrate(&mut Drop { g }, 0.0, [1.0, 0.0], 10.0, &Tolerances::default(), &mut NoObserver)?;
+//! assert_eq!(end.termination, Termination::Event { index: 0 });
+//! // Free fall: the floor is reached at t = sqrt(2 h / g), located on the dense output.
+//! assert!((end.t - (2.0 / g).sqrt()).abs() < 1e-12);
+//! # Ok::<(), snowroll::SimError>(())
+//! ```
 
 mod dense;
 mod dop853;

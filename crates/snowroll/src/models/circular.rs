@@ -12,7 +12,8 @@
 
 use std::f64::consts::PI;
 
-use super::ode::{run_ode, OdeModel};
+use super::contact::{circular_forces, ContactForces};
+use super::ode::{run_ode, stopped_at_start, OdeModel};
 use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, OdeSystem};
@@ -254,14 +255,39 @@ impl CircularModel {
 /// Event indices of [`CircularSystem`].
 const EVENT_STALL: usize = 0;
 const EVENT_DISTANCE: usize = 1;
+const EVENT_HOP: usize = 2;
+const EVENT_SLIP: usize = 3;
 
-/// The ODE `x' = v, v' = a(x, v)` of one scenario.
+/// The ODE `x' = v, v' = a(x, v)` of one scenario, with the events stall
+/// (v = 0), end distance, hop (N = 0) and slip (|F| = μN),
+/// `docs/contact-forces.md` §2, §5.
 struct CircularSystem {
     coeffs: Coefficients,
     scenario: Scenario,
     /// `coeffs` bound to `scenario`, for the right-hand side.
     accel: Acceleration,
     x_end: Option<f64>,
+    mu: Option<f64>,
+    stop_on_hop: bool,
+}
+
+impl CircularSystem {
+    fn forces(&self, y: &[f64; 2]) -> ContactForces {
+        let (x, v) = (y[0], y[1]);
+        circular_forces(&self.coeffs, &self.scenario, x, v, self.accel.at(x, v))
+    }
+
+    /// Hop or slip already at the state `y` (the events see crossings only).
+    fn stops_at(&self, y: &[f64; 2]) -> Option<StopReason> {
+        let f = self.forces(y);
+        if self.stop_on_hop && f.normal_n <= 0.0 {
+            Some(StopReason::Hop)
+        } else if self.mu.is_some_and(|mu| f.slip_margin(mu) >= 0.0) {
+            Some(StopReason::Slip)
+        } else {
+            None
+        }
+    }
 }
 
 impl OdeSystem<2> for CircularSystem {
@@ -271,23 +297,28 @@ impl OdeSystem<2> for CircularSystem {
     }
 
     fn event_count(&self) -> usize {
-        if self.x_end.is_some() {
-            2
-        } else {
-            1
-        }
+        4
     }
 
     fn event(&self, index: usize, _t: f64, y: &[f64; 2]) -> f64 {
         match index {
             EVENT_STALL => y[1],
-            _ => y[0] - self.x_end.unwrap_or(f64::INFINITY),
+            EVENT_DISTANCE => match self.x_end {
+                Some(x_end) => y[0] - x_end,
+                None => -1.0,
+            },
+            EVENT_HOP if self.stop_on_hop => self.forces(y).normal_n,
+            EVENT_HOP => 1.0,
+            _ => match self.mu {
+                Some(mu) => self.forces(y).slip_margin(mu),
+                None => -1.0,
+            },
         }
     }
 
     fn event_direction(&self, index: usize) -> Direction {
         match index {
-            EVENT_STALL => Direction::Falling,
+            EVENT_STALL | EVENT_HOP => Direction::Falling,
             _ => Direction::Rising,
         }
     }
@@ -305,21 +336,27 @@ impl OdeModel<2> for CircularSystem {
         } else {
             (s.initial_radius(), s.initial_mass())
         };
+        let a = self.accel.at(x, v);
+        let forces = circular_forces(&self.coeffs, s, x, v, a);
         Sample {
             t_s: t,
             x_m: x,
             v_m_s: v,
-            a_m_s2: self.accel.at(x, v),
+            a_m_s2: a,
             r_m: r,
             mass_kg,
+            normal_n: forces.normal_n,
+            friction_n: forces.friction_n,
+            friction_ratio: forces.friction_ratio(),
         }
     }
 
     fn stop_reason(&self, event: usize) -> StopReason {
-        if event == EVENT_DISTANCE {
-            StopReason::Distance
-        } else {
-            StopReason::Stalled
+        match event {
+            EVENT_DISTANCE => StopReason::Distance,
+            EVENT_HOP => StopReason::Hop,
+            EVENT_SLIP => StopReason::Slip,
+            _ => StopReason::Stalled,
         }
     }
 }
@@ -338,6 +375,8 @@ impl Model for CircularModel {
             scenario: *scenario,
             accel: Acceleration::new(&coeffs, scenario),
             x_end: opts.x_end,
+            mu: opts.mu,
+            stop_on_hop: opts.stop_on_hop,
         };
         let y0 = [0.0, scenario.initial_speed()];
         // fn. 7: from rest the log moves only if a(0) > 0.
@@ -351,9 +390,14 @@ impl Model for CircularModel {
                     reason: StopReason::DoesNotStart,
                     t_s: 0.0,
                     x_m: 0.0,
+                    v_m_s: 0.0,
+                    turn: None,
                 },
                 stats: Default::default(),
             });
+        }
+        if let Some(reason) = system.stops_at(&y0) {
+            return Ok(stopped_at_start(self.kind(), &system, y0, reason));
         }
         run_ode(self.kind(), &mut system, y0, opts)
     }

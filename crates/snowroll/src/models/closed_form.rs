@@ -15,7 +15,8 @@
 
 use std::f64::consts::PI;
 
-use super::{Model, ModelKind};
+use super::contact::circular_forces;
+use super::{Derivation, Model, ModelKind};
 use crate::error::SimError;
 use crate::quadrature;
 use crate::scenario::Scenario;
@@ -220,13 +221,23 @@ impl Model for LoneyModel {
         };
         let r0 = scenario.initial_radius();
         let b = scenario.snow_depth();
-        let sample = |t: f64, x: f64| Sample {
-            t_s: t,
-            x_m: x,
-            v_m_s: cf.speed(x),
-            a_m_s2: cf.acceleration(x),
-            r_m: (r0 * r0 + b * x / PI).sqrt(),
-            mass_kg: crate::physics::mass_at(scenario, x),
+        // Loney's solution is that of eq. (4): its contact forces are those of
+        // the circular model of eq. (4) on the closed-form trajectory.
+        let eq4 = Derivation::TorqueAboutCentre.coefficients();
+        let sample = |t: f64, x: f64| {
+            let (v, a) = (cf.speed(x), cf.acceleration(x));
+            let forces = circular_forces(&eq4, scenario, x, v, a);
+            Sample {
+                t_s: t,
+                x_m: x,
+                v_m_s: v,
+                a_m_s2: a,
+                r_m: (r0 * r0 + b * x / PI).sqrt(),
+                mass_kg: crate::physics::mass_at(scenario, x),
+                normal_n: forces.normal_n,
+                friction_n: forces.friction_n,
+                friction_ratio: forces.friction_ratio(),
+            }
         };
         let mut samples = Vec::with_capacity(times.len());
         let (mut x_a, mut t_a) = (0.0, 0.0);
@@ -251,6 +262,8 @@ impl Model for LoneyModel {
                 reason,
                 t_s: t_stop,
                 x_m: x_stop,
+                v_m_s: cf.speed(x_stop),
+                turn: None,
             },
             stats: Default::default(),
         })

@@ -5,6 +5,7 @@
 
 mod circular;
 mod closed_form;
+mod contact;
 pub mod exact_geometry;
 mod ode;
 mod tolerance;
@@ -13,15 +14,17 @@ mod validity;
 
 pub use circular::{CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
+pub use contact::{circular_forces, ContactForces};
 pub use exact_geometry::SectorBody;
 pub use tolerance::{
     atol_bound, check_tolerances, default_atol, state_scale, tolerance_warning, ATOL_MAX_FRACTION,
     CLAIMS_ACCURACY,
 };
 pub use turn_by_turn::{
-    check_turn_scale, collision_speed, first_turn_stall_slope, kinetic_energy_at_turn_end,
-    kinetic_energy_at_turn_start, run_turns, InTurnCoefficients, TurnCheckpoint, TurnDynamics,
-    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
+    charged_collision_speed, check_turn_scale, collision_speed, first_turn_stall_slope,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, CollisionModel,
+    ContactRange, InTurnCoefficients, PivotImpact, TurnCheckpoint, TurnDynamics, TurnModel,
+    TurnRow, TurnSummary, TurnTable, TurnVariant,
 };
 pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,

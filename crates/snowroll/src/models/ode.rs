@@ -113,6 +113,29 @@ impl<const N: usize, M: OdeModel<N>> Observer<M, N> for Recorder<'_> {
     fn event(&mut self, _model: &M, _event: &EventRecord<N>) {}
 }
 
+/// The trajectory of a run that stops at its start, `y0` at t = 0, for `reason`.
+pub(crate) fn stopped_at_start<const N: usize, M: OdeModel<N>>(
+    kind: ModelKind,
+    system: &M,
+    y0: [f64; N],
+    reason: StopReason,
+) -> Trajectory {
+    let first = system.sample(0.0, &y0);
+    Trajectory {
+        model: kind,
+        samples: vec![first],
+        turn_states: system.turn_state(0.0, &y0).into_iter().collect(),
+        stop: Stop {
+            reason,
+            t_s: 0.0,
+            x_m: first.x_m,
+            v_m_s: first.v_m_s,
+            turn: system.turn_state(0.0, &y0),
+        },
+        stats: Default::default(),
+    }
+}
+
 /// Runs `system` from `y0` at t = 0 under `opts` and packages the result.
 pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
     kind: ModelKind,
@@ -127,7 +150,7 @@ pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
         Termination::EndTime => StopReason::EndTime,
         Termination::Event { index } => system.stop_reason(index),
     };
-    let x_m = system.sample(outcome.t, &outcome.y).x_m;
+    let last = system.sample(outcome.t, &outcome.y);
     Ok(Trajectory {
         model: kind,
         samples: recorder.samples,
@@ -135,7 +158,9 @@ pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
         stop: Stop {
             reason,
             t_s: outcome.t,
-            x_m,
+            x_m: last.x_m,
+            v_m_s: last.v_m_s,
+            turn: system.turn_state(outcome.t, &outcome.y),
         },
         stats: outcome.stats,
     })

@@ -130,7 +130,7 @@ mod tests {
         assert_eq!(atol_bound(ModelKind::Turns, &s), Some(1e-3));
         assert_eq!(atol_bound(ModelKind::Loney, &s), None);
         let big = Scenario::new(ScenarioFile {
-            r0_m: 1e20,
+            r0: 1e20,
             ..ScenarioFile::default()
         })
         .unwrap();
@@ -145,7 +145,7 @@ mod tests {
         assert_eq!(default_atol(ModelKind::TorqueCm, &s).to_bits(), d.to_bits());
         assert_eq!(default_atol(ModelKind::Turns, &s).to_bits(), d.to_bits());
         let tiny = Scenario::new(ScenarioFile {
-            r0_m: 1e-6,
+            r0: 1e-6,
             ..ScenarioFile::default()
         })
         .unwrap();

@@ -151,9 +151,9 @@ impl std::fmt::Display for ValidityWarning {
 /// use snowroll::{validity_warnings, ModelKind, Scenario, ScenarioFile};
 /// assert!(validity_warnings(ModelKind::Turns, &Scenario::default()).is_empty());
 /// let thick = Scenario::new(ScenarioFile {
-///     slope_deg: 40.0,
-///     snow_depth_m: 0.2,
-///     r0_m: 0.15,
+///     alpha_deg: 40.0,
+///     snow_depth: 0.2,
+///     r0: 0.15,
 ///     ..ScenarioFile::default()
 /// })?;
 /// let w = validity_warnings(ModelKind::Turns, &thick);
@@ -241,7 +241,7 @@ mod tests {
 
     #[test]
     fn thick_snow_warns_every_thin_snow_model_but_not_the_exact_turns() {
-        let s = scenario(|f| f.snow_depth_m = 0.03);
+        let s = scenario(|f| f.snow_depth = 0.03);
         for kind in ModelKind::ALL {
             let warned = !validity_warnings(kind, &s).is_empty();
             assert_eq!(warned, kind != ModelKind::TurnsExact, "{kind}");
@@ -252,14 +252,14 @@ mod tests {
     fn turns_warns_where_the_turn_models_disagree_about_stalling() {
         // Thin snow (b/r0 = 0.1) on a slope between the two turn-0 stall
         // slopes (2.09° and 2.30°): only the disagreement warns.
-        let s = scenario(|f| f.slope_deg = 2.2);
+        let s = scenario(|f| f.alpha_deg = 2.2);
         let w = validity_warnings(ModelKind::Turns, &s);
         assert_eq!(w.len(), 1, "{w:?}");
         assert!(w[0].message.contains("part ways"));
         // Pushed, the comparison from rest does not apply.
         let s = scenario(|f| {
-            f.slope_deg = 2.2;
-            f.v0_m_s = 1.0;
+            f.alpha_deg = 2.2;
+            f.v0 = 1.0;
         });
         assert!(validity_warnings(ModelKind::Turns, &s).is_empty());
     }

@@ -10,6 +10,12 @@ use std::fmt;
 
 use serde::ser::{self, Serialize};
 
+/// Fields where `+inf` is a documented value rather than an overflow: the
+/// friction ratio |F|/N of a log that has left the ground (N <= 0), which no
+/// coefficient of friction can hold (`docs/contact-forces.md`). NaN and
+/// `-inf` are refused there too.
+pub const INFINITE_COLUMNS: [&str; 2] = ["friction_ratio", "max_friction_ratio"];
+
 /// A non-finite number found in a record about to be written.
 #[derive(Debug, Clone, PartialEq)]
 pub struct NonFinite {
@@ -109,7 +115,9 @@ impl Scan {
     }
 
     fn number(&self, value: f64) -> Result<(), Found> {
-        if value.is_finite() {
+        let field = self.path.rsplit(['.', ']']).next().unwrap_or("");
+        let documented_inf = value == f64::INFINITY && INFINITE_COLUMNS.contains(&field);
+        if value.is_finite() || documented_inf {
             Ok(())
         } else {
             Err(Found {

@@ -50,16 +50,19 @@ pub enum Format {
     Json,
 }
 
-/// Every parameter of a run, unit-suffixed, as recorded in outputs.
+/// Every parameter of a run, as recorded in outputs, in the one parameter
+/// vocabulary of [`ScenarioFile`] (the command line's long flags in
+/// snake_case). A config file may be an output of snowroll: reading these
+/// keys back reproduces the run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RunParams {
     /// The scenario.
     #[serde(flatten)]
     pub scenario: ScenarioFile,
     /// End time, s.
-    pub t_end_s: f64,
+    pub t_end: f64,
     /// End distance, m.
-    pub x_end_m: Option<f64>,
+    pub x_end: Option<f64>,
     /// Number of turns (turn models).
     pub turns: Option<u64>,
     /// Relative tolerance.
@@ -68,6 +71,16 @@ pub struct RunParams {
     pub atol: f64,
     /// Sampling, in words.
     pub sampling: String,
+    /// The spacing of a regular sampling grid, s (`--dt`), when one was asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dt: Option<f64>,
+    /// The requested sample times, s (`--times`), when they were given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub times: Option<Vec<f64>>,
+    /// Coefficient of static friction of the slip check; none = no check.
+    pub mu: Option<f64>,
+    /// How the turn models climb each new layer.
+    pub collision: crate::models::CollisionModel,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -80,10 +93,15 @@ pub struct RunParams {
 impl RunParams {
     /// Collects the parameters of a run.
     pub fn new(scenario: &Scenario, opts: &SimOptions) -> Self {
+        let (dt, times) = match &opts.sampling {
+            Sampling::Every(dt) => (Some(*dt), None),
+            Sampling::Times(ts) => (None, Some(ts.clone())),
+            Sampling::Steps | Sampling::Ends => (None, None),
+        };
         Self {
             scenario: ScenarioFile::from(*scenario),
-            t_end_s: opts.t_end,
-            x_end_m: opts.x_end,
+            t_end: opts.t_end,
+            x_end: opts.x_end,
             turns: opts.turns,
             rtol: opts.tolerances.rtol,
             atol: opts.tolerances.atol,
@@ -93,26 +111,32 @@ impl RunParams {
                 Sampling::Every(dt) => format!("every {} s", format_number(*dt)),
                 Sampling::Ends => "start and end".to_string(),
             },
+            dt,
+            times,
+            mu: opts.mu,
+            collision: opts.collision,
             warnings: Vec::new(),
             notes: Vec::new(),
         }
     }
 
-    /// `key = value` lines, in a fixed order.
+    /// `key = value` lines, in a fixed order, keys as in [`ScenarioFile`].
+    /// Numbers are written in Rust's shortest form that reads back to the
+    /// same `f64`, so a CSV header reproduces the run exactly.
     fn lines(&self) -> Vec<(String, String)> {
         let opt = |v: Option<f64>| v.map_or("none".to_string(), format_number);
         let n = format_number;
         let s = &self.scenario;
-        vec![
-            ("slope_deg".into(), n(s.slope_deg)),
-            ("snow_depth_m".into(), n(s.snow_depth_m)),
-            ("r0_m".into(), n(s.r0_m)),
-            ("g_m_s2".into(), n(s.g_m_s2)),
-            ("density_kg_m3".into(), n(s.density_kg_m3)),
-            ("length_m".into(), n(s.length_m)),
-            ("v0_m_s".into(), n(s.v0_m_s)),
-            ("t_end_s".into(), n(self.t_end_s)),
-            ("x_end_m".into(), opt(self.x_end_m)),
+        let mut lines: Vec<(String, String)> = vec![
+            ("alpha_deg".into(), n(s.alpha_deg)),
+            ("snow_depth".into(), n(s.snow_depth)),
+            ("r0".into(), n(s.r0)),
+            ("g".into(), n(s.g)),
+            ("density".into(), n(s.density)),
+            ("length".into(), n(s.length)),
+            ("v0".into(), n(s.v0)),
+            ("t_end".into(), n(self.t_end)),
+            ("x_end".into(), opt(self.x_end)),
             (
                 "turns".into(),
                 self.turns.map_or("none".to_string(), |n| n.to_string()),
@@ -120,11 +144,21 @@ impl RunParams {
             ("rtol".into(), format!("{:e}", self.rtol)),
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
-        ]
-        .into_iter()
-        .chain(self.warnings.iter().map(|w| ("warning".into(), w.clone())))
-        .chain(self.notes.iter().map(|n| ("note".into(), n.clone())))
-        .collect()
+            ("collision".into(), self.collision.to_string()),
+        ];
+        if let Some(mu) = self.mu {
+            lines.push(("mu".into(), n(mu)));
+        }
+        if let Some(dt) = self.dt {
+            lines.push(("dt".into(), n(dt)));
+        }
+        if let Some(times) = &self.times {
+            let list: Vec<String> = times.iter().map(|t| n(*t)).collect();
+            lines.push(("times".into(), list.join(",")));
+        }
+        lines.extend(self.warnings.iter().map(|w| ("warning".into(), w.clone())));
+        lines.extend(self.notes.iter().map(|m| ("note".into(), m.clone())));
+        lines
     }
 }
 
@@ -137,6 +171,9 @@ struct TurnRow {
     a_m_s2: f64,
     r_m: f64,
     mass_kg: f64,
+    normal_n: f64,
+    friction_n: f64,
+    friction_ratio: f64,
     turn: u64,
     theta_rad: f64,
     omega_rad_s: f64,
@@ -151,6 +188,9 @@ impl TurnRow {
             a_m_s2: s.a_m_s2,
             r_m: s.r_m,
             mass_kg: s.mass_kg,
+            normal_n: s.normal_n,
+            friction_n: s.friction_n,
+            friction_ratio: s.friction_ratio,
             turn: k.turn,
             theta_rad: k.theta_rad,
             omega_rad_s: k.omega_rad_s,
@@ -170,6 +210,13 @@ struct JsonStop {
     description: &'static str,
     t_s: f64,
     x_m: f64,
+    v_m_s: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    turn: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    theta_rad: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    omega_rad_s: Option<f64>,
 }
 
 impl From<Stop> for JsonStop {
@@ -179,6 +226,10 @@ impl From<Stop> for JsonStop {
             description: s.reason.describe(),
             t_s: s.t_s,
             x_m: s.x_m,
+            v_m_s: s.v_m_s,
+            turn: s.turn.map(|k| k.turn),
+            theta_rad: s.turn.map(|k| k.theta_rad),
+            omega_rad_s: s.turn.map(|k| k.omega_rad_s),
         }
     }
 }
@@ -214,14 +265,22 @@ pub(crate) fn write_csv_header(
     for (k, v) in params.lines() {
         writeln!(w, "# {k} = {v}")?;
     }
+    let turn = stop.turn.map_or(String::new(), |k| {
+        format!(
+            " turn = {} theta_rad = {} omega_rad_s = {}",
+            k.turn, k.theta_rad, k.omega_rad_s
+        )
+    });
     writeln!(
         w,
-        "# stop = {} at t_s = {} x_m = {}: {}",
+        "# stop = {} at t_s = {} x_m = {} v_m_s = {}{}: {}",
         serde_json::to_value(stop.reason)?
             .as_str()
             .unwrap_or_default(),
         format_number(stop.t_s),
         format_number(stop.x_m),
+        format_number(stop.v_m_s),
+        turn,
         stop.reason.describe()
     )?;
     Ok(())
@@ -250,7 +309,17 @@ pub fn write_trajectory(
                     csv.serialize(record)?;
                 }
             } else if traj.samples.is_empty() {
-                csv.write_record(["t_s", "x_m", "v_m_s", "a_m_s2", "r_m", "mass_kg"])?;
+                csv.write_record([
+                    "t_s",
+                    "x_m",
+                    "v_m_s",
+                    "a_m_s2",
+                    "r_m",
+                    "mass_kg",
+                    "normal_n",
+                    "friction_n",
+                    "friction_ratio",
+                ])?;
             } else {
                 for (row, s) in (1..).zip(&traj.samples) {
                     check_finite(s, Some(row))?;
@@ -305,12 +374,17 @@ mod tests {
                 a_m_s2: 3.27,
                 r_m: 0.1,
                 mass_kg: 12.566,
+                normal_n: 106.8,
+                friction_n: 20.5,
+                friction_ratio: 20.5 / 106.8,
             }],
             turn_states: vec![],
             stop: Stop {
                 reason: StopReason::EndTime,
                 t_s: 0.0,
                 x_m: 0.0,
+                v_m_s: 0.0,
+                turn: None,
             },
             stats: Default::default(),
         }
@@ -325,9 +399,12 @@ mod tests {
         let mut lines = text.lines();
         assert!(lines.next().unwrap().starts_with("# snowroll "));
         assert!(text.contains("# model = torque-cm (eq. (4))"));
-        assert!(text.contains("# slope_deg = 30"));
+        assert!(text.contains("# alpha_deg = 30"));
         let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
-        assert_eq!(header, "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg");
+        assert_eq!(
+            header,
+            "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio"
+        );
     }
 
     #[test]
@@ -341,7 +418,7 @@ mod tests {
         }
         assert_eq!(v["model"]["id"], "torque-cm");
         assert_eq!(v["stop"]["reason"], "end-time");
-        assert_eq!(v["params"]["snow_depth_m"], 0.01);
+        assert_eq!(v["params"]["snow_depth"], 0.01);
         assert_eq!(v["samples"][0]["a_m_s2"], 3.27);
     }
 

@@ -99,7 +99,7 @@ pub fn write_turn_table(
 }
 
 /// The CSV columns of [`TurnRow`], for the header of an empty table.
-const COLUMNS: [&str; 12] = [
+const COLUMNS: [&str; 15] = [
     "turn",
     "t_start_s",
     "x_start_m",
@@ -112,6 +112,9 @@ const COLUMNS: [&str; 12] = [
     "min_a_m_s2",
     "max_a_m_s2",
     "mean_a_with_collision_m_s2",
+    "min_normal_n",
+    "min_normal_over_mg",
+    "max_friction_ratio",
 ];
 
 #[cfg(test)]

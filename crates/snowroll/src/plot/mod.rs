@@ -224,12 +224,12 @@ pub enum Legend {
 pub struct Provenance {
     /// Program and version, e.g. `snowroll 0.1.0`.
     pub software: String,
-    /// Parameters as `(key, value)` pairs, keys unit-suffixed (`slope_deg`).
+    /// Parameters as `(key, value)` pairs, keys unit-suffixed (`alpha_deg`).
     pub params: Vec<(String, String)>,
 }
 
 impl Provenance {
-    /// `snowroll 0.1.0 · slope_deg = 30, …` on one line.
+    /// `snowroll 0.1.0 · alpha_deg = 30, …` on one line.
     pub fn line(&self) -> String {
         let params = self
             .params

@@ -53,11 +53,11 @@ pub struct Animation {
     /// Where the model is in the note.
     pub equation: String,
     /// Slope angle α, degrees.
-    pub slope_deg: f64,
+    pub alpha_deg: f64,
     /// Snow depth b, m.
-    pub snow_depth_m: f64,
+    pub snow_depth: f64,
     /// Initial radius r0, m.
-    pub r0_m: f64,
+    pub r0: f64,
     /// `true` for the circular models (the log stays round: the accreted
     /// snow is spread evenly), `false` for the turn models (the snow of the
     /// current turn is an arc of depth b on a round log of the turn's radius).
@@ -124,9 +124,9 @@ impl Animation {
             ),
             model: traj.model.id().to_string(),
             equation: traj.model.equation().to_string(),
-            slope_deg: crate::scenario::ScenarioFile::from(*scenario).slope_deg,
-            snow_depth_m: scenario.snow_depth(),
-            r0_m: scenario.initial_radius(),
+            alpha_deg: crate::scenario::ScenarioFile::from(*scenario).alpha_deg,
+            snow_depth: scenario.snow_depth(),
+            r0: scenario.initial_radius(),
             circular,
             turn_start_radius_m,
             frames: thin(&all, max_frames),
@@ -155,7 +155,7 @@ impl Animation {
         if self.frames.windows(2).any(|w| w[1].t_s < w[0].t_s) {
             return bad("frame times must not decrease");
         }
-        if self.frames.iter().any(|f| f.r_m <= 0.0) || self.r0_m <= 0.0 {
+        if self.frames.iter().any(|f| f.r_m <= 0.0) || self.r0 <= 0.0 {
             return bad("radii must be positive");
         }
         let last_turn = self.frames.iter().map(|f| f.turn).max().unwrap_or(0);
@@ -178,9 +178,9 @@ impl Animation {
             "title": self.title,
             "model": self.model,
             "equation": self.equation,
-            "slope_deg": self.slope_deg,
-            "b_m": self.snow_depth_m,
-            "r0_m": self.r0_m,
+            "alpha_deg": self.alpha_deg,
+            "b_m": self.snow_depth,
+            "r0": self.r0,
             "circular": self.circular,
             "ring_r": self.turn_start_radius_m.iter().map(|&r| round_sig(r)).collect::<Vec<_>>(),
             "t": col(|f| f.t_s),
@@ -204,9 +204,9 @@ impl Animation {
                 "model".to_string(),
                 format!("{} ({})", self.model, self.equation),
             ),
-            ("slope_deg".to_string(), self.slope_deg.to_string()),
-            ("snow_depth_m".to_string(), self.snow_depth_m.to_string()),
-            ("r0_m".to_string(), self.r0_m.to_string()),
+            ("alpha_deg".to_string(), self.alpha_deg.to_string()),
+            ("snow_depth".to_string(), self.snow_depth.to_string()),
+            ("r0".to_string(), self.r0.to_string()),
             (
                 "turn_start_radius_m".to_string(),
                 self.turn_start_radius_m

@@ -95,6 +95,9 @@ pub struct Figure {
     pub caption: String,
     /// The parameters of this figure; when empty, the report's parameters apply.
     pub params: Vec<(String, String)>,
+    /// Ids of the claims this figure is evidence for ([`super::CLAIMS`]); the
+    /// report links each way.
+    pub supports: Vec<&'static str>,
 }
 
 impl Figure {
@@ -104,7 +107,14 @@ impl Figure {
             chart,
             caption: caption.to_string(),
             params: Vec::new(),
+            supports: Vec::new(),
         }
+    }
+
+    /// Names the claims this figure is evidence for.
+    pub fn supports(mut self, claims: &[&'static str]) -> Self {
+        self.supports.extend_from_slice(claims);
+        self
     }
 
     /// Adds a parameter specific to this figure.

@@ -10,13 +10,21 @@
 
 use std::fmt::Write as _;
 
-use super::{ClaimResult, Report, ReportError, Tally, EXPECTATION_NOTE};
+use super::errata::{errata_section, link_citations};
+use super::intro::intro_section;
+use super::{ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
 
 const CSS: &str = include_str!("../../assets/report.css");
 const SCRIPT: &str = include_str!("../../assets/report.js");
 
 /// Counts script errors on the root element before anything else runs.
 const ERROR_TRAP: &str = "(function(){var n=0;function mark(){n+=1;document.documentElement.setAttribute('data-js-errors',String(n));}window.addEventListener('error',mark);window.addEventListener('unhandledrejection',mark);})();";
+
+/// Records, once the page has laid out, what sticks out sideways: each
+/// figure whose drawing is wider than the figure or than the window, and
+/// the page itself if it scrolls sideways. The browser test reads
+/// `html[data-layout-overflow]` at a phone's width (empty: nothing overflows).
+const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
 
 /// Escapes text for HTML element content and attribute values.
 pub(super) fn esc(s: &str) -> String {
@@ -67,9 +75,10 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
     let _ = writeln!(h, "<style>\n{CSS}</style>\n</head>");
     let _ = writeln!(
         h,
-        "<body data-figures=\"{}\" data-claims=\"{}\">",
+        "<body data-figures=\"{}\" data-claims=\"{}\" data-models=\"{}\">",
         report.figures.len(),
-        report.claims.len()
+        report.claims.len(),
+        crate::models::ModelKind::ALL.len()
     );
     let _ = writeln!(
         h,
@@ -77,7 +86,7 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
         esc(&m.title),
         esc(&m.software)
     );
-    h.push_str("<nav><a href=\"#claims\">Claims</a>");
+    h.push_str("<nav><a href=\"#problem\">The problem</a><a href=\"#claims\">Claims</a>");
     for (i, t) in report.tables.iter().enumerate() {
         let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
     }
@@ -85,9 +94,10 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
         h.push_str("<a href=\"#animation\">Animation</a>");
     }
     h.push_str(
-        "<a href=\"#figures\">Figures</a><a href=\"#parameters\">Parameters</a></nav></header>\n<main>\n",
+        "<a href=\"#figures\">Figures</a><a href=\"#errata\">Errata</a><a href=\"#parameters\">Parameters</a></nav></header>\n<main>\n",
     );
-    claims_section(&mut h, &report.claims);
+    intro_section(&mut h);
+    claims_section(&mut h, &report.claims, &report.figures);
     for (i, t) in report.tables.iter().enumerate() {
         table_section(&mut h, i, t);
     }
@@ -95,6 +105,7 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
         animation_section(&mut h, anim);
     }
     figures_section(&mut h, report, svgs);
+    errata_section(&mut h);
     params_section(&mut h, report);
     h.push_str("</main>\n");
     let _ = writeln!(
@@ -111,11 +122,36 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
         );
         let _ = writeln!(h, "<script>\n{SCRIPT}</script>");
     }
+    let _ = writeln!(h, "<script>{LAYOUT_PROBE}</script>");
     h.push_str("</body>\n</html>\n");
     Ok(h)
 }
 
-fn claims_section(h: &mut String, claims: &[ClaimResult]) {
+/// Links to the figures that support claim `id`, numbered as in the report.
+fn figure_links(id: &str, figures: &[Figure]) -> String {
+    let links: Vec<String> = figures
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.supports.contains(&id))
+        .map(|(i, f)| {
+            format!(
+                "<a href=\"#fig-{}\">Figure {}</a>",
+                esc(&f.chart.name),
+                i + 1
+            )
+        })
+        .collect();
+    if links.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "<br><span class=\"figlinks\">See {}.</span>",
+            links.join(", ")
+        )
+    }
+}
+
+fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
     let tally = Tally::of(claims);
     h.push_str("<section id=\"claims\">\n<h2>Claims of the note</h2>\n");
     let _ = writeln!(h, "<p class=\"tally\">{}</p>", esc(&tally.sentence()));
@@ -150,7 +186,7 @@ fn claims_section(h: &mut String, claims: &[ClaimResult]) {
              <td data-label=\"How checked\">{method}<br><span class=\"tol\">tolerances: {tol}</span></td>\
              <td data-label=\"Measured\">{measured}</td>\
              <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td>\
-             <td data-label=\"Evidence\">{evidence}</td></tr>",
+             <td data-label=\"Evidence\">{evidence}{figures}</td></tr>",
             id = esc(c.id),
             class = r.verdict.class(),
             ok = r.as_expected(),
@@ -160,8 +196,9 @@ fn claims_section(h: &mut String, claims: &[ClaimResult]) {
             tol = esc(&c.tolerances_text()),
             measured = esc(&r.measured),
             symbol = r.verdict.symbol(),
-            label = esc(&r.verdict.label()),
-            evidence = esc(&r.evidence),
+            label = link_citations(&esc(&r.verdict.label())),
+            evidence = link_citations(&esc(&r.evidence)),
+            figures = figure_links(c.id, figures),
         );
     }
     h.push_str("</tbody></table></div>\n</section>\n");
@@ -227,10 +264,23 @@ fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
     for (i, (fig, svg)) in report.figures.iter().zip(svgs).enumerate() {
         let name = esc(&fig.chart.name);
         let prov = fig.provenance(&report.metadata).line();
+        let supports = if fig.supports.is_empty() {
+            String::new()
+        } else {
+            let links: Vec<String> = fig
+                .supports
+                .iter()
+                .map(|id| format!("<a href=\"#claim-{0}\"><code>{0}</code></a>", esc(id)))
+                .collect();
+            format!(
+                " <span class=\"supports\">Evidence for: {}.</span>",
+                links.join(", ")
+            )
+        };
         let _ = writeln!(
             h,
             "<figure id=\"fig-{name}\" class=\"figure\" data-figure=\"{name}\">\n<div class=\"svg-wrap\">{svg}</div>\n\
-             <figcaption><strong>Figure {num}. {title}.</strong> {caption} \
+             <figcaption><strong>Figure {num}. {title}.</strong> {caption}{supports} \
              <span class=\"files\">Files: <a href=\"figures/{name}.svg\">SVG</a>, \
              <a href=\"figures/{name}.png\">PNG</a>, <a href=\"data/{name}.csv\">data (CSV)</a>. \
              {prov}</span></figcaption>\n</figure>",

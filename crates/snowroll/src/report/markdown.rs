@@ -26,6 +26,32 @@ pub(super) fn render(report: &Report) -> String {
         m.software
     );
 
+    md.push_str("## The problem\n\n");
+    let _ = writeln!(
+        md,
+        "A log rolls without slipping down a slope of angle α covered by snow of depth b and picks up the \
+         snow it rolls over. The note: {}. The project's corrections of it: `docs/errata.md`. \
+         `report.html` draws the geometry.\n",
+        super::intro::NOTE_CITATION
+    );
+    md.push_str("| Model (alias) | Note | Equation of motion | a∞/G |\n|---|---|---|---|\n");
+    for kind in crate::models::ModelKind::ALL {
+        let _ = writeln!(
+            md,
+            "| `{}` (`{}`) | {} | {} | {} |",
+            kind.id(),
+            kind.alias(),
+            cell(kind.equation()),
+            cell(&super::intro::equation_of_motion(kind)),
+            cell(&super::intro::terminal_text(kind)),
+        );
+    }
+    md.push_str("\n| Symbol | Meaning | Unit |\n|---|---|---|\n");
+    for (sym, meaning, unit) in super::intro::SYMBOLS {
+        let _ = writeln!(md, "| {} | {} | {} |", cell(sym), cell(meaning), cell(unit));
+    }
+    md.push('\n');
+
     md.push_str("## Claims of the note\n\n");
     let _ = writeln!(
         md,

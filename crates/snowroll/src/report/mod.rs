@@ -31,9 +31,13 @@ mod animation;
 #[cfg(feature = "plot")]
 mod document;
 #[cfg(feature = "plot")]
+mod errata;
+#[cfg(feature = "plot")]
 mod files;
 #[cfg(feature = "plot")]
 mod html;
+#[cfg(feature = "plot")]
+mod intro;
 #[cfg(feature = "plot")]
 mod markdown;
 #[cfg(feature = "plot")]

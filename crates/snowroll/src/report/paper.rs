@@ -80,10 +80,10 @@ fn parting_table(lab: &Lab) -> Result<Table, ReportError> {
             .iter()
             .map(|r| {
                 vec![
-                    format!("{:.0}", r.slope_deg),
-                    format!("{:.3}", r.snow_depth_m),
-                    format!("{:.2}", r.r0_m),
-                    format!("{:.3}", r.snow_depth_m / r.r0_m),
+                    format!("{:.0}", r.alpha_deg),
+                    format!("{:.3}", r.snow_depth),
+                    format!("{:.2}", r.r0),
+                    format!("{:.3}", r.snow_depth / r.r0),
                     format!("{:.4}", r.stall_slope_deg.0),
                     format!("{:.4}", r.stall_slope_deg.1),
                     outcome(r.first_turn.0),
@@ -421,22 +421,22 @@ pub fn build_paper_report(
 
     let file = ScenarioFile::from(*s);
     let metadata = Metadata::new("snowroll: McDonald's snowball/log note, reproduced and judged")
-        .param("slope_deg", file.slope_deg)
-        .param("snow_depth_m", file.snow_depth_m)
-        .param("r0_m", file.r0_m)
-        .param("g_m_s2", file.g_m_s2)
-        .param("density_kg_m3", file.density_kg_m3)
-        .param("length_m", file.length_m)
-        .param("v0_m_s", file.v0_m_s)
+        .param("alpha_deg", file.alpha_deg)
+        .param("snow_depth", file.snow_depth)
+        .param("r0", file.r0)
+        .param("g", file.g)
+        .param("density", file.density)
+        .param("length", file.length)
+        .param("v0", file.v0)
         .param("rtol", format!("{:e}", opts.tolerances.rtol))
         .param("atol", format!("{:e}", opts.tolerances.atol))
         .param("long_run_turns", lab.turns());
     // Each figure's footer names the scenario; the full list is in the metadata.
     let short = |f: Figure| {
-        f.param("slope_deg", file.slope_deg)
-            .param("b_m", file.snow_depth_m)
-            .param("r0_m", file.r0_m)
-            .param("v0_m_s", file.v0_m_s)
+        f.param("alpha_deg", file.alpha_deg)
+            .param("b_m", file.snow_depth)
+            .param("r0", file.r0)
+            .param("v0", file.v0)
             .param("rtol", format!("{:e}", opts.tolerances.rtol))
     };
     // The terminal values in the caption come from the library's coefficients.
@@ -449,13 +449,13 @@ pub fn build_paper_report(
         .collect::<Vec<_>>()
         .join(", ");
     let figures: Vec<Figure> = vec![
-        Figure::new(accel, &format!("a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value ({terminal_values}); the turn-by-turn models (markers: the mean over each turn) settle near {:.4} within a turn over the last decade of the long run.", paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g))),
-        Figure::new(speed, "Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration."),
-        Figure::new(radius, "Radius against time: π r² = π r0² + b x (eq. (8)); the turn models grow by b per full turn."),
-        Figure::new(approach, "How fast each circular model approaches its terminal acceleration: |a − a_term| against x. Models with only the v² term approach as a power r^−2(1+2c_v) (x^−10/3 for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at 1e-10, the accuracy of the integration."),
-        Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties."),
-        Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {:.4} G within turns and {:.4} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g), paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g))),
-        Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed."),
+        Figure::new(accel, &format!("a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value ({terminal_values}); the turn-by-turn models (markers: the mean over each turn) settle near {:.4} within a turn over the last decade of the long run.", paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g))).supports(&["circular-analyses-differ", "terminal-accelerations", "eq35-terminal-third", "loney-limit-fifth", "multi-turn-never-settles"]),
+        Figure::new(speed, "Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration.").supports(&["terminal-accelerations"]),
+        Figure::new(radius, "Radius against time: π r² = π r0² + b x (eq. (8)); the turn models grow by b per full turn.").supports(&["eq70-mass-after-first-turn"]),
+        Figure::new(approach, "How fast each circular model approaches its terminal acceleration: |a − a_term| against x. Models with only the v² term approach as a power r^−2(1+2c_v) (x^−10/3 for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at 1e-10, the accuracy of the integration.").supports(&["eq36-slows-approach", "eq33-35-terminal-argument", "loney-limit-fifth"]),
+        Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties.").supports(&["multi-turn-never-settles", "first-turn-58-64-69", "eq89-collision", "eq73-truncates-exact"]),
+        Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {:.4} G within turns and {:.4} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g), paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g))).supports(&["multi-turn-mean-four-ninths", "multi-turn-never-settles"]),
+        Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed.").supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),
     ]
     .into_iter()
     .map(short)

@@ -26,11 +26,11 @@ pub enum FirstTurn {
 #[derive(Debug, Clone, PartialEq)]
 pub struct PartingRow {
     /// Slope, degrees.
-    pub slope_deg: f64,
+    pub alpha_deg: f64,
     /// Snow depth b, m.
-    pub snow_depth_m: f64,
+    pub snow_depth: f64,
     /// Initial radius r0, m.
-    pub r0_m: f64,
+    pub r0: f64,
     /// Slope below which each model stalls in turn 0 from rest, degrees: `turns`, `turns-exact`.
     pub stall_slope_deg: (f64, f64),
     /// How turn 0 ended: `turns`, `turns-exact`.
@@ -53,16 +53,16 @@ pub fn where_turn_models_part_ways(scenario: &Scenario) -> Result<Vec<PartingRow
     let mut cases: Vec<ScenarioFile> = B_OVER_R0
         .iter()
         .map(|q| ScenarioFile {
-            snow_depth_m: q * base.r0_m,
-            v0_m_s: 0.0,
+            snow_depth: q * base.r0,
+            v0: 0.0,
             ..base
         })
         .collect();
     cases.push(ScenarioFile {
-        slope_deg: 40.0,
-        snow_depth_m: 0.2,
-        r0_m: 0.15,
-        v0_m_s: 0.0,
+        alpha_deg: 40.0,
+        snow_depth: 0.2,
+        r0: 0.15,
+        v0: 0.0,
         ..base
     });
     let opts = SimOptions {
@@ -89,9 +89,9 @@ pub fn where_turn_models_part_ways(scenario: &Scenario) -> Result<Vec<PartingRow
                 .map_or(f64::NAN, |t| t.slope.to_degrees())
         };
         rows.push(PartingRow {
-            slope_deg: file.slope_deg,
-            snow_depth_m: file.snow_depth_m,
-            r0_m: file.r0_m,
+            alpha_deg: file.alpha_deg,
+            snow_depth: file.snow_depth,
+            r0: file.r0,
             stall_slope_deg: (stall(ModelKind::Turns), stall(ModelKind::TurnsExact)),
             first_turn: (
                 first_turn(ModelKind::Turns)?,

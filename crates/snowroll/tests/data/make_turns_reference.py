@@ -84,7 +84,7 @@ def main():
     out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "turns_reference.csv")
     with open(out, "w", newline="") as fh:
         fh.write("# Independent reference for the turn-by-turn model: energy integral per turn + quad for time.\n")
-        fh.write(f"# alpha_deg=30 b_m={B} r0_m={R0} g={G0} density={RHO} length={L} v0=0; made by make_turns_reference.py\n")
+        fh.write(f"# alpha_deg=30 b_m={B} r0={R0} g={G0} density={RHO} length={L} v0=0; made by make_turns_reference.py\n")
         w = csv.writer(fh)
         w.writerow(["variant", "turn", "t_start_s", "v_start_m_s", "t_end_s", "v_end_m_s", "v_after_m_s"])
         for name, variant in (("turns", paper_turn), ("turns-exact", exact_turn)):

@@ -32,17 +32,22 @@
 //! the exact sector mass for `Exact`), so the mass may jump by O(b²) at a
 //! collision for `Paper`. The per-turn table is [`run_turns`].
 
+mod collision;
+mod contact;
 mod extremes;
 mod stall;
 mod table;
 
+pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
+pub use contact::ContactRange;
 pub use stall::first_turn_stall_slope;
 pub use table::{run_turns, TurnCheckpoint, TurnRow, TurnSummary, TurnTable};
 
 use std::f64::consts::PI;
 
+use super::contact::ContactForces;
 use super::exact_geometry::exact_turn_coefficients;
-use super::ode::{run_ode, OdeModel};
+use super::ode::{run_ode, stopped_at_start, OdeModel};
 use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, EventAction, OdeSystem};
@@ -319,12 +324,21 @@ pub fn check_turn_scale(s: &Scenario, opts: &SimOptions) -> Result<(), crate::Pa
 }
 
 /// Event indices of [`TurnSystem`].
-const EVENT_TURN_END: usize = 0;
+pub(crate) const EVENT_TURN_END: usize = 0;
 const EVENT_STALL: usize = 1;
 const EVENT_DISTANCE: usize = 2;
+const EVENT_HOP: usize = 3;
+const EVENT_SLIP: usize = 4;
+const EVENT_IMPACT: usize = 5;
 
 /// The ODE of the current turn, with the constants of turn k kept up to date
 /// by [`OdeSystem::commit_event`] (the cost per turn does not grow with k).
+///
+/// Events: the turn end θ = 2π (the collision, a reset), the stall θ̇ = 0,
+/// the end distance, the hop N = 0 (`docs/contact-forces.md` §4), the slip
+/// |F| = μN (§5) and, with [`CollisionModel::Pivot`], the impact of the new
+/// layer's corner at θ = θ_c (§6.3), after which the state `[θ, θ̇]` follows
+/// the pivot about the edge E until θ = 2π.
 pub(crate) struct TurnSystem {
     variant: TurnVariant,
     r0: Meters,
@@ -334,13 +348,27 @@ pub(crate) struct TurnSystem {
     rho_l: f64,
     turns_limit: Option<u64>,
     x_end: Option<Meters>,
+    mu: Option<f64>,
+    stop_on_hop: bool,
+    collision: CollisionModel,
     /// Turn number k.
     turn: u64,
     /// Position of the contact line at the start of turn k, `X_k`, m.
     x_start: Meters,
+    /// What the pivots so far added to X_k over eq. (74), `Σ (r_j θ_c + d_j − 2π r_j)`, m.
+    pivot_shift: Meters,
     /// Mass at the start of turn k, `m_k = πρl r_k²`, kg.
     mass: f64,
     dynamics: TurnDynamics,
+    /// The `pivot` impact geometry of turn k.
+    impact: PivotImpact,
+    /// Whether the log is pivoting about the edge E (after θ_c, `pivot` only).
+    pivoting: bool,
+    /// A stop decided at an event whose index does not say why (a collision
+    /// that leaves the log stuck, or a new turn that starts slipping).
+    stop_override: Option<StopReason>,
+    /// θ where this turn slips, from the energy integral ([`TurnDynamics::first_slip`]).
+    slip_theta: Option<Radians>,
 }
 
 impl TurnSystem {
@@ -354,24 +382,34 @@ impl TurnSystem {
             rho_l: s.density() * s.length(),
             turns_limit: opts.turns,
             x_end: opts.x_end,
+            mu: opts.mu,
+            stop_on_hop: opts.stop_on_hop,
+            collision: opts.collision,
             turn: 0,
             x_start: 0.0,
+            pivot_shift: 0.0,
             mass: 0.0,
             dynamics: TurnDynamics::new(variant, s.initial_radius(), 0.0, 0.0, 0.0),
+            impact: PivotImpact::new(s.initial_radius(), s.snow_depth()),
+            pivoting: false,
+            stop_override: None,
+            slip_theta: None,
         };
         system.enter_turn(0);
         system
     }
 
-    /// Sets the constants of turn `k`: r_k, m_k, X_k (eq. (74)) and the
-    /// in-turn coefficients, in O(1).
+    /// Sets the constants of turn `k`: r_k, m_k, X_k (eq. (74), plus the
+    /// shift of the pivots) and the in-turn coefficients, in O(1).
     fn enter_turn(&mut self, k: u64) {
         let kf = k as f64;
         let r = self.r0 + kf * self.b;
         self.turn = k;
-        self.x_start = 2.0 * PI * kf * self.r0 + kf * (kf - 1.0) * PI * self.b;
+        self.x_start = 2.0 * PI * kf * self.r0 + kf * (kf - 1.0) * PI * self.b + self.pivot_shift;
         self.mass = PI * self.rho_l * r * r;
         self.dynamics = TurnDynamics::new(self.variant, r, self.b, self.g_along, self.g_normal);
+        self.impact = PivotImpact::new(r, self.b);
+        self.pivoting = false;
     }
 
     /// Whether the turn now ending is the last one asked for.
@@ -379,12 +417,114 @@ impl TurnSystem {
         self.turns_limit == Some(self.turn + 1)
     }
 
-    /// The state `[0, θ̇′]` that starts turn k + 1 after the collision at
-    /// the end of turn k, from `θ̇` at θ = 2π (eq. (89), [`collision_speed`]).
-    fn collide(&self, omega_end: f64) -> [f64; 2] {
+    /// θ̇ that starts turn k + 1 after the collision at the end of turn k,
+    /// from `θ̇` at θ = 2π, by [`CollisionModel`]; `None` when the log is
+    /// stuck at the step.
+    pub(crate) fn omega_next(&self, omega_end: f64) -> Option<f64> {
         let r = self.dynamics.radius();
-        let v_after = collision_speed(r, self.b, r * omega_end);
-        [0.0, v_after / (r + self.b)]
+        let r_next = r + self.b;
+        match self.collision {
+            CollisionModel::Note => Some(collision_speed(r, self.b, r * omega_end) / r_next),
+            CollisionModel::Charged => {
+                charged_collision_speed(r, self.b, self.g_normal, r * omega_end).map(|v| v / r_next)
+            }
+            CollisionModel::Pivot => {
+                self.impact
+                    .omega_next(r, self.b, omega_end, self.g_along, self.g_normal)
+            }
+        }
+    }
+
+    /// What the end of turn k leads to: the state `[0, θ̇′]` of turn k + 1,
+    /// or why the run stops there.
+    fn turn_end_outcome(&self, omega_end: f64) -> Result<[f64; 2], StopReason> {
+        if self.last_turn() {
+            return Err(StopReason::Turns);
+        }
+        let omega = self.omega_next(omega_end).ok_or(StopReason::Stuck)?;
+        let next = TurnDynamics::new(
+            self.variant,
+            self.dynamics.radius() + self.b,
+            self.b,
+            self.g_along,
+            self.g_normal,
+        );
+        let (n, f) = next.contact_per_mass(0.0, omega);
+        self.check_contact(n, f)?;
+        Ok([0.0, omega])
+    }
+
+    /// What the impact at θ_c leads to: the pivot's state `[θ_c, θ̇₊]`, or a
+    /// hop or slip at the edge right away.
+    fn impact_outcome(&self, omega_before: f64) -> Result<[f64; 2], StopReason> {
+        let omega = self.impact.omega_after(omega_before);
+        let (n, f) = self
+            .impact
+            .contact_per_mass(0.0, omega, self.g_along, self.g_normal);
+        self.check_contact(n, f)?;
+        Ok([self.impact.theta_c, omega])
+    }
+
+    /// A state entered by a reset must not already be past the hop or the
+    /// slip (the events see crossings only).
+    fn check_contact(&self, n: f64, f: f64) -> Result<(), StopReason> {
+        if self.stop_on_hop && n <= 0.0 {
+            return Err(StopReason::Hop);
+        }
+        match self.mu {
+            Some(mu) if f.abs() - mu * n >= 0.0 => Err(StopReason::Slip),
+            _ => Ok(()),
+        }
+    }
+
+    /// `(N, F)` per unit m_k at `(θ, θ̇)`, rolling or pivoting, m/s².
+    fn contact_per_mass(&self, theta: f64, omega: f64) -> (f64, f64) {
+        if self.pivoting {
+            self.impact.contact_per_mass(
+                theta - self.impact.theta_c,
+                omega,
+                self.g_along,
+                self.g_normal,
+            )
+        } else {
+            self.dynamics.contact_per_mass(theta, omega)
+        }
+    }
+
+    /// Why a run that starts at `y0` stops at once, if it does (hop or slip
+    /// at the start); otherwise plans the slip of turn 0.
+    pub(crate) fn start(&mut self, y0: &[f64; 2]) -> Option<StopReason> {
+        let (n, f) = self.contact_per_mass(y0[0], y0[1]);
+        if let Err(reason) = self.check_contact(n, f) {
+            return Some(reason);
+        }
+        self.plan_slip(y0[1]);
+        None
+    }
+
+    /// Where the turn just entered with `θ̇(0) = omega0` slips while rolling, if it does.
+    fn plan_slip(&mut self, omega0: f64) {
+        let theta_max = match self.collision {
+            CollisionModel::Pivot => self.impact.theta_c,
+            _ => TWO_PI,
+        };
+        self.slip_theta = self
+            .mu
+            .and_then(|mu| self.dynamics.first_slip(omega0, mu, theta_max));
+    }
+
+    /// Position of the nominal centre along the slope: `X_k + r_k θ` while
+    /// rolling; during the pivot `x_E − (r + b) sin(δ − φ)`, φ = θ − θ_c,
+    /// continuous from x_C to x_E, m.
+    fn position(&self, theta: f64) -> Meters {
+        let r = self.dynamics.radius();
+        if self.pivoting {
+            let p = &self.impact;
+            let x_e = self.x_start + r * p.theta_c + p.d;
+            x_e - (r + self.b) * (p.delta - (theta - p.theta_c)).sin()
+        } else {
+            self.x_start + r * theta
+        }
     }
 
     pub(crate) fn turn(&self) -> u64 {
@@ -406,47 +546,98 @@ impl TurnSystem {
     pub(crate) fn rho_l(&self) -> f64 {
         self.rho_l
     }
+
+    pub(crate) fn collision(&self) -> CollisionModel {
+        self.collision
+    }
+
+    pub(crate) fn start_mass(&self) -> f64 {
+        self.mass
+    }
+
+    pub(crate) fn pivot_impact(&self) -> &PivotImpact {
+        &self.impact
+    }
 }
 
 impl OdeSystem<2> for TurnSystem {
     fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
         dy[0] = y[1];
-        dy[1] = self.dynamics.angular_acceleration(y[0], y[1]);
+        dy[1] = if self.pivoting {
+            self.impact.angular_acceleration(
+                y[0] - self.impact.theta_c,
+                self.g_along,
+                self.g_normal,
+            )
+        } else {
+            self.dynamics.angular_acceleration(y[0], y[1])
+        };
     }
 
     fn event_count(&self) -> usize {
-        if self.x_end.is_some() {
-            3
-        } else {
-            2
-        }
+        6
     }
 
     fn event(&self, index: usize, _t: f64, y: &[f64; 2]) -> f64 {
         match index {
             EVENT_TURN_END => y[0] - TWO_PI,
             EVENT_STALL => y[1],
-            _ => self.x_start + self.dynamics.radius() * y[0] - self.x_end.unwrap_or(f64::INFINITY),
+            EVENT_DISTANCE => match self.x_end {
+                Some(x_end) => self.position(y[0]) - x_end,
+                None => -1.0,
+            },
+            EVENT_HOP if self.stop_on_hop => self.contact_per_mass(y[0], y[1]).0,
+            EVENT_SLIP => match (self.mu, self.pivoting, self.slip_theta) {
+                (Some(mu), true, _) => {
+                    let (n, f) = self.contact_per_mass(y[0], y[1]);
+                    f.abs() - mu * n
+                }
+                (Some(_), false, Some(theta)) => y[0] - theta,
+                _ => -1.0,
+            },
+            EVENT_IMPACT if self.collision == CollisionModel::Pivot && !self.pivoting => {
+                y[0] - self.impact.theta_c
+            }
+            // Switched off: a constant that never crosses in its direction.
+            EVENT_HOP => 1.0,
+            _ => -1.0,
         }
     }
 
     fn event_direction(&self, index: usize) -> Direction {
         match index {
-            EVENT_STALL => Direction::Falling,
+            EVENT_STALL | EVENT_HOP => Direction::Falling,
             _ => Direction::Rising,
         }
     }
 
     fn on_event(&self, index: usize, _t: f64, y: &[f64; 2]) -> EventAction<2> {
-        match index {
-            EVENT_TURN_END if !self.last_turn() => EventAction::Reset(self.collide(y[1])),
-            _ => EventAction::Stop,
-        }
+        let outcome = match index {
+            EVENT_TURN_END => self.turn_end_outcome(y[1]),
+            EVENT_IMPACT => self.impact_outcome(y[1]),
+            _ => return EventAction::Stop,
+        };
+        outcome.map_or(EventAction::Stop, EventAction::Reset)
     }
 
-    fn commit_event(&mut self, index: usize, _t: f64, _y_before: &[f64; 2], _y_after: &[f64; 2]) {
-        if index == EVENT_TURN_END && !self.last_turn() {
-            self.enter_turn(self.turn + 1);
+    fn commit_event(&mut self, index: usize, _t: f64, y_before: &[f64; 2], y_after: &[f64; 2]) {
+        let outcome = match index {
+            EVENT_TURN_END => self.turn_end_outcome(y_before[1]),
+            EVENT_IMPACT => self.impact_outcome(y_before[1]),
+            _ => return,
+        };
+        match (index, outcome) {
+            (_, Err(reason)) => self.stop_override = Some(reason),
+            (EVENT_TURN_END, Ok(_)) => {
+                if self.pivoting {
+                    let p = self.impact;
+                    let r = self.dynamics.radius();
+                    self.pivot_shift += r * p.theta_c + p.d - TWO_PI * r;
+                }
+                self.enter_turn(self.turn + 1);
+                self.plan_slip(y_after[1]);
+            }
+            (_, Ok(_)) => self.pivoting = true,
         }
     }
 }
@@ -455,13 +646,41 @@ impl OdeModel<2> for TurnSystem {
     fn sample(&self, t: f64, y: &[f64; 2]) -> Sample {
         let (theta, omega) = (y[0], y[1]);
         let r = self.dynamics.radius();
+        let (n, f) = self.contact_per_mass(theta, omega);
+        let forces = ContactForces {
+            normal_n: self.mass * n,
+            friction_n: self.mass * f,
+        };
+        let (v, a, mass) = if self.pivoting {
+            // The centre circles E at radius R = r + b: its speed along the
+            // slope is R cos(δ − φ) φ̇.
+            let p = &self.impact;
+            let big_r = r + self.b;
+            let phi = theta - p.theta_c;
+            let (s, c) = (p.delta - phi).sin_cos();
+            let alpha = p.angular_acceleration(phi, self.g_along, self.g_normal);
+            (
+                big_r * c * omega,
+                big_r * (c * alpha + s * omega * omega),
+                self.mass * p.mass,
+            )
+        } else {
+            (
+                r * omega,
+                self.dynamics.acceleration(theta, omega),
+                self.mass * (1.0 + self.dynamics.coeffs.accretion * theta),
+            )
+        };
         Sample {
             t_s: t,
-            x_m: self.x_start + r * theta,
-            v_m_s: r * omega,
-            a_m_s2: self.dynamics.acceleration(theta, omega),
+            x_m: self.position(theta),
+            v_m_s: v,
+            a_m_s2: a,
             r_m: r,
-            mass_kg: self.mass * (1.0 + self.dynamics.coeffs.accretion * theta),
+            mass_kg: mass,
+            normal_n: forces.normal_n,
+            friction_n: forces.friction_n,
+            friction_ratio: forces.friction_ratio(),
         }
     }
 
@@ -474,9 +693,15 @@ impl OdeModel<2> for TurnSystem {
     }
 
     fn stop_reason(&self, event: usize) -> StopReason {
+        if let Some(reason) = self.stop_override {
+            return reason;
+        }
         match event {
             EVENT_TURN_END => StopReason::Turns,
             EVENT_DISTANCE => StopReason::Distance,
+            EVENT_HOP => StopReason::Hop,
+            EVENT_SLIP => StopReason::Slip,
+            _ if self.pivoting => StopReason::Stuck,
             _ => StopReason::Stalled,
         }
     }
@@ -524,11 +749,10 @@ impl Model for TurnModel {
         check_turn_scale(scenario, opts)?;
         crate::models::check_tolerances(self.kind(), scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
-        run_ode(
-            self.kind(),
-            &mut system,
-            Self::initial_state(scenario),
-            opts,
-        )
+        let y0 = Self::initial_state(scenario);
+        if let Some(reason) = system.start(&y0) {
+            return Ok(stopped_at_start(self.kind(), &system, y0, reason));
+        }
+        run_ode(self.kind(), &mut system, y0, opts)
     }
 }

@@ -15,7 +15,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::{
-    collision_speed, kinetic_energy_at_turn_end, TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END,
+    collision_speed, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, CollisionModel,
+    TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END,
 };
 use crate::error::{ParamError, SimError};
 use crate::integrate::{integrate, EventRecord, Observer, Stats, Termination};
@@ -55,6 +56,13 @@ pub struct TurnRow {
     /// Mean acceleration including the collision's jump,
     /// `(v_after − v_start)/(t_end − t_start)`, m/s².
     pub mean_a_with_collision_m_s2: MetersPerSecondSquared,
+    /// Smallest normal force within the turn (while rolling; up to θ_c with
+    /// `--collision pivot`), from the energy integral (`docs/contact-forces.md` §3, §4), N.
+    pub min_normal_n: f64,
+    /// The same minimum as a fraction of M g, M the mass at that point, 1.
+    pub min_normal_over_mg: f64,
+    /// Largest |F|/N within the turn (the smallest μ that keeps it rolling, §5), 1.
+    pub max_friction_ratio: f64,
 }
 
 /// Means of the acceleration up to turn K, as fractions of G = g sin α.
@@ -206,11 +214,39 @@ impl Observer<TurnSystem, 2> for TableObserver {
         let r_next = r + b;
         let omega_end = event.y_before[1];
         let v_end = r * omega_end;
-        let v_after = collision_speed(r, b, v_end);
-        // The collision keeps (r_{k+1}² + 2r_k²)/(3r_{k+1}²) of T_end (eqs. (85), (86), (89)).
-        let t_end_kinetic = kinetic_energy_at_turn_end(system.rho_l(), r, b, v_end);
-        let collision_loss = t_end_kinetic * 2.0 * b * (2.0 * r + b) / (3.0 * r_next * r_next);
-        let (a_min, a_max) = dynamics.acceleration_range(self.v_start / r);
+        let (v_after, collision_loss) = match system.collision() {
+            CollisionModel::Note => {
+                // The collision keeps (r_{k+1}² + 2r_k²)/(3r_{k+1}²) of T_end (eqs. (85), (86), (89)).
+                let t_end_kinetic = kinetic_energy_at_turn_end(system.rho_l(), r, b, v_end);
+                (
+                    collision_speed(r, b, v_end),
+                    t_end_kinetic * 2.0 * b * (2.0 * r + b) / (3.0 * r_next * r_next),
+                )
+            }
+            collision => {
+                // Kinetic energy before (rolling about C, or pivoting about E)
+                // minus after (eq. (82) for turn k + 1); 0 speed when stuck.
+                let v_after = system.omega_next(omega_end).unwrap_or(0.0) * r_next;
+                let before = if collision == CollisionModel::Pivot {
+                    0.5 * system.start_mass()
+                        * system.pivot_impact().inertia_e
+                        * omega_end
+                        * omega_end
+                } else {
+                    kinetic_energy_at_turn_end(system.rho_l(), r, b, v_end)
+                };
+                let after = kinetic_energy_at_turn_start(system.rho_l(), r_next, v_after);
+                (v_after, before - after)
+            }
+        };
+        let omega0 = self.v_start / r;
+        let (a_min, a_max) = dynamics.acceleration_range(omega0);
+        let theta_max = match system.collision() {
+            CollisionModel::Pivot => system.pivot_impact().theta_c,
+            _ => std::f64::consts::TAU,
+        };
+        let contact = dynamics.contact_range(omega0, theta_max);
+        let m_k = system.start_mass();
         let dt = event.t - self.t_start;
         self.rows.push(TurnRow {
             turn: system.turn(),
@@ -225,6 +261,9 @@ impl Observer<TurnSystem, 2> for TableObserver {
             min_a_m_s2: a_min,
             max_a_m_s2: a_max,
             mean_a_with_collision_m_s2: (v_after - self.v_start) / dt,
+            min_normal_n: m_k * contact.min_normal_per_mk,
+            min_normal_over_mg: contact.min_normal_over_mg,
+            max_friction_ratio: contact.max_friction_ratio,
         });
         self.t_start = event.t;
         self.v_start = v_after;
@@ -249,6 +288,22 @@ impl TurnModel {
             v_start: 0.0,
         };
         let y0 = Self::initial_state(scenario);
+        if let Some(reason) = system.start(&y0) {
+            let first = system.sample(0.0, &y0);
+            return Ok(TurnTable {
+                model: self.variant.kind(),
+                rows: Vec::new(),
+                stop: Stop {
+                    reason,
+                    t_s: 0.0,
+                    x_m: first.x_m,
+                    v_m_s: first.v_m_s,
+                    turn: system.turn_state(0.0, &y0),
+                },
+                summary: TurnSummary::new(&[], scenario.g_along()),
+                stats: Stats::default(),
+            });
+        }
         let outcome = integrate(
             &mut system,
             0.0,
@@ -261,7 +316,7 @@ impl TurnModel {
             Termination::EndTime => StopReason::EndTime,
             Termination::Event { index } => system.stop_reason(index),
         };
-        let x_m = system.sample(outcome.t, &outcome.y).x_m;
+        let last = system.sample(outcome.t, &outcome.y);
         let summary = TurnSummary::new(&observer.rows, scenario.g_along());
         Ok(TurnTable {
             model: self.variant.kind(),
@@ -269,7 +324,9 @@ impl TurnModel {
             stop: Stop {
                 reason,
                 t_s: outcome.t,
-                x_m,
+                x_m: last.x_m,
+                v_m_s: last.v_m_s,
+                turn: system.turn_state(outcome.t, &outcome.y),
             },
             summary,
             stats: outcome.stats,

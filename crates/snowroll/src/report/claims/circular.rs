@@ -246,7 +246,7 @@ pub(super) fn loney_closed_form(lab: &Lab) -> Result<Finding, SimError> {
         edited(
             &base,
             Edit {
-                slope_deg: Some(10.0),
+                alpha_deg: Some(10.0),
                 snow_depth: Some(0.001),
                 ..Edit::default()
             },
@@ -529,7 +529,7 @@ pub(super) fn stall_threshold(lab: &Lab) -> Result<Finding, SimError> {
         edited(
             &base,
             Edit {
-                slope_deg: Some(deg),
+                alpha_deg: Some(deg),
                 ..Edit::default()
             },
         )

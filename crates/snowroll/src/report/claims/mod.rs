@@ -246,7 +246,7 @@ impl ClaimCheck {
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct Edit {
     /// Slope, degrees.
-    pub slope_deg: Option<f64>,
+    pub alpha_deg: Option<f64>,
     /// Snow depth b, m.
     pub snow_depth: Option<f64>,
     /// Initial radius r0, m.
@@ -261,20 +261,20 @@ pub(super) struct Edit {
 /// scenario's fields).
 pub(super) fn edited(s: &Scenario, edit: Edit) -> Result<Scenario, SimError> {
     let mut f = ScenarioFile::from(*s);
-    if let Some(v) = edit.slope_deg {
-        f.slope_deg = v;
+    if let Some(v) = edit.alpha_deg {
+        f.alpha_deg = v;
     }
     if let Some(v) = edit.snow_depth {
-        f.snow_depth_m = v;
+        f.snow_depth = v;
     }
     if let Some(v) = edit.r0 {
-        f.r0_m = v;
+        f.r0 = v;
     }
     if let Some(v) = edit.v0 {
-        f.v0_m_s = v;
+        f.v0 = v;
     }
     if let Some(v) = edit.g {
-        f.g_m_s2 = v;
+        f.g = v;
     }
     Ok(Scenario::new(f)?)
 }
@@ -306,7 +306,7 @@ pub(super) fn symbols(s: &Scenario) -> Symbols {
 }
 
 /// The scenario's slope, degrees.
-pub(super) fn slope_deg(s: &Scenario) -> f64 {
+pub(super) fn alpha_deg(s: &Scenario) -> f64 {
     s.slope_angle().to_degrees()
 }
 

@@ -8,7 +8,7 @@
 use std::f64::consts::PI;
 
 use super::circular::bisect;
-use super::{edited, holds_if, pass, slope_deg, Edit, Finding, Lab};
+use super::{alpha_deg, edited, holds_if, pass, Edit, Finding, Lab};
 use crate::error::SimError;
 use crate::models::ModelKind;
 use crate::report::{Criterion, Tolerance};
@@ -128,7 +128,7 @@ fn stalls_in_first_turn(
     let s = edited(
         base,
         Edit {
-            slope_deg: Some(deg),
+            alpha_deg: Some(deg),
             ..Edit::default()
         },
     )?;
@@ -234,7 +234,7 @@ pub(super) fn stall_in_first_turn(lab: &Lab) -> Result<Finding, SimError> {
             pass(ok),
             TURN_STALL_FORMULA.value(),
             theta_1(),
-            slope_deg(lab.scenario())
+            alpha_deg(lab.scenario())
         ),
     })
 }

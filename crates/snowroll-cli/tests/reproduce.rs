@@ -1,0 +1,257 @@
+//! Issue 9, "one vocabulary, and runs that reproduce": an output of
+//! snowroll given back as `--config` reproduces its run byte for byte, in
+//! its own format, for each command; the parameter names are the same in
+//! flags (kebab-case), config files, outputs and JSON (snake_case); the names
+//! of earlier outputs still read.
+
+use std::fs;
+use std::path::Path;
+
+use assert_cmd::cargo::cargo_bin_cmd;
+
+fn run(dir: &Path, args: &[&str]) {
+    let out = cargo_bin_cmd!("snowroll")
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+fn fails(dir: &Path, args: &[&str]) -> String {
+    let out = cargo_bin_cmd!("snowroll")
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{args:?} should fail");
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// Runs `first`, writing `name`; then the same command with only
+/// `--config name`, writing `again`; the two files must be identical.
+fn reproduces(command: &str, first: &[&str], name: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    let mut args = vec![command];
+    args.extend_from_slice(first);
+    args.extend_from_slice(&["-o", name]);
+    run(dir.path(), &args);
+    let again = format!("again-{name}");
+    run(dir.path(), &[command, "--config", name, "-o", &again]);
+    let (a, b) = (
+        fs::read(dir.path().join(name)).unwrap(),
+        fs::read(dir.path().join(&again)).unwrap(),
+    );
+    assert!(
+        a == b,
+        "{command} {first:?}: --config {name} wrote a different file:\n{}\n---\n{}",
+        String::from_utf8_lossy(&a),
+        String::from_utf8_lossy(&b)
+    );
+}
+
+#[test]
+fn a_simulate_json_output_reproduces_its_run() {
+    // Every scenario parameter away from its default, and a grid of times.
+    let run = [
+        "--model",
+        "eq14",
+        "--alpha-deg",
+        "25.5",
+        "--snow-depth",
+        "0.02",
+        "--r0",
+        "0.15",
+        "--g",
+        "9.8",
+        "--density",
+        "350",
+        "--length",
+        "2",
+        "--v0",
+        "0.3",
+        "--t-end",
+        "12",
+        "--dt",
+        "0.7",
+        "--rtol",
+        "1e-9",
+        "--atol",
+        "1e-11",
+        "--format",
+        "json",
+    ];
+    reproduces("simulate", &run, "run.json");
+}
+
+#[test]
+fn a_simulate_csv_output_reproduces_its_run() {
+    let run = [
+        "--model",
+        "turns",
+        "--times",
+        "0.1,0.3,2",
+        "--x-end",
+        "50",
+        "--rtol",
+        "1e-9",
+    ];
+    reproduces("simulate", &run, "run.csv");
+    // Every accepted step, an odd angle (shortest round-trip numbers in the header).
+    reproduces(
+        "simulate",
+        &[
+            "--model",
+            "eq4",
+            "--alpha-deg",
+            "0.1234567890123",
+            "--t-end",
+            "3",
+        ],
+        "steps.csv",
+    );
+    // A run outside a model's range: its warning is recorded, and comes back.
+    reproduces(
+        "simulate",
+        &["--model", "energy", "--snow-depth", "0.03", "--t-end", "2"],
+        "warned.csv",
+    );
+}
+
+#[test]
+fn a_turns_output_reproduces_its_run_in_either_format() {
+    reproduces(
+        "turns",
+        &[
+            "--model",
+            "turns-exact",
+            "--turns",
+            "7",
+            "--alpha-deg",
+            "35",
+        ],
+        "t.csv",
+    );
+    reproduces(
+        "turns",
+        &["--model", "turns", "--turns", "4", "--format", "json"],
+        "t.json",
+    );
+}
+
+#[test]
+fn an_output_of_the_other_command_is_refused_with_the_reason() {
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &["turns", "--model", "turns", "--turns", "2", "-o", "t.csv"],
+    );
+    let err = fails(dir.path(), &["simulate", "--config", "t.csv"]);
+    assert!(err.contains("output of `snowroll turns`"), "{err}");
+    run(
+        dir.path(),
+        &[
+            "simulate", "--model", "turns", "--format", "json", "-o", "s.json",
+        ],
+    );
+    let err = fails(dir.path(), &["turns", "--config", "s.json"]);
+    assert!(err.contains("output of `snowroll simulate`"), "{err}");
+}
+
+#[test]
+fn outputs_and_config_files_use_the_flag_names() {
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "eq4",
+            "--snow-depth",
+            "0.02",
+            "--format",
+            "json",
+            "-o",
+            "a.json",
+        ],
+    );
+    let doc: serde_json::Value =
+        serde_json::from_slice(&fs::read(dir.path().join("a.json")).unwrap()).unwrap();
+    let params = doc["params"].as_object().unwrap();
+    for key in [
+        "alpha_deg",
+        "snow_depth",
+        "r0",
+        "g",
+        "density",
+        "length",
+        "v0",
+        "t_end",
+        "x_end",
+        "turns",
+        "rtol",
+        "atol",
+    ] {
+        assert!(params.contains_key(key), "params lack `{key}`: {params:?}");
+    }
+    // The same run from a TOML file with the flags' own spelling, with
+    // snake_case, and with the names of earlier outputs: the same bytes.
+    for (name, text) in [
+        (
+            "kebab.toml",
+            "model = \"eq4\"\nsnow-depth = 0.02\nformat = \"json\"\n",
+        ),
+        (
+            "snake.toml",
+            "model = \"eq4\"\nsnow_depth = 0.02\nformat = \"JSON\"\n",
+        ),
+        (
+            "old.toml",
+            "model = \"eq4\"\nsnow_depth_m = 0.02\nslope_deg = 30\nformat = \"json\"\n",
+        ),
+    ] {
+        fs::write(dir.path().join(name), text).unwrap();
+        let out = format!("{name}.json");
+        run(dir.path(), &["simulate", "--config", name, "-o", &out]);
+        assert_eq!(
+            fs::read(dir.path().join("a.json")).unwrap(),
+            fs::read(dir.path().join(&out)).unwrap(),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn flags_override_an_output_read_as_config() {
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &["simulate", "--model", "eq4", "--t-end", "2", "-o", "a.csv"],
+    );
+    run(
+        dir.path(),
+        &[
+            "simulate",
+            "--config",
+            "a.csv",
+            "--alpha-deg",
+            "40",
+            "-o",
+            "b.csv",
+        ],
+    );
+    let text = fs::read_to_string(dir.path().join("b.csv")).unwrap();
+    assert!(
+        text.contains("# alpha_deg = 40\n") && text.contains("# t_end = 2\n"),
+        "{text}"
+    );
+    // G = g sin 40°, a(0) = (2/3) G for eq. (4) from rest (no snow term at v = 0).
+    let row = text.lines().find(|l| l.starts_with("0.0,")).unwrap();
+    let a0: f64 = row.split(',').nth(3).unwrap().parse().unwrap();
+    let want = 2.0 / 3.0 * 9.81 * 40f64.to_radians().sin();
+    assert!((a0 - want).abs() < 1e-12 * want, "{a0} vs {want}");
+}
