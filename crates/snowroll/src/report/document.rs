@@ -34,14 +34,6 @@ impl Metadata {
         self
     }
 
-    /// Adds every parameter of a run (scenario and options), keys sorted.
-    ///
-    /// # Errors
-    /// [`ReportError::Json`] if the parameters cannot be serialised.
-    pub fn with_run_params(mut self, run: &RunParams) -> Result<Self, ReportError> {
-        self.params.extend(params_of(run)?);
-        Ok(self)
-    }
 }
 
 /// Every parameter of a run as `(key, value)` pairs, keys sorted.

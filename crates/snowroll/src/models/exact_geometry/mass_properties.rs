@@ -68,11 +68,6 @@ impl SectorBody {
         }
     }
 
-    /// Core radius r, m.
-    pub fn core_radius(&self) -> Meters {
-        self.r
-    }
-
     /// Ring thickness b, m.
     pub fn thickness(&self) -> Meters {
         self.b
@@ -117,12 +112,6 @@ impl SectorBody {
         self.rho_l
             * (1.5 * PI * r.powi(4) + theta * (r * r * d.d2 / 2.0 + d.d4 / 4.0)
                 - 2.0 * r * d.d3 * theta.sin() / 3.0)
-    }
-
-    /// `dI_C/dθ = ρl[(r²D₂/2 + D₄/4) − (2/3) r D₃ cos θ]`.
-    pub fn inertia_contact_slope(&self, theta: Radians) -> f64 {
-        let (r, d) = (self.r, self.moments);
-        self.rho_l * ((r * r * d.d2 / 2.0 + d.d4 / 4.0) - 2.0 * r * d.d3 * theta.cos() / 3.0)
     }
 
     /// Moment of inertia about the axis of the disk, `πρl r⁴/2 + ρlθD₄/4`.
