@@ -47,7 +47,7 @@ def test_radius_follows_eq_8():
     """r(x) = sqrt(r0^2 + b x / pi), eq. (8), along a snowy trajectory; the
     same formula evaluated here in numpy, so agreement to 1e-12 relative
     (rounding of a square root and a few products)."""
-    b, r0 = 0.02, 0.12
+    b, r0 = 0.01, 0.12
     r = snowroll.simulate("energy", snow_depth=b, r0=r0, t_end=10)
     assert np.allclose(r.r_m, np.sqrt(r0**2 + b * r.x_m / math.pi), rtol=1e-12, atol=0)
 

@@ -108,7 +108,7 @@ def test_turns_equals_cli(cli, model, kwargs):
 def test_turns_default_count_equals_cli(cli):
     """With no `turns`, both run the CLI's default number of turns."""
     t = snowroll.turns()
-    stdout, _ = run_cli(cli, "turns")
+    stdout, _ = run_cli(cli, "turns", "--model", "turns")
     _, cols = parse_csv(stdout)
     assert len(t) == len(cols["turn"]) == 100
     assert same_bits(t.v_after_m_s, cols["v_after_m_s"])

@@ -261,8 +261,8 @@ def turns(
     so the turn count ends the run. Other keywords as in :func:`simulate`.
 
     Returns a :class:`TurnResult`: one numpy array per column and ``summary``,
-    the long-run means of a/(g sin alpha) whose value the note's eqs.
-    (77)-(79) estimate as 4/9.
+    the long-run means of a/(g sin alpha) whose value the note's
+    eqs. (77)-(79) estimate as 4/9.
 
     Raises ``ValueError`` for bad parameters or a model that is not a turn
     model, ``RuntimeError`` when the integration fails.
