@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# The project's test command (README): every Rust test of the workspace, then
-# `snowroll paper --strict` (fails when any verdict differs from the one the
-# claims table expects) and the browser test of the report it writes (installs
+# The project's test command (README): every Rust test of the workspace, the
+# Python package's tests (scripts/test-python.sh), then `snowroll paper
+# --strict` (fails when any verdict differs from the one the claims table
+# expects) and the browser test of the report it writes (installs
 # Debian's chromium first if it is missing; needs root or sudo for that).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 cargo test --workspace --all-features
+
+# The Python package: one wheel, pytest against the release CLI.
+bash scripts/test-python.sh
 
 report_dir=$(mktemp -d)
 trap 'rm -rf "$report_dir"' EXIT

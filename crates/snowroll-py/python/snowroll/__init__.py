@@ -1,0 +1,306 @@
+"""snowroll: a log rolling down a snowy slope, picking up snow as it goes.
+
+Every model of K. T. McDonald's note, computed by the Rust library ``snowroll``
+(the same code as the ``snowroll`` command line, so a run here equals the CLI's
+run with the same parameters to the last bit). Keyword names are the
+project's one parameter vocabulary: the CLI's long flags in snake_case
+(``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``, ``length``, ``v0``,
+``t_end``, ``x_end``, ``times``, ``dt``, ``turns``, ``rtol``, ``atol``, ``mu``,
+``collision``). Units are SI, angles in degrees.
+
+>>> import snowroll
+>>> r = snowroll.simulate("torque-cm", alpha_deg=30, snow_depth=0.01, t_end=10)
+>>> r.stop["reason"], r.v_m_s[-1] > 0
+('end-time', True)
+
+Functions: :func:`simulate`, :func:`turns`, :func:`models`. Bad parameters
+raise ``ValueError`` with the library's message, a failed integration
+``RuntimeError``. The computation runs with the GIL released, so threads
+calling these functions run in parallel.
+"""
+
+from __future__ import annotations
+
+import warnings as _warnings
+from typing import Any, Dict, Iterator, List, Optional, Sequence
+
+from . import _snowroll
+
+__version__: str = _snowroll.__version__
+
+__all__ = ["simulate", "turns", "models", "Result", "TurnResult", "__version__"]
+
+
+class _Columns:
+    """Columns as numpy arrays, by attribute (``r.v_m_s``) or key (``r["v_m_s"]``)."""
+
+    _columns: Dict[str, Any]
+
+    @property
+    def columns(self) -> List[str]:
+        """The column names, in the order of the CLI's CSV header."""
+        return list(self._columns)
+
+    def __getitem__(self, name: str) -> Any:
+        return self._columns[name]
+
+    def __getattr__(self, name: str) -> Any:
+        # Only called when normal lookup fails: columns by attribute.
+        columns = self.__dict__.get("_columns", {})
+        if name in columns:
+            return columns[name]
+        raise AttributeError(
+            f"{type(self).__name__} has no attribute or column {name!r}; "
+            f"columns: {', '.join(columns)}"
+        )
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._columns
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._columns)
+
+    def __len__(self) -> int:
+        first = next(iter(self._columns.values()), None)
+        return 0 if first is None else len(first)
+
+    def __dir__(self) -> List[str]:
+        return sorted(set(super().__dir__()) | set(self._columns))
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The columns as a dict of numpy arrays (the arrays themselves, not copies)."""
+        return dict(self._columns)
+
+    def to_pandas(self) -> Any:
+        """The columns as a ``pandas.DataFrame`` (needs pandas, not a dependency)."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("to_pandas() needs pandas: pip install pandas") from e
+        frame = pd.DataFrame(self._columns)
+        frame.attrs["params"] = dict(self.params)
+        frame.attrs["stop"] = dict(self.stop)
+        frame.attrs["model"] = self.model
+        frame.attrs["version"] = self.version
+        return frame
+
+    def to_polars(self) -> Any:
+        """The columns as a ``polars.DataFrame`` (needs polars, not a dependency)."""
+        try:
+            import polars as pl
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("to_polars() needs polars: pip install polars") from e
+        return pl.DataFrame(self._columns)
+
+
+class Result(_Columns):
+    """One trajectory: what :func:`simulate` returns.
+
+    Attributes: the columns (``t_s``, ``x_m``, ``v_m_s``, ``a_m_s2``, ``r_m``,
+    ``mass_kg``, ``normal_n``, ``friction_n``, ``friction_ratio`` and, for the
+    turn models, ``turn``, ``theta_rad``, ``omega_rad_s``) as numpy arrays;
+    ``stop`` (dict: ``reason``, ``description``, ``t_s``, ``x_m``, ``v_m_s`` and
+    for the turn models ``turn``, ``theta_rad``, ``omega_rad_s``); ``params``
+    (dict, the keys of the CLI's output metadata); ``model``, ``equation``,
+    ``version``, ``warnings``.
+    """
+
+    def __init__(self, raw: Dict[str, Any]) -> None:
+        self._columns = raw["columns"]
+        self.stop: Dict[str, Any] = raw["stop"]
+        self.params: Dict[str, Any] = raw["params"]
+        self.model: str = raw["model"]
+        self.equation: str = raw["equation"]
+        self.version: str = raw["version"]
+        self.warnings: List[str] = raw["warnings"]
+
+    def __repr__(self) -> str:
+        return (
+            f"<snowroll.Result {self.model} ({self.equation}): {len(self)} samples, "
+            f"stop {self.stop['reason']} at t_s = {self.stop['t_s']}>"
+        )
+
+
+class TurnResult(_Columns):
+    """One row per turn: what :func:`turns` returns.
+
+    Columns as numpy arrays (``turn``, ``t_start_s``, ``x_start_m``,
+    ``v_start_m_s``, ``t_end_s``, ``v_end_m_s``, ``v_after_m_s``,
+    ``collision_loss_j``, ``mean_a_turn_m_s2``, ``min_a_m_s2``, ``max_a_m_s2``,
+    ``mean_a_with_collision_m_s2``, ``min_normal_n``, ``min_normal_over_mg``,
+    ``max_friction_ratio``); ``summary`` (dict: ``g_along_m_s2``, ``turns``,
+    ``checkpoints``, the long-run means of a/(g sin alpha) that the note's
+    eqs. (77)-(79) estimate); ``stop``, ``params``, ``model``, ``equation``,
+    ``version``, ``warnings`` as in :class:`Result`.
+    """
+
+    def __init__(self, raw: Dict[str, Any]) -> None:
+        self._columns = raw["columns"]
+        self.summary: Dict[str, Any] = raw["summary"]
+        self.stop: Dict[str, Any] = raw["stop"]
+        self.params: Dict[str, Any] = raw["params"]
+        self.model: str = raw["model"]
+        self.equation: str = raw["equation"]
+        self.version: str = raw["version"]
+        self.warnings: List[str] = raw["warnings"]
+
+    def __repr__(self) -> str:
+        return (
+            f"<snowroll.TurnResult {self.model} ({self.equation}): {len(self)} turns, "
+            f"stop {self.stop['reason']}>"
+        )
+
+
+def _warn(messages: Sequence[str]) -> None:
+    for m in messages:
+        _warnings.warn(m, RuntimeWarning, stacklevel=3)
+
+
+def simulate(
+    model: str = "torque-cm",
+    *,
+    alpha_deg: Optional[float] = None,
+    snow_depth: Optional[float] = None,
+    r0: Optional[float] = None,
+    g: Optional[float] = None,
+    density: Optional[float] = None,
+    length: Optional[float] = None,
+    v0: Optional[float] = None,
+    t_end: Optional[float] = None,
+    x_end: Optional[float] = None,
+    times: Optional[Sequence[float]] = None,
+    dt: Optional[float] = None,
+    turns: Optional[int] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    mu: Optional[float] = None,
+    collision: Optional[str] = None,
+) -> Result:
+    """Integrate one model for one scenario (the CLI's ``snowroll simulate``).
+
+    ``model``: an id or equation alias from :func:`models` (case-insensitive):
+    ``"snowless"`` (eq95), ``"torque-cm"`` (eq4, torque about the centre of
+    mass), ``"torque-contact"`` (eq6), ``"energy"`` (eq14), ``"energy-thin"``
+    (eq15), ``"lagrangian-printed"`` (eq21), ``"quasi-circular"`` (eq32),
+    ``"quasi-circular-lift"`` (eq32+36), ``"loney"`` (fn4, closed form),
+    ``"turns"`` (eq73: eqs. (73), (76), (89)), ``"turns-exact"`` (eq88).
+
+    Scenario (``None`` = the default): ``alpha_deg`` slope angle, degrees,
+    0 < alpha < 90 (30); ``snow_depth`` b, m, >= 0 (0.01); ``r0`` initial radius,
+    m (0.1); ``g``, m/s^2 (9.81); ``density``, kg/m^3 (400); ``length``, m (1);
+    ``v0`` initial speed, m/s (0). The radius grows as r(x) = sqrt(r0^2 + b x / pi),
+    eq. (8).
+
+    Run: ``t_end`` end time, s (100); ``x_end`` end distance, m (none);
+    ``turns`` number of full turns (turn models only; none); ``rtol`` (1e-10),
+    ``atol`` (1e-12) integrator tolerances; ``mu`` coefficient of static
+    friction: stop with ``slip`` where |F| reaches mu N (none); ``collision``
+    how a turn model climbs each new layer: ``"note"`` (eq. (89), default),
+    ``"charged"``, ``"pivot"``.
+
+    Sampling: every accepted step by default; ``times`` exactly these times, s
+    (ascending); ``dt`` a regular grid 0, dt, 2 dt, ... up to the stop.
+
+    Returns a :class:`Result`: columns as numpy arrays (``r.v_m_s`` or
+    ``r["v_m_s"]``), ``r.stop``, ``r.params``, ``r.version``, ``r.to_pandas()``.
+    Validity warnings of the model (b/r0 beyond its range) are issued as
+    ``RuntimeWarning`` and kept in ``r.warnings``.
+
+    Raises ``ValueError`` for bad parameters (the library's message) and
+    ``RuntimeError`` when the integration fails.
+    """
+    raw = _snowroll.simulate(
+        model,
+        alpha_deg=alpha_deg,
+        snow_depth=snow_depth,
+        r0=r0,
+        g=g,
+        density=density,
+        length=length,
+        v0=v0,
+        t_end=t_end,
+        x_end=x_end,
+        times=None if times is None else [float(t) for t in times],
+        dt=dt,
+        turns=turns,
+        rtol=rtol,
+        atol=atol,
+        mu=mu,
+        collision=collision,
+    )
+    result = Result(raw)
+    _warn(result.warnings)
+    return result
+
+
+def turns(
+    model: str = "turns",
+    *,
+    turns: Optional[int] = None,
+    alpha_deg: Optional[float] = None,
+    snow_depth: Optional[float] = None,
+    r0: Optional[float] = None,
+    g: Optional[float] = None,
+    density: Optional[float] = None,
+    length: Optional[float] = None,
+    v0: Optional[float] = None,
+    t_end: Optional[float] = None,
+    x_end: Optional[float] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    mu: Optional[float] = None,
+    collision: Optional[str] = None,
+) -> TurnResult:
+    """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
+    one row per turn (the CLI's ``snowroll turns``).
+
+    ``model``: ``"turns"`` (the note's eqs. (73), (76), alias ``eq73``) or
+    ``"turns-exact"`` (exact geometry, eq. (88), alias ``eq88``). Each turn
+    integrates eq. (64); at its end the log climbs the new layer by the
+    collision ``collision`` (``"note"``: eq. (89)). ``t_end`` defaults to 1e9 s,
+    so the turn count ends the run. Other keywords as in :func:`simulate`.
+
+    Returns a :class:`TurnResult`: one numpy array per column and ``summary``,
+    the long-run means of a/(g sin alpha) whose value the note's
+    eqs. (77)-(79) estimate as 4/9.
+
+    Raises ``ValueError`` for bad parameters or a model that is not a turn
+    model, ``RuntimeError`` when the integration fails.
+    """
+    raw = _snowroll.turns(
+        model,
+        turns=turns,
+        alpha_deg=alpha_deg,
+        snow_depth=snow_depth,
+        r0=r0,
+        g=g,
+        density=density,
+        length=length,
+        v0=v0,
+        t_end=t_end,
+        x_end=x_end,
+        rtol=rtol,
+        atol=atol,
+        mu=mu,
+        collision=collision,
+    )
+    result = TurnResult(raw)
+    _warn(result.warnings)
+    return result
+
+
+def models(
+    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
+) -> List[Dict[str, Any]]:
+    """Every model (the CLI's ``snowroll models``), one dict each.
+
+    Keys: ``id``, ``alias`` (e.g. ``eq4``), ``equation`` (the note's equation
+    number), ``description``, ``terminal_fraction`` (late-time acceleration
+    over g sin alpha, e.g. 2/3 for eq. (4) with no snow, or ``None``),
+    ``stall_slope_deg`` (the slope below which the model started from rest
+    does not roll on, fn. 7, for ``snow_depth`` and ``r0``, by default the
+    default scenario's 0.01 m and 0.1 m; ``None`` when it always rolls),
+    ``stall_kind`` (``"does-not-start"`` or ``"stalls-in-first-turn"``),
+    ``validity`` (order in b/r kept, largest b/r0 without a warning, statement).
+    """
+    return _snowroll.models(snow_depth=snow_depth, r0=r0)

@@ -1,0 +1,77 @@
+"""Type stubs of the native module ``snowroll._snowroll`` (Rust, PyO3).
+
+Use the functions of the package ``snowroll`` instead: they wrap the dicts
+returned here in ``snowroll.Result`` and ``snowroll.TurnResult``. Every
+keyword left ``None`` takes the library's default, the same as the CLI's.
+"""
+
+from typing import Any, Dict, List, Optional, Sequence
+
+__version__: str
+
+def simulate(
+    model: str = "torque-cm",
+    *,
+    alpha_deg: Optional[float] = None,
+    snow_depth: Optional[float] = None,
+    r0: Optional[float] = None,
+    g: Optional[float] = None,
+    density: Optional[float] = None,
+    length: Optional[float] = None,
+    v0: Optional[float] = None,
+    t_end: Optional[float] = None,
+    x_end: Optional[float] = None,
+    times: Optional[Sequence[float]] = None,
+    dt: Optional[float] = None,
+    turns: Optional[int] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    mu: Optional[float] = None,
+    collision: Optional[str] = None,
+) -> Dict[str, Any]:
+    """Integrate one model (e.g. eq. (4) ``torque-cm``, eq. (14) ``energy``,
+    eq. (32) ``quasi-circular``, eqs. (73), (76) ``turns``) for one scenario,
+    the radius growing as r(x) = sqrt(r0^2 + b x / pi), eq. (8).
+
+    Returns ``{"columns": {name: ndarray}, "stop": dict, "params": dict,
+    "version": str, "model": str, "equation": str, "warnings": [str]}``;
+    columns ``t_s x_m v_m_s a_m_s2 r_m mass_kg normal_n friction_n
+    friction_ratio`` (float64) and for the turn models ``turn`` (uint64),
+    ``theta_rad``, ``omega_rad_s``.
+
+    Raises ValueError (bad parameters) or RuntimeError (failed integration).
+    """
+
+def turns(
+    model: str = "turns",
+    *,
+    turns: Optional[int] = None,
+    alpha_deg: Optional[float] = None,
+    snow_depth: Optional[float] = None,
+    r0: Optional[float] = None,
+    g: Optional[float] = None,
+    density: Optional[float] = None,
+    length: Optional[float] = None,
+    v0: Optional[float] = None,
+    t_end: Optional[float] = None,
+    x_end: Optional[float] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    mu: Optional[float] = None,
+    collision: Optional[str] = None,
+) -> Dict[str, Any]:
+    """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (88)
+    ``turns-exact``; collisions by eq. (89) or the ``charged``/``pivot``
+    variants) for ``turns`` turns (default 100, ``t_end`` default 1e9 s).
+
+    Returns the keys of :func:`simulate` (``columns`` one row per turn) plus
+    ``summary``: the long-run means of a/(g sin alpha) that eqs. (77)-(79)
+    estimate as 4/9.
+    """
+
+def models(
+    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
+) -> List[Dict[str, Any]]:
+    """Every model: ``id``, ``alias``, ``equation``, ``description``,
+    ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
+    and ``stall_kind`` (fn. 7) for ``snow_depth`` and ``r0``, ``validity``."""

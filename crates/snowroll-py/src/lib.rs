@@ -1,0 +1,438 @@
+//! The native half of the `snowroll` Python package (`snowroll._snowroll`).
+//!
+//! A thin binding: every number comes from the `snowroll` library, which this
+//! crate calls exactly as the command line does (the same [`ScenarioFile`]
+//! defaults, the same [`SimOptions`], the same [`RunParams`]), so a run from
+//! Python equals the CLI's run with the same parameters to the last bit. The
+//! keyword names are the one parameter vocabulary of the project: the CLI's
+//! long flags in snake_case. The Python layer (`python/snowroll/__init__.py`)
+//! wraps the dictionaries returned here in its `Result` and `TurnResult`
+//! classes.
+//!
+//! The GIL is released while the library computes ([`Python::detach`]).
+//! Bad parameters raise `ValueError` with the library's message
+//! ([`ParamError`]); a failed integration raises `RuntimeError` ([`SimError`]).
+
+use numpy::IntoPyArray;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use snowroll::integrate::Tolerances;
+use snowroll::{
+    run_turns, validity_warnings, CollisionModel, ModelKind, ParamError, RunParams, Sampling,
+    Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable, TurnVariant,
+};
+
+/// Turns run by `snowroll.turns` when `turns` is not given; the CLI's
+/// `snowroll turns` default (`TURNS_DEFAULT` in its `args.rs`).
+const TURNS_DEFAULT: u64 = 100;
+
+/// End time of `snowroll.turns` when `t_end` is not given, s: the CLI's
+/// `TURNS_T_END_S`, long enough that the turn count ends any realistic run.
+const TURNS_T_END_S: f64 = 1e9;
+
+/// A bad parameter: `ValueError` with the library's message.
+fn value_error(e: ParamError) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// A failed run: `ValueError` for bad parameters found by the run,
+/// `RuntimeError` for a failed integration; both with the library's message.
+fn sim_error(e: SimError) -> PyErr {
+    match e {
+        SimError::Param(p) => value_error(p),
+        other => PyRuntimeError::new_err(other.to_string()),
+    }
+}
+
+/// The parameters shared by `simulate` and `turns`; `None` takes the
+/// library's default (the CLI's default for the same flag).
+struct Inputs {
+    model: String,
+    scenario: [Option<f64>; 7],
+    t_end: Option<f64>,
+    x_end: Option<f64>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    mu: Option<f64>,
+    collision: Option<String>,
+}
+
+impl Inputs {
+    fn model(&self) -> PyResult<ModelKind> {
+        self.model.parse().map_err(value_error)
+    }
+
+    /// The validated scenario, defaults from [`ScenarioFile::default`].
+    fn scenario(&self) -> PyResult<Scenario> {
+        let d = ScenarioFile::default();
+        let [alpha_deg, snow_depth, r0, g, density, length, v0] = self.scenario;
+        Scenario::new(ScenarioFile {
+            alpha_deg: alpha_deg.unwrap_or(d.alpha_deg),
+            snow_depth: snow_depth.unwrap_or(d.snow_depth),
+            r0: r0.unwrap_or(d.r0),
+            g: g.unwrap_or(d.g),
+            density: density.unwrap_or(d.density),
+            length: length.unwrap_or(d.length),
+            v0: v0.unwrap_or(d.v0),
+        })
+        .map_err(value_error)
+    }
+
+    /// The validated options, built as the CLI's `inputs::options` builds them.
+    fn options(
+        &self,
+        t_end_default: f64,
+        sampling: Sampling,
+        turns: Option<u64>,
+    ) -> PyResult<SimOptions> {
+        let d = SimOptions::default();
+        let collision = match &self.collision {
+            None => d.collision,
+            Some(name) => collision(name)?,
+        };
+        let opts = SimOptions {
+            t_end: self.t_end.unwrap_or(t_end_default),
+            x_end: self.x_end.or(d.x_end),
+            turns,
+            tolerances: Tolerances {
+                rtol: self.rtol.unwrap_or(d.tolerances.rtol),
+                atol: self.atol.unwrap_or(d.tolerances.atol),
+                ..d.tolerances
+            },
+            sampling,
+            mu: self.mu,
+            collision,
+            ..d
+        };
+        opts.validate().map_err(value_error)?;
+        Ok(opts)
+    }
+}
+
+/// The collision variant named `name` (`note`, `charged`, `pivot`).
+fn collision(name: &str) -> PyResult<CollisionModel> {
+    serde_json::from_value(serde_json::Value::String(name.to_string())).map_err(|_| {
+        PyValueError::new_err(format!(
+            "unknown collision {name:?}: expected one of note, charged, pivot"
+        ))
+    })
+}
+
+/// `value` (a serde record) as Python objects: numbers, strings, lists,
+/// dicts, `None`.
+fn to_py<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
+    use serde_json::Value;
+    Ok(match value {
+        Value::Null => py.None().into_bound(py),
+        Value::Bool(b) => b.into_pyobject(py)?.to_owned().into_any(),
+        Value::Number(n) => match (n.as_u64(), n.as_i64()) {
+            (Some(u), _) => u.into_pyobject(py)?.into_any(),
+            (None, Some(i)) => i.into_pyobject(py)?.into_any(),
+            _ => n.as_f64().unwrap_or(f64::NAN).into_pyobject(py)?.into_any(),
+        },
+        Value::String(s) => s.into_pyobject(py)?.into_any(),
+        Value::Array(items) => {
+            let list = PyList::empty(py);
+            for item in items {
+                list.append(to_py(py, item)?)?;
+            }
+            list.into_any()
+        }
+        Value::Object(map) => {
+            let dict = PyDict::new(py);
+            for (k, v) in map {
+                dict.set_item(k, to_py(py, v)?)?;
+            }
+            dict.into_any()
+        }
+    })
+}
+
+/// A serde record as a Python object.
+fn record<'py>(py: Python<'py>, value: &impl serde::Serialize) -> PyResult<Bound<'py, PyAny>> {
+    let json = serde_json::to_value(value).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    to_py(py, &json)
+}
+
+/// Adds column `name` built from `items` to `columns`, as a numpy array.
+fn column<'py, T, E>(
+    py: Python<'py>,
+    columns: &Bound<'py, PyDict>,
+    name: &str,
+    items: &[T],
+    f: impl Fn(&T) -> E,
+) -> PyResult<()>
+where
+    E: numpy::Element,
+{
+    let values: Vec<E> = items.iter().map(f).collect();
+    columns.set_item(name, values.into_pyarray(py))
+}
+
+/// The stop as a dict: reason (kebab-case id), description, t_s, x_m, v_m_s
+/// and, for the turn models, turn, theta_rad, omega_rad_s.
+fn stop<'py>(py: Python<'py>, s: &Stop) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("reason", record(py, &s.reason)?)?;
+    d.set_item("description", s.reason.describe())?;
+    d.set_item("t_s", s.t_s)?;
+    d.set_item("x_m", s.x_m)?;
+    d.set_item("v_m_s", s.v_m_s)?;
+    if let Some(k) = s.turn {
+        d.set_item("turn", k.turn)?;
+        d.set_item("theta_rad", k.theta_rad)?;
+        d.set_item("omega_rad_s", k.omega_rad_s)?;
+    }
+    Ok(d)
+}
+
+/// What both runs return besides their columns: version, model, params,
+/// stop, warnings.
+fn common<'py>(
+    py: Python<'py>,
+    model: ModelKind,
+    params: &RunParams,
+    s: &Stop,
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    out.set_item("version", snowroll::output::VERSION)?;
+    out.set_item("model", model.id())?;
+    out.set_item("equation", model.equation())?;
+    out.set_item("params", record(py, params)?)?;
+    out.set_item("stop", stop(py, s)?)?;
+    out.set_item("warnings", params.warnings.clone())?;
+    Ok(out)
+}
+
+/// The columns of a trajectory, named as in the CLI's CSV header.
+fn trajectory_columns<'py>(py: Python<'py>, traj: &Trajectory) -> PyResult<Bound<'py, PyDict>> {
+    let c = PyDict::new(py);
+    let s = &traj.samples;
+    column(py, &c, "t_s", s, |s| s.t_s)?;
+    column(py, &c, "x_m", s, |s| s.x_m)?;
+    column(py, &c, "v_m_s", s, |s| s.v_m_s)?;
+    column(py, &c, "a_m_s2", s, |s| s.a_m_s2)?;
+    column(py, &c, "r_m", s, |s| s.r_m)?;
+    column(py, &c, "mass_kg", s, |s| s.mass_kg)?;
+    column(py, &c, "normal_n", s, |s| s.normal_n)?;
+    column(py, &c, "friction_n", s, |s| s.friction_n)?;
+    column(py, &c, "friction_ratio", s, |s| s.friction_ratio)?;
+    let k = &traj.turn_states;
+    if !k.is_empty() && k.len() == s.len() {
+        column(py, &c, "turn", k, |k| k.turn)?;
+        column(py, &c, "theta_rad", k, |k| k.theta_rad)?;
+        column(py, &c, "omega_rad_s", k, |k| k.omega_rad_s)?;
+    }
+    Ok(c)
+}
+
+/// One row per turn, named as in the CLI's `snowroll turns` CSV header.
+fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, PyDict>> {
+    let c = PyDict::new(py);
+    let r = &table.rows;
+    column(py, &c, "turn", r, |r| r.turn)?;
+    column(py, &c, "t_start_s", r, |r| r.t_start_s)?;
+    column(py, &c, "x_start_m", r, |r| r.x_start_m)?;
+    column(py, &c, "v_start_m_s", r, |r| r.v_start_m_s)?;
+    column(py, &c, "t_end_s", r, |r| r.t_end_s)?;
+    column(py, &c, "v_end_m_s", r, |r| r.v_end_m_s)?;
+    column(py, &c, "v_after_m_s", r, |r| r.v_after_m_s)?;
+    column(py, &c, "collision_loss_j", r, |r| r.collision_loss_j)?;
+    column(py, &c, "mean_a_turn_m_s2", r, |r| r.mean_a_turn_m_s2)?;
+    column(py, &c, "min_a_m_s2", r, |r| r.min_a_m_s2)?;
+    column(py, &c, "max_a_m_s2", r, |r| r.max_a_m_s2)?;
+    column(py, &c, "mean_a_with_collision_m_s2", r, |r| {
+        r.mean_a_with_collision_m_s2
+    })?;
+    column(py, &c, "min_normal_n", r, |r| r.min_normal_n)?;
+    column(py, &c, "min_normal_over_mg", r, |r| r.min_normal_over_mg)?;
+    column(py, &c, "max_friction_ratio", r, |r| r.max_friction_ratio)?;
+    Ok(c)
+}
+
+/// Runs one model for one scenario (`snowroll simulate`); returns a dict
+/// with `columns`, `stop`, `params`, `version`, `model`, `equation`,
+/// `warnings`. The Python layer wraps it in `snowroll.Result`.
+#[pyfunction]
+#[pyo3(signature = (
+    model = "torque-cm", *, alpha_deg = None, snow_depth = None, r0 = None, g = None,
+    density = None, length = None, v0 = None, t_end = None, x_end = None, times = None,
+    dt = None, turns = None, rtol = None, atol = None, mu = None, collision = None
+))]
+#[allow(clippy::too_many_arguments)]
+fn simulate<'py>(
+    py: Python<'py>,
+    model: &str,
+    alpha_deg: Option<f64>,
+    snow_depth: Option<f64>,
+    r0: Option<f64>,
+    g: Option<f64>,
+    density: Option<f64>,
+    length: Option<f64>,
+    v0: Option<f64>,
+    t_end: Option<f64>,
+    x_end: Option<f64>,
+    times: Option<Vec<f64>>,
+    dt: Option<f64>,
+    turns: Option<u64>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    mu: Option<f64>,
+    collision: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let inputs = Inputs {
+        model: model.to_string(),
+        scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
+        t_end,
+        x_end,
+        rtol,
+        atol,
+        mu,
+        collision,
+    };
+    let kind = inputs.model()?;
+    if turns.is_some() && TurnVariant::of(kind).is_none() {
+        return Err(PyValueError::new_err(format!(
+            "turns applies only to the turn models turns, turns-exact, not to {}",
+            kind.id()
+        )));
+    }
+    let sampling = match (times, dt) {
+        (Some(ts), None) => Sampling::Times(ts),
+        (None, Some(dt)) => Sampling::Every(dt),
+        (None, None) => SimOptions::default().sampling,
+        (Some(_), Some(_)) => {
+            return Err(PyValueError::new_err(
+                "`times` and `dt` conflict, give one of them",
+            ))
+        }
+    };
+    let scenario = inputs.scenario()?;
+    let opts = inputs.options(SimOptions::default().t_end, sampling, turns)?;
+    let traj = py
+        .detach(|| kind.build().simulate(&scenario, &opts))
+        .map_err(sim_error)?;
+    let mut params = RunParams::new(&scenario, &opts);
+    params.warnings = validity_warnings(kind, &scenario)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    let out = common(py, kind, &params, &traj.stop)?;
+    out.set_item("columns", trajectory_columns(py, &traj)?)?;
+    Ok(out)
+}
+
+/// Runs a turn model for a number of turns (`snowroll turns`); returns a
+/// dict with `columns` (one row per turn), `summary`, `stop`, `params`,
+/// `version`, `model`, `equation`, `warnings`.
+#[pyfunction]
+#[pyo3(signature = (
+    model = "turns", *, turns = None, alpha_deg = None, snow_depth = None, r0 = None,
+    g = None, density = None, length = None, v0 = None, t_end = None, x_end = None,
+    rtol = None, atol = None, mu = None, collision = None
+))]
+#[allow(clippy::too_many_arguments)]
+fn turns<'py>(
+    py: Python<'py>,
+    model: &str,
+    turns: Option<u64>,
+    alpha_deg: Option<f64>,
+    snow_depth: Option<f64>,
+    r0: Option<f64>,
+    g: Option<f64>,
+    density: Option<f64>,
+    length: Option<f64>,
+    v0: Option<f64>,
+    t_end: Option<f64>,
+    x_end: Option<f64>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    mu: Option<f64>,
+    collision: Option<String>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let inputs = Inputs {
+        model: model.to_string(),
+        scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
+        t_end,
+        x_end,
+        rtol,
+        atol,
+        mu,
+        collision,
+    };
+    let kind = inputs.model()?;
+    if TurnVariant::of(kind).is_none() {
+        return Err(PyValueError::new_err(format!(
+            "turns() needs a turn model, one of turns, turns-exact (aliases eq73, eq88), not {}",
+            kind.id()
+        )));
+    }
+    let scenario = inputs.scenario()?;
+    let wanted = turns.unwrap_or(TURNS_DEFAULT);
+    // Only the turn ends are recorded, as by the CLI.
+    let opts = inputs.options(TURNS_T_END_S, Sampling::Ends, Some(wanted))?;
+    let table = py
+        .detach(|| run_turns(kind, &scenario, &opts))
+        .map_err(sim_error)?;
+    let mut params = RunParams::new(&scenario, &opts);
+    params.sampling = "one row per turn".to_string();
+    params.warnings = validity_warnings(kind, &scenario)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    let out = common(py, kind, &params, &table.stop)?;
+    out.set_item("columns", turn_columns(py, &table)?)?;
+    out.set_item("summary", record(py, &table.summary)?)?;
+    Ok(out)
+}
+
+/// Every model: id, alias, equation, description, terminal fraction
+/// a_inf/(g sin alpha), stall slope (degrees) and stall kind for the given
+/// snow depth and radius (default: the default scenario's), validity.
+#[pyfunction]
+#[pyo3(signature = (*, snow_depth = None, r0 = None))]
+fn models<'py>(
+    py: Python<'py>,
+    snow_depth: Option<f64>,
+    r0: Option<f64>,
+) -> PyResult<Bound<'py, PyList>> {
+    let d = ScenarioFile::default();
+    // Validates b and r0 as a scenario does.
+    let scenario = Scenario::new(ScenarioFile {
+        snow_depth: snow_depth.unwrap_or(d.snow_depth),
+        r0: r0.unwrap_or(d.r0),
+        ..d
+    })
+    .map_err(value_error)?;
+    let (b, r0) = (scenario.snow_depth(), scenario.initial_radius());
+    let list = PyList::empty(py);
+    for kind in ModelKind::ALL {
+        let row = PyDict::new(py);
+        row.set_item("id", kind.id())?;
+        row.set_item("alias", kind.alias())?;
+        row.set_item("equation", kind.equation())?;
+        row.set_item("description", kind.description())?;
+        row.set_item("terminal_fraction", kind.terminal_fraction())?;
+        let stall = kind.stall_threshold(b, r0);
+        row.set_item("stall_slope_deg", stall.map(|t| t.slope.to_degrees()))?;
+        let stall_kind = match stall {
+            Some(t) => Some(record(py, &t.kind)?),
+            None => None,
+        };
+        row.set_item("stall_kind", stall_kind)?;
+        row.set_item("validity", record(py, &kind.validity())?)?;
+        list.append(row)?;
+    }
+    Ok(list)
+}
+
+/// The native module `snowroll._snowroll`.
+#[pymodule]
+fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", snowroll::output::VERSION)?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(turns, m)?)?;
+    m.add_function(wrap_pyfunction!(models, m)?)?;
+    Ok(())
+}

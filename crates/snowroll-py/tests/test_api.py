@@ -1,0 +1,99 @@
+"""The Result object, the package surface, and two closed forms that pin the
+columns to their physical meaning."""
+
+import math
+
+import numpy as np
+import pytest
+
+import snowroll
+
+
+def test_columns_by_attribute_and_key():
+    r = snowroll.simulate("torque-cm", t_end=5)
+    assert r.columns[:4] == ["t_s", "x_m", "v_m_s", "a_m_s2"]
+    for name in r.columns:
+        assert r[name] is getattr(r, name)
+        assert isinstance(r[name], np.ndarray) and r[name].dtype == np.float64
+        assert len(r[name]) == len(r)
+    assert "v_m_s" in r and "turn" not in r
+    assert r.stop["reason"] == "end-time" and r.stop["t_s"] == 5
+    assert r.params["alpha_deg"] == 30 and r.params["x_end"] is None
+    assert r.version == snowroll.__version__
+    with pytest.raises(AttributeError, match="no attribute or column"):
+        r.no_such_column
+    with pytest.raises(KeyError):
+        r["no_such_column"]
+
+
+def test_turn_models_have_turn_columns():
+    r = snowroll.simulate("turns", turns=3)
+    assert r.columns[-3:] == ["turn", "theta_rad", "omega_rad_s"]
+    assert r.turn.dtype == np.uint64
+    assert r.stop["reason"] == "turns" and r.stop["turn"] == 2
+
+
+def test_snowless_acceleration_is_two_thirds_g_sin_alpha():
+    """A solid cylinder rolling without slipping: a = (2/3) g sin alpha (App. A).
+    Tolerance 1e-12 relative: a few roundings of g sin alpha times 2/3."""
+    alpha, g = 35.0, 9.81
+    r = snowroll.simulate("snowless", alpha_deg=alpha, snow_depth=0, g=g, dt=0.5, t_end=3)
+    expected = 2.0 / 3.0 * g * math.sin(math.radians(alpha))
+    assert np.allclose(r.a_m_s2, expected, rtol=1e-12, atol=0)
+    assert np.allclose(r.v_m_s, expected * r.t_s, rtol=1e-12, atol=1e-15)
+
+
+def test_radius_follows_eq_8():
+    """r(x) = sqrt(r0^2 + b x / pi), eq. (8), along a snowy trajectory; the
+    same formula evaluated here in numpy, so agreement to 1e-12 relative
+    (rounding of a square root and a few products)."""
+    b, r0 = 0.01, 0.12
+    r = snowroll.simulate("energy", snow_depth=b, r0=r0, t_end=10)
+    assert np.allclose(r.r_m, np.sqrt(r0**2 + b * r.x_m / math.pi), rtol=1e-12, atol=0)
+
+
+def test_requested_times():
+    ts = [0.0, 0.5, 2.0, 4.0]
+    r = snowroll.simulate(times=np.array(ts), t_end=10)
+    assert r.t_s.tolist() == ts
+    assert r.params["times"] == ts
+
+
+def test_models_listing():
+    listed = snowroll.models()
+    ids = [m["id"] for m in listed]
+    assert "torque-cm" in ids and "turns-exact" in ids
+    torque = next(m for m in listed if m["id"] == "torque-cm")
+    assert torque["alias"] == "eq4" and torque["equation"] == "eq. (4)"
+    with pytest.raises(ValueError):
+        snowroll.models(r0=-1)
+
+
+def test_turns_summary():
+    t = snowroll.turns(turns=20)
+    assert len(t) == 20 and t.turn.tolist() == list(range(20))
+    assert t.summary["turns"] == 20
+    # Turn k+1 starts where turn k ends: contact position advances by 2 pi r_k.
+    assert np.all(np.diff(t.x_start_m) > 0)
+    assert np.array_equal(t.t_start_s[1:], t.t_end_s[:-1])
+
+
+def test_help_cites_the_note():
+    doc = snowroll.simulate.__doc__
+    assert "eq. (8)" in doc and "alpha_deg" in doc and "ValueError" in doc
+    assert "eqs. (77)-(79)" in snowroll.turns.__doc__
+
+
+def test_to_pandas():
+    pd = pytest.importorskip("pandas")
+    r = snowroll.simulate(t_end=2)
+    frame = r.to_pandas()
+    assert isinstance(frame, pd.DataFrame)
+    assert list(frame.columns) == r.columns
+    assert np.array_equal(frame["v_m_s"].to_numpy(), r.v_m_s)
+
+
+def test_validity_warning_is_issued():
+    with pytest.warns(RuntimeWarning, match="snowless ignores the snow"):
+        r = snowroll.simulate("snowless", t_end=1)
+    assert r.warnings

@@ -1,0 +1,80 @@
+"""No memory growth over 10^5 calls, and threads calling at once get the
+same results as one thread (the GIL is released during the computation, so
+the runs really overlap)."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import snowroll
+
+
+def rss_bytes():
+    """Resident set size of this process, from /proc (Linux)."""
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) * 1024
+    pytest.skip("no VmRSS in /proc/self/status")
+
+
+def cheap_calls(n):
+    # The cheapest run with every part of the result: a few steps, numpy
+    # columns, stop and params dicts; every 10th call a ValueError.
+    for i in range(n):
+        if i % 10 == 9:
+            try:
+                snowroll.simulate("torque-cm", alpha_deg=95)
+            except ValueError:
+                pass
+        else:
+            r = snowroll.simulate("torque-cm", t_end=0.01, times=[0.0, 0.01])
+            assert len(r) == 2
+
+
+def test_no_memory_growth_over_1e5_calls():
+    """After a warm-up (allocator pools, numpy caches), 10^5 more calls may
+    not grow the RSS by more than 4 MiB. A leak of even the smallest object
+    each call leaves behind (a dict of 7 keys, ~200 bytes; one column array,
+    ~100 bytes) would grow it by 10 MiB or more."""
+    cheap_calls(10_000)
+    before = rss_bytes()
+    cheap_calls(100_000)
+    growth = rss_bytes() - before
+    assert growth < 4 * 2**20, f"RSS grew by {growth / 2**20:.1f} MiB over 10^5 calls"
+
+
+def test_threads_give_the_same_results():
+    cases = [
+        ("torque-cm", {"alpha_deg": 20 + k, "t_end": 30}) for k in range(4)
+    ] + [("turns-exact", {"turns": 40, "alpha_deg": 35}), ("energy", {"dt": 0.01, "t_end": 60})]
+    serial = [snowroll.simulate(m, **kw) for m, kw in cases]
+    results = {}
+    errors = []
+    start = threading.Barrier(len(cases) * 2)
+
+    def work(slot, model, kwargs):
+        try:
+            start.wait()
+            results[slot] = snowroll.simulate(model, **kwargs)
+        except Exception as e:  # reported below
+            errors.append(e)
+
+    threads = [
+        threading.Thread(target=work, args=(2 * i + j, m, kw))
+        for i, (m, kw) in enumerate(cases)
+        for j in range(2)
+    ]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors, errors
+    for i, expected in enumerate(serial):
+        for j in range(2):
+            got = results[2 * i + j]
+            assert got.columns == expected.columns
+            for name in expected.columns:
+                assert np.array_equal(got[name], expected[name]), (i, name)
+            assert got.stop == expected.stop

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The Python package's tests (issue 13): a virtual environment in target/,
+# pinned maturin, pytest and numpy, the wheel built ONCE from
+# crates/snowroll-py and installed, then pytest against the release CLI
+# (crates/snowroll-py/tests compare every value with the CLI's to the bit).
+# Needs python3 (>= 3.9) with the venv module.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+
+venv=target/pyenv-test
+wheels=target/wheels
+if [ ! -x "$venv/bin/python" ]; then
+    python3 -m venv "$venv"
+fi
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
+    "maturin==1.16.0" "pytest==8.4.2" "numpy==2.3.4"
+
+# The CLI the tests compare with, from the same sources (a no-op when built).
+cargo build --release --quiet -p snowroll-cli
+
+# One wheel, built once per run and reused by every test.
+rm -f "$wheels"/snowroll-*.whl
+"$venv/bin/maturin" build --release --quiet -m crates/snowroll-py/Cargo.toml \
+    --interpreter "$venv/bin/python" --out "$wheels"
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
+    --force-reinstall --no-deps "$wheels"/snowroll-*.whl
+
+# Run from the tests directory so that `import snowroll` is the installed
+# wheel, not the source tree.
+cd crates/snowroll-py/tests
+SNOWROLL_CLI="$root/target/release/snowroll" "$root/$venv/bin/python" -m pytest -q -p no:cacheprovider .
