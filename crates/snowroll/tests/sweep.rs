@@ -146,3 +146,13 @@ fn app_a_snowless_rows_match_the_closed_form() {
         assert_eq!(row.turns, Some(turns));
     }
 }
+
+#[test]
+fn columns_are_the_serialised_header() {
+    let g = grid();
+    let row = run_point(&g, 0).unwrap();
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.serialize(&row).unwrap();
+    let text = String::from_utf8(w.into_inner().unwrap()).unwrap();
+    assert_eq!(text.lines().next().unwrap(), SweepRow::COLUMNS.join(","));
+}

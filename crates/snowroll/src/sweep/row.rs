@@ -64,6 +64,31 @@ pub struct SweepRow {
 }
 
 impl SweepRow {
+    /// The column names, in order: the field names (a test checks them
+    /// against the serialised header).
+    pub const COLUMNS: [&'static str; 20] = [
+        "index",
+        "model",
+        "alpha_deg",
+        "snow_depth",
+        "r0",
+        "g",
+        "density",
+        "length",
+        "v0",
+        "t_end",
+        "x_end",
+        "rtol",
+        "atol",
+        "stop",
+        "t_s",
+        "x_m",
+        "v_m_s",
+        "a_over_g_sin_alpha",
+        "turns",
+        "error",
+    ];
+
     /// The row of `point` with its parameters and no results.
     fn parameters(point: &Point) -> SweepRow {
         let s = ScenarioFile::from(point.scenario);
