@@ -11,6 +11,7 @@ use std::fmt::Display;
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use snowroll::sweep::Method;
 use snowroll::{CollisionModel, Format, ModelKind, ScenarioFile, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
@@ -424,6 +425,10 @@ pub struct SweepArgs {
     /// Do not show the progress bar
     #[arg(long, short)]
     pub quiet: bool,
+
+    /// auto: circular models (and loney) from the closed-form speed and one quadrature for the time where they do not come near a stall and rtol >= 1e-12 (accurate to about 1e-12), the ODE elsewhere; ode: always the model's own solver
+    #[arg(long, value_enum, default_value_t = Method::Auto)]
+    pub method: Method,
 
     /// Rows computed and written at a time (tests and tuning; the result does not depend on it)
     #[arg(long, value_name = "N", hide = true, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]

@@ -1,7 +1,9 @@
 //! Sweeps: grid order under parallelism, bit-identical rows for any thread
 //! count, chunk size and shard split, and rows that agree with single runs.
 
-use snowroll::sweep::{run_chunks, run_point, shard_range, Axis, Grid, Param, SweepRow, Values};
+use snowroll::sweep::{
+    run_chunks, run_point, shard_range, Axis, Grid, Method, Param, SweepRow, Values,
+};
 use snowroll::{ModelKind, ParamError, Sampling, SimOptions, StopReason};
 
 fn axis(param: Param, text: &str) -> Axis {
@@ -41,7 +43,7 @@ fn collect(
         .unwrap();
     let mut rows = Vec::new();
     pool.install(|| {
-        run_chunks(grid, range, chunk, |c| {
+        run_chunks(grid, range, chunk, Method::Auto, |c| {
             rows.extend_from_slice(c);
             Ok::<(), ParamError>(())
         })
@@ -101,7 +103,7 @@ fn shards_partition_the_grid() {
 fn rows_summarise_single_runs() {
     let g = grid();
     for i in 0..g.len() {
-        let row = run_point(&g, i).unwrap();
+        let row = run_point(&g, i, Method::Ode).unwrap();
         let p = g.point(i).unwrap();
         let opts = SimOptions {
             sampling: Sampling::Steps,
@@ -135,7 +137,7 @@ fn app_a_snowless_rows_match_the_closed_form() {
     )
     .unwrap();
     for i in 0..g.len() {
-        let row = run_point(&g, i).unwrap();
+        let row = run_point(&g, i, Method::Ode).unwrap();
         let a = 2.0 / 3.0 * row.g * row.alpha_deg.to_radians().sin();
         let x = 0.5 * a * 16.0;
         // DOP853 at rtol 1e-10 on a constant acceleration: exact to rounding.
@@ -150,9 +152,56 @@ fn app_a_snowless_rows_match_the_closed_form() {
 #[test]
 fn columns_are_the_serialised_header() {
     let g = grid();
-    let row = run_point(&g, 0).unwrap();
+    let row = run_point(&g, 0, Method::Auto).unwrap();
     let mut w = csv::Writer::from_writer(Vec::new());
     w.serialize(&row).unwrap();
     let text = String::from_utf8(w.into_inner().unwrap()).unwrap();
     assert_eq!(text.lines().next().unwrap(), SweepRow::COLUMNS.join(","));
+}
+
+/// The fast path (closed-form v(x), quadrature for t) and the ODE path at
+/// rtol 1e-13 agree to 1e-9 relative on every circular model, from rest and
+/// moving, to t_end and to x_end, on thin and thick snow. The ODE's own
+/// error at rtol 1e-13 is about 1e-12 over these runs; 1e-9 is the issue's
+/// requirement.
+#[test]
+fn fast_path_agrees_with_the_ode_to_1e_9() {
+    const AGREE: f64 = 1e-9;
+    let models: Vec<ModelKind> = ModelKind::ALL
+        .into_iter()
+        .filter(|m| m.derivation().is_some() || *m == ModelKind::Loney)
+        .collect();
+    let g = Grid::new(
+        models,
+        vec![
+            axis(Param::AlphaDeg, "3,10,25,45,80"),
+            axis(Param::SnowDepth, "0,0.001,0.05,0.3"),
+            axis(Param::V0, "0,0.01,2"),
+            axis(Param::TEnd, "0.5,100"),
+            axis(Param::XEnd, "3,1e9"),
+            axis(Param::Rtol, "1e-12"),
+            axis(Param::Atol, "1e-14"),
+        ],
+    )
+    .unwrap();
+    let mut fast_rows = 0;
+    for i in 0..g.len() {
+        let fast = run_point(&g, i, Method::Auto).unwrap();
+        let mut p = g.point(i).unwrap();
+        p.options.tolerances.rtol = 1e-13;
+        p.options.tolerances.atol = 1e-15;
+        let traj = p.model.build().simulate(&p.scenario, &p.options).unwrap();
+        let end = traj.samples.last().unwrap();
+        assert_eq!(fast.stop, Some(traj.stop.reason), "{fast:?}");
+        let close = |a: Option<f64>, b: f64| (a.unwrap() - b).abs() <= AGREE * b.abs().max(1e-6);
+        assert!(close(fast.t_s, end.t_s), "t: {fast:?} vs {end:?}");
+        assert!(close(fast.x_m, end.x_m), "x: {fast:?} vs {end:?}");
+        assert!(close(fast.v_m_s, end.v_m_s), "v: {fast:?} vs {end:?}");
+        let ode = run_point(&g, i, Method::Ode).unwrap();
+        if format!("{:?}", fast.x_m) != format!("{:?}", ode.x_m) {
+            fast_rows += 1;
+        }
+    }
+    // Most rows took the fast path (the others stall or do not start).
+    assert!(fast_rows * 2 > g.len(), "{fast_rows} of {}", g.len());
 }

@@ -21,7 +21,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rustix::fs::{flock, FlockOperation};
 use snowroll::output::VERSION;
 use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Grid, Param, SweepRow, Values, DEFAULT_CHUNK,
+    run_chunks, shard_range, Axis, Grid, Method, Param, SweepRow, Values, DEFAULT_CHUNK,
 };
 use snowroll::ModelKind;
 
@@ -69,7 +69,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             }
             sink.write_all(header.as_bytes())
                 .with_context(|| format!("writing {name}"))?;
-            write_rows(&grid, range, chunk, &mut sink, &bar, || Ok(()))
+            write_rows(&grid, range, chunk, args.method, &mut sink, &bar, || Ok(()))
                 .with_context(|| format!("writing {name}"))?;
             bar.finish_and_clear();
             sink.commit().with_context(|| format!("writing {name}"))?;
@@ -89,6 +89,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                 &grid,
                 range.start + done..range.end,
                 chunk,
+                args.method,
                 &mut writer,
                 &bar,
                 || {
@@ -122,28 +123,35 @@ fn write_rows(
     grid: &Grid,
     range: Range<u64>,
     chunk: usize,
+    method: Method,
     out: &mut impl Write,
     bar: &ProgressBar,
     mut after_chunk: impl FnMut() -> io::Result<()>,
 ) -> Result<()> {
     let mut buf = Vec::new();
-    run_chunks(grid, range, chunk, |rows: &[SweepRow]| -> Result<()> {
-        buf.clear();
-        {
-            let mut w = csv::WriterBuilder::new()
-                .has_headers(false)
-                .from_writer(&mut buf);
-            for row in rows {
-                w.serialize(row)?;
+    run_chunks(
+        grid,
+        range,
+        chunk,
+        method,
+        |rows: &[SweepRow]| -> Result<()> {
+            buf.clear();
+            {
+                let mut w = csv::WriterBuilder::new()
+                    .has_headers(false)
+                    .from_writer(&mut buf);
+                for row in rows {
+                    w.serialize(row)?;
+                }
+                w.flush()?;
             }
-            w.flush()?;
-        }
-        out.write_all(&buf)?;
-        out.flush()?;
-        after_chunk()?;
-        bar.inc(rows.len() as u64);
-        Ok(())
-    })
+            out.write_all(&buf)?;
+            out.flush()?;
+            after_chunk()?;
+            bar.inc(rows.len() as u64);
+            Ok(())
+        },
+    )
 }
 
 /// A progress bar with rate and ETA on a terminal; hidden otherwise.
@@ -288,6 +296,9 @@ fn header(args: &SweepArgs, grid: &Grid, shard: u64, shards: u64, range: &Range<
     }
     if let Some(path) = &args.output {
         command.push_str(&format!(" --output {}", path.display()));
+    }
+    if args.method != Method::Auto {
+        command.push_str(" --method ode");
     }
     if let Some(s) = &args.shard {
         command.push_str(&format!(" --shard {s}"));

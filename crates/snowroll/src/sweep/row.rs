@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use super::grid::Point;
 use crate::models::ModelKind;
 use crate::scenario::ScenarioFile;
-use crate::trajectory::{StopReason, Trajectory};
+use crate::trajectory::{Sample, StopReason, Trajectory};
 
 /// One trajectory of a sweep: its grid index, its parameters (every one,
 /// swept or not, under the command line's names in snake case) and its
@@ -90,7 +90,7 @@ impl SweepRow {
     ];
 
     /// The row of `point` with its parameters and no results.
-    fn parameters(point: &Point) -> SweepRow {
+    pub(crate) fn parameters(point: &Point) -> SweepRow {
         let s = ScenarioFile::from(point.scenario);
         let o = &point.options;
         SweepRow {
@@ -131,16 +131,30 @@ impl SweepRow {
             row.error = Some("the run recorded no sample".to_string());
             return row;
         };
-        row.stop = Some(traj.stop.reason);
-        row.t_s = Some(end.t_s);
-        row.x_m = Some(end.x_m);
-        row.v_m_s = Some(end.v_m_s);
-        row.a_over_g_sin_alpha = Some(end.a_m_s2 / point.scenario.g_along());
-        row.turns = Some(match traj.turn_states.last() {
+        let turns = match traj.turn_states.last() {
             Some(k) => k.turn,
             None => circular_turns(end.x_m, end.r_m, point.scenario.initial_radius()),
-        });
+        };
+        row.set_results(point, traj.stop.reason, end, turns);
         row
+    }
+}
+
+impl SweepRow {
+    /// Fills in the results from the state at the end of the run.
+    pub(crate) fn set_results(
+        &mut self,
+        point: &Point,
+        stop: StopReason,
+        end: &Sample,
+        turns: u64,
+    ) {
+        self.stop = Some(stop);
+        self.t_s = Some(end.t_s);
+        self.x_m = Some(end.x_m);
+        self.v_m_s = Some(end.v_m_s);
+        self.a_over_g_sin_alpha = Some(end.a_m_s2 / point.scenario.g_along());
+        self.turns = Some(turns);
     }
 }
 
