@@ -60,6 +60,21 @@ const MAX_BISECTIONS: u32 = 60;
 /// speed squared: near a stall the integrand peaks and the ODE path, which
 /// also finds the stall, is the better tool.
 const MIN_U_OVER_U0: f64 = 0.01;
+/// Below this growth b x/s0 of the cross-section, (s0/s)^n − 1 is computed
+/// with `exp_m1`: above it its magnitude exceeds 1 − 1.25^(−n) ≥ 0.2 for
+/// every model (n ≥ 1), so `exp(..) − 1` costs at most two bits of its
+/// relative accuracy there.
+const EXP_M1_BELOW: f64 = 0.25;
+/// Intervals shorter than this fraction of w take the 5-point Gauss rule
+/// (the later Newton steps).
+const SHORT: f64 = 1e-3;
+/// 5-point Gauss–Legendre nodes and weights on [−1, 1], the symmetric half
+/// (the centre first; it is counted twice by the sum and once subtracted).
+const GAUSS5: [(f64, f64); 3] = [
+    (0.0, 0.568_888_888_888_888_9),
+    (0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
+    (0.906_179_845_938_664, 0.236_926_885_056_189_1),
+];
 /// Panels before giving up (each doubles w, so 2^200 times the first).
 const MAX_PANELS: usize = 200;
 /// Newton iterations before giving up.
@@ -186,8 +201,14 @@ impl SpeedSquared {
             Form::Constant => self.u0 + 2.0 * self.push * x,
             Form::Power { p, l, m, n } => {
                 let growth = b * x / s0;
-                let q = growth.ln_1p();
-                let em = (-n * q).exp_m1();
+                // em = (s0/s)^n − 1 ∈ (−1, 0]. Away from the start
+                // |em| ≥ 1 − (1 + EXP_M1_BELOW)^(−n) is not small, and
+                // exp(), cheaper than exp_m1(), loses nothing to the − 1.
+                let em = if growth < EXP_M1_BELOW {
+                    (-n * growth.ln_1p()).exp_m1()
+                } else {
+                    (-n * (1.0 + growth).ln()).exp() - 1.0
+                };
                 let mut bracket = p * (growth - em) / (n + 1.0);
                 if l != 0.0 || m != 0.0 {
                     let rho_m1 = growth / ((1.0 + growth).sqrt() + 1.0);
@@ -245,6 +266,17 @@ impl SpeedSquared {
     fn time_between(&self, a: f64, b: f64) -> f64 {
         let mut f = |w: f64| self.dt_dw(w);
         let (lo, hi, sign) = if a <= b { (a, b, 1.0) } else { (b, a, -1.0) };
+        if hi - lo <= SHORT * lo {
+            // 5-point Gauss–Legendre: f varies on the scale of w itself, so
+            // its error, of order (h/w)^10 relative, is below 1e-30 here.
+            let (c, h) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+            let sum: f64 = GAUSS5
+                .iter()
+                .map(|&(node, weight)| weight * (f(c - h * node) + f(c + h * node)))
+                .sum::<f64>()
+                - GAUSS5[0].1 * f(c);
+            return sign * h * sum;
+        }
         let mut budget = MAX_BISECTIONS;
         sign * adaptive(&mut f, lo, hi, &mut budget)
     }
@@ -409,6 +441,30 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod gauss_tests {
+    use super::*;
+
+    /// The 5-point rule integrates polynomials of degree 9 exactly (to
+    /// rounding of a 5-term sum).
+    #[test]
+    fn gauss5_is_exact_to_degree_9() {
+        for k in 0..=9 {
+            let sum: f64 = GAUSS5
+                .iter()
+                .map(|&(x, w)| w * (x.powi(k) + (-x).powi(k)))
+                .sum::<f64>()
+                - GAUSS5[0].1 * 0f64.powi(k);
+            let want = if k % 2 == 0 {
+                2.0 / (k as f64 + 1.0)
+            } else {
+                0.0
+            };
+            assert!((sum - want).abs() < 1e-15, "degree {k}: {sum} vs {want}");
         }
     }
 }
