@@ -205,3 +205,21 @@ fn fast_path_agrees_with_the_ode_to_1e_9() {
     // Most rows took the fast path (the others stall or do not start).
     assert!(fast_rows * 2 > g.len(), "{fast_rows} of {}", g.len());
 }
+
+/// A run that hops (fast start, strong drag: N reaches 0, issue 10) is
+/// left to the ODE, which locates the hop: the row says so under either
+/// method.
+#[test]
+fn rows_that_hop_are_not_taken_by_the_fast_path() {
+    let g = Grid::new(
+        vec![ModelKind::TorqueCm, ModelKind::TorqueContact],
+        vec![axis(Param::V0, "80,200"), axis(Param::TEnd, "10")],
+    )
+    .unwrap();
+    for i in 0..g.len() {
+        let auto = run_point(&g, i, Method::Auto).unwrap();
+        let ode = run_point(&g, i, Method::Ode).unwrap();
+        assert_eq!(auto.stop, Some(StopReason::Hop), "{auto:?}");
+        assert_eq!(format!("{auto:?}"), format!("{ode:?}"));
+    }
+}

@@ -37,6 +37,7 @@
 //! length from the smaller of these need few Gauss–Kronrod points each. The
 //! time `t_end` is reached by Newton's method in the panel that contains it.
 
+use std::cell::Cell;
 use std::f64::consts::PI;
 
 use crate::models::Coefficients;
@@ -75,6 +76,10 @@ const GAUSS5: [(f64, f64); 3] = [
     (0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
     (0.906_179_845_938_664, 0.236_926_885_056_189_1),
 ];
+/// The least normal force, and friction margin over μ, of a run on the
+/// fast path, as a fraction of M g cos α: far enough from a hop or a slip
+/// that none can hide between two quadrature nodes.
+const CONTACT_MARGIN: f64 = 0.05;
 /// Panels before giving up (each doubles w, so 2^200 times the first).
 const MAX_PANELS: usize = 200;
 /// Newton iterations before giving up.
@@ -103,7 +108,7 @@ enum Form {
 
 /// The speed squared `u(x) = v(x)²` of one circular model in one scenario,
 /// from (F1).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct SpeedSquared {
     form: Form,
     /// s0 = π r0², m².
@@ -116,12 +121,41 @@ pub struct SpeedSquared {
     push: f64,
     /// √s* of the module doc (0 without lift), m.
     sqrt_s_min: f64,
+    /// G = g sin α and C = g cos α, m/s².
+    g_along: f64,
+    g_normal: f64,
+    /// D = c_v b (m), L (m²/s²), M (m³/s²) and k (m²) of the module doc.
+    drag: f64,
+    lift: f64,
+    lift_b2: f64,
+    inertia: f64,
+    /// What the contact forces must not do.
+    contact: ContactCheck,
+    /// Cleared when a node of the quadrature comes near a hop or a slip.
+    contact_ok: Cell<bool>,
+}
+
+/// The contact events the run watches for ([`crate::SimOptions::stop_on_hop`],
+/// [`crate::SimOptions::mu`]). The fast path does not locate them: it checks
+/// at every quadrature node (dense on the scale on which the forces change)
+/// that the normal force N and the friction margin μN − |F| stay above
+/// [`CONTACT_MARGIN`] of M g cos α, and leaves the run to the ODE otherwise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactCheck {
+    /// Whether N = 0 (a hop) would end the run.
+    pub stop_on_hop: bool,
+    /// The coefficient of friction whose slip would end the run, if any.
+    pub mu: Option<f64>,
 }
 
 impl SpeedSquared {
     /// The closed form of `c` in `scenario`, or `None` where (F1) is not
     /// elementary here (k ≠ 0 and n not a whole number up to 4).
-    pub fn new(c: &Coefficients, scenario: &Scenario) -> Option<SpeedSquared> {
+    pub fn new(
+        c: &Coefficients,
+        scenario: &Scenario,
+        contact: ContactCheck,
+    ) -> Option<SpeedSquared> {
         let b = if c.accretes {
             scenario.snow_depth()
         } else {
@@ -191,6 +225,14 @@ impl SpeedSquared {
             u0,
             push,
             sqrt_s_min,
+            g_along: scenario.g_along(),
+            g_normal: gc,
+            drag: c.drag * b,
+            lift: big_l,
+            lift_b2: big_m,
+            inertia: k,
+            contact,
+            contact_ok: Cell::new(true),
         })
     }
 
@@ -240,9 +282,38 @@ impl SpeedSquared {
         self.at(x_min) >= MIN_U_OVER_U0 * self.u0 && self.u0 > 0.0
     }
 
-    /// 2w/√u(w²): the integrand of t in w = √x.
+    /// 2w/√u(w²): the integrand of t in w = √x; checks the contact forces
+    /// there.
     fn dt_dw(&self, w: f64) -> f64 {
-        2.0 * w / self.at(w * w).sqrt()
+        let x = w * w;
+        let u = self.at(x);
+        if !self.contact_holds(x, u) {
+            self.contact_ok.set(false);
+        }
+        2.0 * w / u.sqrt()
+    }
+
+    /// Whether N and μN − |F| (`docs/contact-forces.md` §2, as
+    /// [`crate::circular_forces`]: `N/M = C + b(a + q/2)/(2πr)`,
+    /// `F/M = G − a − q`, q = b v²/(π r²)) are at least [`CONTACT_MARGIN`]
+    /// C at (x, v² = u), for the events the run watches.
+    fn contact_holds(&self, x: f64, u: f64) -> bool {
+        let c = &self.contact;
+        if !c.stop_on_hop && c.mu.is_none() {
+            return true;
+        }
+        let s = self.s0 + self.b * x;
+        let a = (self.push - self.drag * u / s - self.lift / s.sqrt() - self.lift_b2 / s)
+            / (1.0 + self.inertia / s);
+        let q = self.b * u / s;
+        let r = (s / PI).sqrt();
+        let normal = self.g_normal + self.b / (2.0 * PI * r) * (a + 0.5 * q);
+        let friction = self.g_along - a - q;
+        let margin = CONTACT_MARGIN * self.g_normal;
+        let hop_ok = !c.stop_on_hop || normal >= margin;
+        let slip_ok =
+            c.mu.is_none_or(|mu| mu * normal - friction.abs() >= mu * margin);
+        hop_ok && slip_ok
     }
 
     /// The first panel's end in w: the smaller of the scales on which u
@@ -317,14 +388,25 @@ pub fn circular_end(
     scenario: &Scenario,
     t_end: f64,
     x_end: Option<f64>,
+    contact: ContactCheck,
 ) -> Option<FastEnd> {
-    let u = SpeedSquared::new(c, scenario)?;
+    let u = SpeedSquared::new(c, scenario, contact)?;
     if !u.never_stalls() {
+        return None;
+    }
+    // The start is not a quadrature node.
+    if !u.contact_holds(0.0, u.u0) {
         return None;
     }
     let end = |reason, t: f64, x: f64| {
         let v = u.at(x).sqrt();
-        (t.is_finite() && x.is_finite() && v.is_finite()).then_some(FastEnd { reason, t, x, v })
+        let ok = u.contact_ok.get() && u.contact_holds(x, v * v);
+        (ok && t.is_finite() && x.is_finite() && v.is_finite()).then_some(FastEnd {
+            reason,
+            t,
+            x,
+            v,
+        })
     };
     if let Form::Constant = u.form {
         // x = v0 t + P t²/2; x_end is reached at t = 2X/(v0 + √(v0² + 2PX)).
@@ -402,9 +484,9 @@ mod tests {
 
     fn scenario(alpha: f64, b: f64, v0: f64) -> Scenario {
         Scenario::new(ScenarioFile {
-            slope_deg: alpha,
-            snow_depth_m: b,
-            v0_m_s: v0,
+            alpha_deg: alpha,
+            snow_depth: b,
+            v0,
             ..ScenarioFile::default()
         })
         .unwrap()
@@ -429,7 +511,15 @@ mod tests {
             let c = d.coefficients();
             for (alpha, b, v0) in [(30.0, 0.01, 0.0), (60.0, 0.2, 0.0), (10.0, 0.05, 3.0)] {
                 let s = scenario(alpha, b, v0);
-                let u = SpeedSquared::new(&c, &s).unwrap();
+                let u = SpeedSquared::new(
+                    &c,
+                    &s,
+                    ContactCheck {
+                        stop_on_hop: false,
+                        mu: None,
+                    },
+                )
+                .unwrap();
                 assert!((u.at(0.0) - v0 * v0).abs() < 1e-14, "{d:?}");
                 for x in [1e-3, 0.1, 1.0, 10.0, 1e3] {
                     let h = 1e-4 * x;

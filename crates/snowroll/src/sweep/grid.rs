@@ -412,13 +412,13 @@ impl Grid {
 fn set(file: &mut ScenarioFile, options: &mut SimOptions, param: Param, x: f64) {
     let tol: &mut Tolerances = &mut options.tolerances;
     match param {
-        Param::AlphaDeg => file.slope_deg = x,
-        Param::SnowDepth => file.snow_depth_m = x,
-        Param::R0 => file.r0_m = x,
-        Param::G => file.g_m_s2 = x,
-        Param::Density => file.density_kg_m3 = x,
-        Param::Length => file.length_m = x,
-        Param::V0 => file.v0_m_s = x,
+        Param::AlphaDeg => file.alpha_deg = x,
+        Param::SnowDepth => file.snow_depth = x,
+        Param::R0 => file.r0 = x,
+        Param::G => file.g = x,
+        Param::Density => file.density = x,
+        Param::Length => file.length = x,
+        Param::V0 => file.v0 = x,
         Param::TEnd => options.t_end = x,
         Param::XEnd => options.x_end = Some(x),
         Param::Rtol => tol.rtol = x,
@@ -546,7 +546,7 @@ mod tests {
             assert_eq!(p.index, i);
             assert_eq!(p.options.sampling, Sampling::Ends);
             let f = ScenarioFile::from(p.scenario);
-            seen.push((p.model, f.slope_deg.to_string(), f.snow_depth_m.to_string()));
+            seen.push((p.model, f.alpha_deg.to_string(), f.snow_depth.to_string()));
         }
         let mut want = Vec::new();
         for m in [ModelKind::TorqueCm, ModelKind::Energy] {

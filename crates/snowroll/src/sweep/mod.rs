@@ -17,7 +17,7 @@ mod grid;
 mod row;
 mod run;
 
-pub use fast::{circular_end, FastEnd, SpeedSquared};
+pub use fast::{circular_end, ContactCheck, FastEnd, SpeedSquared};
 pub use grid::{Axis, Grid, GridError, Param, Point, Values, MAX_GRID_POINTS};
 pub use row::SweepRow;
 pub use run::{run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL};

@@ -5,12 +5,12 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::fast::circular_end;
+use super::fast::{circular_end, ContactCheck};
 use super::grid::{Grid, Point};
 use super::row::circular_turns;
 use super::row::SweepRow;
 use crate::error::ParamError;
-use crate::models::{Derivation, ModelKind};
+use crate::models::{circular_forces, Derivation, ModelKind};
 use crate::physics;
 use crate::trajectory::Sample;
 
@@ -70,19 +70,28 @@ fn fast_row(point: &Point) -> Option<SweepRow> {
     }
     let c = derivation.coefficients();
     let s = &point.scenario;
-    let end = circular_end(&c, s, o.t_end, o.x_end)?;
+    let contact = ContactCheck {
+        stop_on_hop: o.stop_on_hop,
+        mu: o.mu,
+    };
+    let end = circular_end(&c, s, o.t_end, o.x_end, contact)?;
     let (r, mass_kg) = if c.accretes {
         (physics::radius_at(s, end.x), physics::mass_at(s, end.x))
     } else {
         (s.initial_radius(), s.initial_mass())
     };
+    let a = c.acceleration(s, end.x, end.v);
+    let forces = circular_forces(&c, s, end.x, end.v, a);
     let sample = Sample {
         t_s: end.t,
         x_m: end.x,
         v_m_s: end.v,
-        a_m_s2: c.acceleration(s, end.x, end.v),
+        a_m_s2: a,
         r_m: r,
         mass_kg,
+        normal_n: forces.normal_n,
+        friction_n: forces.friction_n,
+        friction_ratio: forces.friction_ratio(),
     };
     let mut row = SweepRow::parameters(point);
     row.set_results(
