@@ -11,6 +11,7 @@ use std::fmt::Display;
 use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use snowroll::sweep::Method;
 use snowroll::{CollisionModel, Format, ModelKind, ScenarioFile, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
@@ -55,6 +56,22 @@ pub enum Command {
     /// self-contained HTML report with the claims table, plots and an
     /// animation, plus report.md, claims.json, figures/*.svg|png and data/*.csv.
     Paper(PaperArgs),
+    /// Run many trajectories over a grid of parameters and models; write one
+    /// summary row per trajectory (CSV, or Parquet when built with the
+    /// `parquet` feature).
+    ///
+    /// Every scenario flag and --model takes one value, a list `a,b,c` or a
+    /// range `start:end:count` (both ends included; angles in degrees), e.g.
+    /// `--alpha-deg 5:60:12 --snow-depth 0.001,0.01,0.1 --model torque-cm,energy`.
+    /// Rows come in grid order: model first, then alpha_deg, snow_depth, r0,
+    /// g, density, length, v0, t_end, x_end, rtol, atol, the last varying
+    /// fastest. Columns: index, the parameters, stop, t_s, x_m, v_m_s (at
+    /// the end of the run), a_over_g_sin_alpha (the acceleration there over
+    /// g sin(alpha)), turns (full turns completed), error.
+    Sweep(Box<SweepArgs>),
+    /// Join the CSV files of `snowroll sweep --shard i/N` into one, in grid
+    /// order, checking that every shard is there exactly once.
+    Merge(MergeArgs),
 }
 
 /// Where `snowroll paper` writes when `--out` is not given.
@@ -392,6 +409,88 @@ pub struct TurnsArgs {
     /// Format, destination, config file.
     #[command(flatten)]
     pub output: OutputArgs,
+}
+
+/// Flags of `snowroll sweep`: each scenario flag takes one value, a list
+/// `a,b,c` or a range `start:end:count`.
+#[derive(Debug, Clone, Default, PartialEq, clap::Args)]
+pub struct SweepArgs {
+    /// Models, by id or equation alias: ID[,ID...] (`snowroll models` lists them)
+    #[arg(long, value_name = "IDS")]
+    pub model: Option<String>,
+    /// Slope angle alpha, in degrees (0 < alpha < 90): value, list or start:end:count [default: 30]
+    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    pub alpha_deg: Option<String>,
+    /// Snow depth b, in m (b >= 0) [default: 0.01]
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub snow_depth: Option<String>,
+    /// Initial radius r0, in m (r0 > 0) [default: 0.1]
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub r0: Option<String>,
+    /// Gravitational acceleration g, in m/s^2 (g > 0) [default: 9.81]
+    #[arg(long, value_name = "M/S^2", allow_hyphen_values = true)]
+    pub g: Option<String>,
+    /// Density rho, in kg/m^3 (rho > 0) [default: 400]
+    #[arg(long, value_name = "KG/M^3", allow_hyphen_values = true)]
+    pub density: Option<String>,
+    /// Length l of the log, in m (l > 0) [default: 1]
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub length: Option<String>,
+    /// Initial speed v0, in m/s (v0 >= 0) [default: 0]
+    #[arg(long, value_name = "M/S", allow_hyphen_values = true)]
+    pub v0: Option<String>,
+    /// End time, in s (t_end > 0) [default: 100]
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub t_end: Option<String>,
+    /// End distance, in m (x_end > 0) [default: none]
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub x_end: Option<String>,
+    /// Relative tolerance (1e-15 <= rtol < 1) [default: 1e-10]
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
+    pub rtol: Option<String>,
+    /// Absolute tolerance, in m and m/s (atol >= 1e-30) [default: 1e-12]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub atol: Option<String>,
+
+    /// Read axes from this TOML file, one key per flag in snake case (`alpha_deg = "5:60:12"`, `snow_depth = [0.001, 0.01]`, `model = ["energy", "eq4"]`); flags override it
+    #[arg(long, value_name = "FILE.toml")]
+    pub grid: Option<PathBuf>,
+
+    /// Write to this file instead of stdout. Rows go to FILE.partial as they are computed; the finished file is renamed into place
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+
+    /// Run only slice I of N equal, contiguous slices of the grid (0 <= I < N), e.g. --shard $SLURM_ARRAY_TASK_ID/$N
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+
+    /// Continue an interrupted sweep from the rows in FILE.partial (same flags as the first run)
+    #[arg(long, requires = "output")]
+    pub resume: bool,
+
+    /// Do not show the progress bar
+    #[arg(long, short)]
+    pub quiet: bool,
+
+    /// auto: circular models (and loney) from the closed-form speed and one quadrature for the time where they do not come near a stall and rtol >= 1e-12 (accurate to about 1e-12), the ODE elsewhere; ode: always the model's own solver
+    #[arg(long, value_enum, default_value_t = Method::Auto)]
+    pub method: Method,
+
+    /// Rows computed and written at a time (tests and tuning; the result does not depend on it)
+    #[arg(long, value_name = "N", hide = true, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    pub chunk_rows: Option<u64>,
+}
+
+/// Flags of `snowroll merge`.
+#[derive(Debug, Clone, PartialEq, clap::Args)]
+pub struct MergeArgs {
+    /// The shard files, in any order
+    #[arg(required = true, value_name = "SHARD.csv")]
+    pub inputs: Vec<PathBuf>,
+
+    /// Write to this file instead of stdout
+    #[arg(long, short, value_name = "FILE")]
+    pub output: Option<PathBuf>,
 }
 
 /// Flags of `snowroll models`.

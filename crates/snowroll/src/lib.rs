@@ -115,6 +115,7 @@ pub mod plot;
 mod quadrature;
 pub mod report;
 pub mod scenario;
+pub mod sweep;
 pub mod trajectory;
 pub mod units;
 

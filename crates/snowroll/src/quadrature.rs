@@ -40,7 +40,7 @@ const WG: [f64; 4] = [
 
 /// One 15-point Kronrod estimate on `[a, b]` and the difference from the
 /// embedded 7-point Gauss rule (the error estimate).
-fn kronrod(f: &mut impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn kronrod(f: &mut impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
     let c = 0.5 * (a + b);
     let h = 0.5 * (b - a);
     let fc = f(c);

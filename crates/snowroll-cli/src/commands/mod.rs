@@ -2,9 +2,11 @@
 //! that `simulate` and `turns` share into library types.
 
 mod inputs;
+mod merge;
 mod models;
 mod paper;
 mod simulate;
+mod sweep;
 mod turns;
 
 use anyhow::Result;
@@ -18,5 +20,7 @@ pub fn run(args: Args) -> Result<()> {
         Command::Turns(a) => turns::run(*a),
         Command::Models(a) => models::run(&a),
         Command::Paper(a) => paper::run(&a),
+        Command::Sweep(a) => sweep::run(&a),
+        Command::Merge(a) => merge::run(&a),
     }
 }

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# snowroll sweep against SciPy (issue 12), each measured as whole processes
+# in one run:
+#
+# (1) `snowroll sweep --model torque-cm --alpha-deg 29:31:N_SWEEP --snow-depth
+#     0.01 --r0 0.1 --t-end 100 --rtol 1e-10 --atol 1e-12 --output s.csv`,
+#     wall clock of the whole process (start, grid, rows, CSV, fsync, rename)
+#     divided by N_SWEEP, against the median CPU time of one SciPy solve_ivp
+#     (DOP853, same tolerances) at the same angles (bench/peer_scipy.py
+#     --alphas, N_SCIPY of them); the ratio must reach MIN_RATIO. The last
+#     rows of the two are checked to agree (final speed, 1e-9).
+# (2) every circular model to t = 100 s at rtol 1e-8 over N_ALL points:
+#     trajectories per second of the whole process, against MIN_RATE.
+# (3) for reference, (1) with --method ode (the ODE path, no closed form).
+#
+# Usage: bash bench/sweep_compare.sh   (from anywhere in a clone)
+# Environment: N_SWEEP (10000), N_SCIPY (1000), N_ALL (200000), MIN_RATIO
+# (1000), MIN_RATE (100000), PYTHON (python3), OUT_DIR (a temporary directory;
+# its file system's fsync is part of the measured time).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+N_SWEEP="${N_SWEEP:-10000}"
+N_SCIPY="${N_SCIPY:-1000}"
+N_ALL="${N_ALL:-200000}"
+MIN_RATIO="${MIN_RATIO:-1000}"
+MIN_RATE="${MIN_RATE:-100000}"
+PYTHON="${PYTHON:-python3}"
+OUT_DIR="${OUT_DIR:-$(mktemp -d)}"
+
+if ! "$PYTHON" -c 'import scipy.integrate, numpy' 2>/dev/null; then
+    echo "installing scipy and numpy for $PYTHON ..." >&2
+    "$PYTHON" -m pip install -q scipy numpy || "$PYTHON" -m pip install -q --user scipy numpy || {
+        echo "sweep_compare.sh: could not install scipy and numpy for $PYTHON" >&2
+        exit 2
+    }
+fi
+
+echo "building snowroll (release) ..." >&2
+cargo build --release --quiet -p snowroll-cli
+bin="$PWD/target/release/snowroll"
+
+# Wall-clock seconds of a command, from bash's own clock.
+seconds() {
+    local start end
+    start="$(date +%s.%N)"
+    "$@"
+    end="$(date +%s.%N)"
+    "$PYTHON" -c "print($end - $start)"
+}
+
+sweep1=(sweep --model torque-cm --alpha-deg "29:31:$N_SWEEP" --snow-depth 0.01 --r0 0.1
+    --t-end 100 --rtol 1e-10 --atol 1e-12 --quiet)
+echo "== (1) snowroll ${sweep1[*]} --output s.csv"
+t1="$(seconds "$bin" "${sweep1[@]}" --output "$OUT_DIR/s.csv")"
+t1_ode="$(seconds "$bin" "${sweep1[@]}" --method ode --output "$OUT_DIR/s-ode.csv")"
+echo "whole process: $t1 s for $N_SWEEP trajectories (--method ode: $t1_ode s)"
+
+echo "== SciPy solve_ivp DOP853 at $N_SCIPY of those angles"
+py_out="$("$PYTHON" bench/peer_scipy.py --alphas "29:31:$N_SWEEP" --n "$N_SCIPY")"
+echo "$py_out"
+py_s="$(sed -n 's/^per_trajectory_s=//p' <<<"$py_out")"
+py_v="$(sed -n 's/^final t = .* v = \([^ ]*\) m\/s.*/\1/p' <<<"$py_out")"
+
+all_models="snowless,torque-cm,torque-contact,energy,energy-thin,lagrangian-printed,quasi-circular,quasi-circular-lift"
+per_model=$((N_ALL / 8))
+echo "== (2) snowroll sweep --model (all 8 circular) --alpha-deg 20:60:$per_model --t-end 100 --rtol 1e-8"
+t2="$(seconds "$bin" sweep --model "$all_models" --alpha-deg "20:60:$per_model" --t-end 100 \
+    --rtol 1e-8 --quiet --output "$OUT_DIR/all.csv")"
+t2_ode="$(seconds "$bin" sweep --model "$all_models" --alpha-deg "20:60:$per_model" --t-end 100 \
+    --rtol 1e-8 --quiet --method ode --output "$OUT_DIR/all-ode.csv")"
+
+"$PYTHON" - "$t1" "$t1_ode" "$N_SWEEP" "$py_s" "$py_v" "$OUT_DIR/s.csv" "$MIN_RATIO" \
+    "$t2" "$t2_ode" "$((per_model * 8))" "$MIN_RATE" <<'PY'
+import sys
+t1, t1_ode, n1, py_s, py_v, csv_path, min_ratio, t2, t2_ode, n2, min_rate = sys.argv[1:]
+t1, t1_ode, py_s, py_v, t2, t2_ode = map(float, (t1, t1_ode, py_s, py_v, t2, t2_ode))
+n1, n2, min_ratio, min_rate = int(n1), int(n2), float(min_ratio), float(min_rate)
+last = [l for l in open(csv_path) if not l.startswith("#")][-1].split(",")
+v = float(last[16])
+diff = abs(v - py_v) / py_v
+print(f"last row (alpha {last[2]} deg): snowroll v = {v:.15e}, scipy {py_v:.15e} m/s, relative difference {diff:.1e}")
+per = t1 / n1
+ratio = py_s / per
+print(f"(1) per trajectory, process start and output included: snowroll {per * 1e6:.2f} us "
+      f"(ODE path {t1_ode / n1 * 1e6:.2f} us), scipy {py_s * 1e3:.3f} ms: ratio {ratio:.0f}x "
+      f"(ODE path {py_s / (t1_ode / n1):.0f}x; required >= {min_ratio:g}x)")
+rate = n2 / t2
+print(f"(2) all circular models, t = 100 s, rtol 1e-8: {rate:,.0f} trajectories/s "
+      f"(ODE path {n2 / t2_ode:,.0f}/s; required >= {min_rate:,.0f}/s)")
+bad = []
+if not diff <= 1e-9:
+    bad.append(f"the programs disagree by {diff:.1e}")
+if ratio < min_ratio:
+    bad.append(f"ratio {ratio:.0f}x below {min_ratio:g}x")
+if rate < min_rate:
+    bad.append(f"rate {rate:,.0f}/s below {min_rate:,.0f}/s")
+if bad:
+    sys.exit("sweep_compare.sh: " + "; ".join(bad))
+PY

@@ -1,0 +1,273 @@
+//! `snowroll sweep` and `snowroll merge` as whole processes: grid syntax
+//! and its errors, the same bytes for any thread count, shards merged equal
+//! the whole, and a sweep killed with SIGKILL then resumed equal to an
+//! uninterrupted one.
+
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Output, Stdio};
+use std::thread;
+use std::time::Duration;
+
+use rustix::process::{kill_process, Pid, Signal};
+
+fn bin() -> &'static Path {
+    assert_cmd::cargo::cargo_bin!("snowroll")
+}
+
+fn run(args: &[&str], threads: &str) -> Output {
+    Command::new(bin())
+        .args(args)
+        .env("RAYON_NUM_THREADS", threads)
+        .output()
+        .unwrap()
+}
+
+fn ok(args: &[&str]) -> String {
+    let out = run(args, "2");
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn fails(args: &[&str]) -> String {
+    let out = run(args, "2");
+    assert!(!out.status.success(), "{args:?} succeeded");
+    String::from_utf8(out.stderr).unwrap()
+}
+
+/// `&str`s of `v`.
+fn argv(v: &[String]) -> Vec<&str> {
+    v.iter().map(String::as_str).collect()
+}
+
+/// The lines after the header.
+fn rows(text: &str) -> Vec<&str> {
+    text.lines()
+        .skip_while(|l| l.starts_with('#'))
+        .skip(1)
+        .collect()
+}
+
+/// A grid over three kinds of model (circular, closed form, turns).
+const GRID: [&str; 9] = [
+    "sweep",
+    "--model",
+    "torque-cm,loney,energy,turns",
+    "--alpha-deg",
+    "5:60:12",
+    "--snow-depth",
+    "0.001,0.01,0.1",
+    "--t-end",
+    "2",
+];
+
+#[test]
+fn one_row_per_point_in_grid_order_with_the_header() {
+    let text = ok(&GRID);
+    assert!(text.starts_with("# snowroll sweep, version "));
+    assert!(text.contains("\n# alpha_deg: 5:60:12\n# snow_depth: 0.001,0.01,0.1\n"));
+    assert!(text.contains("\n# points: 144\n"));
+    let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
+    assert!(header.starts_with("index,model,alpha_deg,snow_depth,"));
+    let rows = rows(&text);
+    assert_eq!(rows.len(), 4 * 12 * 3);
+    let models = ["torque-cm", "loney", "energy", "turns"];
+    for (i, row) in rows.iter().enumerate() {
+        let f: Vec<&str> = row.split(',').collect();
+        assert_eq!(f[0], i.to_string());
+        assert_eq!(f[1], models[i / 36]);
+        // 5:60:12 steps by 5 exactly.
+        let alpha: f64 = f[2].parse().unwrap();
+        assert!((alpha - (5.0 + 5.0 * ((i / 3) % 12) as f64)).abs() < 1e-12);
+        assert_eq!(f[3], ["0.001", "0.01", "0.1"][i % 3]);
+    }
+}
+
+#[test]
+fn rows_are_the_same_bytes_for_one_and_two_threads() {
+    let one = run(&GRID, "1");
+    let two = run(&GRID, "2");
+    assert!(one.status.success() && two.status.success());
+    assert_eq!(one.stdout, two.stdout);
+}
+
+#[test]
+fn grid_errors_are_clear() {
+    for (args, want) in [
+        (vec!["sweep", "--alpha-deg", "5:60"], "start:end:count"),
+        (
+            vec!["sweep", "--model", "eq4", "--alpha-deg", "5:95:3"],
+            "0 < alpha < 90",
+        ),
+        (
+            vec!["sweep", "--model", "eq4", "--snow-depth", "0.1,,2"],
+            "empty item",
+        ),
+        (vec!["sweep", "--model", "eq99"], "unknown model"),
+        (vec!["sweep", "--alpha-deg", "30"], "no model given"),
+        (
+            vec![
+                "sweep",
+                "--model",
+                "eq4",
+                "--alpha-deg",
+                "1:80:100000",
+                "--r0",
+                "0.1:1:100000",
+            ],
+            "more than the limit of 1000000000",
+        ),
+        (
+            vec!["sweep", "--model", "eq4", "--shard", "2/2"],
+            "0 <= I < N",
+        ),
+        (vec!["sweep", "--model", "eq4", "--resume"], "--output"),
+    ] {
+        let e = fails(&args);
+        assert!(e.contains(want), "{args:?}: {e}");
+    }
+}
+
+#[test]
+fn grid_file_gives_axes_and_flags_override_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("axes.toml");
+    fs::write(
+        &file,
+        "model = [\"eq4\", \"energy\"]\nalpha-deg = \"20:30:3\"\nsnow_depth = [0.01, 0.1]\nt_end = 1\n",
+    )
+    .unwrap();
+    let f = file.to_str().unwrap();
+    let text = ok(&["sweep", "--grid", f]);
+    assert_eq!(rows(&text).len(), 2 * 3 * 2);
+    let text = ok(&["sweep", "--grid", f, "--model", "eq6"]);
+    let rows = rows(&text);
+    assert_eq!(rows.len(), 3 * 2);
+    assert!(rows
+        .iter()
+        .all(|r| r.split(',').nth(1) == Some("torque-contact")));
+    fs::write(&file, "slope = 3\n").unwrap();
+    let e = fails(&["sweep", "--grid", f]);
+    assert!(e.contains("unknown key \"slope\""), "{e}");
+}
+
+#[test]
+fn shards_merged_equal_the_whole_sweep() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    let mut args: Vec<String> = GRID.iter().map(|s| s.to_string()).collect();
+    args.extend(["-o".to_string(), path("whole.csv")]);
+    ok(&argv(&args));
+    let n = 5;
+    for k in 0..n {
+        let mut a: Vec<String> = GRID.iter().map(|s| s.to_string()).collect();
+        a.extend([
+            "--shard".to_string(),
+            format!("{k}/{n}"),
+            "-o".to_string(),
+            path(&format!("part{k}.csv")),
+        ]);
+        ok(&argv(&a));
+    }
+    // Any order on the command line.
+    let mut merge = vec!["merge".to_string(), "-o".to_string(), path("merged.csv")];
+    merge.extend((0..n).rev().map(|k| path(&format!("part{k}.csv"))));
+    ok(&argv(&merge));
+    let whole = fs::read_to_string(path("whole.csv")).unwrap();
+    let merged = fs::read_to_string(path("merged.csv")).unwrap();
+    let strip = |t: &str| -> Vec<String> {
+        t.lines()
+            .filter(|l| !l.starts_with("# command: "))
+            .map(str::to_string)
+            .collect()
+    };
+    assert_eq!(strip(&whole), strip(&merged));
+
+    // A missing shard, a duplicate, a shard of another sweep, a cut file.
+    let e = fails(&[
+        "merge",
+        &path("part0.csv"),
+        &path("part2.csv"),
+        &path("part3.csv"),
+        &path("part4.csv"),
+    ]);
+    assert!(e.contains("missing shards: 1/5"), "{e}");
+    let e = fails(&["merge", &path("part0.csv"), &path("part0.csv")]);
+    assert!(e.contains("given twice"), "{e}");
+    let e = fails(&["merge", &path("part0.csv"), &path("whole.csv")]);
+    assert!(e.contains("not shards of the same sweep"), "{e}");
+    let p1 = fs::read_to_string(path("part1.csv")).unwrap();
+    fs::write(path("part1.csv"), &p1[..p1.len() - 3]).unwrap();
+    let mut cut = vec!["merge".to_string()];
+    cut.extend((0..n).map(|k| path(&format!("part{k}.csv"))));
+    let e = fails(&argv(&cut));
+    assert!(e.contains("cut short"), "{e}");
+}
+
+/// A sweep killed with SIGKILL (no clean-up possible) and resumed gives the
+/// same file as an uninterrupted run; without `--resume` the partial rows
+/// are refused rather than overwritten.
+#[test]
+fn a_killed_sweep_resumed_equals_an_uninterrupted_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s.csv");
+    let partial = dir.path().join("s.csv.partial");
+    let o = out.to_str().unwrap();
+    // The turn model is slow enough (about 0.1 ms a row) that the kill
+    // lands after some chunks of 16 rows and long before the 4000th row.
+    let args = [
+        "sweep",
+        "--model",
+        "turns",
+        "--alpha-deg",
+        "20:40:4000",
+        "--t-end",
+        "2",
+        "--chunk-rows",
+        "16",
+        "-o",
+        o,
+    ];
+    let mut child = Command::new(bin())
+        .args(args)
+        .env("RAYON_NUM_THREADS", "1")
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    // Wait for some rows on disk (polling the file, not a clock).
+    loop {
+        let rows = fs::read_to_string(&partial)
+            .map(|t| rows(&t).len())
+            .unwrap_or(0);
+        if rows >= 40 {
+            break;
+        }
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the sweep ended before it could be killed"
+        );
+        thread::sleep(Duration::from_millis(5));
+    }
+    kill_process(Pid::from_child(&child), Signal::KILL).unwrap();
+    child.wait().unwrap();
+    assert!(!out.exists());
+    let before = fs::read_to_string(&partial).unwrap();
+    assert!(rows(&before).len() < 4000);
+
+    let e = fails(&args);
+    assert!(e.contains("pass --resume"), "{e}");
+    let mut resume = args.to_vec();
+    resume.push("--resume");
+    ok(&resume);
+    assert!(!partial.exists());
+    let resumed = fs::read(&out).unwrap();
+
+    fs::remove_file(&out).unwrap();
+    ok(&args);
+    let whole = fs::read(&out).unwrap();
+    assert_eq!(resumed, whole);
+}

@@ -1,0 +1,23 @@
+//! Sweeps: many trajectories over a grid of parameters and models, one
+//! summary row each ([`SweepRow`]), in grid order whatever the number of
+//! threads.
+//!
+//! - [`Grid`] holds the models and one [`Axis`] per swept [`Param`], each a
+//!   list or a range that is never expanded into memory.
+//! - [`run_chunks`] computes the rows of a range of grid indices in parallel
+//!   (rayon), a chunk at a time, and hands each chunk over in order: memory
+//!   stays bounded by one chunk whatever the grid's size.
+//! - The circular models take a fast path ([`circular_end`]): their speed is
+//!   a closed form in x and their time one quadrature, with no ODE solver.
+//! - Each row is a pure function of its grid point, so the rows are
+//!   bit-identical for any thread count, chunk size and shard split.
+
+mod fast;
+mod grid;
+mod row;
+mod run;
+
+pub use fast::{circular_end, ContactCheck, FastEnd, SpeedSquared};
+pub use grid::{Axis, Grid, GridError, Param, Point, Values, MAX_GRID_POINTS};
+pub use row::SweepRow;
+pub use run::{run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL};

@@ -1,0 +1,171 @@
+//! One row of a sweep: a trajectory's parameters and its summary.
+
+use serde::{Deserialize, Serialize};
+
+use super::grid::Point;
+use crate::models::ModelKind;
+use crate::scenario::ScenarioFile;
+use crate::trajectory::{Sample, StopReason, Trajectory};
+
+/// One trajectory of a sweep: its grid index, its parameters (every one,
+/// swept or not, under the command line's names in snake case) and its
+/// summary. Results are empty when the run failed (`error` says why).
+///
+/// A new result (such as the time of a first hop or slip) is one more field
+/// here and one more line in [`SweepRow::new`]; the CSV and Parquet schemas
+/// follow from the fields.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepRow {
+    /// Index of the point in grid order, from 0.
+    pub index: u64,
+    /// The model.
+    pub model: ModelKind,
+    /// Slope angle α, degrees.
+    pub alpha_deg: f64,
+    /// Snow depth b, m.
+    pub snow_depth: f64,
+    /// Initial radius r0, m.
+    pub r0: f64,
+    /// Gravitational acceleration g, m/s².
+    pub g: f64,
+    /// Density ρ, kg/m³.
+    pub density: f64,
+    /// Length l, m.
+    pub length: f64,
+    /// Initial speed v0, m/s.
+    pub v0: f64,
+    /// End time, s.
+    pub t_end: f64,
+    /// End distance, m (empty: none).
+    pub x_end: Option<f64>,
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Absolute tolerance.
+    pub atol: f64,
+    /// Why the run ended.
+    pub stop: Option<StopReason>,
+    /// Time at the end of the run, s (t_end, or the time x_end was reached, or of the stall).
+    pub t_s: Option<f64>,
+    /// Distance rolled at the end, m.
+    pub x_m: Option<f64>,
+    /// Speed at the end, m/s.
+    pub v_m_s: Option<f64>,
+    /// Acceleration at the end as a fraction of g sin α (the late-time
+    /// value of eq. (35) for a long run of a circular model; instantaneous,
+    /// within a turn, for the turn models).
+    pub a_over_g_sin_alpha: Option<f64>,
+    /// Full turns completed: for the circular models the angle rolled
+    /// without slipping, ∫dx/r = 2π(r − r0)/b with eq. (8), over 2π, which is
+    /// `x/(π (r + r0))` (x/(2π r0) without snow); for the turn models the
+    /// turn counter of §3.4.
+    pub turns: Option<u64>,
+    /// Why the run failed; empty when it did not.
+    pub error: Option<String>,
+}
+
+impl SweepRow {
+    /// The column names, in order: the field names (a test checks them
+    /// against the serialised header).
+    pub const COLUMNS: [&'static str; 20] = [
+        "index",
+        "model",
+        "alpha_deg",
+        "snow_depth",
+        "r0",
+        "g",
+        "density",
+        "length",
+        "v0",
+        "t_end",
+        "x_end",
+        "rtol",
+        "atol",
+        "stop",
+        "t_s",
+        "x_m",
+        "v_m_s",
+        "a_over_g_sin_alpha",
+        "turns",
+        "error",
+    ];
+
+    /// The row of `point` with its parameters and no results.
+    pub(crate) fn parameters(point: &Point) -> SweepRow {
+        let s = ScenarioFile::from(point.scenario);
+        let o = &point.options;
+        SweepRow {
+            index: point.index,
+            model: point.model,
+            alpha_deg: s.alpha_deg,
+            snow_depth: s.snow_depth,
+            r0: s.r0,
+            g: s.g,
+            density: s.density,
+            length: s.length,
+            v0: s.v0,
+            t_end: o.t_end,
+            x_end: o.x_end,
+            rtol: o.tolerances.rtol,
+            atol: o.tolerances.atol,
+            stop: None,
+            t_s: None,
+            x_m: None,
+            v_m_s: None,
+            a_over_g_sin_alpha: None,
+            turns: None,
+            error: None,
+        }
+    }
+
+    /// The row of `point` from the run's result.
+    pub fn new(point: &Point, run: Result<&Trajectory, String>) -> SweepRow {
+        let mut row = Self::parameters(point);
+        let traj = match run {
+            Ok(traj) => traj,
+            Err(e) => {
+                row.error = Some(e);
+                return row;
+            }
+        };
+        let Some(end) = traj.samples.last() else {
+            row.error = Some("the run recorded no sample".to_string());
+            return row;
+        };
+        let turns = match traj.turn_states.last() {
+            Some(k) => k.turn,
+            None => circular_turns(end.x_m, end.r_m, point.scenario.initial_radius()),
+        };
+        row.set_results(point, traj.stop.reason, end, turns);
+        row
+    }
+}
+
+impl SweepRow {
+    /// Fills in the results from the state at the end of the run.
+    pub(crate) fn set_results(
+        &mut self,
+        point: &Point,
+        stop: StopReason,
+        end: &Sample,
+        turns: u64,
+    ) {
+        self.stop = Some(stop);
+        self.t_s = Some(end.t_s);
+        self.x_m = Some(end.x_m);
+        self.v_m_s = Some(end.v_m_s);
+        self.a_over_g_sin_alpha = Some(end.a_m_s2 / point.scenario.g_along());
+        self.turns = Some(turns);
+    }
+}
+
+/// Full turns of a circular log that rolled `x` without slipping and grew
+/// from `r0` to `r` (eq. (8)): `⌊x/(π (r + r0))⌋`.
+pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
+    let turns = x / (std::f64::consts::PI * (r + r0));
+    // Finite and non-negative for any run that produced samples.
+    if turns.is_finite() && turns >= 0.0 {
+        turns.floor() as u64
+    } else {
+        0
+    }
+}

@@ -1,0 +1,148 @@
+//! The parallel runner: rows of a range of grid indices, in order, a chunk
+//! at a time.
+
+use std::ops::Range;
+
+use rayon::prelude::*;
+
+use super::fast::{circular_end, ContactCheck};
+use super::grid::{Grid, Point};
+use super::row::circular_turns;
+use super::row::SweepRow;
+use crate::error::ParamError;
+use crate::models::{circular_forces, Derivation, ModelKind};
+use crate::physics;
+use crate::trajectory::Sample;
+
+/// Rows computed (and held in memory) at a time: large enough that the
+/// threads rarely wait on one another at a chunk's end, small enough that a
+/// chunk costs a few megabytes and, for slow models, seconds of progress.
+pub const DEFAULT_CHUNK: usize = 8192;
+
+/// How the rows of the circular models are computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Method {
+    /// The closed form of [`circular_end`] where it applies (a circular
+    /// model that does not come near a stall, rtol ≥ [`FAST_MIN_RTOL`]),
+    /// the ODE elsewhere.
+    #[default]
+    Auto,
+    /// The model's own `simulate` for every row (the ODE for the circular
+    /// models): for comparisons and benchmarks.
+    Ode,
+}
+
+/// Smallest rtol for which the fast path stands in for the ODE: its own
+/// accuracy is about 1e-12 (the quadrature's 1e-13 per panel, summed).
+pub const FAST_MIN_RTOL: f64 = 1e-12;
+
+/// The row of grid point `index`. A point whose run fails is a row with
+/// the error in its `error` column.
+///
+/// # Errors
+/// [`ParamError`] when `index` is not a point of the grid.
+pub fn run_point(grid: &Grid, index: u64, method: Method) -> Result<SweepRow, ParamError> {
+    let point = grid.point(index)?;
+    if method == Method::Auto {
+        if let Some(row) = fast_row(&point) {
+            return Ok(row);
+        }
+    }
+    let traj = point
+        .model
+        .build()
+        .simulate(&point.scenario, &point.options)
+        .map_err(|e| e.to_string());
+    Ok(SweepRow::new(&point, traj.as_ref().map_err(Clone::clone)))
+}
+
+/// The row of a circular model from the closed form, or `None` where it
+/// does not apply.
+fn fast_row(point: &Point) -> Option<SweepRow> {
+    let derivation = match point.model {
+        ModelKind::Loney => Derivation::TorqueAboutCentre,
+        kind => kind.derivation()?,
+    };
+    let o = &point.options;
+    if o.tolerances.rtol < FAST_MIN_RTOL {
+        return None;
+    }
+    let c = derivation.coefficients();
+    let s = &point.scenario;
+    let contact = ContactCheck {
+        stop_on_hop: o.stop_on_hop,
+        mu: o.mu,
+    };
+    let end = circular_end(&c, s, o.t_end, o.x_end, contact)?;
+    let (r, mass_kg) = if c.accretes {
+        (physics::radius_at(s, end.x), physics::mass_at(s, end.x))
+    } else {
+        (s.initial_radius(), s.initial_mass())
+    };
+    let a = c.acceleration(s, end.x, end.v);
+    let forces = circular_forces(&c, s, end.x, end.v, a);
+    let sample = Sample {
+        t_s: end.t,
+        x_m: end.x,
+        v_m_s: end.v,
+        a_m_s2: a,
+        r_m: r,
+        mass_kg,
+        normal_n: forces.normal_n,
+        friction_n: forces.friction_n,
+        friction_ratio: forces.friction_ratio(),
+    };
+    let mut row = SweepRow::parameters(point);
+    row.set_results(
+        point,
+        end.reason,
+        &sample,
+        circular_turns(end.x, r, s.initial_radius()),
+    );
+    Some(row)
+}
+
+/// The grid indices of shard `shard` (from 0) of `shards`: the grid cut into
+/// `shards` contiguous slices whose sizes differ by at most one, so that the
+/// shards in order are the whole grid in order.
+///
+/// # Errors
+/// A message when `shards` is 0 or `shard >= shards`.
+pub fn shard_range(len: u64, shard: u64, shards: u64) -> Result<Range<u64>, String> {
+    if shards == 0 || shard >= shards {
+        return Err(format!(
+            "shard {shard} of {shards}: expected 0 <= i < N and N >= 1"
+        ));
+    }
+    let cut = |k: u64| (u128::from(len) * u128::from(k) / u128::from(shards)) as u64;
+    Ok(cut(shard)..cut(shard + 1))
+}
+
+/// Computes the rows of `indices` in parallel on the current rayon pool, and
+/// passes them to `emit` in grid order, at most `chunk` at a time. Stops at
+/// the first error and returns it.
+///
+/// # Errors
+/// What `emit` returns, and [`ParamError`] for indices outside the grid.
+pub fn run_chunks<E: From<ParamError>>(
+    grid: &Grid,
+    indices: Range<u64>,
+    chunk: usize,
+    method: Method,
+    mut emit: impl FnMut(&[SweepRow]) -> Result<(), E>,
+) -> Result<(), E> {
+    let chunk = chunk.max(1) as u64;
+    let mut start = indices.start;
+    while start < indices.end {
+        let n = chunk.min(indices.end - start);
+        let rows: Vec<SweepRow> = (0..n as usize)
+            .into_par_iter()
+            .map(|k| run_point(grid, start + k as u64, method))
+            .collect::<Result<_, ParamError>>()
+            .map_err(E::from)?;
+        emit(&rows)?;
+        start += n;
+    }
+    Ok(())
+}
