@@ -126,8 +126,8 @@ pub use models::{
     kinetic_energy_at_turn_start, run_turns, state_scale, tolerance_warning, validity_warnings,
     CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
     DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody,
-    TurnCheckpoint, TurnDynamics, TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
-    Validity, ValidityWarning,
+    TurnCheckpoint, TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnSummary, TurnTable,
+    TurnVariant, Validity, ValidityWarning,
 };
 pub use output::{
     check_finite, format_number, write_trajectory, write_turn_table, Format, NonFinite, RunParams,

@@ -33,7 +33,6 @@ impl Metadata {
         self.params.push((key.to_string(), value.to_string()));
         self
     }
-
 }
 
 /// Every parameter of a run as `(key, value)` pairs, keys sorted.

@@ -108,24 +108,41 @@ pub(super) fn range_on(
             (f_max, i_max) = (fi, i);
         }
     }
-    // Refines the smallest value of g near grid point i (g = ±f); an end
-    // point that g increases away from is itself the extreme.
-    let refine = |g: &dyn Fn(f64) -> f64, i: usize, g_i: f64| {
-        let inward = if i == 0 {
-            Some(PROBE * step)
-        } else if i == grid {
-            Some(-PROBE * step)
-        } else {
-            None
-        };
-        match inward {
-            Some(dx) if g(at(i) + dx) >= g_i => g_i,
-            _ => brent_min(g, at(i.saturating_sub(1)), at((i + 1).min(grid)), x_tol),
-        }
-    };
-    let refined_min = refine(&|x| f(x), i_min, f_min);
-    let refined_max = -refine(&|x| -f(x), i_max, -f_max);
+    let refined_min = refine_min(&f, lo, step, grid, i_min, f_min, x_tol);
+    let refined_max = -refine_min(|x| -f(x), lo, step, grid, i_max, -f_max, x_tol);
     (f_min.min(refined_min), f_max.max(refined_max))
+}
+
+/// The smallest value of `g` near point `i` of the grid `lo + j step`,
+/// `j = 0..=grid`, where `g_i` is the smallest sampled value: Brent's method
+/// over the two neighbouring intervals; an end point that `g` increases away
+/// from is itself the extreme. Never above `g_i`.
+pub(super) fn refine_min(
+    g: impl Fn(f64) -> f64,
+    lo: f64,
+    step: f64,
+    grid: usize,
+    i: usize,
+    g_i: f64,
+    x_tol: f64,
+) -> f64 {
+    let at = |j: usize| lo + j as f64 * step;
+    let inward = if i == 0 {
+        Some(PROBE * step)
+    } else if i == grid {
+        Some(-PROBE * step)
+    } else {
+        None
+    };
+    match inward {
+        Some(dx) if g(at(i) + dx) >= g_i => g_i,
+        _ => g_i.min(brent_min(
+            g,
+            at(i.saturating_sub(1)),
+            at((i + 1).min(grid)),
+            x_tol,
+        )),
+    }
 }
 
 #[cfg(test)]

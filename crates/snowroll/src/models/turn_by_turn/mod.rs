@@ -39,7 +39,7 @@ mod stall;
 mod table;
 
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
-pub use contact::ContactRange;
+pub use contact::{ContactRange, TurnExtremes};
 pub use stall::first_turn_stall_slope;
 pub use table::{run_turns, TurnCheckpoint, TurnRow, TurnSummary, TurnTable};
 

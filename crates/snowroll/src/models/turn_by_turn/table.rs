@@ -240,12 +240,17 @@ impl Observer<TurnSystem, 2> for TableObserver {
             }
         };
         let omega0 = self.v_start / r;
-        let (a_min, a_max) = dynamics.acceleration_range(omega0);
-        let theta_max = match system.collision() {
-            CollisionModel::Pivot => system.pivot_impact().theta_c,
-            _ => std::f64::consts::TAU,
+        // The contact forces while rolling: up to θ_c with `--collision pivot`.
+        let ((a_min, a_max), contact) = match system.collision() {
+            CollisionModel::Pivot => (
+                dynamics.acceleration_range(omega0),
+                dynamics.contact_range(omega0, system.pivot_impact().theta_c),
+            ),
+            _ => {
+                let both = dynamics.turn_extremes(omega0);
+                ((both.a_min, both.a_max), both.contact)
+            }
         };
-        let contact = dynamics.contact_range(omega0, theta_max);
         let m_k = system.start_mass();
         let dt = event.t - self.t_start;
         self.rows.push(TurnRow {
