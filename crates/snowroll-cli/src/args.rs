@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use snowroll::sweep::Method;
-use snowroll::{CollisionModel, Format, ModelKind, ScenarioFile, SimOptions};
+use snowroll::{CollisionModel, Format, ModelKind, OnHop, ScenarioFile, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.
@@ -277,6 +277,18 @@ pub struct ScenarioArgs {
         )
     )]
     pub collision: Option<CollisionModel>,
+
+    #[arg(
+        long,
+        value_enum,
+        value_name = "ACTION",
+        help = with_default(
+            "What to do where the normal force reaches zero: stop (reason `hop`; past it the \
+             log flies and no rolling model applies) or continue as if contact were kept",
+            value_name(OnHop::default())
+        )
+    )]
+    pub on_hop: Option<OnHop>,
 }
 
 /// Where and how results are written, and the `--config` file; shared by

@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{anyhow, bail, Context, Result};
 use serde::{Deserialize, Deserializer};
 use serde_json::{Map, Value};
-use snowroll::{CollisionModel, Format, ModelKind};
+use snowroll::{CollisionModel, Format, ModelKind, OnHop};
 
 use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 
@@ -57,6 +57,8 @@ pub struct ConfigFile {
     atol: Option<f64>,
     mu: Option<f64>,
     collision: Option<CollisionModel>,
+    #[serde(alias = "on-hop")]
+    on_hop: Option<OnHop>,
     #[serde(default, deserialize_with = "format_any_case")]
     format: Option<Format>,
     output: Option<PathBuf>,
@@ -202,7 +204,7 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             continue; // a sentence (the turn table's summary), not a setting
         }
         let value = match key {
-            "model" | "collision" => {
+            "model" | "collision" | "on_hop" => {
                 Value::String(value.split_whitespace().next().unwrap_or("").into())
             }
             "sampling" => {
@@ -285,6 +287,7 @@ impl ScenarioArgs {
             atol,
             mu,
             collision,
+            on_hop,
         } = self;
         ScenarioArgs {
             model: model.or(file.model),
@@ -301,6 +304,7 @@ impl ScenarioArgs {
             atol: atol.or(file.atol),
             mu: mu.or(file.mu),
             collision: collision.or(file.collision),
+            on_hop: on_hop.or(file.on_hop),
         }
     }
 }

@@ -143,6 +143,63 @@ fn a_turns_output_reproduces_its_run_in_either_format() {
     );
 }
 
+/// The contact settings of issue 10 (`--on-hop`, `--mu`, `--collision`)
+/// are recorded and read back. At 80° a turn-model log hops in turn 1
+/// (`docs/contact-forces.md` §4.4): with `--on-hop continue` the table goes
+/// on to the 5 turns asked for, and a turn with a negative minimum of N shows
+/// where contact was lost.
+#[test]
+fn contact_settings_reproduce_their_runs() {
+    let steep = ["--model", "turns", "--alpha-deg", "80", "--turns", "5"];
+    let continued = [&steep[..], &["--on-hop", "continue"]].concat();
+    reproduces("turns", &continued, "hop.csv");
+    reproduces(
+        "turns",
+        &[&continued[..], &["--format", "json"]].concat(),
+        "hop.json",
+    );
+    reproduces(
+        "simulate",
+        &[
+            &steep[..],
+            &["--on-hop", "continue", "--mu", "0.7", "--dt", "0.1"],
+        ]
+        .concat(),
+        "slip.csv",
+    );
+    reproduces(
+        "turns",
+        &[
+            "--model",
+            "turns-exact",
+            "--turns",
+            "6",
+            "--collision",
+            "pivot",
+            "--mu",
+            "2",
+        ],
+        "pivot.csv",
+    );
+
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &[&["turns"], &continued[..], &["-o", "c.csv"]].concat(),
+    );
+    run(
+        dir.path(),
+        &[&["turns"], &steep[..], &["-o", "s.csv"]].concat(),
+    );
+    let text = |name: &str| fs::read_to_string(dir.path().join(name)).unwrap();
+    let (c, s) = (text("c.csv"), text("s.csv"));
+    assert!(c.contains("# on_hop = continue"), "{c}");
+    assert!(s.contains("# on_hop = stop"), "{s}");
+    let rows = |t: &str| t.lines().filter(|l| !l.starts_with('#')).count() - 1;
+    assert_eq!(rows(&c), 5, "{c}");
+    assert_eq!(rows(&s), 1, "stops in turn 1: {s}");
+}
+
 #[test]
 fn an_output_of_the_other_command_is_refused_with_the_reason() {
     let dir = tempfile::tempdir().unwrap();

@@ -133,4 +133,6 @@ pub use output::{
     check_finite, format_number, write_trajectory, write_turn_table, Format, NonFinite, RunParams,
 };
 pub use scenario::{Scenario, ScenarioFile};
-pub use trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState};
+pub use trajectory::{
+    OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState,
+};

@@ -1,5 +1,7 @@
 //! One output schema for every model: samples, the stop, the options.
 
+use std::fmt;
+
 use serde::{Deserialize, Serialize};
 
 use crate::error::ParamError;
@@ -206,6 +208,40 @@ impl Sampling {
     }
 }
 
+/// What a run does where the normal force reaches zero (`--on-hop`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum OnHop {
+    /// Stop with [`StopReason::Hop`] (default): past N = 0 the log flies and
+    /// the rolling models no longer apply.
+    #[default]
+    Stop,
+    /// Go on as if contact were kept (N < 0 would have to pull the log onto
+    /// the snow): for exploring the model past its validity, e.g. the
+    /// long-run means of a steep slope.
+    Continue,
+}
+
+impl OnHop {
+    /// Every variant, the default first.
+    pub const ALL: [OnHop; 2] = [OnHop::Stop, OnHop::Continue];
+
+    /// The kebab-case id.
+    pub fn id(self) -> &'static str {
+        match self {
+            OnHop::Stop => "stop",
+            OnHop::Continue => "continue",
+        }
+    }
+}
+
+impl fmt::Display for OnHop {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.id())
+    }
+}
+
 /// Options of one simulation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SimOptions {
@@ -222,9 +258,9 @@ pub struct SimOptions {
     /// Coefficient of static friction μ (dimensionless): the run stops with
     /// [`StopReason::Slip`] where |F| reaches μ N. Default: none (no slip check).
     pub mu: Option<f64>,
-    /// Whether the run stops with [`StopReason::Hop`] where N reaches 0.
-    /// Default: true (nothing is computed past the model's validity).
-    pub stop_on_hop: bool,
+    /// What happens where N reaches 0. Default: [`OnHop::Stop`], the run
+    /// stops with [`StopReason::Hop`] (nothing is computed past the model's validity).
+    pub on_hop: OnHop,
     /// How the turn models climb the step of each new layer. Default: the
     /// note's eq. (89), [`CollisionModel::Note`].
     pub collision: CollisionModel,
@@ -239,7 +275,7 @@ impl Default for SimOptions {
             tolerances: Tolerances::default(),
             sampling: Sampling::Steps,
             mu: None,
-            stop_on_hop: true,
+            on_hop: OnHop::Stop,
             collision: CollisionModel::Note,
         }
     }

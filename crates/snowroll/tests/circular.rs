@@ -55,7 +55,7 @@ fn fn4_loney_closed_form_matches_integrated_eq4_up_to_10_km() {
             // The last scenario starts so fast (v0 = 20 m/s, b/r0 = 1/2) that
             // N < 0 at first (`docs/contact-forces.md` §2): the comparison of
             // the two solutions of eq. (4) goes on past the hop.
-            stop_on_hop: false,
+            on_hop: snowroll::OnHop::Continue,
             ..SimOptions::default()
         };
         let traj = run(ModelKind::TorqueCm, s, &opts);

@@ -66,6 +66,7 @@ pub fn options(
         sampling,
         mu: a.mu,
         collision: a.collision.unwrap_or(d.collision),
+        on_hop: a.on_hop.unwrap_or(d.on_hop),
         ..d
     }
 }

@@ -18,7 +18,7 @@ use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, OdeSystem};
 use crate::scenario::Scenario;
-use crate::trajectory::{Sample, SimOptions, Stop, StopReason, Trajectory};
+use crate::trajectory::{OnHop, Sample, SimOptions, Stop, StopReason, Trajectory};
 use crate::units::Radians;
 
 /// How an equation of motion of §2 was derived: its coefficients.
@@ -376,7 +376,7 @@ impl Model for CircularModel {
             accel: Acceleration::new(&coeffs, scenario),
             x_end: opts.x_end,
             mu: opts.mu,
-            stop_on_hop: opts.stop_on_hop,
+            stop_on_hop: opts.on_hop == OnHop::Stop,
         };
         let y0 = [0.0, scenario.initial_speed()];
         // fn. 7: from rest the log moves only if a(0) > 0.

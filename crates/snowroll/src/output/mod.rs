@@ -81,6 +81,8 @@ pub struct RunParams {
     pub mu: Option<f64>,
     /// How the turn models climb each new layer.
     pub collision: crate::models::CollisionModel,
+    /// What the run does where the normal force reaches zero.
+    pub on_hop: crate::trajectory::OnHop,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -115,6 +117,7 @@ impl RunParams {
             times,
             mu: opts.mu,
             collision: opts.collision,
+            on_hop: opts.on_hop,
             warnings: Vec::new(),
             notes: Vec::new(),
         }
@@ -145,6 +148,7 @@ impl RunParams {
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
             ("collision".into(), self.collision.to_string()),
+            ("on_hop".into(), self.on_hop.to_string()),
         ];
         if let Some(mu) = self.mu {
             lines.push(("mu".into(), n(mu)));

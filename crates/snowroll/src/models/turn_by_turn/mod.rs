@@ -52,7 +52,7 @@ use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, EventAction, OdeSystem};
 use crate::scenario::Scenario;
-use crate::trajectory::{Sample, SimOptions, StopReason, Trajectory, TurnState};
+use crate::trajectory::{OnHop, Sample, SimOptions, StopReason, Trajectory, TurnState};
 use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Radians};
 
 /// Full turn, rad.
@@ -383,7 +383,7 @@ impl TurnSystem {
             turns_limit: opts.turns,
             x_end: opts.x_end,
             mu: opts.mu,
-            stop_on_hop: opts.stop_on_hop,
+            stop_on_hop: opts.on_hop == OnHop::Stop,
             collision: opts.collision,
             turn: 0,
             x_start: 0.0,
