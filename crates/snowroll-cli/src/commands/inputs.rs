@@ -67,6 +67,5 @@ pub fn options(
         mu: a.mu,
         collision: a.collision.unwrap_or(d.collision),
         on_hop: a.on_hop.unwrap_or(d.on_hop),
-        ..d
     }
 }
