@@ -382,4 +382,55 @@ fn slip_of_eq4_falls_where_the_closed_form_ratio_crosses_mu() {
         "{} vs {lo}",
         traj.stop.x_m
     );
+    // Loney's closed form of eq. (4) carries the same event: its stop is
+    // located on the closed form itself (bisection in x to rounding, t by
+    // quadrature), so it meets the same crossing to the same 1e-8.
+    let loney = ModelKind::Loney.build().simulate(&s, &opts).unwrap();
+    assert_eq!(loney.stop.reason, snowroll::StopReason::Slip);
+    assert!(
+        (loney.stop.x_m - lo).abs() < 1e-8 * lo,
+        "{} vs {lo}",
+        loney.stop.x_m
+    );
+    assert!((loney.stop.t_s - traj.stop.t_s).abs() < 1e-8 * traj.stop.t_s);
+}
+
+/// A hop of eq. (4) and of Loney's closed form: N/M = C + (b/2πr)(a + q/2)
+/// with a = 2G/3 − (7/6) q (eq. (4)), q = b v²/(π r²), is negative at the
+/// start iff q > G + (3/2)(2π r0/b) C, i.e. v0 > 50.3 m/s at 30° with the
+/// defaults; both runs then stop with `hop` at t = 0, and just below the
+/// threshold neither hops (q only falls from there, and N grows with it).
+#[test]
+fn loney_and_eq4_hop_where_the_start_speed_makes_n_negative() {
+    let base = scenario(30.0);
+    let (g, c, b, r0) = (
+        base.g_along(),
+        base.g_normal(),
+        base.snow_depth(),
+        base.initial_radius(),
+    );
+    let q_star = g + 1.5 * (2.0 * PI * r0 / b) * c;
+    let v_star = (q_star * PI * r0 * r0 / b).sqrt();
+    assert!((v_star - 50.3).abs() < 0.1, "{v_star}");
+    let opts = SimOptions {
+        t_end: 2.0,
+        ..SimOptions::default()
+    };
+    for (v0, hops) in [(1.001 * v_star, true), (0.999 * v_star, false)] {
+        let s = Scenario::new(ScenarioFile {
+            alpha_deg: 30.0,
+            v0,
+            ..ScenarioFile::default()
+        })
+        .unwrap();
+        for kind in [ModelKind::Loney, ModelKind::TorqueCm] {
+            let traj = kind.build().simulate(&s, &opts).unwrap();
+            if hops {
+                assert_eq!(traj.stop.reason, snowroll::StopReason::Hop, "{kind}");
+                assert!(traj.stop.t_s <= 0.0, "{kind}: {}", traj.stop.t_s);
+            } else {
+                assert_eq!(traj.stop.reason, snowroll::StopReason::EndTime, "{kind}");
+            }
+        }
+    }
 }

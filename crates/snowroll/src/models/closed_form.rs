@@ -15,12 +15,12 @@
 
 use std::f64::consts::PI;
 
-use super::contact::circular_forces;
+use super::contact::{circular_forces, ContactForces};
 use super::{Derivation, Model, ModelKind};
 use crate::error::SimError;
 use crate::quadrature;
 use crate::scenario::Scenario;
-use crate::trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory};
+use crate::trajectory::{OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory};
 use crate::units::{Meters, MetersPerSecond, MetersPerSecondSquared, Seconds};
 
 /// Samples of the closed form when every "step" is asked for.
@@ -174,7 +174,80 @@ impl DragOnlyClosedForm {
     }
 }
 
+/// Points of the scan for contact events over [0, x_limit]: geometric in
+/// s = πr² (the closed form is a sum of powers of s/s0, so it varies on a
+/// scale proportional to s), uniform in x when b = 0.
+const EVENT_SCAN: usize = 400;
+
+/// The first x in [0, `x_limit`] where the log of `cf` hops (N = 0, when
+/// `opts.on_hop` stops) or slips (|F| = μN, when `opts.mu` is set), with
+/// the reason; `forces_at(x)` gives the contact forces there. A scan of
+/// [`EVENT_SCAN`] points in s brackets the first sign change of each event
+/// function, bisection locates it to rounding. (Like the integrator's
+/// events, a crossing and recrossing between two scan points, a band
+/// narrower than 2.3 % of s, would be missed.)
+fn first_contact_event(
+    cf: &DragOnlyClosedForm,
+    opts: &SimOptions,
+    x_limit: Meters,
+    forces_at: impl Fn(f64) -> ContactForces,
+) -> Option<(Meters, StopReason)> {
+    let hop = opts.on_hop == OnHop::Stop;
+    // Positive where an event has fired.
+    let fired = |x: f64| {
+        let f = forces_at(x);
+        let h = if hop { -f.normal_n } else { f64::NEG_INFINITY };
+        let s = opts.mu.map_or(f64::NEG_INFINITY, |mu| f.slip_margin(mu));
+        (h, s)
+    };
+    let reason = |(h, s): (f64, f64)| {
+        if h >= 0.0 {
+            Some(StopReason::Hop)
+        } else if s >= 0.0 {
+            Some(StopReason::Slip)
+        } else {
+            None
+        }
+    };
+    if !hop && opts.mu.is_none() {
+        return None;
+    }
+    if let Some(r) = reason(fired(0.0)) {
+        return Some((0.0, r));
+    }
+    let s_ratio = 1.0 + cf.eps(x_limit);
+    let at = |j: usize| {
+        let frac = j as f64 / EVENT_SCAN as f64;
+        if cf.b > 0.0 {
+            (cf.s0 / cf.b) * (s_ratio.powf(frac) - 1.0)
+        } else {
+            x_limit * frac
+        }
+    };
+    let mut lo = 0.0;
+    for j in 1..=EVENT_SCAN {
+        let hi = if j == EVENT_SCAN { x_limit } else { at(j) };
+        if let Some(r) = reason(fired(hi)) {
+            let (mut a, mut b) = (lo, hi);
+            while b - a > 4.0 * f64::EPSILON * b {
+                let mid = 0.5 * (a + b);
+                if reason(fired(mid)).is_some() {
+                    b = mid;
+                } else {
+                    a = mid;
+                }
+            }
+            // The reason at the located point (both may fire in one interval).
+            return Some((b, reason(fired(b)).unwrap_or(r)));
+        }
+        lo = hi;
+    }
+    None
+}
+
 /// Loney's closed form of eq. (4) (fn. 4), evaluated without an ODE solver.
+/// Its contact forces are those of eq. (4) (`circular_forces`); a run stops
+/// where the log hops or slips, as the ODE models do.
 ///
 /// ```
 /// use snowroll::{LoneyModel, Model, Sampling, Scenario, SimOptions};
@@ -197,17 +270,24 @@ impl Model for LoneyModel {
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
         let cf = DragOnlyClosedForm::new(scenario, LONEY_DRAG);
-        // Where the run ends: t_end, or x_end if that comes first.
-        let (t_stop, reason) = match opts.x_end {
-            Some(x_end) => {
-                let t_x = cf.time_at(x_end);
-                if t_x <= opts.t_end {
-                    (t_x, StopReason::Distance)
-                } else {
-                    (opts.t_end, StopReason::EndTime)
-                }
-            }
-            None => (opts.t_end, StopReason::EndTime),
+        // Loney's solution is that of eq. (4): its contact forces are those of
+        // the circular model of eq. (4) on the closed-form trajectory.
+        let eq4 = Derivation::TorqueAboutCentre.coefficients();
+        let forces_at =
+            |x: f64| circular_forces(&eq4, scenario, x, cf.speed(x), cf.acceleration(x));
+        // Where the run ends: t_end, or x_end if that comes first, or the
+        // first hop or slip before either.
+        let distance_first = opts.x_end.filter(|&x_end| cf.time_at(x_end) <= opts.t_end);
+        let x_limit = match distance_first {
+            Some(x_end) => x_end,
+            None => cf.position_after(0.0, 0.0, opts.t_end)?,
+        };
+        let (t_stop, x_known, reason) = match first_contact_event(&cf, opts, x_limit, forces_at) {
+            Some((x, reason)) => (cf.time_at(x), Some(x), reason),
+            None => match distance_first {
+                Some(x_end) => (cf.time_at(x_end), Some(x_end), StopReason::Distance),
+                None => (opts.t_end, None, StopReason::EndTime),
+            },
         };
         let times: Vec<f64> = match &opts.sampling {
             Sampling::Times(ts) => ts.iter().copied().filter(|&t| t <= t_stop).collect(),
@@ -221,12 +301,9 @@ impl Model for LoneyModel {
         };
         let r0 = scenario.initial_radius();
         let b = scenario.snow_depth();
-        // Loney's solution is that of eq. (4): its contact forces are those of
-        // the circular model of eq. (4) on the closed-form trajectory.
-        let eq4 = Derivation::TorqueAboutCentre.coefficients();
         let sample = |t: f64, x: f64| {
             let (v, a) = (cf.speed(x), cf.acceleration(x));
-            let forces = circular_forces(&eq4, scenario, x, v, a);
+            let forces = forces_at(x);
             Sample {
                 t_s: t,
                 x_m: x,
@@ -242,17 +319,16 @@ impl Model for LoneyModel {
         let mut samples = Vec::with_capacity(times.len());
         let (mut x_a, mut t_a) = (0.0, 0.0);
         for &t in &times {
-            let x = if reason == StopReason::Distance && t >= t_stop {
-                opts.x_end.unwrap_or(x_a)
-            } else {
-                cf.position_after(x_a, t_a, t)?
+            let x = match x_known {
+                Some(x) if t >= t_stop => x,
+                _ => cf.position_after(x_a, t_a, t)?,
             };
             samples.push(sample(t, x));
             (x_a, t_a) = (x, t);
         }
-        let x_stop = match reason {
-            StopReason::Distance => opts.x_end.unwrap_or(x_a),
-            _ => cf.position_after(x_a, t_a, t_stop)?,
+        let x_stop = match x_known {
+            Some(x) => x,
+            None => cf.position_after(x_a, t_a, t_stop)?,
         };
         Ok(Trajectory {
             model: ModelKind::Loney,
