@@ -22,13 +22,15 @@ calling these functions run in parallel.
 from __future__ import annotations
 
 import warnings as _warnings
-from typing import Any, Dict, Iterator, List, Optional, Sequence
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple
+
+import numpy as _np
 
 from . import _snowroll
 
 __version__: str = _snowroll.__version__
 
-__all__ = ["simulate", "turns", "models", "Result", "TurnResult", "__version__"]
+__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "__version__"]
 
 
 class _Columns:
@@ -149,6 +151,89 @@ class TurnResult(_Columns):
             f"<snowroll.TurnResult {self.model} ({self.equation}): {len(self)} turns, "
             f"stop {self.stop['reason']}>"
         )
+
+
+class SweepResult(_Columns):
+    """The rows of a sweep: what :func:`sweep` returns.
+
+    Columns (those of the CLI's ``snowroll sweep`` CSV): ``index`` (uint64,
+    the grid index), ``model``, ``alpha_deg``, ``snow_depth``, ``r0``, ``g``,
+    ``density``, ``length``, ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``,
+    ``stop``, ``t_s``, ``x_m``, ``v_m_s``, ``a_over_g_sin_alpha``, ``turns``,
+    ``error``. Numbers are float64 arrays with NaN where the CSV cell is
+    empty (``x_end`` not swept, a failed run); ``model``, ``stop`` and
+    ``error`` are object arrays of str (``None`` where empty). ``len`` is the
+    size of the whole grid, ``shard`` the ``(i, n)`` these rows are.
+    """
+
+    def __init__(self, raw: Dict[str, Any]) -> None:
+        cols = raw["columns"]
+        for name in ("model", "stop", "error"):
+            arr = _np.empty(len(cols[name]), dtype=object)
+            arr[:] = cols[name]
+            cols[name] = arr
+        self._columns = cols
+        self.grid_len: int = raw["len"]
+        self.shard: Tuple[int, int] = tuple(raw["shard"])
+        self.version: str = raw["version"]
+        self.params: Dict[str, Any] = {}
+        self.stop: Dict[str, Any] = {}
+        self.model: str = ""
+
+    def __repr__(self) -> str:
+        i, n = self.shard
+        return f"<snowroll.SweepResult {len(self)} rows of {self.grid_len} (shard {i}/{n})>"
+
+    @staticmethod
+    def concat(parts: Sequence["SweepResult"]) -> "SweepResult":
+        """The rows of several shards of one grid, in grid order (by ``index``)."""
+        if not parts:
+            raise ValueError("concat() needs at least one SweepResult")
+        cols = {
+            name: _np.concatenate([p[name] for p in parts]) for name in parts[0].columns
+        }
+        order = _np.argsort(cols["index"], kind="stable")
+        merged = {name: col[order] for name, col in cols.items()}
+        if len(_np.unique(merged["index"])) != len(order):
+            raise ValueError("concat(): the parts overlap (an index appears twice)")
+        out = SweepResult.__new__(SweepResult)
+        out._columns = merged
+        out.grid_len = parts[0].grid_len
+        out.shard = (0, 1)
+        out.version = parts[0].version
+        out.params, out.stop, out.model = {}, {}, ""
+        return out
+
+
+def sweep(
+    grid: Mapping[str, Any],
+    *,
+    shard: Optional[Tuple[int, int]] = None,
+    method: str = "auto",
+) -> SweepResult:
+    """Run every model over a grid of parameters, one summary row per run
+    (the CLI's ``snowroll sweep``), rows computed in parallel with the GIL
+    released.
+
+    ``grid``: ``{"model": "torque-cm,energy" or a list of ids, AXIS: values}``
+    with AXIS one of ``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``,
+    ``length``, ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol`` and values a
+    number, a sequence of numbers, or a string as the CLI reads it:
+    ``"10,20,30"`` or ``"start:end:count"`` (both ends included). Parameters
+    not in the grid take their defaults (t_end 100 s).
+
+    ``shard=(i, n)``: only shard i (0-based) of n, as ``--shard i/n``; the
+    shards' rows, joined with :meth:`SweepResult.concat`, are the whole
+    sweep's. ``method``: ``"auto"`` (the circular models' closed form where it
+    applies, the ODE elsewhere) or ``"ode"``.
+
+    ``a_over_g_sin_alpha`` is the acceleration at the end of each run over
+    g sin alpha, to compare with the late-time fractions of :func:`models`
+    and the note's eq. (79) (4/9).
+
+    Raises ``ValueError`` for a bad grid (the library's message).
+    """
+    return SweepResult(_snowroll.sweep(dict(grid), shard=shard, method=method))
 
 
 def _warn(messages: Sequence[str]) -> None:
