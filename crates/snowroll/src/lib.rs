@@ -74,6 +74,10 @@
 //! | k | turn number, 0-based (§3.4) | [`TurnState::turn`] | 1 |
 //! | θ, θ̇ | angle rolled in the turn, its rate | [`TurnState::theta_rad`], [`TurnState::omega_rad_s`] | rad, rad/s |
 //! | r_k, m_k, X_k | radius, mass, position at the start of turn k (eq. (74)) | [`TurnDynamics::radius`], [`TurnRow::x_start_m`] | m, kg, m |
+//! | N, F | normal force of the slope; friction, positive up the slope (`docs/contact-forces.md` §1) | [`Sample::normal_n`], [`Sample::friction_n`], [`ContactForces`] | N |
+//! | \|F\|/N | friction needed to roll without slipping | [`Sample::friction_ratio`], [`TurnRow::max_friction_ratio`] | 1 |
+//! | μ | coefficient of static friction (`--mu`) | [`SimOptions::mu`] | 1 |
+//! | θ_c | angle where the new layer's edge meets the snow (`--collision pivot`) | [`PivotImpact`] | rad |
 //!
 //! ## Equation → item
 //! | note | item |
@@ -97,6 +101,9 @@
 //! | eq. (74) (0-based), §3.4 | [`TurnModel`] |
 //! | eqs. (81)–(89), the collision | [`collision_speed`], [`kinetic_energy_at_turn_start`], [`kinetic_energy_at_turn_end`], [`TurnRow::collision_loss_j`] |
 //! | eqs. (77)–(79), measured | [`run_turns`], [`TurnSummary`] |
+//! | fn. 10, contact forces and the hop (§1–§4 of `docs/contact-forces.md`) | [`circular_forces`], [`TurnDynamics::contact_per_mass`], [`TurnDynamics::turn_extremes`], [`StopReason::Hop`], [`OnHop`] |
+//! | slip, the smallest μ (`docs/contact-forces.md` §5) | [`SimOptions::mu`], [`StopReason::Slip`], [`TurnRow::max_friction_ratio`] |
+//! | the step of each new layer (`docs/contact-forces.md` §6) | [`CollisionModel`], [`charged_collision_speed`], [`PivotImpact`], [`StopReason::Stuck`] |
 //! | every claim of the note, with its verdict | [`report::CLAIMS`] |
 #![deny(
     clippy::unwrap_used,

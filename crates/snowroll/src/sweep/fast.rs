@@ -135,7 +135,7 @@ pub struct SpeedSquared {
     contact_ok: Cell<bool>,
 }
 
-/// The contact events the run watches for ([`crate::SimOptions::stop_on_hop`],
+/// The contact events the run watches for ([`crate::SimOptions::on_hop`],
 /// [`crate::SimOptions::mu`]). The fast path does not locate them: it checks
 /// at every quadrature node (dense on the scale on which the forces change)
 /// that the normal force N and the friction margin μN − |F| stay above

@@ -71,7 +71,7 @@ fn fast_row(point: &Point) -> Option<SweepRow> {
     let c = derivation.coefficients();
     let s = &point.scenario;
     let contact = ContactCheck {
-        stop_on_hop: o.stop_on_hop,
+        stop_on_hop: o.on_hop == crate::trajectory::OnHop::Stop,
         mu: o.mu,
     };
     let end = circular_end(&c, s, o.t_end, o.x_end, contact)?;
