@@ -139,7 +139,7 @@ pub struct SpeedSquared {
 /// [`crate::SimOptions::mu`]). The fast path does not locate them: it checks
 /// at every quadrature node (dense on the scale on which the forces change)
 /// that the normal force N and the friction margin μN − |F| stay above
-/// [`CONTACT_MARGIN`] of M g cos α, and leaves the run to the ODE otherwise.
+/// `CONTACT_MARGIN` of M g cos α, and leaves the run to the ODE otherwise.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactCheck {
     /// Whether N = 0 (a hop) would end the run.
