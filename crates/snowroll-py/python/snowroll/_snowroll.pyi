@@ -5,7 +5,7 @@ returned here in ``snowroll.Result`` and ``snowroll.TurnResult``. Every
 keyword left ``None`` takes the library's default, the same as the CLI's.
 """
 
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 __version__: str
 
@@ -75,3 +75,21 @@ def models(
     """Every model: ``id``, ``alias``, ``equation``, ``description``,
     ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
     and ``stall_kind`` (fn. 7) for ``snow_depth`` and ``r0``, ``validity``."""
+
+def sweep(
+    grid: Dict[str, Any],
+    *,
+    shard: Optional[Tuple[int, int]] = None,
+    method: str = "auto",
+) -> Dict[str, Any]:
+    """Every model of ``grid["model"]`` at every point of the other axes
+    (``alpha_deg`` ... ``atol``; a number, a sequence, or ``"a,b,c"`` /
+    ``"start:end:count"``), one summary row each, in grid order; shard
+    ``(i, n)`` only. The circular models take the closed form of their speed
+    (``method="auto"``) or the ODE (``"ode"``). ``a_over_g_sin_alpha`` is the
+    end acceleration over g sin alpha, whose long-run value the note's
+    eq. (79) puts at 4/9 for the turn models.
+
+    Returns ``{"columns": {name: ndarray or list}, "len": int,
+    "shard": (i, n), "version": str}``.
+    """
