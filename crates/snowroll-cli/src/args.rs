@@ -472,6 +472,10 @@ pub struct SweepArgs {
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
+    /// Output format: csv, or parquet (needs a build with `--features parquet`) [default: parquet for a FILE ending in .parquet, else csv]
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub format: Option<SweepFormat>,
+
     /// Run only slice I of N equal, contiguous slices of the grid (0 <= I < N), e.g. --shard $SLURM_ARRAY_TASK_ID/$N
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
@@ -491,6 +495,15 @@ pub struct SweepArgs {
     /// Rows computed and written at a time (tests and tuning; the result does not depend on it)
     #[arg(long, value_name = "N", hide = true, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     pub chunk_rows: Option<u64>,
+}
+
+/// Output formats of `snowroll sweep`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SweepFormat {
+    /// Comma-separated values with `#` lines recording version, command and axes.
+    Csv,
+    /// Apache Parquet, the same columns, the `#` lines as key-value metadata.
+    Parquet,
 }
 
 /// Flags of `snowroll merge`.

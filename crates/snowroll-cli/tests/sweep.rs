@@ -271,3 +271,81 @@ fn a_killed_sweep_resumed_equals_an_uninterrupted_one() {
     let whole = fs::read(&out).unwrap();
     assert_eq!(resumed, whole);
 }
+
+/// Parquet (feature `parquet`): the same rows as the CSV, value for value,
+/// and the header as key-value metadata.
+#[cfg(feature = "parquet")]
+#[test]
+fn parquet_reads_back_with_the_csv_values() {
+    use arrow_array::{Array, Float64Array, StringArray, UInt64Array};
+    use parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder;
+
+    let dir = tempfile::tempdir().unwrap();
+    let pq = dir.path().join("s.parquet");
+    let mut args: Vec<String> = GRID.iter().map(|s| s.to_string()).collect();
+    args.extend(["-o".to_string(), pq.to_str().unwrap().to_string()]);
+    ok(&argv(&args));
+    let csv = ok(&GRID);
+    let csv_rows: Vec<Vec<&str>> = rows(&csv).iter().map(|r| r.split(',').collect()).collect();
+
+    let file = fs::File::open(&pq).unwrap();
+    let builder = ParquetRecordBatchReaderBuilder::try_new(file).unwrap();
+    let kv = builder
+        .metadata()
+        .file_metadata()
+        .key_value_metadata()
+        .unwrap()
+        .clone();
+    let get = |k: &str| kv.iter().find(|e| e.key == k).and_then(|e| e.value.clone());
+    assert_eq!(get("snowroll.alpha_deg").as_deref(), Some("5:60:12"));
+    assert_eq!(get("snowroll.points").as_deref(), Some("144"));
+    assert!(get("snowroll.version").is_some());
+    let mut n = 0;
+    for batch in builder.build().unwrap() {
+        let batch = batch.unwrap();
+        let col = |name: &str| batch.column(batch.schema().index_of(name).unwrap()).clone();
+        let index = col("index");
+        let index = index.as_any().downcast_ref::<UInt64Array>().unwrap();
+        let model = col("model");
+        let model = model.as_any().downcast_ref::<StringArray>().unwrap();
+        let stop = col("stop");
+        let stop = stop.as_any().downcast_ref::<StringArray>().unwrap();
+        for i in 0..batch.num_rows() {
+            let want = &csv_rows[n];
+            assert_eq!(index.value(i).to_string(), want[0]);
+            assert_eq!(model.value(i), want[1]);
+            assert_eq!(stop.value(i), want[13]);
+            // Floats: the same bits as the CSV's shortest round-trip text.
+            for (name, k) in [("alpha_deg", 2), ("t_s", 14), ("x_m", 15), ("v_m_s", 16)] {
+                let c = col(name);
+                let c = c.as_any().downcast_ref::<Float64Array>().unwrap();
+                let want: f64 = want[k].parse().unwrap();
+                assert_eq!(c.value(i).to_bits(), want.to_bits(), "{name} row {n}");
+            }
+            assert!(col("x_end").is_null(i));
+            n += 1;
+        }
+    }
+    assert_eq!(n, csv_rows.len());
+}
+
+#[cfg(not(feature = "parquet"))]
+#[test]
+fn parquet_without_the_feature_says_how_to_get_it() {
+    let e = fails(&[
+        "sweep",
+        "--model",
+        "eq4",
+        "-o",
+        "/nonexistent-dir/s.parquet",
+    ]);
+    assert!(
+        e.contains("--features parquet") || e.contains("cannot write"),
+        "{e}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("s.parquet");
+    let e = fails(&["sweep", "--model", "eq4", "-o", p.to_str().unwrap()]);
+    assert!(e.contains("--features parquet"), "{e}");
+    assert!(!p.exists());
+}

@@ -5,6 +5,8 @@ mod inputs;
 mod merge;
 mod models;
 mod paper;
+#[cfg(feature = "parquet")]
+mod parquet;
 mod simulate;
 mod sweep;
 mod turns;

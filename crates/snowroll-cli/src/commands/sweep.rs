@@ -26,7 +26,7 @@ use snowroll::sweep::{
 };
 use snowroll::ModelKind;
 
-use crate::args::{OutputArgs, SweepArgs};
+use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
 use crate::sink::Sink;
 
@@ -63,6 +63,29 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         Sink::Replace { target, .. } => Some(with_suffix(target, PARTIAL_SUFFIX)),
         _ => None,
     };
+    let format = args.format.unwrap_or_else(|| {
+        let parquet = args
+            .output
+            .as_ref()
+            .and_then(|p| p.extension())
+            .is_some_and(|e| e.eq_ignore_ascii_case("parquet"));
+        if parquet {
+            SweepFormat::Parquet
+        } else {
+            SweepFormat::Csv
+        }
+    });
+    if format == SweepFormat::Parquet {
+        if cfg!(not(feature = "parquet")) {
+            bail!(
+                "this snowroll was built without Parquet: rebuild it with `--features parquet` \
+                 (cargo install --path crates/snowroll-cli --features parquet), or write CSV"
+            );
+        }
+        if partial_path.is_none() {
+            bail!("Parquet output needs --output FILE (a regular file)");
+        }
+    }
     let bar = progress(range.end - range.start, args.quiet);
     let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
     match partial_path {
@@ -110,14 +133,33 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             partial
                 .file
                 .seek(SeekFrom::Start(0))
-                .and_then(|_| io::copy(&mut partial.file, &mut sink))
-                .map_err(anyhow::Error::from)
-                .and_then(|_| Ok(sink.commit()?))
-                .with_context(|| format!("writing {name}"))?;
+                .with_context(|| format!("reading {shown}"))?;
+            finish(format, &mut partial, sink).with_context(|| format!("writing {name}"))?;
             fs::remove_file(&path).with_context(|| format!("removing {shown}"))?;
         }
     }
     Ok(())
+}
+
+/// Writes the rows of the partial file (positioned at its start) to `sink`
+/// in `format`, and renames the output into place.
+fn finish(format: SweepFormat, partial: &mut Partial, mut sink: Sink) -> Result<()> {
+    match format {
+        SweepFormat::Csv => {
+            io::copy(&mut partial.file, &mut sink)?;
+        }
+        #[cfg(feature = "parquet")]
+        SweepFormat::Parquet => {
+            let mut header = vec![0u8; partial.header_len as usize];
+            partial.file.read_exact(&mut header)?;
+            partial.file.seek(SeekFrom::Start(0))?;
+            let header = String::from_utf8_lossy(&header).into_owned();
+            sink = super::parquet::write(&partial.file, &header, sink)?;
+        }
+        #[cfg(not(feature = "parquet"))]
+        SweepFormat::Parquet => bail!("this snowroll was built without Parquet"),
+    }
+    Ok(sink.commit()?)
 }
 
 /// Runs `range` and writes its rows as CSV records to `out`, calling
@@ -306,6 +348,12 @@ fn header(args: &SweepArgs, grid: &Grid, shard: u64, shards: u64, range: &Range<
     }
     if args.method != Method::Auto {
         command.push_str(" --method ode");
+    }
+    if let Some(f) = args.format {
+        command.push_str(match f {
+            SweepFormat::Csv => " --format csv",
+            SweepFormat::Parquet => " --format parquet",
+        });
     }
     if let Some(s) = &args.shard {
         command.push_str(&format!(" --shard {s}"));
