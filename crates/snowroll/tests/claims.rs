@@ -167,6 +167,21 @@ fn fn7_stall_in_first_turn_notices_a_turn_model_with_too_much_snow() {
 }
 
 #[test]
+fn fn10_hop_threshold_notices_a_turn_model_that_never_leaves_the_snow() {
+    // The first-order turn model with its hop event switched off.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let opts = SimOptions {
+                on_hop: snowroll::OnHop::Continue,
+                ..opts.clone()
+            };
+            TurnModel::new(TurnVariant::Paper).simulate(s, &opts)
+        })
+    });
+    changes("fn10-hop-threshold", &wrong);
+}
+
+#[test]
 fn terminal_accelerations_notice_a_wrong_drag_or_lift_coefficient() {
     let wrong = lab().with_coefficients(
         Derivation::TorqueAboutContact,

@@ -18,10 +18,11 @@
 //!
 //! The checks live by part of the note: [`circular`] (§2, fn. 4, fn. 7),
 //! [`terminal`] (§2.4), [`app_a`] (App. A), [`first_turn`] (§3.1–3.3),
-//! [`stall`] (fn. 7 in §3), [`multi_turn`] (§3.4).
+//! [`stall`] (fn. 7 in §3), [`multi_turn`] (§3.4), [`contact`] (fn. 10).
 
 mod app_a;
 mod circular;
+mod contact;
 mod first_turn;
 mod multi_turn;
 mod quadrature;

@@ -13,6 +13,7 @@ use super::circular::{
     LONEY_DERIVATIVE, LONEY_LIMIT, LONEY_PRINTED_APART, LONEY_SPEED, SPREAD_LINEAR, SPREAD_SMALL,
     STALL_BISECTION, STALL_MARGIN,
 };
+use super::contact::{hop_threshold, HOP_LATE_MIN, HOP_MARGIN};
 use super::first_turn::{
     eq47_48_angular_momentum, eq51_55_accreting_body, eq54_erratum, eq70_mass,
     first_turn_equivalence, ACCRETING_B3, ACCRETING_ORDER, EQ47_48_APART, EQ47_48_MATCH,
@@ -341,5 +342,16 @@ pub static CLAIMS: &[ClaimCheck] = &[
             expected: Verdict::Holds,
         },
         check: eq73_truncates_exact,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "fn10-hop-threshold",
+            paper_ref: "fn. 10",
+            statement: "The note leaves open whether the turn-by-turn log hops (fn. 10). Answer: in late turns the smallest normal force of a turn tends to M g (cos α − ½ sin α), so the log hops iff tan α > 2 (α* = 63.435°).",
+            method: "turns and turns-exact from rest for 2000 turns at α* ± 1° with the hop event on: above, it must hop; below, it must complete every turn, and the smallest N/(M g) of its last turn (2000 samples) must match cos α − ½ sin α",
+            tolerances: &[HOP_MARGIN, HOP_LATE_MIN],
+            expected: Verdict::Holds,
+        },
+        check: hop_threshold,
     },
 ];
