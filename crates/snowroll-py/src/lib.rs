@@ -13,14 +13,13 @@
 //! Bad parameters raise `ValueError` with the library's message
 //! ([`ParamError`]); a failed integration raises `RuntimeError` ([`SimError`]).
 
+mod sweep;
+
 use numpy::IntoPyArray;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::{PyDict, PyList};
 use snowroll::integrate::Tolerances;
-use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Grid, Method, Param, SweepRow, Values, DEFAULT_CHUNK,
-};
 use snowroll::{
     run_turns, validity_warnings, CollisionModel, ModelKind, ParamError, RunParams, Sampling,
     Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable, TurnVariant,
@@ -35,7 +34,7 @@ const TURNS_DEFAULT: u64 = 100;
 const TURNS_T_END_S: f64 = 1e9;
 
 /// A bad parameter: `ValueError` with the library's message.
-fn value_error(e: ParamError) -> PyErr {
+pub(crate) fn value_error(e: ParamError) -> PyErr {
     PyValueError::new_err(e.to_string())
 }
 
@@ -153,13 +152,16 @@ fn to_py<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py,
 }
 
 /// A serde record as a Python object.
-fn record<'py>(py: Python<'py>, value: &impl serde::Serialize) -> PyResult<Bound<'py, PyAny>> {
+pub(crate) fn record<'py>(
+    py: Python<'py>,
+    value: &impl serde::Serialize,
+) -> PyResult<Bound<'py, PyAny>> {
     let json = serde_json::to_value(value).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
     to_py(py, &json)
 }
 
 /// Adds column `name` built from `items` to `columns`, as a numpy array.
-fn column<'py, T, E>(
+pub(crate) fn column<'py, T, E>(
     py: Python<'py>,
     columns: &Bound<'py, PyDict>,
     name: &str,
@@ -430,134 +432,6 @@ fn models<'py>(
     Ok(list)
 }
 
-/// The values of one sweep axis: a string as the CLI reads it (`a,b,c` or
-/// `start:end:count`), one number, or a sequence of numbers.
-fn axis_values(key: &str, value: &Bound<'_, PyAny>) -> PyResult<Values> {
-    if let Ok(text) = value.cast::<PyString>() {
-        return Values::parse(key, &text.to_cow()?)
-            .map_err(|e| PyValueError::new_err(e.to_string()));
-    }
-    if let Ok(x) = value.extract::<f64>() {
-        return Ok(Values::List(vec![x]));
-    }
-    let list: Vec<f64> = value.extract().map_err(|_| {
-        PyValueError::new_err(format!(
-            "{key}: expected a number, a sequence of numbers or a string \"a,b,c\" / \"start:end:count\""
-        ))
-    })?;
-    Ok(Values::List(list))
-}
-
-/// The models of a sweep: `"a,b"` or a sequence of ids.
-fn sweep_models(value: &Bound<'_, PyAny>) -> PyResult<Vec<ModelKind>> {
-    let names: Vec<String> = match value.cast::<PyString>() {
-        Ok(text) => text.to_cow()?.split(',').map(str::to_string).collect(),
-        Err(_) => value.extract()?,
-    };
-    names
-        .iter()
-        .map(|n| n.parse().map_err(value_error))
-        .collect()
-}
-
-/// Runs a sweep (`snowroll sweep`): every model in `grid["model"]` at every
-/// point of the other axes, one summary row each, in grid order (the last
-/// axis in `Param` order varies fastest), rows computed in parallel with the
-/// GIL released. `shard = (i, n)` runs only shard i of n, as `--shard i/n`.
-/// Returns `{"columns": {name: ndarray or list}, "len": int, "shard": (i, n)}`.
-#[pyfunction]
-#[pyo3(signature = (grid, *, shard = None, method = "auto"))]
-fn sweep<'py>(
-    py: Python<'py>,
-    grid: &Bound<'py, PyDict>,
-    shard: Option<(u64, u64)>,
-    method: &str,
-) -> PyResult<Bound<'py, PyDict>> {
-    let method = match method {
-        "auto" => Method::Auto,
-        "ode" => Method::Ode,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "unknown method {other:?}: expected auto or ode"
-            )))
-        }
-    };
-    let mut models = Vec::new();
-    let mut axes = Vec::new();
-    for (key, value) in grid.iter() {
-        let key: String = key.extract()?;
-        if key == "model" {
-            models = sweep_models(&value)?;
-            continue;
-        }
-        let param = Param::from_key(&key).ok_or_else(|| {
-            PyValueError::new_err(format!(
-                "unknown axis {key:?}: expected model or one of {}",
-                Param::ALL.map(Param::key).join(", ")
-            ))
-        })?;
-        axes.push(Axis {
-            param,
-            values: axis_values(param.key(), &value)?,
-        });
-    }
-    let grid = Grid::new(models, axes).map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let (i, n) = shard.unwrap_or((0, 1));
-    let range = shard_range(grid.len(), i, n).map_err(PyValueError::new_err)?;
-    let rows = py
-        .detach(|| {
-            let mut rows: Vec<SweepRow> = Vec::new();
-            run_chunks(&grid, range, DEFAULT_CHUNK, method, |chunk| {
-                rows.extend_from_slice(chunk);
-                Ok::<(), ParamError>(())
-            })
-            .map(|()| rows)
-        })
-        .map_err(value_error)?;
-    let c = PyDict::new(py);
-    let opt = |x: Option<f64>| x.unwrap_or(f64::NAN);
-    column(py, &c, "index", &rows, |r| r.index)?;
-    c.set_item(
-        "model",
-        rows.iter().map(|r| r.model.id()).collect::<Vec<_>>(),
-    )?;
-    column(py, &c, "alpha_deg", &rows, |r| r.alpha_deg)?;
-    column(py, &c, "snow_depth", &rows, |r| r.snow_depth)?;
-    column(py, &c, "r0", &rows, |r| r.r0)?;
-    column(py, &c, "g", &rows, |r| r.g)?;
-    column(py, &c, "density", &rows, |r| r.density)?;
-    column(py, &c, "length", &rows, |r| r.length)?;
-    column(py, &c, "v0", &rows, |r| r.v0)?;
-    column(py, &c, "t_end", &rows, |r| r.t_end)?;
-    column(py, &c, "x_end", &rows, |r| opt(r.x_end))?;
-    column(py, &c, "rtol", &rows, |r| r.rtol)?;
-    column(py, &c, "atol", &rows, |r| r.atol)?;
-    let stops = rows
-        .iter()
-        .map(|r| r.stop.map(|s| record(py, &s)).transpose())
-        .collect::<PyResult<Vec<_>>>()?;
-    c.set_item("stop", stops)?;
-    column(py, &c, "t_s", &rows, |r| opt(r.t_s))?;
-    column(py, &c, "x_m", &rows, |r| opt(r.x_m))?;
-    column(py, &c, "v_m_s", &rows, |r| opt(r.v_m_s))?;
-    column(py, &c, "a_over_g_sin_alpha", &rows, |r| {
-        opt(r.a_over_g_sin_alpha)
-    })?;
-    column(py, &c, "turns", &rows, |r| {
-        r.turns.map_or(f64::NAN, |k| k as f64)
-    })?;
-    c.set_item(
-        "error",
-        rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
-    )?;
-    let out = PyDict::new(py);
-    out.set_item("columns", c)?;
-    out.set_item("len", grid.len())?;
-    out.set_item("shard", (i, n))?;
-    out.set_item("version", snowroll::output::VERSION)?;
-    Ok(out)
-}
-
 /// The native module `snowroll._snowroll`.
 #[pymodule]
 fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -565,6 +439,6 @@ fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(turns, m)?)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     Ok(())
 }
