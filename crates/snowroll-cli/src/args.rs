@@ -101,13 +101,8 @@ pub struct PaperArgs {
 }
 
 /// Turns run by `snowroll turns` when neither `--turns` nor the config
-/// file says.
-pub const TURNS_DEFAULT: u64 = 100;
-
-/// End time of `snowroll turns` when neither `--t-end` nor the config file
-/// says, s: about 30 years, so that the turn count, not the clock, ends any
-/// realistic run (10^5 turns of the default scenario take about 6 hours).
-pub const TURNS_T_END_S: f64 = 1e9;
+/// file says, and its end time, s: the library's defaults of a turn run.
+pub use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 
 /// `help` text with the default value appended, as clap shows it.
 fn with_default(text: &str, default: impl Display) -> String {

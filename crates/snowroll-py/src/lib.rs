@@ -20,18 +20,11 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use snowroll::integrate::Tolerances;
+use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::{
     run_turns, validity_warnings, CollisionModel, ModelKind, ParamError, RunParams, Sampling,
     Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable, TurnVariant,
 };
-
-/// Turns run by `snowroll.turns` when `turns` is not given; the CLI's
-/// `snowroll turns` default (`TURNS_DEFAULT` in its `args.rs`).
-const TURNS_DEFAULT: u64 = 100;
-
-/// End time of `snowroll.turns` when `t_end` is not given, s: the CLI's
-/// `TURNS_T_END_S`, long enough that the turn count ends any realistic run.
-const TURNS_T_END_S: f64 = 1e9;
 
 /// A bad parameter: `ValueError` with the library's message.
 pub(crate) fn value_error(e: ParamError) -> PyErr {

@@ -128,13 +128,13 @@ pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
 pub use models::{
-    atol_bound, charged_collision_speed, check_tolerances, check_turn_scale, circular_forces,
-    collision_speed, default_atol, first_turn_stall_slope, kinetic_energy_at_turn_end,
-    kinetic_energy_at_turn_start, run_turns, state_scale, tolerance_warning, validity_warnings,
-    CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
-    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody,
-    TurnCheckpoint, TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnSummary, TurnTable,
-    TurnVariant, Validity, ValidityWarning,
+    as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
+    circular_forces, collision_speed, default_atol, first_turn_stall_slope,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, state_scale,
+    tolerance_warning, validity_warnings, CircularModel, Coefficients, CollisionModel,
+    ContactForces, ContactRange, Derivation, DragOnlyClosedForm, InTurnCoefficients, LoneyModel,
+    Model, ModelKind, PivotImpact, SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes,
+    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
 };
 pub use output::{
     check_finite, format_number, write_trajectory, write_turn_table, Format, NonFinite, RunParams,

@@ -15,12 +15,7 @@ use snowroll::{ModelKind, ScenarioFile};
 
 use crate::args::{ModelsArgs, ModelsFormat};
 use crate::sink::Sink;
-
-/// Largest denominator tried when showing a fraction such as `1/5`.
-const MAX_DENOMINATOR: u32 = 100;
-/// A decimal equals `p/q` if it is this close: the fractions come from
-/// coefficient ratios like (2/3)/(1 + 2·7/6), a few roundings from exact.
-const FRACTION_TOL: f64 = 1e-12;
+use snowroll::as_fraction;
 
 /// One model, as listed.
 #[derive(Debug, Serialize)]
@@ -80,17 +75,6 @@ fn listing() -> Listing {
         stall_r0_m: r0,
         models,
     }
-}
-
-/// `f` as `p/q` with the smallest `q <= MAX_DENOMINATOR`, if there is one.
-fn as_fraction(f: f64) -> Option<(u64, u32)> {
-    if !(f.is_finite() && f >= 0.0) {
-        return None;
-    }
-    (1..=MAX_DENOMINATOR).find_map(|q| {
-        let p = (f * f64::from(q)).round();
-        ((p / f64::from(q) - f).abs() <= FRACTION_TOL).then_some((p as u64, q))
-    })
 }
 
 /// Prints the listing.

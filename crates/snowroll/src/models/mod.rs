@@ -40,6 +40,34 @@ use crate::error::{ParamError, SimError};
 use crate::scenario::Scenario;
 use crate::trajectory::{SimOptions, Trajectory};
 
+/// Turns of a turn-model run when the caller does not say (`snowroll turns`,
+/// Python's `snowroll.turns`).
+pub const TURNS_DEFAULT: u64 = 100;
+
+/// End time of a turn-model run when the caller does not say, s: about 30
+/// years, so that the turn count, not the clock, ends any realistic run
+/// (10^5 turns of the default scenario take about 6 hours).
+pub const TURNS_T_END_S: f64 = 1e9;
+
+/// Largest denominator [`as_fraction`] tries.
+const MAX_DENOMINATOR: u32 = 100;
+
+/// How close `p/q` must be to the value, absolutely: the terminal fractions
+/// come from a few divisions of small rationals, exact to a few ulps.
+const FRACTION_TOL: f64 = 1e-12;
+
+/// `f >= 0` as `p/q` with the smallest `q <= 100`, if there is one (to print
+/// a terminal fraction as 1/5 rather than 0.2000, or a coefficient as 7/6).
+pub fn as_fraction(f: f64) -> Option<(u64, u32)> {
+    if !(f.is_finite() && f >= 0.0) {
+        return None;
+    }
+    (1..=MAX_DENOMINATOR).find_map(|q| {
+        let p = (f * f64::from(q)).round();
+        ((p / f64::from(q) - f).abs() <= FRACTION_TOL).then_some((p as u64, q))
+    })
+}
+
 /// A model of the rolling log: from a scenario and options to a trajectory.
 pub trait Model {
     /// Which model this is.

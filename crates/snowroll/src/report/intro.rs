@@ -10,23 +10,15 @@ use std::f64::consts::PI;
 use std::fmt::Write as _;
 
 use super::html::esc;
-use crate::models::{Coefficients, ModelKind};
+use crate::models::{as_fraction, Coefficients, ModelKind};
 
 /// The note, cited in full.
 pub(super) const NOTE_CITATION: &str = "K. T. McDonald, \u{201c}Snowball/Log Rolling down a Snowy Slope\u{201d}, \
      Joseph Henry Laboratories, Princeton University (physics examples, kirkmcd.princeton.edu/examples)";
 
-/// `x` as a fraction p/q with a small denominator, when it is one.
-fn ratio(x: f64) -> Option<(i64, i64)> {
-    (1..=12).find_map(|q| {
-        let p = (x * q as f64).round();
-        ((x * q as f64 - p).abs() < 1e-12).then_some((p as i64, q))
-    })
-}
-
 /// `p X/(q Y)` with the ones left out: `7bv²/(6πr²)`, `bv²/(2πr²)`, `bv²/(πr²)`.
 fn term(c: f64, num: &str, den: &str) -> String {
-    match ratio(c) {
+    match as_fraction(c) {
         Some((1, 1)) => format!("{num}/({den})"),
         Some((p, 1)) => format!("{p}{num}/({den})"),
         Some((1, q)) => format!("{num}/({q}{den})"),
@@ -96,7 +88,7 @@ pub(super) fn equation_of_motion(kind: ModelKind) -> String {
 /// The late-time acceleration over G, as a fraction.
 pub(super) fn terminal_text(kind: ModelKind) -> String {
     match kind.terminal_fraction() {
-        Some(f) => match ratio(f) {
+        Some(f) => match as_fraction(f) {
             Some((p, q)) => format!("{p}/{q}"),
             None => format!("{f:.4}"),
         },
