@@ -22,8 +22,9 @@ use pyo3::types::{PyDict, PyList};
 use snowroll::integrate::Tolerances;
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::{
-    run_turns, validity_warnings, CollisionModel, ModelKind, ParamError, RunParams, Sampling,
-    Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable, TurnVariant,
+    run_turns, validity_warnings, CollisionModel, ModelKind, OnHop, ParamError, RunParams,
+    Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
+    TurnVariant,
 };
 
 /// A bad parameter: `ValueError` with the library's message.
@@ -51,6 +52,7 @@ struct Inputs {
     atol: Option<f64>,
     mu: Option<f64>,
     collision: Option<String>,
+    on_hop: Option<String>,
 }
 
 impl Inputs {
@@ -86,6 +88,10 @@ impl Inputs {
             None => d.collision,
             Some(name) => collision(name)?,
         };
+        let on_hop = match &self.on_hop {
+            None => d.on_hop,
+            Some(name) => on_hop(name)?,
+        };
         let opts = SimOptions {
             t_end: self.t_end.unwrap_or(t_end_default),
             x_end: self.x_end.or(d.x_end),
@@ -98,7 +104,7 @@ impl Inputs {
             sampling,
             mu: self.mu,
             collision,
-            ..d
+            on_hop,
         };
         opts.validate().map_err(value_error)?;
         Ok(opts)
@@ -110,6 +116,17 @@ fn collision(name: &str) -> PyResult<CollisionModel> {
     serde_json::from_value(serde_json::Value::String(name.to_string())).map_err(|_| {
         PyValueError::new_err(format!(
             "unknown collision {name:?}: expected one of note, charged, pivot"
+        ))
+    })
+}
+
+/// What a run does where N reaches 0, named `name` (`stop`, `continue`).
+fn on_hop(name: &str) -> PyResult<OnHop> {
+    serde_json::from_value(serde_json::Value::String(name.to_string())).map_err(|_| {
+        let ids: Vec<&str> = OnHop::ALL.iter().map(|h| h.id()).collect();
+        PyValueError::new_err(format!(
+            "unknown on_hop {name:?}: expected one of {}",
+            ids.join(", ")
         ))
     })
 }
@@ -256,7 +273,7 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
 #[pyo3(signature = (
     model = "torque-cm", *, alpha_deg = None, snow_depth = None, r0 = None, g = None,
     density = None, length = None, v0 = None, t_end = None, x_end = None, times = None,
-    dt = None, turns = None, rtol = None, atol = None, mu = None, collision = None
+    dt = None, turns = None, rtol = None, atol = None, mu = None, collision = None, on_hop = None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
@@ -278,6 +295,7 @@ fn simulate<'py>(
     atol: Option<f64>,
     mu: Option<f64>,
     collision: Option<String>,
+    on_hop: Option<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let inputs = Inputs {
         model: model.to_string(),
@@ -288,6 +306,7 @@ fn simulate<'py>(
         atol,
         mu,
         collision,
+        on_hop,
     };
     let kind = inputs.model()?;
     if turns.is_some() && TurnVariant::of(kind).is_none() {
@@ -328,7 +347,7 @@ fn simulate<'py>(
 #[pyo3(signature = (
     model = "turns", *, turns = None, alpha_deg = None, snow_depth = None, r0 = None,
     g = None, density = None, length = None, v0 = None, t_end = None, x_end = None,
-    rtol = None, atol = None, mu = None, collision = None
+    rtol = None, atol = None, mu = None, collision = None, on_hop = None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn turns<'py>(
@@ -348,6 +367,7 @@ fn turns<'py>(
     atol: Option<f64>,
     mu: Option<f64>,
     collision: Option<String>,
+    on_hop: Option<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let inputs = Inputs {
         model: model.to_string(),
@@ -358,6 +378,7 @@ fn turns<'py>(
         atol,
         mu,
         collision,
+        on_hop,
     };
     let kind = inputs.model()?;
     if TurnVariant::of(kind).is_none() {

@@ -38,6 +38,9 @@ CASES = [
     ("turns", {"turns": 4, "collision": "charged", "mu": 0.5}),
     ("eq4", {"mu": 0.1, "t_end": 50}),
     ("torque-cm", {"alpha_deg": 1, "snow_depth": 0.05}),
+    ("turns", {"turns": 3, "alpha_deg": 80}),
+    ("turns", {"turns": 3, "alpha_deg": 80, "on_hop": "continue"}),
+    ("turns-exact", {"turns": 3, "alpha_deg": 80, "on_hop": "stop", "mu": 2.0}),
 ]
 
 
@@ -67,6 +70,7 @@ def test_simulate_equals_cli(cli, model, kwargs):
     for key in ("alpha_deg", "snow_depth", "r0", "g", "density", "length", "v0", "t_end", "rtol", "atol"):
         assert r.params[key] == float(meta[key]), key
     assert r.params["collision"] == meta["collision"]
+    assert r.params["on_hop"] == meta["on_hop"] == kwargs.get("on_hop", "stop")
     assert r.params["sampling"] == meta["sampling"]
     assert r.model == meta["model"].split(" ")[0]
 
@@ -85,7 +89,8 @@ def test_json_params_equal_cli(cli):
 
 @pytest.mark.parametrize(
     "model,kwargs",
-    [("turns", {"turns": 30}), ("turns-exact", {"turns": 12, "alpha_deg": 40}), ("eq73", {"turns": 8, "collision": "charged"})],
+    [("turns", {"turns": 30}), ("turns-exact", {"turns": 12, "alpha_deg": 40}), ("eq73", {"turns": 8, "collision": "charged"}),
+     ("turns", {"turns": 4, "alpha_deg": 80, "on_hop": "continue"})],
 )
 def test_turns_equals_cli(cli, model, kwargs):
     t = snowroll.turns(model, **kwargs)
@@ -97,6 +102,7 @@ def test_turns_equals_cli(cli, model, kwargs):
         assert same_bits(t[name], cols[name]), name
     assert t.params["t_end"] == float(meta["t_end"]) == 1e9
     assert t.params["sampling"] == meta["sampling"]
+    assert t.params["on_hop"] == meta["on_hop"] == kwargs.get("on_hop", "stop")
     # The summary's last checkpoint is the CSV's last `# summary: K, ...` line.
     lines = [line for line in stdout.splitlines() if line.startswith("# summary: ") and line[11].isdigit()]
     last = [float(v) for v in lines[-1][len("# summary: "):].split(", ")]

@@ -49,6 +49,11 @@ def test_unknown_collision():
         snowroll.simulate("turns", collision="elastic")
 
 
+def test_unknown_on_hop():
+    with pytest.raises(ValueError, match="unknown on_hop"):
+        snowroll.turns("turns", on_hop="fly")
+
+
 def test_times_and_dt_conflict():
     with pytest.raises(ValueError, match="conflict"):
         snowroll.simulate(times=[0.0, 1.0], dt=0.5)

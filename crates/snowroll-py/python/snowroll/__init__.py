@@ -6,7 +6,7 @@ run with the same parameters to the last bit). Keyword names are the
 project's one parameter vocabulary: the CLI's long flags in snake_case
 (``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``, ``length``, ``v0``,
 ``t_end``, ``x_end``, ``times``, ``dt``, ``turns``, ``rtol``, ``atol``, ``mu``,
-``collision``). Units are SI, angles in degrees.
+``collision``, ``on_hop``). Units are SI, angles in degrees.
 
 >>> import snowroll
 >>> r = snowroll.simulate("torque-cm", alpha_deg=30, snow_depth=0.01, t_end=10)
@@ -260,6 +260,7 @@ def simulate(
     atol: Optional[float] = None,
     mu: Optional[float] = None,
     collision: Optional[str] = None,
+    on_hop: Optional[str] = None,
 ) -> Result:
     """Integrate one model for one scenario (the CLI's ``snowroll simulate``).
 
@@ -281,7 +282,9 @@ def simulate(
     ``atol`` (1e-12) integrator tolerances; ``mu`` coefficient of static
     friction: stop with ``slip`` where |F| reaches mu N (none); ``collision``
     how a turn model climbs each new layer: ``"note"`` (eq. (89), default),
-    ``"charged"``, ``"pivot"``.
+    ``"charged"``, ``"pivot"``; ``on_hop`` what happens where the normal
+    force N reaches 0: ``"stop"`` (default: stop with ``hop``) or
+    ``"continue"`` (go on as if contact were kept, past the model's validity).
 
     Sampling: every accepted step by default; ``times`` exactly these times, s
     (ascending); ``dt`` a regular grid 0, dt, 2 dt, ... up to the stop.
@@ -312,6 +315,7 @@ def simulate(
         atol=atol,
         mu=mu,
         collision=collision,
+        on_hop=on_hop,
     )
     result = Result(raw)
     _warn(result.warnings)
@@ -335,6 +339,7 @@ def turns(
     atol: Optional[float] = None,
     mu: Optional[float] = None,
     collision: Optional[str] = None,
+    on_hop: Optional[str] = None,
 ) -> TurnResult:
     """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
     one row per turn (the CLI's ``snowroll turns``).
@@ -368,6 +373,7 @@ def turns(
         atol=atol,
         mu=mu,
         collision=collision,
+        on_hop=on_hop,
     )
     result = TurnResult(raw)
     _warn(result.warnings)

@@ -28,6 +28,7 @@ def simulate(
     atol: Optional[float] = None,
     mu: Optional[float] = None,
     collision: Optional[str] = None,
+    on_hop: Optional[str] = None,
 ) -> Dict[str, Any]:
     """Integrate one model (e.g. eq. (4) ``torque-cm``, eq. (14) ``energy``,
     eq. (32) ``quasi-circular``, eqs. (73), (76) ``turns``) for one scenario,
@@ -59,6 +60,7 @@ def turns(
     atol: Optional[float] = None,
     mu: Optional[float] = None,
     collision: Optional[str] = None,
+    on_hop: Optional[str] = None,
 ) -> Dict[str, Any]:
     """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (88)
     ``turns-exact``; collisions by eq. (89) or the ``charged``/``pivot``
