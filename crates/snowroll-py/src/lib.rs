@@ -185,6 +185,30 @@ where
     columns.set_item(name, values.into_pyarray(py))
 }
 
+/// Adds column `name` built from `items` to `columns` as a
+/// `numpy.ma.MaskedArray`: masked where `f` is `None` (a quantity that is
+/// undefined there, e.g. |F|/N where N ≤ 0), with 0.0 under the mask, so the
+/// array holds no NaN or infinity.
+pub(crate) fn masked_column<'py, T>(
+    py: Python<'py>,
+    columns: &Bound<'py, PyDict>,
+    name: &str,
+    items: &[T],
+    f: impl Fn(&T) -> Option<f64>,
+) -> PyResult<()> {
+    let values: Vec<Option<f64>> = items.iter().map(f).collect();
+    let data: Vec<f64> = values.iter().map(|v| v.unwrap_or(0.0)).collect();
+    let mask: Vec<bool> = values.iter().map(Option::is_none).collect();
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("mask", mask.into_pyarray(py))?;
+    let array = py.import("numpy.ma")?.call_method(
+        "masked_array",
+        (data.into_pyarray(py),),
+        Some(&kwargs),
+    )?;
+    columns.set_item(name, array)
+}
+
 /// The stop as a dict: reason (kebab-case id), description, t_s, x_m, v_m_s
 /// and, for the turn models, turn, theta_rad, omega_rad_s.
 fn stop<'py>(py: Python<'py>, s: &Stop) -> PyResult<Bound<'py, PyDict>> {
@@ -232,7 +256,7 @@ fn trajectory_columns<'py>(py: Python<'py>, traj: &Trajectory) -> PyResult<Bound
     column(py, &c, "mass_kg", s, |s| s.mass_kg)?;
     column(py, &c, "normal_n", s, |s| s.normal_n)?;
     column(py, &c, "friction_n", s, |s| s.friction_n)?;
-    column(py, &c, "friction_ratio", s, |s| s.friction_ratio)?;
+    masked_column(py, &c, "friction_ratio", s, |s| s.friction_ratio)?;
     let k = &traj.turn_states;
     if !k.is_empty() && k.len() == s.len() {
         column(py, &c, "turn", k, |k| k.turn)?;
@@ -262,7 +286,7 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
     })?;
     column(py, &c, "min_normal_n", r, |r| r.min_normal_n)?;
     column(py, &c, "min_normal_over_mg", r, |r| r.min_normal_over_mg)?;
-    column(py, &c, "max_friction_ratio", r, |r| r.max_friction_ratio)?;
+    masked_column(py, &c, "max_friction_ratio", r, |r| r.max_friction_ratio)?;
     Ok(c)
 }
 

@@ -33,7 +33,8 @@ def parse_csv(text):
     """A CSV output of the CLI: (header comments as `key -> value`, columns as
     float64 arrays; `turn` as uint64). The CLI writes floats in the shortest
     form that reads back to the same double (ryu), so `float()` recovers its
-    values bit for bit."""
+    values bit for bit. An empty cell (|F|/N where N <= 0, undefined) becomes
+    a masked entry with 0.0 under the mask, as the binding returns it."""
     meta = {}
     lines = []
     for line in text.splitlines():
@@ -50,13 +51,19 @@ def parse_csv(text):
         values = [row[i] for row in rows]
         if name == "turn":
             cols[name] = np.array([int(v) for v in values], dtype=np.uint64)
+        elif any(v == "" for v in values):
+            data = np.array([float(v) if v else 0.0 for v in values], dtype=np.float64)
+            cols[name] = np.ma.masked_array(data, mask=[v == "" for v in values])
         else:
             cols[name] = np.array([float(v) for v in values], dtype=np.float64)
     return meta, cols
 
 
 def same_bits(a, b):
-    """Equal element by element to the last bit (NaN equal to NaN of the same payload)."""
-    a = np.ascontiguousarray(a)
-    b = np.ascontiguousarray(b)
+    """Equal element by element to the last bit (NaN equal to NaN of the same
+    payload), and masked at the same entries (an unmasked array has none)."""
+    if not np.array_equal(np.ma.getmaskarray(a), np.ma.getmaskarray(b)):
+        return False
+    a = np.ascontiguousarray(np.ma.getdata(a))
+    b = np.ascontiguousarray(np.ma.getdata(b))
     return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()

@@ -97,3 +97,31 @@ def test_validity_warning_is_issued():
     with pytest.warns(RuntimeWarning, match="snowless ignores the snow"):
         r = snowroll.simulate("snowless", t_end=1)
     assert r.warnings
+
+
+def test_on_hop_and_undefined_friction_ratio():
+    """fn. 10: at 80 degrees the turn model loses contact in its second turn
+    (docs/contact-forces.md section 4.4). By default the run stops there with
+    `hop`; with on_hop="continue" it goes on, and |F|/N is masked exactly
+    where N <= 0 (undefined), never NaN or infinite; elsewhere it is |F|/N of
+    the same row, to the bit (the same division)."""
+    stopped = snowroll.simulate("turns", alpha_deg=80, turns=4, dt=0.01)
+    assert stopped.stop["reason"] == "hop" and stopped.stop["turn"] == 1
+    r = snowroll.simulate("turns", alpha_deg=80, turns=4, dt=0.01, on_hop="continue")
+    assert r.stop["reason"] == "turns" and r.params["on_hop"] == "continue"
+    ratio = r.friction_ratio
+    assert isinstance(ratio, np.ma.MaskedArray)
+    off = r.normal_n <= 0
+    assert off.any() and not off.all()
+    assert np.array_equal(np.ma.getmaskarray(ratio), off)
+    assert np.all(np.isfinite(np.ma.getdata(ratio)))
+    on = ~off
+    assert np.array_equal(ratio[on].data, np.abs(r.friction_n[on]) / r.normal_n[on])
+    t = snowroll.turns(alpha_deg=80, turns=4, on_hop="continue")
+    assert np.array_equal(np.ma.getmaskarray(t.max_friction_ratio), t.min_normal_n <= 0)
+    assert np.all(np.isfinite(np.ma.getdata(t.max_friction_ratio)))
+    pd = pytest.importorskip("pandas")
+    frame = r.to_pandas()
+    assert frame["friction_ratio"].isna().sum() == off.sum()
+    assert not np.isnan(frame["friction_ratio"].dropna().to_numpy(dtype=float)).any()
+    assert isinstance(frame, pd.DataFrame)

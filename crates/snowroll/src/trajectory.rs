@@ -34,8 +34,9 @@ pub struct Sample {
     /// slope (`docs/contact-forces.md` §1–§3), N.
     pub friction_n: Newtons,
     /// |F|/N: the smallest coefficient of static friction that keeps this
-    /// sample rolling; infinite when N ≤ 0 (the log has left the ground).
-    pub friction_ratio: f64,
+    /// sample rolling; `None` (undefined) when N ≤ 0, the log having left
+    /// the ground: an empty CSV cell, a JSON `null`.
+    pub friction_ratio: Option<f64>,
 }
 
 /// Extra state of the turn-by-turn models (§3), one per sample.

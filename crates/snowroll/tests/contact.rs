@@ -37,7 +37,8 @@ fn app_a_snowless_run_has_n_mg_cos_alpha_and_f_mg_sin_alpha_over_3_exactly() {
         assert!((p.normal_n - n_want).abs() <= ROUNDING * n_want, "{p:?}");
         assert!((p.friction_n - f_want).abs() <= ROUNDING * f_want, "{p:?}");
         let ratio = s.slope_angle().tan() / 3.0;
-        assert!((p.friction_ratio - ratio).abs() <= ROUNDING * ratio);
+        let got = p.friction_ratio.expect("N > 0: the ratio is defined");
+        assert!((got - ratio).abs() <= ROUNDING * ratio);
     }
 }
 
@@ -287,10 +288,10 @@ fn per_turn_contact_extremes_match_the_reference() {
                     "{line}: {}",
                     row.min_normal_over_mg
                 );
+                let ratio = row.max_friction_ratio.expect("N > 0 below 63°");
                 assert!(
-                    (row.max_friction_ratio - n(6)).abs() < 1e-7 * n(6).max(1.0),
-                    "{line}: {}",
-                    row.max_friction_ratio
+                    (ratio - n(6)).abs() < 1e-7 * n(6).max(1.0),
+                    "{line}: {ratio}"
                 );
                 checked += 1;
             }
@@ -312,7 +313,7 @@ fn turn_mu_min_over_2000_turns_matches_the_reference() {
         let mu_min = table
             .rows
             .iter()
-            .map(|r| r.max_friction_ratio)
+            .map(|r| r.max_friction_ratio.expect("N > 0 below 63°"))
             .fold(0.0, f64::max);
         assert!((mu_min - want).abs() < 1e-7, "{kind}: {mu_min}");
         // A μ just below the maximum stops the run with a slip there; just above, it rolls on.
@@ -433,4 +434,80 @@ fn loney_and_eq4_hop_where_the_start_speed_makes_n_negative() {
             }
         }
     }
+}
+
+/// |F|/N is undefined where N ≤ 0 (`docs/contact-forces.md` §5): never
+/// written as a number, never non-finite. At 80° the turn model loses
+/// contact in turn 1 (§4.4); with `--on-hop continue` the run goes on, so
+/// some samples and some turns have N ≤ 0. There the CSV cell is empty and
+/// the JSON value is `null`; everywhere else the ratio is |F|/N of the same
+/// row (the writer prints the shortest round-trip form, so equality is exact).
+#[test]
+fn friction_ratio_is_empty_in_csv_and_null_in_json_where_n_is_not_positive() {
+    use snowroll::{write_trajectory, write_turn_table, Format, OnHop, RunParams};
+    let s = scenario(80.0);
+    let opts = SimOptions {
+        on_hop: OnHop::Continue,
+        sampling: Sampling::Every(0.01),
+        ..turn_opts(4)
+    };
+    let traj = ModelKind::Turns.build().simulate(&s, &opts).unwrap();
+    let off = traj.samples.iter().filter(|p| p.normal_n <= 0.0).count();
+    assert!(off > 0 && off < traj.samples.len(), "{off}");
+    for p in &traj.samples {
+        assert_eq!(p.friction_ratio.is_none(), p.normal_n <= 0.0, "{p:?}");
+    }
+    let params = RunParams::new(&s, &opts);
+    let mut csv = Vec::new();
+    write_trajectory(&mut csv, Format::Csv, &traj, &params).unwrap();
+    let text = String::from_utf8(csv).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (n_col, f_col, ratio_col) = (col("normal_n"), col("friction_n"), col("friction_ratio"));
+    let mut empty = 0;
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        let n: f64 = cells[n_col].parse().unwrap();
+        let f: f64 = cells[f_col].parse().unwrap();
+        if n <= 0.0 {
+            assert_eq!(cells[ratio_col], "", "{line}");
+            empty += 1;
+        } else {
+            let ratio: f64 = cells[ratio_col].parse().unwrap();
+            assert_eq!(ratio.to_bits(), (f.abs() / n).to_bits(), "{line}");
+        }
+    }
+    assert_eq!(empty, off);
+    let mut json = Vec::new();
+    write_trajectory(&mut json, Format::Json, &traj, &params).unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&json).unwrap();
+    let samples = doc["samples"].as_array().unwrap();
+    let nulls = samples
+        .iter()
+        .filter(|p| p["friction_ratio"].is_null())
+        .inspect(|p| assert!(p["normal_n"].as_f64().unwrap() <= 0.0, "{p}"))
+        .count();
+    assert_eq!(nulls, off);
+
+    let table = snowroll::run_turns(ModelKind::Turns, &s, &opts).unwrap();
+    let lost: Vec<bool> = table.rows.iter().map(|r| r.min_normal_n <= 0.0).collect();
+    assert!(lost.contains(&true) && lost.contains(&false), "{lost:?}");
+    for (row, lost) in table.rows.iter().zip(&lost) {
+        assert_eq!(row.max_friction_ratio.is_none(), *lost, "{row:?}");
+    }
+    let mut csv = Vec::new();
+    write_turn_table(&mut csv, Format::Csv, &table, &params).unwrap();
+    let text = String::from_utf8(csv).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let last = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .position(|h| h == "max_friction_ratio");
+    let cells: Vec<String> = lines
+        .map(|l| l.split(',').nth(last.unwrap()).unwrap().to_string())
+        .collect();
+    let empty: Vec<bool> = cells.iter().map(String::is_empty).collect();
+    assert_eq!(empty, lost);
 }

@@ -514,7 +514,7 @@ fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajecto
                 mass_kg: 1.0,
                 normal_n: 1.0,
                 friction_n: 0.0,
-                friction_ratio: 0.0,
+                friction_ratio: Some(0.0),
             });
             states.push(TurnState {
                 turn: k,

@@ -171,10 +171,9 @@ pub(crate) fn clear(dir: &Path) -> std::io::Result<()> {
     Ok(())
 }
 
-/// Non-finite numbers in the data rows of CSV text. The friction ratio
-/// |F|/N is documented as `inf` when N <= 0 (the log has left the ground),
-/// the one non-finite value the writers let through (`INFINITE_COLUMNS` of
-/// the library's guard), so `inf` there is not counted.
+/// Non-finite numbers in the data rows of CSV text: none is allowed (the
+/// friction ratio |F|/N where N <= 0 is undefined and written as an empty
+/// cell, not as `inf`).
 pub(crate) fn non_finite_csv(text: &str) -> Option<String> {
     let mut columns: Vec<&str> = Vec::new();
     for line in text.lines().filter(|l| !l.starts_with('#')) {
@@ -185,13 +184,10 @@ pub(crate) fn non_finite_csv(text: &str) -> Option<String> {
         for (i, field) in line.split(',').enumerate() {
             let f = field.trim().to_ascii_lowercase();
             let column = columns.get(i).copied().unwrap_or("");
-            let allowed = f == "inf" && column.ends_with("friction_ratio");
-            if !allowed
-                && matches!(
-                    f.as_str(),
-                    "inf" | "-inf" | "+inf" | "nan" | "-nan" | "infinity" | "-infinity"
-                )
-            {
+            if matches!(
+                f.as_str(),
+                "inf" | "-inf" | "+inf" | "nan" | "-nan" | "infinity" | "-infinity"
+            ) {
                 return Some(format!("{field} in column {column}"));
             }
         }

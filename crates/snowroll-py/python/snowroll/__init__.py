@@ -73,13 +73,27 @@ class _Columns:
         """The columns as a dict of numpy arrays (the arrays themselves, not copies)."""
         return dict(self._columns)
 
+    def _undefined_as_missing(self, missing: Any) -> Dict[str, Any]:
+        # Masked entries (|F|/N where N <= 0) as the frame library's own
+        # missing value, never NaN.
+        out: Dict[str, Any] = {}
+        for name, col in self._columns.items():
+            out[name] = missing(col) if isinstance(col, _np.ma.MaskedArray) else col
+        return out
+
     def to_pandas(self) -> Any:
         """The columns as a ``pandas.DataFrame`` (needs pandas, not a dependency)."""
         try:
             import pandas as pd
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("to_pandas() needs pandas: pip install pandas") from e
-        frame = pd.DataFrame(self._columns)
+        frame = pd.DataFrame(
+            self._undefined_as_missing(
+                lambda c: pd.arrays.FloatingArray(
+                    _np.ma.getdata(c).copy(), _np.ma.getmaskarray(c).copy()
+                )
+            )
+        )
         frame.attrs["params"] = dict(self.params)
         frame.attrs["stop"] = dict(self.stop)
         frame.attrs["model"] = self.model
@@ -92,7 +106,9 @@ class _Columns:
             import polars as pl
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("to_polars() needs polars: pip install polars") from e
-        return pl.DataFrame(self._columns)
+        return pl.DataFrame(
+            self._undefined_as_missing(lambda c: pl.Series(c.tolist(), dtype=pl.Float64))
+        )
 
 
 class Result(_Columns):
@@ -101,6 +117,9 @@ class Result(_Columns):
     Attributes: the columns (``t_s``, ``x_m``, ``v_m_s``, ``a_m_s2``, ``r_m``,
     ``mass_kg``, ``normal_n``, ``friction_n``, ``friction_ratio`` and, for the
     turn models, ``turn``, ``theta_rad``, ``omega_rad_s``) as numpy arrays;
+    ``friction_ratio`` (|F|/N) is a ``numpy.ma.MaskedArray``, masked where
+    N <= 0 (undefined there: the log has left the ground; the CSV cell is
+    empty, the JSON value null; no NaN or infinity anywhere);
     ``stop`` (dict: ``reason``, ``description``, ``t_s``, ``x_m``, ``v_m_s`` and
     for the turn models ``turn``, ``theta_rad``, ``omega_rad_s``); ``params``
     (dict, the keys of the CLI's output metadata); ``model``, ``equation``,
@@ -130,7 +149,8 @@ class TurnResult(_Columns):
     ``v_start_m_s``, ``t_end_s``, ``v_end_m_s``, ``v_after_m_s``,
     ``collision_loss_j``, ``mean_a_turn_m_s2``, ``min_a_m_s2``, ``max_a_m_s2``,
     ``mean_a_with_collision_m_s2``, ``min_normal_n``, ``min_normal_over_mg``,
-    ``max_friction_ratio``); ``summary`` (dict: ``g_along_m_s2``, ``turns``,
+    ``max_friction_ratio``, a ``numpy.ma.MaskedArray`` masked in the turns
+    where N <= 0 somewhere); ``summary`` (dict: ``g_along_m_s2``, ``turns``,
     ``checkpoints``, the long-run means of a/(g sin alpha) that the note's
     eqs. (77)-(79) estimate); ``stop``, ``params``, ``model``, ``equation``,
     ``version``, ``warnings`` as in :class:`Result`.

@@ -37,7 +37,8 @@ def simulate(
     Returns ``{"columns": {name: ndarray}, "stop": dict, "params": dict,
     "version": str, "model": str, "equation": str, "warnings": [str]}``;
     columns ``t_s x_m v_m_s a_m_s2 r_m mass_kg normal_n friction_n
-    friction_ratio`` (float64) and for the turn models ``turn`` (uint64),
+    friction_ratio`` (float64; ``friction_ratio`` a ``numpy.ma.MaskedArray``
+    masked where N <= 0, where it is undefined) and for the turn models ``turn`` (uint64),
     ``theta_rad``, ``omega_rad_s``.
 
     Raises ValueError (bad parameters) or RuntimeError (failed integration).

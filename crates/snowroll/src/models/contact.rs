@@ -37,14 +37,11 @@ pub struct ContactForces {
 
 impl ContactForces {
     /// |F|/N, the smallest coefficient of static friction that keeps the log
-    /// rolling here; infinite when N ≤ 0 (no friction can hold a log that
-    /// has left the ground).
-    pub fn friction_ratio(&self) -> f64 {
-        if self.normal_n > 0.0 {
-            self.friction_n.abs() / self.normal_n
-        } else {
-            f64::INFINITY
-        }
+    /// rolling here; `None` when N ≤ 0, where it is undefined (the log has
+    /// left the ground and no friction can hold it). Never infinite or NaN:
+    /// the outputs write `None` as an empty CSV cell and a JSON `null`.
+    pub fn friction_ratio(&self) -> Option<f64> {
+        (self.normal_n > 0.0).then(|| self.friction_n.abs() / self.normal_n)
     }
 
     /// The slip event function `|F| − μN` (`docs/contact-forces.md` §5),
@@ -110,17 +107,25 @@ mod tests {
             assert!((f.normal_n - n_want).abs() <= ROUNDING * n_want);
             assert!((f.friction_n - f_want).abs() <= ROUNDING * f_want);
             let ratio = s.slope_angle().tan() / 3.0;
-            assert!((f.friction_ratio() - ratio).abs() <= ROUNDING * ratio);
+            let got = f.friction_ratio().expect("N > 0 on the ground");
+            assert!((got - ratio).abs() <= ROUNDING * ratio);
         }
     }
 
     #[test]
-    fn a_log_in_the_air_needs_infinite_friction() {
+    fn the_friction_ratio_of_a_log_in_the_air_is_undefined() {
+        for normal_n in [-1.0, 0.0, -0.0] {
+            let f = ContactForces {
+                normal_n,
+                friction_n: 0.5,
+            };
+            assert_eq!(f.friction_ratio(), None);
+        }
         let f = ContactForces {
             normal_n: -1.0,
             friction_n: 0.5,
         };
-        assert!(f.friction_ratio().is_infinite());
+        // No μ ≥ 0 holds it: |F| − μN > 0 for every μ.
         assert!(f.slip_margin(0.3) > 0.0);
     }
 }

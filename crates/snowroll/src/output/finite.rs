@@ -4,17 +4,13 @@
 //! field that holds it. Validation ([`crate::Scenario::new`]) keeps the
 //! derived quantities in range; this guard catches whatever a run still
 //! manages to push out of range, so that no output ever carries `inf`,
-//! `NaN` or a JSON `null` standing for one.
+//! `NaN` or a JSON `null` standing for one. (A quantity that is undefined
+//! rather than overflowed, such as the friction ratio |F|/N where N ≤ 0, is
+//! an `Option` and is written as an empty CSV cell or a JSON `null`.)
 
 use std::fmt;
 
 use serde::ser::{self, Serialize};
-
-/// Fields where `+inf` is a documented value rather than an overflow: the
-/// friction ratio |F|/N of a log that has left the ground (N <= 0), which no
-/// coefficient of friction can hold (`docs/contact-forces.md`). NaN and
-/// `-inf` are refused there too.
-pub const INFINITE_COLUMNS: [&str; 2] = ["friction_ratio", "max_friction_ratio"];
 
 /// A non-finite number found in a record about to be written.
 #[derive(Debug, Clone, PartialEq)]
@@ -115,9 +111,7 @@ impl Scan {
     }
 
     fn number(&self, value: f64) -> Result<(), Found> {
-        let field = self.path.rsplit(['.', ']']).next().unwrap_or("");
-        let documented_inf = value == f64::INFINITY && INFINITE_COLUMNS.contains(&field);
-        if value.is_finite() || documented_inf {
+        if value.is_finite() {
             Ok(())
         } else {
             Err(Found {
@@ -443,6 +437,30 @@ mod tests {
             samples: vec![],
         };
         assert_eq!(check_finite(&doc, None).unwrap_err().field, "params");
+    }
+
+    /// The friction ratio has no exception: where it is undefined (N ≤ 0)
+    /// it is an `Option` left empty, so an infinity there is an overflow.
+    #[test]
+    fn an_infinite_friction_ratio_is_refused_and_an_undefined_one_passes() {
+        #[derive(serde::Serialize)]
+        struct Contact {
+            normal_n: f64,
+            friction_ratio: Option<f64>,
+        }
+        let inf = Contact {
+            normal_n: 0.0,
+            friction_ratio: Some(f64::INFINITY),
+        };
+        assert_eq!(
+            check_finite(&inf, Some(1)).unwrap_err().field,
+            "friction_ratio"
+        );
+        let undefined = Contact {
+            normal_n: -1.0,
+            friction_ratio: None,
+        };
+        assert_eq!(check_finite(&undefined, Some(1)), Ok(()));
     }
 
     #[test]

@@ -177,7 +177,7 @@ struct TurnRow {
     mass_kg: f64,
     normal_n: f64,
     friction_n: f64,
-    friction_ratio: f64,
+    friction_ratio: Option<f64>,
     turn: u64,
     theta_rad: f64,
     omega_rad_s: f64,
@@ -380,7 +380,7 @@ mod tests {
                 mass_kg: 12.566,
                 normal_n: 106.8,
                 friction_n: 20.5,
-                friction_ratio: 20.5 / 106.8,
+                friction_ratio: Some(20.5 / 106.8),
             }],
             turn_states: vec![],
             stop: Stop {

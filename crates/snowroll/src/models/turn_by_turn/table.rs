@@ -61,8 +61,9 @@ pub struct TurnRow {
     pub min_normal_n: f64,
     /// The same minimum as a fraction of M g, M the mass at that point, 1.
     pub min_normal_over_mg: f64,
-    /// Largest |F|/N within the turn (the smallest μ that keeps it rolling, §5), 1.
-    pub max_friction_ratio: f64,
+    /// Largest |F|/N within the turn (the smallest μ that keeps it rolling, §5), 1;
+    /// `None` (undefined: an empty CSV cell, a JSON `null`) when N ≤ 0 somewhere in the turn.
+    pub max_friction_ratio: Option<f64>,
 }
 
 /// Means of the acceleration up to turn K, as fractions of G = g sin α.
