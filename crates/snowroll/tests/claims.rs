@@ -182,6 +182,25 @@ fn fn10_hop_threshold_notices_a_turn_model_that_never_leaves_the_snow() {
 }
 
 #[test]
+fn slip_mu_min_notices_a_model_that_needs_the_wrong_friction() {
+    // eq. (4) with the drag of the torque balance about the contact line
+    // (eq. (6)): it still rolls, but its F/N tends to (1/2) tan α rather than
+    // (2/5) tan α, so its μ_min leaves the eq. (4) closed form.
+    let wrong = lab().with_coefficients(
+        Derivation::TorqueAboutCentre,
+        Derivation::TorqueAboutContact.coefficients(),
+    );
+    changes("slip-mu-min", &wrong);
+    // eq. (32) with the momentum drag of eq. (4): the same F/N at rest, but
+    // F/N now grows along the run, so the largest is no longer at rest.
+    let wrong = lab().with_coefficients(
+        Derivation::QuasiCircular,
+        perturbed(Derivation::QuasiCircular, |c| c.drag = 7.0 / 6.0),
+    );
+    changes("slip-mu-min", &wrong);
+}
+
+#[test]
 fn terminal_accelerations_notice_a_wrong_drag_or_lift_coefficient() {
     let wrong = lab().with_coefficients(
         Derivation::TorqueAboutContact,

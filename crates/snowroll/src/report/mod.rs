@@ -29,6 +29,8 @@ pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
 #[cfg(feature = "plot")]
 mod animation;
 #[cfg(feature = "plot")]
+mod contact;
+#[cfg(feature = "plot")]
 mod document;
 #[cfg(feature = "plot")]
 mod errata;

@@ -46,7 +46,7 @@ pub struct Progress<'a> {
 
 /// Number of progress steps of [`build_paper_report`].
 pub fn paper_steps() -> usize {
-    CLAIMS.len() + 5
+    CLAIMS.len() + 6
 }
 
 /// The table of where the turn models part ways (see [`where_turn_models_part_ways`]).
@@ -162,6 +162,13 @@ pub fn build_paper_report(
 
     tick("where the turn models part ways");
     let parting = parting_table(lab)?;
+
+    tick("contact forces: smallest μ, hop per turn, collision variants");
+    let contact_tables = [
+        super::contact::mu_min_table(lab)?,
+        super::contact::collision_table(lab)?,
+    ];
+    let contact_figure = super::contact::min_normal_figure(lab)?;
 
     tick("trajectories of every model");
     let timed = SimOptions {
@@ -459,11 +466,12 @@ pub fn build_paper_report(
     ]
     .into_iter()
     .map(short)
+    .chain([contact_figure])
     .collect();
     Ok(Report {
         metadata,
         claims,
-        tables: vec![parting],
+        tables: [vec![parting], contact_tables.to_vec()].concat(),
         figures,
         animation: Some(animation),
     })

@@ -18,7 +18,8 @@
 //!
 //! The checks live by part of the note: [`circular`] (§2, fn. 4, fn. 7),
 //! [`terminal`] (§2.4), [`app_a`] (App. A), [`first_turn`] (§3.1–3.3),
-//! [`stall`] (fn. 7 in §3), [`multi_turn`] (§3.4), [`contact`] (fn. 10).
+//! [`stall`] (fn. 7 in §3), [`multi_turn`] (§3.4), [`contact`] (fn. 10),
+//! [`slip`] (issue 10: the smallest μ).
 
 mod app_a;
 mod circular;
@@ -26,6 +27,7 @@ mod contact;
 mod first_turn;
 mod multi_turn;
 mod quadrature;
+mod slip;
 mod stall;
 mod table;
 mod terminal;
@@ -39,6 +41,7 @@ use crate::models::{run_turns, CircularModel, Coefficients, Derivation, ModelKin
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
+pub(crate) use slip::mu_min_rows;
 pub use table::CLAIMS;
 
 /// A replacement for the runs of some models: returns `Some` for the

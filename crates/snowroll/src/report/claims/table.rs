@@ -25,6 +25,7 @@ use super::multi_turn::{
     mean_four_ninths, never_settles, COLLISION_L, COLLISION_T, EQ88_APART, EQ88_EXACT, ERRATUM_87,
     JUMP_ORDER, LONG_RUN, NOTE_APART, SWING, TRUNCATION_ORDER,
 };
+use super::slip::{slip_mu_min, MU_AT_END, MU_AT_REST};
 use super::stall::{
     stall_in_first_turn, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_MARGIN,
     TURN_STALL_ORDER, TURN_START, TURN_START_EXACT,
@@ -353,5 +354,16 @@ pub static CLAIMS: &[ClaimCheck] = &[
             expected: Verdict::Holds,
         },
         check: hop_threshold,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "slip-mu-min",
+            paper_ref: "issue 10 (App. A, §2.4, fn. 4)",
+            statement: "The smallest coefficient of static friction that keeps a model rolling over the default run is tan α/3 for the snowless cylinder, tan α/(3 + b tan α/(π r0)) for eq. (32) (needed at rest), and for eqs. (4), (6) the closed-form F/N at the end of the run (it grows towards (2/5) tan α and (1/2) tan α).",
+            method: "max over every step of the default run (from rest, 100 s) of |F|/N, F and N from the momentum balance; against the closed forms of `docs/contact-forces.md` §5.1–§5.2 (u = v² from fn. 4's solution at the run's final radius)",
+            tolerances: &[MU_AT_REST, MU_AT_END],
+            expected: Verdict::Holds,
+        },
+        check: slip_mu_min,
     },
 ];
