@@ -81,7 +81,7 @@ impl TurnDynamics {
 
     /// Over a turn started with `θ̇(0) = omega0`, for θ ∈ [0, `theta_max`],
     /// from the energy integral (no integration): the extremes of N and of
-    /// |F|/N. The ratio is infinite if N reaches 0.
+    /// |F|/N. The ratio is undefined (`None`) if N reaches 0.
     pub fn contact_range(&self, omega0: f64, theta_max: Radians) -> ContactRange {
         self.scan(omega0, theta_max, false).contact
     }
