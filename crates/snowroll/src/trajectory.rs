@@ -165,11 +165,20 @@ pub enum Sampling {
 
 impl Sampling {
     /// Point `i` of the regular grid `0, dt, 2dt, …` that ends at `t_end`, s;
-    /// `None` past the end. A point that only rounding puts after `t_end` is
-    /// moved onto it, so a grid that divides the run evenly ends exactly there.
+    /// `None` past the end. A point within a few ulps of `t_end` (on either
+    /// side) is moved onto it, so a grid that divides the run evenly ends
+    /// exactly there.
+    ///
+    /// The point is `i` times the decimal that `dt` prints as (its shortest
+    /// round-trip form), rounded once to the nearest `f64`: with `dt = 0.1`
+    /// point 3 is `0.3`, not the `0.30000000000000004` of `3.0 * 0.1`. It lies
+    /// within about one ulp of `i * dt`, and the grid never decreases with
+    /// `i` (rounding to nearest is monotone); it increases strictly wherever
+    /// `dt` is larger than the spacing of `f64` near the point.
     pub fn grid_time(dt: Seconds, i: usize, t_end: Seconds) -> Option<Seconds> {
-        let t = i as f64 * dt;
-        (t <= t_end * (1.0 + 4.0 * f64::EPSILON)).then_some(t.min(t_end))
+        let t = decimal_multiple(dt, i);
+        let near_end = (t - t_end).abs() <= 4.0 * f64::EPSILON * t_end;
+        (t <= t_end || near_end).then_some(if near_end { t_end } else { t })
     }
 
     /// Checks times and grid spacing.
@@ -207,6 +216,39 @@ impl Sampling {
             _ => Ok(()),
         }
     }
+}
+
+/// `i · dt` computed on the decimal that `dt` prints as: `dt = m · 10^e` with
+/// integer `m` (the shortest digits that round-trip), then `(i m) · 10^e`
+/// rounded once to the nearest `f64`. Falls back to `i as f64 * dt` for a
+/// `dt` that is not finite and positive, or whose product does not fit.
+fn decimal_multiple(dt: f64, i: usize) -> f64 {
+    let plain = i as f64 * dt;
+    if !(dt.is_finite() && dt > 0.0) {
+        return plain;
+    }
+    // `{:e}` prints the shortest digits that round-trip: "2.5e-3", "1e-1".
+    let text = format!("{dt:e}");
+    let Some((digits, exp)) = text.split_once('e') else {
+        return plain;
+    };
+    let (whole, frac) = digits.split_once('.').unwrap_or((digits, ""));
+    let (Ok(m), Ok(e)) = (format!("{whole}{frac}").parse::<u128>(), exp.parse::<i32>()) else {
+        return plain;
+    };
+    let Some(im) = m.checked_mul(i as u128) else {
+        return plain;
+    };
+    let e = e - frac.len() as i32;
+    // Both factors exact in f64 (im < 2^53, 10^k exact up to k = 22): one
+    // multiplication or division rounds once, correctly.
+    if im < (1u128 << 53) && e.unsigned_abs() <= 22 {
+        let p = 10f64.powi(e.abs());
+        let x = im as f64;
+        return if e < 0 { x / p } else { x * p };
+    }
+    // Otherwise the standard library's correctly rounded decimal parser.
+    format!("{im}e{e}").parse().unwrap_or(plain)
 }
 
 /// What a run does where the normal force reaches zero (`--on-hop`).
@@ -320,13 +362,84 @@ impl SimOptions {
         if self.turns == Some(0) {
             return Err(bad("turns", 0.0, "turns >= 1"));
         }
-        let t = &self.tolerances;
-        if !(t.rtol.is_finite() && t.rtol >= 1e-15 && t.rtol < 1.0) {
-            return Err(bad("rtol", t.rtol, "1e-15 <= rtol < 1"));
-        }
-        if !(t.atol.is_finite() && t.atol >= crate::integrate::MIN_ATOL) {
-            return Err(bad("atol", t.atol, "atol >= 1e-30"));
-        }
+        self.tolerances.validate()?;
         self.sampling.validate()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The decimal `i · q / 10^d` written out by integer arithmetic alone,
+    /// e.g. (3, 1, 1) → "0.3": what a person means by point i of a grid of
+    /// step q·10^−d.
+    fn decimal(i: u64, q: u64, d: u32) -> String {
+        let n = i * q;
+        let scale = 10u64.pow(d);
+        format!("{}.{:0width$}", n / scale, n % scale, width = d as usize)
+    }
+
+    #[test]
+    fn grid_times_print_the_decimal_that_was_meant() {
+        // dt = q · 10^−d for steps people type; each point must be the f64
+        // nearest the exact decimal i·dt (parsed independently from its
+        // digits), so it prints as that decimal.
+        for (q, d) in [
+            (1, 1),
+            (1, 3),
+            (5, 3),
+            (2, 3),
+            (1, 4),
+            (3, 1),
+            (25, 2),
+            (7, 5),
+        ] {
+            let dt: f64 = decimal(1, q, d).parse().unwrap();
+            for i in 0..20_000u64 {
+                let want: f64 = decimal(i, q, d).parse().unwrap();
+                let got = Sampling::grid_time(dt, i as usize, f64::MAX).unwrap();
+                assert_eq!(got.to_bits(), want.to_bits(), "dt = {dt}, i = {i}");
+            }
+        }
+        assert_eq!(
+            Sampling::grid_time(0.1, 3, 100.0).unwrap().to_string(),
+            "0.3"
+        );
+        assert_eq!(
+            Sampling::grid_time(1e-4, 1, 100.0).unwrap().to_string(),
+            "0.0001"
+        );
+    }
+
+    #[test]
+    fn grid_times_stay_within_an_ulp_of_i_dt_and_increase() {
+        // Steps that are not short decimals (1/3, π/100) and a huge index:
+        // the decimal route must stay within 2ε·t of the plain product i·dt
+        // (dt's digits are within ε/2 of dt, relatively, and each of the two
+        // products rounds once more by ε/2: 3ε/2 in all) and strictly increase.
+        for dt in [1.0 / 3.0, std::f64::consts::PI / 100.0, 0.1, 2.5e-7, 1e3] {
+            let mut last = -1.0;
+            for i in (0..2_000usize).chain(1_000_000_000..1_000_000_100) {
+                let t = Sampling::grid_time(dt, i, f64::MAX).unwrap();
+                let plain = i as f64 * dt;
+                let tol = 2.0 * f64::EPSILON * plain;
+                assert!(
+                    (t - plain).abs() <= tol,
+                    "dt = {dt}, i = {i}: {t} vs {plain}"
+                );
+                assert!(t > last, "dt = {dt}, i = {i}: {t} after {last}");
+                last = t;
+            }
+        }
+    }
+
+    #[test]
+    fn grid_ends_exactly_at_t_end_and_not_beyond() {
+        // 0.1 · 10 lands on 1 exactly; the next point is past the end.
+        assert_eq!(Sampling::grid_time(0.1, 10, 1.0), Some(1.0));
+        assert_eq!(Sampling::grid_time(0.1, 11, 1.0), None);
+        // A point within rounding of t_end is moved onto it.
+        assert_eq!(Sampling::grid_time(1.0 / 3.0, 3, 1.0), Some(1.0));
     }
 }

@@ -56,7 +56,7 @@ pub use dop853::{integrate, Stats};
 /// so the step loop does not allocate).
 pub const MAX_EVENTS: usize = 8;
 
-use crate::error::SimError;
+use crate::error::ParamError;
 
 /// Which sign changes of an event function trigger the event.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -210,18 +210,22 @@ impl Default for Tolerances {
 }
 
 impl Tolerances {
-    /// Checks that the tolerances are usable.
-    pub fn validate(&self) -> Result<(), SimError> {
-        use crate::error::ParamError;
+    /// Checks that the tolerances are usable: the one check of rtol, atol
+    /// and max_step ([`SimOptions::validate`](crate::SimOptions::validate)
+    /// calls it too).
+    ///
+    /// # Errors
+    /// [`ParamError::InvalidParameter`] naming the first bad tolerance.
+    pub fn validate(&self) -> Result<(), ParamError> {
         let check = |name: &'static str, value: f64, ok: bool, expected: &'static str| {
             if ok {
                 Ok(())
             } else {
-                Err(SimError::Param(ParamError::InvalidParameter {
+                Err(ParamError::InvalidParameter {
                     name,
                     value,
                     expected,
-                }))
+                })
             }
         };
         check(
