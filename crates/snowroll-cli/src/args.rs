@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use snowroll::sweep::Method;
-use snowroll::{CollisionModel, Format, ModelKind, OnHop, ScenarioFile, SimOptions};
+use snowroll::{CollisionModel, Format, ModelKind, OnHop, ScenarioFile, Shape, SimOptions};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.
@@ -208,6 +208,21 @@ pub struct ScenarioArgs {
         )
     )]
     pub v0: Option<f64>,
+
+    /// The body: cylinder (the note's log) or sphere (a snowball, I = 2/5 M r^2; the turn
+    /// models take the cylinder only) [default: cylinder]
+    #[arg(long, value_name = "SHAPE", ignore_case = true)]
+    pub shape: Option<Shape>,
+
+    #[arg(
+        long,
+        value_name = "M",
+        allow_negative_numbers = true,
+        help = "Width w of the swath of snow a sphere picks up, in m (w > 0; sphere only) \
+                [default: none = the ball's diameter 2r, which grows with it, so that \
+                pi r^2 = pi r0^2 + b x as for the log]"
+    )]
+    pub swath_width: Option<f64>,
 
     #[arg(
         long,

@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{anyhow, bail, Context, Result};
 use serde::{Deserialize, Deserializer};
 use serde_json::{Map, Value};
-use snowroll::{CollisionModel, Format, ModelKind, OnHop};
+use snowroll::{CollisionModel, Format, ModelKind, OnHop, Shape};
 
 use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 
@@ -46,6 +46,10 @@ pub struct ConfigFile {
     length: Option<f64>,
     #[serde(alias = "v0_m_s")]
     v0: Option<f64>,
+    #[serde(default, deserialize_with = "shape_any_case")]
+    shape: Option<Shape>,
+    #[serde(alias = "swath-width")]
+    swath_width: Option<f64>,
     #[serde(alias = "t-end", alias = "t_end_s")]
     t_end: Option<f64>,
     #[serde(alias = "x-end", alias = "x_end_m")]
@@ -67,6 +71,12 @@ pub struct ConfigFile {
 /// A model id or alias in any case, as `--model` accepts it
 /// ([`ModelKind`]'s `FromStr`).
 fn model_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<ModelKind>, D::Error> {
+    let name = String::deserialize(d)?;
+    name.parse().map(Some).map_err(serde::de::Error::custom)
+}
+
+/// `cylinder` or `sphere`, in any case, as `--shape` accepts it.
+fn shape_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Shape>, D::Error> {
     let name = String::deserialize(d)?;
     name.parse().map(Some).map_err(serde::de::Error::custom)
 }
@@ -204,7 +214,7 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             continue; // a sentence (the turn table's summary), not a setting
         }
         let value = match key {
-            "model" | "collision" | "on_hop" => {
+            "model" | "collision" | "on_hop" | "shape" => {
                 Value::String(value.split_whitespace().next().unwrap_or("").into())
             }
             "sampling" => {
@@ -281,6 +291,8 @@ impl ScenarioArgs {
             density,
             length,
             v0,
+            shape,
+            swath_width,
             t_end,
             x_end,
             rtol,
@@ -298,6 +310,8 @@ impl ScenarioArgs {
             density: density.or(file.density),
             length: length.or(file.length),
             v0: v0.or(file.v0),
+            shape: shape.or(file.shape),
+            swath_width: swath_width.or(file.swath_width),
             t_end: t_end.or(file.t_end),
             x_end: x_end.or(file.x_end),
             rtol: rtol.or(file.rtol),

@@ -312,3 +312,107 @@ fn flags_override_an_output_read_as_config() {
     let want = 2.0 / 3.0 * 9.81 * 40f64.to_radians().sin();
     assert!((a0 - want).abs() < 1e-12 * want, "{a0} vs {want}");
 }
+
+#[test]
+fn a_snowball_run_reproduces_its_run_in_either_format() {
+    // issue 11: `shape` and `swath_width` are recorded and read back, in
+    // CSV and JSON, from an output and from TOML in either spelling.
+    for format in ["csv", "json"] {
+        reproduces(
+            "simulate",
+            &[
+                "--model",
+                "energy",
+                "--shape",
+                "sphere",
+                "--swath-width",
+                "0.07",
+                "--t-end",
+                "3",
+                "--format",
+                format,
+            ],
+            &format!("ball.{format}"),
+        );
+        reproduces(
+            "simulate",
+            &[
+                "--model", "loney", "--shape", "SPHERE", "--t-end", "2", "--format", format,
+            ],
+            &format!("natural.{format}"),
+        );
+    }
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "eq4",
+            "--shape",
+            "sphere",
+            "--swath-width",
+            "0.05",
+            "--t-end",
+            "2",
+            "-o",
+            "a.csv",
+        ],
+    );
+    let text = fs::read_to_string(dir.path().join("a.csv")).unwrap();
+    assert!(text.contains("# shape = sphere\n") && text.contains("# swath_width = 0.05\n"));
+    fs::write(
+        dir.path().join("b.toml"),
+        "model = \"eq4\"\nshape = \"Sphere\"\nswath-width = 0.05\nt_end = 2\n",
+    )
+    .unwrap();
+    run(
+        dir.path(),
+        &["simulate", "--config", "b.toml", "-o", "b.csv"],
+    );
+    assert_eq!(text, fs::read_to_string(dir.path().join("b.csv")).unwrap());
+}
+
+#[test]
+fn a_shape_a_model_cannot_take_is_refused_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let err = fails(
+        dir.path(),
+        &[
+            "simulate", "--model", "turns", "--shape", "sphere", "--turns", "2",
+        ],
+    );
+    assert!(
+        err.contains("model turns does not support shape = sphere"),
+        "{err}"
+    );
+    let err = fails(
+        dir.path(),
+        &["turns", "--model", "turns-exact", "--shape", "sphere"],
+    );
+    assert!(
+        err.contains("turns-exact does not support shape = sphere"),
+        "{err}"
+    );
+    let err = fails(
+        dir.path(),
+        &["simulate", "--model", "eq4", "--swath-width", "0.1"],
+    );
+    assert!(
+        err.contains("swath width") && err.contains("--shape sphere"),
+        "{err}"
+    );
+    let err = fails(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "loney",
+            "--shape",
+            "sphere",
+            "--swath-width",
+            "0.1",
+        ],
+    );
+    assert!(err.contains("model loney does not support"), "{err}");
+}

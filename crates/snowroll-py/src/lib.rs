@@ -46,6 +46,10 @@ fn sim_error(e: SimError) -> PyErr {
 struct Inputs {
     model: String,
     scenario: [Option<f64>; 7],
+    /// `cylinder` or `sphere`; `None` = cylinder.
+    shape: Option<String>,
+    /// Swath width of a sphere, m; `None` = its diameter.
+    swath_width: Option<f64>,
     t_end: Option<f64>,
     x_end: Option<f64>,
     rtol: Option<f64>,
@@ -72,6 +76,11 @@ impl Inputs {
             density: density.unwrap_or(d.density),
             length: length.unwrap_or(d.length),
             v0: v0.unwrap_or(d.v0),
+            shape: match &self.shape {
+                None => d.shape,
+                Some(name) => name.parse().map_err(value_error)?,
+            },
+            swath_width: self.swath_width.or(d.swath_width),
         })
         .map_err(value_error)
     }
@@ -296,8 +305,9 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
 #[pyfunction]
 #[pyo3(signature = (
     model = "torque-cm", *, alpha_deg = None, snow_depth = None, r0 = None, g = None,
-    density = None, length = None, v0 = None, t_end = None, x_end = None, times = None,
-    dt = None, turns = None, rtol = None, atol = None, mu = None, collision = None, on_hop = None
+    density = None, length = None, v0 = None, shape = None, swath_width = None, t_end = None,
+    x_end = None, times = None, dt = None, turns = None, rtol = None, atol = None, mu = None,
+    collision = None, on_hop = None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
@@ -310,6 +320,8 @@ fn simulate<'py>(
     density: Option<f64>,
     length: Option<f64>,
     v0: Option<f64>,
+    shape: Option<String>,
+    swath_width: Option<f64>,
     t_end: Option<f64>,
     x_end: Option<f64>,
     times: Option<Vec<f64>>,
@@ -324,6 +336,8 @@ fn simulate<'py>(
     let inputs = Inputs {
         model: model.to_string(),
         scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
+        shape,
+        swath_width,
         t_end,
         x_end,
         rtol,
@@ -396,6 +410,8 @@ fn turns<'py>(
     let inputs = Inputs {
         model: model.to_string(),
         scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
+        shape: None,
+        swath_width: None,
         t_end,
         x_end,
         rtol,
@@ -457,6 +473,8 @@ fn models<'py>(
         row.set_item("equation", kind.equation())?;
         row.set_item("description", kind.description())?;
         row.set_item("terminal_fraction", kind.terminal_fraction())?;
+        let shapes: Vec<&str> = kind.shapes().iter().map(|s| s.id()).collect();
+        row.set_item("shapes", shapes)?;
         let stall = kind.stall_threshold(b, r0);
         row.set_item("stall_slope_deg", stall.map(|t| t.slope.to_degrees()))?;
         let stall_kind = match stall {

@@ -125,3 +125,24 @@ def test_on_hop_and_undefined_friction_ratio():
     assert frame["friction_ratio"].isna().sum() == off.sum()
     assert not np.isnan(frame["friction_ratio"].dropna().to_numpy(dtype=float)).any()
     assert isinstance(frame, pd.DataFrame)
+def test_shape_sphere_keyword_rolls_a_ball():
+    """issue 11: ``shape="sphere"`` makes a uniform ball, I = 2/5 M r^2, so the
+    snowless ball accelerates at (5/7) g sin alpha; its mass is 4/3 pi rho r0^3.
+    Tolerance 1e-12 relative: a few roundings of quantities of order one."""
+    alpha, g = 30.0, 9.81
+    r = snowroll.simulate("snowless", shape="sphere", snow_depth=0, alpha_deg=alpha, dt=0.5, t_end=2)
+    want = 5.0 / 7.0 * g * math.sin(math.radians(alpha))
+    assert np.allclose(r.a_m_s2, want, rtol=1e-12, atol=0)
+    assert np.allclose(r.mass_kg, 4.0 / 3.0 * math.pi * 400 * 0.1**3, rtol=1e-12, atol=0)
+    assert r.params["shape"] == "sphere" and "swath_width" not in r.params
+    w = snowroll.simulate("torque-cm", shape="sphere", swath_width=0.05, t_end=1)
+    assert w.params["swath_width"] == 0.05
+
+
+def test_shape_errors_name_the_problem():
+    with pytest.raises(ValueError, match="swath width"):
+        snowroll.simulate("torque-cm", swath_width=0.1)
+    with pytest.raises(ValueError, match="unknown shape"):
+        snowroll.simulate("torque-cm", shape="cube")
+    with pytest.raises(ValueError, match="does not support shape = sphere"):
+        snowroll.simulate("turns", shape="sphere", turns=2)

@@ -41,6 +41,9 @@ CASES = [
     ("turns", {"turns": 3, "alpha_deg": 80}),
     ("turns", {"turns": 3, "alpha_deg": 80, "on_hop": "continue"}),
     ("turns-exact", {"turns": 3, "alpha_deg": 80, "on_hop": "stop", "mu": 2.0}),
+    ("torque-cm", {"shape": "sphere", "t_end": 20}),
+    ("energy", {"shape": "sphere", "swath_width": 0.05, "t_end": 10}),
+    ("loney", {"shape": "sphere", "t_end": 5}),
 ]
 
 
@@ -71,6 +74,9 @@ def test_simulate_equals_cli(cli, model, kwargs):
         assert r.params[key] == float(meta[key]), key
     assert r.params["collision"] == meta["collision"]
     assert r.params["on_hop"] == meta["on_hop"] == kwargs.get("on_hop", "stop")
+    assert r.params["shape"] == meta["shape"]
+    if "swath_width" in meta:
+        assert r.params["swath_width"] == float(meta["swath_width"])
     assert r.params["sampling"] == meta["sampling"]
     assert r.model == meta["model"].split(" ")[0]
 

@@ -102,6 +102,27 @@
       ctx.fillText(fmt(m, step < 1 ? 2 : 0) + ' m', px, ground + 22);
     }
 
+    // The snowball (issue 11): a shaded ball of snow whose radius grows, a
+    // line from the centre to show it turning; no layers, no wooden core.
+    if (A.shape === 'sphere') {
+      ctx.save();
+      ctx.rotate(th);
+      var R = r * s;
+      var shade = ctx.createRadialGradient(-0.35 * R, -0.35 * R, 0.1 * R, 0, 0, R);
+      shade.addColorStop(0, '#ffffff');
+      shade.addColorStop(0.6, '#dfe9f3');
+      shade.addColorStop(1, '#9fb4c8');
+      ctx.beginPath();
+      ctx.arc(0, 0, R, 0, TAU);
+      ctx.fillStyle = shade;
+      ctx.fill();
+      ctx.strokeStyle = '#5f7890';
+      ctx.lineWidth = 1.5;
+      ctx.stroke();
+      ctx.strokeStyle = '#5f7890';
+      ctx.beginPath(); ctx.moveTo(0, 0); ctx.lineTo(0, -R); ctx.stroke();
+      ctx.restore();
+    } else {
     // The log.
     var outer = A.circular ? r : rk;
     ctx.save();
@@ -134,6 +155,7 @@
     ctx.lineWidth = 3;
     ctx.beginPath(); ctx.moveTo(0, 0); ctx.lineTo(0, -A.r0 * s); ctx.stroke();
     ctx.restore();
+    }
     ctx.restore();
 
     // Read-out, smaller on narrow screens.

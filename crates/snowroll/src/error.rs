@@ -8,6 +8,23 @@ use crate::output::format_number as number;
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ParamError {
+    /// A shape name that is not `cylinder` or `sphere`.
+    #[error("unknown shape {given:?}: expected cylinder or sphere")]
+    UnknownShape {
+        /// What was asked for.
+        given: String,
+    },
+    /// A model whose derivation does not carry over to the scenario's shape
+    /// (`docs/snowball-and-losses.md` §1.2).
+    #[error("model {model} does not support shape = {shape}: {reason}")]
+    ShapeNotSupported {
+        /// The model id.
+        model: &'static str,
+        /// The shape asked for.
+        shape: &'static str,
+        /// Why, in words.
+        reason: &'static str,
+    },
     /// A numeric parameter is out of range (or not finite).
     #[error("invalid {name} = {}: expected {expected}", number(*value))]
     InvalidParameter {

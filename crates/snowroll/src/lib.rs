@@ -131,7 +131,7 @@ pub use models::{
     as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
     circular_forces, collision_speed, default_atol, first_turn_stall_slope,
     kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, state_scale,
-    tolerance_warning, validity_warnings, CircularModel, Coefficients, CollisionModel,
+    tolerance_warning, validity_warnings, Balance, CircularModel, Coefficients, CollisionModel,
     ContactForces, ContactRange, Derivation, DragOnlyClosedForm, InTurnCoefficients, LoneyModel,
     Model, ModelKind, PivotImpact, SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes,
     TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
@@ -139,7 +139,7 @@ pub use models::{
 pub use output::{
     check_finite, format_number, write_trajectory, write_turn_table, Format, NonFinite, RunParams,
 };
-pub use scenario::{Scenario, ScenarioFile};
+pub use scenario::{Scenario, ScenarioFile, Shape};
 pub use trajectory::{
     OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState,
 };

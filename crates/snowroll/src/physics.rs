@@ -1,31 +1,129 @@
 //! Formulae shared by the circular models of §2: the radius law, the
-//! kinetic and potential energies of the always-circular log.
+//! kinetic and potential energies of the always-circular log, and of the
+//! always-round ball (`docs/snowball-and-losses.md` §1.1–1.2).
 
 use std::f64::consts::PI;
 
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, Shape};
 use crate::units::{Joules, Kilograms, Meters, MetersPerSecond};
 
-/// Radius after rolling a distance `x`, eq. (8): `π r² = π r0² + b x`.
+/// Radius after rolling a distance `x`: `π r² = π r0² + b x` (eq. (8)) for
+/// the log and for the ball with its natural swath 2r; for a ball with a
+/// fixed swath w, `(4π/3)(r³ − r0³) = b w x` (`docs/snowball-and-losses.md` §1.1).
 pub fn radius_at(s: &Scenario, x: Meters) -> Meters {
     let r0 = s.initial_radius();
-    (r0 * r0 + s.snow_depth() * x / PI).sqrt()
+    match s.swath_width() {
+        None => (r0 * r0 + s.snow_depth() * x / PI).sqrt(),
+        Some(w) => (r0 * r0 * r0 + 3.0 * s.snow_depth() * w * x / (4.0 * PI)).cbrt(),
+    }
 }
 
-/// Mass after rolling `x`, eq. (8): `m = m0 + ρ b l x` (= π ρ l r²), kg.
+/// Mass after rolling `x`, kg: `m = m0 + ρ b l x` (= π ρ l r², eq. (8)) for
+/// the log; `(4/3)πρ r³` for the ball, which is `m0 + ρ b w x` with a fixed
+/// swath w.
 pub fn mass_at(s: &Scenario, x: Meters) -> Kilograms {
-    s.initial_mass() + s.density() * s.snow_depth() * s.length() * x
+    match (s.shape(), s.swath_width()) {
+        (Shape::Cylinder, _) => s.initial_mass() + s.density() * s.snow_depth() * s.length() * x,
+        (Shape::Sphere, Some(w)) => s.initial_mass() + s.density() * s.snow_depth() * w * x,
+        (Shape::Sphere, None) => {
+            let r = radius_at(s, x);
+            4.0 * PI * s.density() * r * r * r / 3.0
+        }
+    }
 }
 
-/// Kinetic energy of the circular log, eq. (7):
-/// `T = 3πρl r² v²/4 + ρ l b² v²/(8π)` (the second term is the radial growth `ṙ = bv/(2πr)`, eq. (1)).
+/// The body's size and its rate of growth at distance `x`
+/// (`docs/snowball-and-losses.md` §1.1), for the equations of motion and the
+/// contact forces of any shape.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Growth {
+    /// r, m.
+    pub r: Meters,
+    /// M, kg.
+    pub mass: Kilograms,
+    /// r′ = dr/dx: b/(2πr) on the area law, b w/(4πr²) for a ball with a
+    /// fixed swath w.
+    pub dr_dx: f64,
+    /// r″ = d²r/dx², 1/m: −r′²/r on the area law, −2r′²/r for a fixed swath.
+    pub d2r_dx2: f64,
+    /// λ = (dM/dx)/M = n r′/r (M ∝ rⁿ), 1/m.
+    pub lambda: f64,
+}
+
+/// [`Growth`] at distance `x`; a body that collects no snow (`accretes`
+/// false, or b = 0) keeps r0, with r′ = r″ = λ = 0.
+pub fn growth_at(s: &Scenario, x: Meters, accretes: bool) -> Growth {
+    let b = s.snow_depth();
+    if !accretes || b == 0.0 {
+        return Growth {
+            r: s.initial_radius(),
+            mass: s.initial_mass(),
+            dr_dx: 0.0,
+            d2r_dx2: 0.0,
+            lambda: 0.0,
+        };
+    }
+    let r = radius_at(s, x);
+    let (dr_dx, bend) = match s.swath_width() {
+        None => (b / (2.0 * PI * r), 1.0),
+        Some(w) => (b * w / (4.0 * PI * r * r), 2.0),
+    };
+    Growth {
+        r,
+        mass: mass_at(s, x),
+        dr_dx,
+        d2r_dx2: -bend * dr_dx * dr_dx / r,
+        lambda: s.shape().mass_exponent() * dr_dx / r,
+    }
+}
+
+/// Kinetic energy of the round body, `T = ½ M (1 + k + r′²) v²` (eq. (7)
+/// generalised, `docs/snowball-and-losses.md` §1.2; r′² v² = ṙ², eq. (1)).
+/// For the log, eq. (7) as printed:
+/// `T = 3πρl r² v²/4 + ρ l b² v²/(8π)`.
 pub fn kinetic_energy(s: &Scenario, x: Meters, v: MetersPerSecond) -> Joules {
     let (rho, l, b) = (s.density(), s.length(), s.snow_depth());
+    if s.shape() == Shape::Sphere {
+        let gr = growth_at(s, x, true);
+        return 0.5 * gr.mass * (1.0 + s.shape().inertia_factor() + gr.dr_dx * gr.dr_dx) * v * v;
+    }
     let r = radius_at(s, x);
     3.0 * PI * rho * l * r * r * v * v / 4.0 + rho * l * b * b * v * v / (8.0 * PI)
 }
 
-/// Potential energy of log plus collected snow, relative to the start, eq. (10):
+/// Potential energy of the ball plus the snow it collected, relative to the
+/// start (`docs/snowball-and-losses.md` §1.2):
+/// `V = C [M r − M0 r0 + (b/2)(M − M0)] − G ∫₀ˣ M dx′`, written without
+/// differences of large numbers.
+fn ball_potential_energy(s: &Scenario, x: Meters) -> Joules {
+    let (rho, b) = (s.density(), s.snow_depth());
+    let r0 = s.initial_radius();
+    let r = radius_at(s, x);
+    let m0 = s.initial_mass();
+    // r³ − r0³ from the growth law, r − r0 from it without cancellation.
+    let r3_minus = match s.swath_width() {
+        None => (b * x / PI) / (r + r0) * (r * r + r * r0 + r0 * r0),
+        Some(w) => 3.0 * b * w * x / (4.0 * PI),
+    };
+    let r_minus = r3_minus / (r * r + r * r0 + r0 * r0);
+    let dm = 4.0 * PI * rho * r3_minus / 3.0;
+    // M r − M0 r0 = (4/3)πρ (r⁴ − r0⁴).
+    let r4_minus = r_minus * (r * r * r + r * r * r0 + r * r0 * r0 + r0 * r0 * r0);
+    let lift = 4.0 * PI * rho * r4_minus / 3.0 + 0.5 * b * dm;
+    let integral = match s.swath_width() {
+        // ∫ M dx = 8π²ρ (r⁵ − r0⁵)/(15 b), with r − r0 = (b x/π)/(r + r0).
+        None => {
+            let sum5 = r.powi(4) + r.powi(3) * r0 + r * r * r0 * r0 + r * r0.powi(3) + r0.powi(4);
+            8.0 * PI * rho * x * sum5 / (15.0 * (r + r0))
+        }
+        Some(w) => m0 * x + rho * b * w * x * x / 2.0,
+    };
+    s.g_normal() * lift - s.g_along() * integral
+}
+
+/// Potential energy of body plus collected snow, relative to the start; for
+/// the log eq. (10) (the ball: `ball_potential_energy`, §1.2 of
+/// `docs/snowball-and-losses.md`):
 /// `V = ρlg[(2πr³ + b²x) cos α + (bx² − 2πr²x) sin α]/2 − m0 g r0 cos α`.
 ///
 /// Evaluated in the algebraically equal form
@@ -33,6 +131,9 @@ pub fn kinetic_energy(s: &Scenario, x: Meters, v: MetersPerSecond) -> Joules {
 /// `2πr² = 2πr0² + 2bx`, eq. (8)), which does not cancel when `x` is large
 /// or `b` small.
 pub fn potential_energy(s: &Scenario, x: Meters) -> Joules {
+    if s.shape() == Shape::Sphere {
+        return ball_potential_energy(s, x);
+    }
     let (rho, l, b, g, alpha) = (
         s.density(),
         s.length(),

@@ -33,6 +33,92 @@ pub struct Scenario {
     rho: KilogramsPerCubicMeter,
     l: Meters,
     v0: MetersPerSecond,
+    shape: Shape,
+    swath_width: Option<Meters>,
+}
+
+/// The body that rolls (issue 11, `docs/snowball-and-losses.md` §1): the
+/// note's log, or a ball. Both are taken as round at all times by the
+/// circular models; the turn models know only the log.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Shape {
+    /// A uniform cylinder of length l (the note's log): I = ½ M r²,
+    /// M = πρl r², swath = l, so π r² = π r0² + b x (eq. (8)).
+    #[default]
+    Cylinder,
+    /// A uniform ball: I = (2/5) M r², M = (4/3)πρ r³, swath 2r by default
+    /// (again π r² = π r0² + b x), or a fixed width w
+    /// ((4π/3)(r³ − r0³) = b w x), `docs/snowball-and-losses.md` §1.1.
+    Sphere,
+}
+
+impl Shape {
+    /// Both shapes, the default first.
+    pub const ALL: [Shape; 2] = [Shape::Cylinder, Shape::Sphere];
+
+    /// The kebab-case name, as `--shape` takes it.
+    pub fn id(self) -> &'static str {
+        match self {
+            Shape::Cylinder => "cylinder",
+            Shape::Sphere => "sphere",
+        }
+    }
+
+    /// k = I/(M r²): ½ for the cylinder, 2/5 for the ball.
+    pub fn inertia_factor(self) -> f64 {
+        let (num, den) = self.inertia_ratio();
+        num / den
+    }
+
+    /// k as a ratio of small whole numbers, (1, 2) or (2, 5).
+    pub fn inertia_ratio(self) -> (f64, f64) {
+        match self {
+            Shape::Cylinder => (1.0, 2.0),
+            Shape::Sphere => (2.0, 5.0),
+        }
+    }
+
+    /// 1/(1 + k) as a ratio of whole numbers: (2, 3) for the cylinder
+    /// (App. A: a = 2G/3), (5, 7) for the ball (a = 5G/7). The formulae
+    /// evaluate `num * G / den`, so that the snowless accelerations are the
+    /// correctly rounded 2G/3 and 5G/7.
+    pub fn push_ratio(self) -> (f64, f64) {
+        match self {
+            Shape::Cylinder => (2.0, 3.0),
+            Shape::Sphere => (5.0, 7.0),
+        }
+    }
+
+    /// n of M ∝ rⁿ: 2 for the cylinder, 3 for the ball.
+    pub fn mass_exponent(self) -> f64 {
+        match self {
+            Shape::Cylinder => 2.0,
+            Shape::Sphere => 3.0,
+        }
+    }
+}
+
+impl std::fmt::Display for Shape {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.id())
+    }
+}
+
+impl std::str::FromStr for Shape {
+    type Err = ParamError;
+
+    /// `cylinder` or `sphere`, in any case.
+    fn from_str(s: &str) -> Result<Self, ParamError> {
+        let wanted = s.trim().to_ascii_lowercase();
+        Shape::ALL
+            .into_iter()
+            .find(|k| k.id() == wanted)
+            .ok_or_else(|| ParamError::UnknownShape {
+                given: s.to_string(),
+            })
+    }
 }
 
 /// The user-facing form of a [`Scenario`], in the project's one parameter
@@ -67,6 +153,15 @@ pub struct ScenarioFile {
     /// Initial speed v0 down the slope, m/s, >= 0. Default 0.
     #[serde(alias = "v0_m_s")]
     pub v0: f64,
+    /// The body: `cylinder` (the log) or `sphere` (the snowball). Default
+    /// `cylinder`. The length applies to the cylinder only.
+    pub shape: Shape,
+    /// Width w of the swath of snow a ball picks up, m, > 0; `None` (the
+    /// default) = the ball's diameter 2r, which grows with it
+    /// (`docs/snowball-and-losses.md` §1.1). Only for `shape = sphere`: a
+    /// log's swath is its length.
+    #[serde(alias = "swath-width", skip_serializing_if = "Option::is_none")]
+    pub swath_width: Option<f64>,
 }
 
 impl Default for ScenarioFile {
@@ -79,6 +174,8 @@ impl Default for ScenarioFile {
             density: 400.0,
             length: 1.0,
             v0: 0.0,
+            shape: Shape::Cylinder,
+            swath_width: None,
         }
     }
 }
@@ -243,6 +340,24 @@ impl Scenario {
                 |v| v >= 0.0,
                 "v0 >= 0 m/s",
             )?,
+            shape: file.shape,
+            swath_width: match (file.shape, file.swath_width) {
+                (_, None) => None,
+                (Shape::Sphere, Some(w)) => Some(check(
+                    "swath width (m)",
+                    w,
+                    |w| w > 0.0,
+                    "swath_width > 0 m",
+                )?),
+                (Shape::Cylinder, Some(w)) => {
+                    return Err(ParamError::InvalidParameter {
+                        name: "swath width (m)",
+                        value: w,
+                        expected: "no swath width for shape = cylinder (a log's swath is its \
+                                   length); give --shape sphere or drop --swath-width",
+                    })
+                }
+            },
         })
     }
 
@@ -293,9 +408,29 @@ impl Scenario {
     pub fn g_normal(&self) -> MetersPerSecondSquared {
         self.g * self.alpha.cos()
     }
-    /// Initial mass m0 = pi rho l r0², eq. (37), kg.
+    /// The body's shape.
+    pub fn shape(&self) -> Shape {
+        self.shape
+    }
+    /// The fixed swath width w of a ball, m; `None` for the ball's natural
+    /// swath 2r, and always for the cylinder (its swath is its length).
+    pub fn swath_width(&self) -> Option<Meters> {
+        self.swath_width
+    }
+    /// Whether r(x) follows the area law π r² = π r0² + b x (eq. (8)): the
+    /// log, and the ball with its natural swath 2r.
+    pub fn follows_area_law(&self) -> bool {
+        self.swath_width.is_none()
+    }
+    /// Initial mass, kg: m0 = π ρ l r0² for the log (eq. (37)),
+    /// (4/3) π ρ r0³ for the ball.
     pub fn initial_mass(&self) -> f64 {
-        std::f64::consts::PI * self.rho * self.l * self.r0 * self.r0
+        match self.shape {
+            Shape::Cylinder => std::f64::consts::PI * self.rho * self.l * self.r0 * self.r0,
+            Shape::Sphere => {
+                4.0 * std::f64::consts::PI * self.rho * self.r0 * self.r0 * self.r0 / 3.0
+            }
+        }
     }
 }
 
@@ -316,6 +451,8 @@ impl From<Scenario> for ScenarioFile {
             density: s.rho,
             length: s.l,
             v0: s.v0,
+            shape: s.shape,
+            swath_width: s.swath_width,
         }
     }
 }
@@ -335,6 +472,8 @@ impl Default for Scenario {
             rho: f.density,
             l: f.length,
             v0: f.v0,
+            shape: f.shape,
+            swath_width: f.swath_width,
         }
     }
 }

@@ -516,3 +516,53 @@ fn every_erratum_a_verdict_cites_is_a_row_of_the_errata() {
         }
     }
 }
+
+/// The ball's coefficients of `d` with one changed.
+fn ball_perturbed(d: Derivation, edit: impl FnOnce(&mut Coefficients)) -> Coefficients {
+    let mut c = d.coefficients_for(snowroll::Shape::Sphere);
+    edit(&mut c);
+    c
+}
+
+#[test]
+fn snowball_checks_notice_wrong_models() {
+    // The log's snowless model run on the ball: 2/3 instead of 5/7.
+    changes(
+        "snowball-five-sevenths",
+        &lab().with_coefficients(Derivation::Snowless, Derivation::Snowless.coefficients()),
+    );
+    // A ball whose torque-contact momentum term is 1 % off.
+    changes(
+        "snowball-terminal-fractions",
+        &lab().with_coefficients(
+            Derivation::TorqueAboutContact,
+            ball_perturbed(Derivation::TorqueAboutContact, |c| c.drag *= 1.01),
+        ),
+    );
+    // The ball's energy model with the log's lift coefficient (1, not 10/7):
+    // the same limit, but the derived 1/r approach no longer fits.
+    changes(
+        "snowball-terminal-fractions",
+        &lab().with_coefficients(
+            Derivation::Energy,
+            ball_perturbed(Derivation::Energy, |c| c.lift = 1.0),
+        ),
+    );
+    // The letter against the log's torque-cm coefficients on the ball ...
+    changes(
+        "tpt-letter-closed-form",
+        &lab().with_coefficients(
+            Derivation::TorqueAboutCentre,
+            Derivation::TorqueAboutCentre.coefficients(),
+        ),
+    );
+    // ... and against a lab whose torque-contact is secretly torque-cm: the
+    // letter would then not single out one model.
+    changes(
+        "tpt-letter-closed-form",
+        &lab().with_runner(|kind, s, opts| {
+            (kind == ModelKind::TorqueContact)
+                .then(|| ModelKind::TorqueCm.build().simulate(s, opts))
+        }),
+    );
+}

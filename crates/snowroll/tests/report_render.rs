@@ -567,3 +567,40 @@ fn turn_model_frames_count_whole_turns_and_start_each_at_r0_plus_k_b() {
         Err(ReportError::InvalidAnimation { .. })
     ));
 }
+
+#[test]
+fn a_snowball_animation_is_a_growing_shaded_ball() {
+    // issue 11: the ball on its natural swath follows eq. (8) too, so it has
+    // turned by 2π (r − r0)/b; the animation says it is a ball, and grows.
+    let s = Scenario::new(ScenarioFile {
+        shape: snowroll::Shape::Sphere,
+        ..ScenarioFile::default()
+    })
+    .unwrap();
+    let traj = run(ModelKind::TorqueCm, &s, 3.0, Sampling::Every(0.005));
+    let anim = Animation::from_trajectory(&traj, &s, usize::MAX).unwrap();
+    assert_eq!(anim.shape, snowroll::Shape::Sphere);
+    assert!(anim.title.contains("snowball"), "{}", anim.title);
+    assert!(anim.caption.contains("shaded"), "{}", anim.caption);
+    let (b, r0) = (s.snow_depth(), s.initial_radius());
+    for f in &anim.frames[1..] {
+        approx::assert_relative_eq!(
+            f.theta_rad,
+            TAU * (f.r_m - r0) / b,
+            max_relative = THETA_REL_TOL
+        );
+    }
+    assert!(anim.frames.last().unwrap().r_m > 1.5 * r0);
+    assert!(anim.to_json().unwrap().contains("\"shape\":\"sphere\""));
+    let log = run(
+        ModelKind::TorqueCm,
+        &scenario(0.01),
+        1.0,
+        Sampling::Every(0.01),
+    );
+    let log_anim = Animation::from_trajectory(&log, &scenario(0.01), 50).unwrap();
+    assert!(log_anim
+        .to_json()
+        .unwrap()
+        .contains("\"shape\":\"cylinder\""));
+}

@@ -41,6 +41,8 @@ pub fn scenario(a: &ScenarioArgs) -> Result<Scenario, ParamError> {
         density: a.density.unwrap_or(d.density),
         length: a.length.unwrap_or(d.length),
         v0: a.v0.unwrap_or(d.v0),
+        shape: a.shape.unwrap_or(d.shape),
+        swath_width: a.swath_width.or(d.swath_width),
     })
 }
 

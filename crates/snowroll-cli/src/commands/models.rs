@@ -11,7 +11,7 @@ use std::io::Write;
 use anyhow::{Context, Result};
 use serde::Serialize;
 use snowroll::models::{StallKind, Validity};
-use snowroll::{ModelKind, ScenarioFile};
+use snowroll::{ModelKind, Scenario, ScenarioFile, Shape};
 
 use crate::args::{ModelsArgs, ModelsFormat};
 use crate::sink::Sink;
@@ -28,6 +28,12 @@ struct Row {
     terminal_fraction: Option<f64>,
     /// The same as a fraction `p/q`, when it is one.
     terminal_fraction_exact: Option<String>,
+    /// The shapes the model takes (`cylinder`, `sphere`; issue 11).
+    shapes: Vec<&'static str>,
+    /// Late-time acceleration over g sin alpha of the ball (swath 2r), where the model takes one.
+    sphere_terminal_fraction: Option<f64>,
+    /// The same as a fraction `p/q`.
+    sphere_terminal_fraction_exact: Option<String>,
     /// Below this slope the model does not roll on from rest, for the default b and r0 (fn. 7).
     stall_slope_deg: Option<f64>,
     /// What happens below `stall_slope_deg`.
@@ -50,10 +56,19 @@ struct Listing {
 fn listing() -> Listing {
     let d = ScenarioFile::default();
     let (b, r0) = (d.snow_depth, d.r0);
+    let ball = Scenario::new(ScenarioFile {
+        shape: Shape::Sphere,
+        ..d
+    });
     let models = ModelKind::ALL
         .into_iter()
         .map(|kind| {
             let terminal = kind.terminal_fraction();
+            let shapes = kind.shapes();
+            let sphere = match &ball {
+                Ok(s) if shapes.contains(&Shape::Sphere) => kind.terminal_fraction_on(s),
+                _ => None,
+            };
             Row {
                 id: kind.id(),
                 alias: kind.alias(),
@@ -61,6 +76,11 @@ fn listing() -> Listing {
                 description: kind.description(),
                 terminal_fraction: terminal,
                 terminal_fraction_exact: terminal
+                    .and_then(as_fraction)
+                    .map(|(p, q)| format!("{p}/{q}")),
+                shapes: shapes.iter().map(|s| s.id()).collect(),
+                sphere_terminal_fraction: sphere,
+                sphere_terminal_fraction_exact: sphere
                     .and_then(as_fraction)
                     .map(|(p, q)| format!("{p}/{q}")),
                 stall_slope_deg: kind.stall_threshold(b, r0).map(|t| t.slope.to_degrees()),
@@ -97,22 +117,29 @@ fn table(listing: &Listing) -> String {
         "alias",
         "equation",
         "a_inf / (g sin alpha)",
+        "shapes",
+        "ball a_inf",
         "description",
     ];
-    let rows: Vec<[String; 5]> = listing
+    let fraction = |exact: &Option<String>, f: Option<f64>| match (exact, f) {
+        (Some(exact), Some(f)) => format!("{exact} = {f:.4}"),
+        (None, Some(f)) => format!("{f:.4}"),
+        (_, None) => "none".to_string(),
+    };
+    let rows: Vec<[String; 7]> = listing
         .models
         .iter()
         .map(|m| {
-            let terminal = match (&m.terminal_fraction_exact, m.terminal_fraction) {
-                (Some(exact), Some(f)) => format!("{exact} = {f:.4}"),
-                (None, Some(f)) => format!("{f:.4}"),
-                (_, None) => "none".to_string(),
-            };
             [
                 m.id.to_string(),
                 m.alias.to_string(),
                 m.equation.to_string(),
-                terminal,
+                fraction(&m.terminal_fraction_exact, m.terminal_fraction),
+                m.shapes.join(","),
+                fraction(
+                    &m.sphere_terminal_fraction_exact,
+                    m.sphere_terminal_fraction,
+                ),
                 m.description.to_string(),
             ]
         })
@@ -123,7 +150,7 @@ fn table(listing: &Listing) -> String {
             *w = (*w).max(cell.chars().count());
         }
     }
-    let line = |cells: [&str; 5]| {
+    let line = |cells: [&str; 7]| {
         let mut s = String::new();
         for (i, (cell, w)) in cells.iter().zip(widths).enumerate() {
             if i + 1 == cells.len() {
@@ -140,7 +167,9 @@ fn table(listing: &Listing) -> String {
         text.push_str(&line(row.each_ref().map(String::as_str)));
     }
     text.push_str(
-        "\na_inf: late-time acceleration with snow (b > 0), from the model's coefficients.\n",
+        "\na_inf: late-time acceleration with snow (b > 0), from the model's coefficients; \
+         ball a_inf: the same for --shape sphere (swath 2r, docs/snowball-and-losses.md §1.3). \
+         The turn models take the log only.\n",
     );
     let stalls = |kind: StallKind| -> Vec<(&str, f64)> {
         listing

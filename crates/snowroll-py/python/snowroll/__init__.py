@@ -271,6 +271,8 @@ def simulate(
     density: Optional[float] = None,
     length: Optional[float] = None,
     v0: Optional[float] = None,
+    shape: Optional[str] = None,
+    swath_width: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     times: Optional[Sequence[float]] = None,
@@ -295,7 +297,9 @@ def simulate(
     0 < alpha < 90 (30); ``snow_depth`` b, m, >= 0 (0.01); ``r0`` initial radius,
     m (0.1); ``g``, m/s^2 (9.81); ``density``, kg/m^3 (400); ``length``, m (1);
     ``v0`` initial speed, m/s (0). The radius grows as r(x) = sqrt(r0^2 + b x / pi),
-    eq. (8).
+    eq. (8). ``shape`` ``"cylinder"`` (the log, default) or ``"sphere"`` (a
+    snowball, I = 2/5 M r^2; circular models only); ``swath_width`` the width
+    of snow a sphere picks up, m (none = its diameter 2r, which keeps eq. (8)).
 
     Run: ``t_end`` end time, s (100); ``x_end`` end distance, m (none);
     ``turns`` number of full turns (turn models only; none); ``rtol`` (1e-10),
@@ -326,6 +330,8 @@ def simulate(
         density=density,
         length=length,
         v0=v0,
+        shape=shape,
+        swath_width=swath_width,
         t_end=t_end,
         x_end=x_end,
         times=None if times is None else [float(t) for t in times],

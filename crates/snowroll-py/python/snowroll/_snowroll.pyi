@@ -19,6 +19,8 @@ def simulate(
     density: Optional[float] = None,
     length: Optional[float] = None,
     v0: Optional[float] = None,
+    shape: Optional[str] = None,
+    swath_width: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     times: Optional[Sequence[float]] = None,

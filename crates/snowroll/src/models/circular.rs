@@ -9,6 +9,16 @@
 //!
 //! with G = g sin α, C = g cos α and `π r² = π r0² + b x` (eq. (8)).
 //! State `[x (m), v (m/s)]`. Valid to the order in b/r each derivation keeps.
+//!
+//! **The ball** (issue 11, `docs/snowball-and-losses.md` §1.2). No derivation
+//! of §2 needs a cylinder: each is a balance ([`Balance`]) for a body with
+//! I = k M r², M ∝ rⁿ, growing by r′ = dr/dx. With k = 2/5, n = 3 and the
+//! ball's natural swath 2r, r(x) is again eq. (8) and the common form holds
+//! with 2/3 replaced by 1/(1 + k) = 5/7, other coefficients
+//! ([`Derivation::coefficients_for`]) and one more term,
+//! `− c₃ b³ v²/(π³ r⁴)` ([`Coefficients::drag_b3`], zero for the log). A
+//! ball with a fixed swath width grows by another law and is integrated from
+//! the balance itself.
 
 use std::f64::consts::PI;
 
@@ -17,7 +27,8 @@ use super::ode::{run_ode, stopped_at_start, OdeModel};
 use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, OdeSystem};
-use crate::scenario::Scenario;
+use crate::physics::{growth_at, Growth};
+use crate::scenario::{Scenario, Shape};
 use crate::trajectory::{OnHop, Sample, SimOptions, Stop, StopReason, Trajectory};
 use crate::units::Radians;
 
@@ -62,6 +73,62 @@ pub struct Coefficients {
     pub lift_b2: f64,
     /// κ, the coefficient of the inertia correction `b²/(6π² r²)`.
     pub inertia_b2: f64,
+    /// c₃, the coefficient of `b³ v²/(π³ r⁴)` (the ball's `energy` and
+    /// `lagrangian-printed`; zero for every log model, where the terms
+    /// cancel), `docs/snowball-and-losses.md` §1.2.
+    pub drag_b3: f64,
+    /// The shape: its 1/(1 + k) replaces the 2/3 of the log's form.
+    pub shape: Shape,
+}
+
+/// A derivation of §2 for a body of any shape, I = k M r², M ∝ rⁿ
+/// (`docs/snowball-and-losses.md` §1.2, checked by
+/// `scripts/derivations/sphere.py`):
+///
+/// `(1 + k + ε r′²) a = G − [c_n λ (1 + k + ε r′²) + (c_1 (1 + k) + c_k k) r′/r + ε c_rr r′ r″] v²
+///  − C [ℓ (λ r + r′) + ℓ_b λ b/2]`,
+///
+/// with λ = (dM/dx)/M = n r′/r. With k = ½ and the log's growth it is
+/// eqs. (4), (6), (14), (15), (21), (32), (32)+(36).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Balance {
+    /// ε: 1 where the kinetic energy's r′² v²/2 (the radial growth, eq. (7)) is kept.
+    pub inertia_r2: f64,
+    /// c_n: the coefficient of λ (the momentum of the snow picked up).
+    pub c_n: f64,
+    /// c_1: the coefficient of (1 + k) r′/r (torque about the contact line).
+    pub c_1: f64,
+    /// c_k: the coefficient of k r′/r (torque about the centre).
+    pub c_k: f64,
+    /// c_rr: the coefficient of ε r′ r″.
+    pub c_rr: f64,
+    /// ℓ: the coefficient of the lift C (λ r + r′) (term (36)).
+    pub lift: f64,
+    /// ℓ_b: the coefficient of the slab's half depth, C λ b/2.
+    pub lift_b: f64,
+}
+
+impl Balance {
+    /// Σ, the coefficient of (r′/r) v² in `a` at large r:
+    /// `a ≈ G/(1 + k) − Σ (r′/r) v²`, with `Σ = c_n n + c_1 + c_k k/(1 + k)`.
+    pub fn sigma(&self, shape: Shape) -> f64 {
+        let (k, n) = (shape.inertia_factor(), shape.mass_exponent());
+        self.c_n * n + self.c_1 + self.c_k * k / (1.0 + k)
+    }
+
+    /// The acceleration, m/s², at speed `v` for a body of `shape` of size
+    /// and growth `gr` (the equation of the type doc).
+    pub fn acceleration(&self, s: &Scenario, gr: &Growth, v: f64) -> f64 {
+        let k = s.shape().inertia_factor();
+        let (r, r1, r2, lam) = (gr.r, gr.dr_dx, gr.d2r_dx2, gr.lambda);
+        let inertia = 1.0 + k + self.inertia_r2 * r1 * r1;
+        let v2_coeff = self.c_n * lam * inertia
+            + (self.c_1 * (1.0 + k) + self.c_k * k) * r1 / r
+            + self.inertia_r2 * self.c_rr * r1 * r2;
+        let lift =
+            s.g_normal() * (self.lift * (lam * r + r1) + self.lift_b * lam * s.snow_depth() / 2.0);
+        (s.g_along() - v2_coeff * v * v - lift) / inertia
+    }
 }
 
 impl Derivation {
@@ -83,6 +150,48 @@ impl Derivation {
             lift,
             lift_b2,
             inertia_b2,
+            drag_b3: 0.0,
+            shape: Shape::Cylinder,
+        }
+    }
+
+    /// How the derivation balances forces, torques or energy, for any shape
+    /// ([`Balance`]).
+    pub const fn balance(self) -> Balance {
+        let (inertia_r2, c_n, c_1, c_k, c_rr, lift, lift_b) = match self {
+            Derivation::Snowless => (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+            Derivation::TorqueAboutCentre => (0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0),
+            Derivation::TorqueAboutContact => (0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0),
+            Derivation::Energy => (1.0, 0.5, 0.0, 0.0, 1.0, 1.0, 1.0),
+            Derivation::EnergyLinearised => (0.0, 0.5, 0.0, 0.0, 0.0, 1.0, 0.0),
+            Derivation::LagrangianPrinted => (1.0, 1.0, 0.0, 0.0, 2.0, 1.0, 1.0),
+            Derivation::QuasiCircular => (0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0),
+            Derivation::QuasiCircularLift => (0.0, 0.5, 0.0, 0.0, 0.0, 1.0, 0.0),
+        };
+        Balance {
+            inertia_r2,
+            c_n,
+            c_1,
+            c_k,
+            c_rr,
+            lift,
+            lift_b,
+        }
+    }
+
+    /// The coefficients of the common form for a body of `shape` on the
+    /// area law π r² = π r0² + b x (the log; the ball with its natural swath
+    /// 2r). For the log, [`Derivation::coefficients`]; for the ball, from
+    /// [`Derivation::balance`] with r′ = b/(2πr), r″ = −r′²/r, λ = n r′/r
+    /// (`docs/snowball-and-losses.md` §1.2):
+    /// `c_v = Σ/2`, `κ = 3ε/(2(1 + k))`, `λ₁ = ℓ(n + 1)/(2(1 + k))`,
+    /// `λ₂ = 3 ℓ_b n/(4(1 + k))`, `c₃ = ε (c_n n − c_rr)/(8(1 + k))`.
+    pub fn coefficients_for(self, shape: Shape) -> Coefficients {
+        match shape {
+            Shape::Cylinder => self.coefficients(),
+            Shape::Sphere => self
+                .balance()
+                .area_law_coefficients(shape, self.coefficients().accretes),
         }
     }
 
@@ -101,8 +210,35 @@ impl Derivation {
     }
 }
 
+impl Balance {
+    /// The common form's coefficients of this balance for `shape` on the
+    /// area law ([`Derivation::coefficients_for`]).
+    pub fn area_law_coefficients(&self, shape: Shape, accretes: bool) -> Coefficients {
+        let (k, n) = (shape.inertia_factor(), shape.mass_exponent());
+        Coefficients {
+            accretes,
+            drag: self.sigma(shape) / 2.0,
+            lift: self.lift * (n + 1.0) / (2.0 * (1.0 + k)),
+            lift_b2: 3.0 * self.lift_b * n / (4.0 * (1.0 + k)),
+            inertia_b2: 3.0 * self.inertia_r2 / (2.0 * (1.0 + k)),
+            drag_b3: self.inertia_r2 * (self.c_n * n - self.c_rr) / (8.0 * (1.0 + k)),
+            shape,
+        }
+    }
+
+    /// The late-time acceleration over g sin α of a body of `shape` whose
+    /// swath grows like r^p (p = 1 for the ball's natural swath 2r, 0 for a
+    /// fixed width or the log's length):
+    /// `a∞/G = 1/[(1 + k)(1 + 2Σ/(n − p))]` (`docs/snowball-and-losses.md` §1.3).
+    pub fn terminal_fraction(&self, shape: Shape, swath_power: f64) -> f64 {
+        let (k, n) = (shape.inertia_factor(), shape.mass_exponent());
+        1.0 / ((1.0 + k) * (1.0 + 2.0 * self.sigma(shape) / (n - swath_power)))
+    }
+}
+
 impl Coefficients {
-    /// Acceleration at `(x, v)` of the common form (module doc).
+    /// Acceleration at `(x, v)` of the common form (module doc), on the area
+    /// law π r² = π r0² + b x.
     pub fn acceleration(&self, s: &Scenario, x: f64, v: f64) -> f64 {
         Acceleration::new(self, s).at(x, v)
     }
@@ -113,11 +249,16 @@ impl Coefficients {
     /// (fn. 4), G/6 for eq. (6), G/3 for eqs. (14), (15), (32) (eq. (35)),
     /// 2G/9 for eq. (21) as printed; 2/3 throughout for the snowless
     /// model (App. A, eq. (95)). Always `Some` for the circular models.
+    ///
+    /// For the ball on the area law 2/3 becomes 5/7: 1/6 (`torque-cm`), 1/7
+    /// (`torque-contact`), 2/7 (the energy family), 5/28 (eq. (21) printed),
+    /// `docs/snowball-and-losses.md` §1.3.
     pub fn terminal_fraction(&self) -> Option<f64> {
+        let (num, den) = self.shape.push_ratio();
         if self.accretes {
-            Some((2.0 / 3.0) / (1.0 + 2.0 * self.drag))
+            Some((num / den) / (1.0 + 2.0 * self.drag))
         } else {
-            Some(2.0 / 3.0)
+            Some(num / den)
         }
     }
 
@@ -138,13 +279,14 @@ impl Coefficients {
 
     /// The initial acceleration with v = 0 is not positive below this slope
     /// (fn. 7: the snow must be lifted). From the common form at x = 0, v = 0:
-    /// `tan α* = 3(λ₁ b r0 + λ₂ b²/3)/(2π r0²)`. `None` when the model has
-    /// no lift term (it always starts).
+    /// `tan α* = 3(λ₁ b r0 + λ₂ b²/3)/(2π r0²)` (for the ball 7/5 in place
+    /// of 3/2). `None` when the model has no lift term (it always starts).
     pub fn stall_slope(&self, b: f64, r0: f64) -> Option<Radians> {
         if !self.accretes || (self.lift == 0.0 && self.lift_b2 == 0.0) {
             return None;
         }
-        let tan = 3.0 * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (2.0 * PI * r0 * r0);
+        let (num, den) = self.shape.push_ratio();
+        let tan = den * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (num * PI * r0 * r0);
         Some(tan.atan())
     }
 }
@@ -155,13 +297,13 @@ impl Coefficients {
 /// `a = (2G/3 − c_v b v²/s − λ₁ C b/√(π s) − λ₂ C b²/(3s)) / (1 + κ b²/(6π s))`.
 ///
 /// Every constant (G = g sin α, C = g cos α, π r0², the products with the
-/// coefficients) is computed once in [`Acceleration::new`], so that one
+/// coefficients) is computed once in `AreaLaw::new`, so that one
 /// evaluation costs a division, plus a square root and a second division
 /// only for the models with lift or b² inertia terms. (Evaluating sin α and
 /// cos α on every call took half the time of an integration.)
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Acceleration {
-    /// 2G/3, m/s².
+struct AreaLaw {
+    /// 2G/3 (5G/7 for the ball), m/s².
     push: f64,
     /// π r0², m².
     s0: f64,
@@ -175,21 +317,71 @@ struct Acceleration {
     lift_b2: f64,
     /// κ b²/(6π), m².
     inertia: f64,
+    /// c₃ b³/π, m³.
+    drag_b3: f64,
+}
+
+/// The acceleration of one model on one scenario: the common form on the
+/// area law, or the [`Balance`] itself for a ball with a fixed swath width.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Acceleration {
+    /// π r² = π r0² + b x: the log, and the ball with its natural swath.
+    Area(AreaLaw),
+    /// Any growth law, from [`growth_at`].
+    General {
+        balance: Balance,
+        accretes: bool,
+        scenario: Scenario,
+    },
 }
 
 impl Acceleration {
     fn new(c: &Coefficients, s: &Scenario) -> Self {
+        Self::Area(AreaLaw::new(c, s))
+    }
+
+    /// The acceleration of `derivation` run with `c` on `s`: the common form
+    /// where r(x) follows the area law, else the balance.
+    fn of(derivation: Derivation, c: &Coefficients, s: &Scenario) -> Self {
+        if s.follows_area_law() {
+            Self::new(c, s)
+        } else {
+            Self::General {
+                balance: derivation.balance(),
+                accretes: c.accretes,
+                scenario: *s,
+            }
+        }
+    }
+
+    /// Acceleration at `(x, v)`, m/s².
+    fn at(&self, x: f64, v: f64) -> f64 {
+        match self {
+            Self::Area(law) => law.at(x, v),
+            Self::General {
+                balance,
+                accretes,
+                scenario,
+            } => balance.acceleration(scenario, &growth_at(scenario, x, *accretes), v),
+        }
+    }
+}
+
+impl AreaLaw {
+    fn new(c: &Coefficients, s: &Scenario) -> Self {
         let b = if c.accretes { s.snow_depth() } else { 0.0 };
         let r0 = s.initial_radius();
         let gc = s.g_normal();
+        let (num, den) = c.shape.push_ratio();
         Self {
-            push: 2.0 * s.g_along() / 3.0,
+            push: num * s.g_along() / den,
             s0: PI * r0 * r0,
             b,
             drag: c.drag * b,
             lift: c.lift * gc * b / PI.sqrt(),
             lift_b2: c.lift_b2 * gc * b * b / 3.0,
             inertia: c.inertia_b2 * b * b / (6.0 * PI),
+            drag_b3: c.drag_b3 * b * b * b / PI,
         }
     }
 
@@ -199,6 +391,9 @@ impl Acceleration {
         let mut a = self.push - self.drag * v * v * inv_s;
         if self.lift != 0.0 || self.lift_b2 != 0.0 {
             a -= self.lift * inv_s.sqrt() + self.lift_b2 * inv_s;
+        }
+        if self.drag_b3 != 0.0 {
+            a -= self.drag_b3 * v * v * inv_s * inv_s;
         }
         if self.inertia != 0.0 {
             a /= 1.0 + self.inertia * inv_s;
@@ -220,6 +415,9 @@ impl Acceleration {
 pub struct CircularModel {
     derivation: Derivation,
     coefficients: Coefficients,
+    /// Whether `coefficients` were given ([`CircularModel::with_coefficients`])
+    /// rather than taken from the scenario's shape.
+    given: bool,
 }
 
 impl CircularModel {
@@ -228,6 +426,7 @@ impl CircularModel {
         Self {
             derivation,
             coefficients: derivation.coefficients(),
+            given: false,
         }
     }
 
@@ -238,6 +437,7 @@ impl CircularModel {
         Self {
             derivation,
             coefficients,
+            given: true,
         }
     }
 
@@ -246,9 +446,19 @@ impl CircularModel {
         self.derivation
     }
 
-    /// The coefficients it runs with.
+    /// The coefficients it runs with on a log (on a ball:
+    /// [`Derivation::coefficients_for`]).
     pub fn coefficients(&self) -> Coefficients {
         self.coefficients
+    }
+
+    /// The coefficients it runs with on `scenario`.
+    pub fn coefficients_on(&self, scenario: &Scenario) -> Coefficients {
+        if self.given {
+            self.coefficients
+        } else {
+            self.derivation.coefficients_for(scenario.shape())
+        }
     }
 }
 
@@ -369,11 +579,11 @@ impl Model for CircularModel {
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
         super::check_tolerances(self.kind(), scenario, opts)?;
-        let coeffs = self.coefficients;
+        let coeffs = self.coefficients_on(scenario);
         let mut system = CircularSystem {
             coeffs,
             scenario: *scenario,
-            accel: Acceleration::new(&coeffs, scenario),
+            accel: Acceleration::of(self.derivation, &coeffs, scenario),
             x_end: opts.x_end,
             mu: opts.mu,
             stop_on_hop: opts.on_hop == OnHop::Stop,

@@ -12,6 +12,11 @@
 //! which tends to `2G/(3(1+p))` (G/5 for eq. (4)). The coefficient of the
 //! decaying term is `7bK/6` for eq. (4), not `7bK/3` as printed (`docs/errata.md`, fn. 4).
 //! Time follows from `t(x) = ∫ dx/√u` by quadrature, and x(t) by inverting it.
+//!
+//! The ball on its natural swath 2r follows the same law with 2/3 replaced
+//! by 5/7 and c_v = 23/14 for its `torque-cm` (`docs/snowball-and-losses.md`
+//! §1.4): `u = (G s/(3b)) [1 − (s0/s)^{30/7}]` from rest, the closed form of
+//! the letter in The Physics Teacher 57, p. 436 (2019), a → G/6.
 
 use std::f64::consts::PI;
 
@@ -48,10 +53,14 @@ pub struct DragOnlyClosedForm {
     v0: f64,
     /// p = 2 c_v.
     p: f64,
+    /// 1/(1 + k) as (num, den): (2, 3) for the log, (5, 7) for the ball.
+    push: (f64, f64),
 }
 
 impl DragOnlyClosedForm {
-    /// The solution for drag coefficient `drag` (= c_v; 7/6 for eq. (4)).
+    /// The solution for drag coefficient `drag` (= c_v; 7/6 for eq. (4),
+    /// 23/14 for the ball's `torque-cm`) on the scenario's shape (the area
+    /// law: a ball with a fixed swath width does not follow it).
     pub fn new(s: &Scenario, drag: f64) -> Self {
         let r0 = s.initial_radius();
         Self {
@@ -60,6 +69,7 @@ impl DragOnlyClosedForm {
             s0: PI * r0 * r0,
             v0: s.initial_speed(),
             p: 2.0 * drag,
+            push: s.shape().push_ratio(),
         }
     }
 
@@ -78,7 +88,8 @@ impl DragOnlyClosedForm {
         } else {
             (e - (-p * e.ln_1p()).exp_m1()) / e
         };
-        self.v0 * self.v0 * (-p * e.ln_1p()).exp() + 4.0 * self.g_along / (3.0 * (1.0 + p)) * x * q
+        self.v0 * self.v0 * (-p * e.ln_1p()).exp()
+            + 2.0 * self.push.0 * self.g_along / (self.push.1 * (1.0 + p)) * x * q
     }
 
     /// Speed at distance `x`, m/s.
@@ -90,7 +101,7 @@ impl DragOnlyClosedForm {
     pub fn acceleration(&self, x: Meters) -> MetersPerSecondSquared {
         let p = self.p;
         let decay = (-(p + 1.0) * self.eps(x).ln_1p()).exp(); // (s0/s)^{p+1}
-        2.0 * self.g_along / (3.0 * (1.0 + p)) * (1.0 + p * decay)
+        self.push.0 * self.g_along / (self.push.1 * (1.0 + p)) * (1.0 + p * decay)
             - 0.5 * p * self.b / self.s0 * self.v0 * self.v0 * decay
     }
 
@@ -103,8 +114,8 @@ impl DragOnlyClosedForm {
             if v > 0.0 {
                 2.0 * w / v
             } else {
-                // w = 0 from rest: the limit of 2w/v is 2/√(4G/3).
-                2.0 / (4.0 * self.g_along / 3.0).sqrt()
+                // w = 0 from rest: the limit of 2w/v is 2/√(4G/3) (log).
+                2.0 / (2.0 * self.push.0 * self.g_along / self.push.1).sqrt()
             }
         };
         quadrature::integrate(&mut f, x_a.sqrt(), x_b.sqrt(), QUAD_RTOL, 0.0)
@@ -259,9 +270,6 @@ fn first_contact_event(
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct LoneyModel;
 
-/// Drag coefficient of eq. (4): `7/(6π)·b v²/r²` = `c_v b v²/(π r²)` with c_v = 7/6.
-const LONEY_DRAG: f64 = 7.0 / 6.0;
-
 impl Model for LoneyModel {
     fn kind(&self) -> ModelKind {
         ModelKind::Loney
@@ -269,10 +277,12 @@ impl Model for LoneyModel {
 
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
-        let cf = DragOnlyClosedForm::new(scenario, LONEY_DRAG);
+        ModelKind::Loney.check_shape(scenario)?;
         // Loney's solution is that of eq. (4): its contact forces are those of
-        // the circular model of eq. (4) on the closed-form trajectory.
-        let eq4 = Derivation::TorqueAboutCentre.coefficients();
+        // the circular model of eq. (4) on the closed-form trajectory. On the
+        // ball, that of its `torque-cm` (c_v = 23/14).
+        let eq4 = Derivation::TorqueAboutCentre.coefficients_for(scenario.shape());
+        let cf = DragOnlyClosedForm::new(scenario, eq4.drag);
         let forces_at =
             |x: f64| circular_forces(&eq4, scenario, x, cf.speed(x), cf.acceleration(x));
         // Where the run ends: t_end, or x_end if that comes first, or the

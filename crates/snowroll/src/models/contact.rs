@@ -22,7 +22,7 @@ use std::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 
 use super::circular::Coefficients;
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, Shape};
 use crate::units::{Meters, MetersPerSecond, MetersPerSecondSquared, Newtons};
 
 /// The force of the slope on the log, `(−F, N)` in the axes (x down the
@@ -59,6 +59,12 @@ impl ContactForces {
 ///
 /// with M = πρl r² (eq. (8)). For the snowless cylinder (App. A, b = 0,
 /// a = 2G/3) this is `N = m g cos α`, `F = m g sin α/3`.
+///
+/// For the ball, with p = M(v, ṙ) as for the log
+/// (`docs/snowball-and-losses.md` §1.2):
+/// `N/M = C + r′ a + (λ r′ + r″) v²`, `F/M = G − a − λ v²`, with r′, r″, λ of
+/// its growth law ([`crate::physics::Growth`]); on the log's law these are
+/// the formulae above. The snowless ball: N = M C, F = (2/7) M G.
 pub fn circular_forces(
     coeffs: &Coefficients,
     s: &Scenario,
@@ -66,6 +72,15 @@ pub fn circular_forces(
     v: MetersPerSecond,
     a: MetersPerSecondSquared,
 ) -> ContactForces {
+    if s.shape() == Shape::Sphere {
+        let gr = crate::physics::growth_at(s, x, coeffs.accretes);
+        let normal = s.g_normal() + gr.dr_dx * a + (gr.lambda * gr.dr_dx + gr.d2r_dx2) * v * v;
+        let friction = s.g_along() - a - gr.lambda * v * v;
+        return ContactForces {
+            normal_n: gr.mass * normal,
+            friction_n: gr.mass * friction,
+        };
+    }
     let (b, r, m) = if coeffs.accretes {
         (
             s.snow_depth(),

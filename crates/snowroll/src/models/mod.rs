@@ -12,7 +12,7 @@ mod tolerance;
 mod turn_by_turn;
 mod validity;
 
-pub use circular::{CircularModel, Coefficients, Derivation};
+pub use circular::{Balance, CircularModel, Coefficients, Derivation};
 pub use closed_form::{DragOnlyClosedForm, LoneyModel};
 pub use contact::{circular_forces, ContactForces};
 pub use exact_geometry::SectorBody;
@@ -37,7 +37,7 @@ use std::str::FromStr;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{ParamError, SimError};
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, Shape};
 use crate::trajectory::{SimOptions, Trajectory};
 
 /// Turns of a turn-model run when the caller does not say (`snowroll turns`,
@@ -247,6 +247,64 @@ impl ModelKind {
             _ => self
                 .derivation()
                 .and_then(|d| d.coefficients().terminal_fraction()),
+        }
+    }
+
+    /// The shapes the model supports (`docs/snowball-and-losses.md` §1.2):
+    /// every circular model and Loney's closed form take the ball too; the
+    /// turn models of §3 know only the log.
+    pub fn shapes(self) -> &'static [Shape] {
+        if self.is_circular() {
+            &Shape::ALL
+        } else {
+            &[Shape::Cylinder]
+        }
+    }
+
+    /// Refuses a scenario whose shape the model's derivation does not cover.
+    ///
+    /// # Errors
+    /// [`ParamError::ShapeNotSupported`] naming the model and why: a turn
+    /// model with a ball; Loney's closed form with a ball of fixed swath
+    /// width (it needs the area law π r² = π r0² + b x).
+    pub fn check_shape(self, s: &Scenario) -> Result<(), ParamError> {
+        let reason = match (self, s.shape()) {
+            (_, Shape::Cylinder) => return Ok(()),
+            (ModelKind::Turns | ModelKind::TurnsExact, Shape::Sphere) => {
+                "the turn-by-turn geometry of §3 is the log's: a ball that picks up a swath in \
+                 one turn gains a band round its equator, not a shell, and stops being a ball \
+                 (docs/snowball-and-losses.md §1.2); use a circular model such as torque-cm"
+            }
+            (ModelKind::Loney, Shape::Sphere) if s.swath_width().is_some() => {
+                "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
+                 2r; with a fixed --swath-width integrate torque-cm instead"
+            }
+            _ => return Ok(()),
+        };
+        Err(ParamError::ShapeNotSupported {
+            model: self.id(),
+            shape: s.shape().id(),
+            reason,
+        })
+    }
+
+    /// Late-time acceleration over g sin α on `scenario`'s shape and swath
+    /// (`docs/snowball-and-losses.md` §1.3); `None` for the turn models.
+    /// On the log it is [`ModelKind::terminal_fraction`].
+    pub fn terminal_fraction_on(self, scenario: &Scenario) -> Option<f64> {
+        let derivation = match self {
+            ModelKind::Loney => Derivation::TorqueAboutCentre,
+            kind => kind.derivation()?,
+        };
+        let c = derivation.coefficients_for(scenario.shape());
+        if scenario.follows_area_law() || !c.accretes {
+            c.terminal_fraction()
+        } else {
+            Some(
+                derivation
+                    .balance()
+                    .terminal_fraction(scenario.shape(), 0.0),
+            )
         }
     }
 

@@ -138,6 +138,7 @@ impl RunParams {
             ("density".into(), n(s.density)),
             ("length".into(), n(s.length)),
             ("v0".into(), n(s.v0)),
+            ("shape".into(), s.shape.to_string()),
             ("t_end".into(), n(self.t_end)),
             ("x_end".into(), opt(self.x_end)),
             (
@@ -150,6 +151,9 @@ impl RunParams {
             ("collision".into(), self.collision.to_string()),
             ("on_hop".into(), self.on_hop.to_string()),
         ];
+        if let Some(w) = s.swath_width {
+            lines.push(("swath_width".into(), n(w)));
+        }
         if let Some(mu) = self.mu {
             lines.push(("mu".into(), n(mu)));
         }

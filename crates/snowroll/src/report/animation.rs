@@ -15,7 +15,7 @@ use std::f64::consts::TAU;
 
 use serde::Serialize;
 
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, Shape};
 use crate::trajectory::Trajectory;
 
 use super::files::{comment_header, utf8};
@@ -62,6 +62,10 @@ pub struct Animation {
     /// snow is spread evenly), `false` for the turn models (the snow of the
     /// current turn is an arc of depth b on a round log of the turn's radius).
     pub circular: bool,
+    /// The body: `cylinder` (a log, drawn as its cross-section with a wooden
+    /// core) or `sphere` (a snowball, drawn as a shaded ball of snow whose
+    /// radius grows), issue 11.
+    pub shape: Shape,
     /// Radius at the start of turn k, m, for k = 0, 1, … up to the last frame's turn.
     pub turn_start_radius_m: Vec<f64>,
     /// Frames in time order.
@@ -115,19 +119,38 @@ impl Animation {
             });
         }
         let turn_start_radius_m = turn_start_radii(&all, circular);
-        let anim = Self {
-            title: format!("The log rolling down the slope ({})", traj.model.id()),
-            caption: format!(
-                "Cross-section of the log, {}: {}. Snow picked up in each turn is drawn as a layer.",
-                traj.model.equation(),
-                traj.model.description()
+        let shape = scenario.shape();
+        let (title, caption) = match shape {
+            Shape::Cylinder => (
+                format!("The log rolling down the slope ({})", traj.model.id()),
+                format!(
+                    "Cross-section of the log, {}: {}. Snow picked up in each turn is drawn as a layer.",
+                    traj.model.equation(),
+                    traj.model.description()
+                ),
             ),
+            Shape::Sphere => (
+                format!("The snowball rolling down the slope ({})", traj.model.id()),
+                format!(
+                    "The snowball (a uniform ball of snow, shaded to tell it from the log's cross-section), {} for a ball: its radius grows as it picks up the layer over its {}; the line on it shows it turning.",
+                    traj.model.equation(),
+                    match scenario.swath_width() {
+                        None => "diameter (π r² = π r0² + b x)".to_string(),
+                        Some(w) => format!("swath of {w} m"),
+                    }
+                ),
+            ),
+        };
+        let anim = Self {
+            title,
+            caption,
             model: traj.model.id().to_string(),
             equation: traj.model.equation().to_string(),
             alpha_deg: crate::scenario::ScenarioFile::from(*scenario).alpha_deg,
             snow_depth: scenario.snow_depth(),
             r0: scenario.initial_radius(),
             circular,
+            shape,
             turn_start_radius_m,
             frames: thin(&all, max_frames),
         };
@@ -182,6 +205,7 @@ impl Animation {
             "b_m": self.snow_depth,
             "r0": self.r0,
             "circular": self.circular,
+            "shape": self.shape,
             "ring_r": self.turn_start_radius_m.iter().map(|&r| round_sig(r)).collect::<Vec<_>>(),
             "t": col(|f| f.t_s),
             "x": col(|f| f.x_m),
@@ -207,6 +231,7 @@ impl Animation {
             ("alpha_deg".to_string(), self.alpha_deg.to_string()),
             ("snow_depth".to_string(), self.snow_depth.to_string()),
             ("r0".to_string(), self.r0.to_string()),
+            ("shape".to_string(), self.shape.to_string()),
             (
                 "turn_start_radius_m".to_string(),
                 self.turn_start_radius_m

@@ -44,6 +44,8 @@ mod intro;
 mod markdown;
 #[cfg(feature = "plot")]
 mod paper;
+#[cfg(feature = "plot")]
+mod snowball;
 
 #[cfg(feature = "plot")]
 pub use animation::{Animation, Frame};

@@ -413,6 +413,9 @@ pub fn build_paper_report(
     )
     .with_series(Series::new("lost in collisions (sum)", ledger_lost));
 
+    tick("the snowball");
+    let snowball = super::snowball::snowball_figure(lab, &log_times())?;
+
     tick("animation");
     let anim_traj = run(
         ModelKind::Turns,
@@ -463,6 +466,7 @@ pub fn build_paper_report(
         Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties.").supports(&["multi-turn-never-settles", "first-turn-58-64-69", "eq89-collision", "eq73-truncates-exact"]),
         Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {:.4} G within turns and {:.4} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g), paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g))).supports(&["multi-turn-mean-four-ninths", "multi-turn-never-settles"]),
         Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed.").supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),
+        snowball,
     ]
     .into_iter()
     .map(short)

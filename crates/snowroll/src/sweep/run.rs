@@ -65,7 +65,10 @@ fn fast_row(point: &Point) -> Option<SweepRow> {
         kind => kind.derivation()?,
     };
     let o = &point.options;
-    if o.tolerances.rtol < FAST_MIN_RTOL {
+    // The closed form is the log's (2G/3); the ball takes the ODE path.
+    if o.tolerances.rtol < FAST_MIN_RTOL
+        || point.scenario.shape() != crate::scenario::Shape::Cylinder
+    {
         return None;
     }
     let c = derivation.coefficients();

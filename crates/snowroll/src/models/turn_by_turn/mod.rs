@@ -746,6 +746,7 @@ impl Model for TurnModel {
 
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
+        self.kind().check_shape(scenario)?;
         check_turn_scale(scenario, opts)?;
         crate::models::check_tolerances(self.kind(), scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);

@@ -370,6 +370,7 @@ pub fn run_turns(
             .collect::<Vec<_>>()
             .join(", "),
     })?;
+    kind.check_shape(scenario)?;
     TurnModel::new(variant).run_table(scenario, opts)
 }
 

@@ -19,7 +19,8 @@
 //! The checks live by part of the note: [`circular`] (§2, fn. 4, fn. 7),
 //! [`terminal`] (§2.4), [`app_a`] (App. A), [`first_turn`] (§3.1–3.3),
 //! [`stall`] (fn. 7 in §3), [`multi_turn`] (§3.4), [`contact`] (fn. 10),
-//! [`slip`] (issue 10: the smallest μ).
+//! [`slip`] (issue 10: the smallest μ),
+//! [`snowball`] (issue 11: the ball, and The Physics Teacher 57 (2019)).
 
 mod app_a;
 mod circular;
@@ -28,6 +29,7 @@ mod first_turn;
 mod multi_turn;
 mod quadrature;
 mod slip;
+mod snowball;
 mod stall;
 mod table;
 mod terminal;
@@ -149,16 +151,17 @@ impl Lab {
         }
         match kind.derivation() {
             Some(d) => {
-                let coefficients = self
+                // The library's model takes its coefficients from the
+                // scenario's shape; a replacement runs as given.
+                let model = self
                     .coefficients
                     .iter()
                     .find(|(dd, _)| *dd == d)
-                    .map_or_else(|| d.coefficients(), |(_, c)| *c);
-                crate::models::Model::simulate(
-                    &CircularModel::with_coefficients(d, coefficients),
-                    scenario,
-                    opts,
-                )
+                    .map_or_else(
+                        || CircularModel::new(d),
+                        |(_, c)| CircularModel::with_coefficients(d, *c),
+                    );
+                crate::models::Model::simulate(&model, scenario, opts)
             }
             None => kind.build().simulate(scenario, opts),
         }

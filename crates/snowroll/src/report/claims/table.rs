@@ -26,6 +26,10 @@ use super::multi_turn::{
     JUMP_ORDER, LONG_RUN, NOTE_APART, SWING, TRUNCATION_ORDER,
 };
 use super::slip::{slip_mu_min, MU_AT_END, MU_AT_REST};
+use super::snowball::{
+    ball_terminal_fractions, five_sevenths, tpt_letter, BALL_TERMINAL_LIMIT, FIVE_SEVENTHS,
+    TPT_CLOSED_FORM, TPT_OTHERS_APART,
+};
 use super::stall::{
     stall_in_first_turn, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_MARGIN,
     TURN_STALL_ORDER, TURN_START, TURN_START_EXACT,
@@ -365,5 +369,38 @@ pub static CLAIMS: &[ClaimCheck] = &[
             expected: Verdict::Holds,
         },
         check: slip_mu_min,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowball-five-sevenths",
+            paper_ref: "issue 11; App. A for a ball",
+            statement: "A uniform ball (I = (2/5) M r²) rolling without slipping on a bare slope accelerates at (5/7) g sin α.",
+            method: "the snowless model with shape = sphere on the default slope: a/G at every sample and x(10 s) against 5Gt²/14",
+            tolerances: &[FIVE_SEVENTHS],
+            expected: Verdict::Holds,
+        },
+        check: five_sevenths,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowball-terminal-fractions",
+            paper_ref: "issue 11; §2 for a ball (docs/snowball-and-losses.md §1.3)",
+            statement: "The always-round snowball (swath 2r) tends to a/(g sin α) = 1/6 (torque about the centre, eq. (4)'s balance), 1/7 (contact line, eq. (6)), 2/7 (energy, eqs. (14), (15), (32), (32)+(36)), 5/28 (eq. (21) as printed).",
+            method: "each circular model with shape = sphere from rest to x = 5e5 m; a/G against the derived fraction plus the derived 1/r approach of the models with the lift term",
+            tolerances: &[BALL_TERMINAL_LIMIT],
+            expected: Verdict::Holds,
+        },
+        check: ball_terminal_fractions,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "tpt-letter-closed-form",
+            paper_ref: "The Physics Teacher 57, p. 436 (2019), on S. Rubin, TPT 57 (2019); §2.1.1 (eq. (4)) for a ball",
+            statement: "A snowball rolling down a snowy incline has a closed-form motion whose acceleration starts at (5/7) g sin α and tends to (1/6) g sin α (the letter's C − 60V² = 14 r A, V = dr/dt, dr/dφ = k/2π).",
+            method: "the ball's torque-cm (swath 2r, so b = k) from rest for 100 s against v² = (G s/(3b))(1 − (s0/s)^{30/7}) and a = (G/6)(1 + (23/7)(s0/s)^{30/7}), s = π r² (docs/snowball-and-losses.md §1.4); the ball's other derivations at 100 s against the same v²",
+            tolerances: &[TPT_CLOSED_FORM, TPT_OTHERS_APART],
+            expected: Verdict::Holds,
+        },
+        check: tpt_letter,
     },
 ];
