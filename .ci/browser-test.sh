@@ -14,7 +14,8 @@
 #     supports and each is linked from a claim; the opening section has the
 #     geometry drawing and one row per model; the errata are there,
 #   - at a phone's width (400 px) no figure overflows and the page does not
-#     scroll sideways.
+#     scroll sideways,
+#   - at both widths the animation's distance labels do not run together.
 # Screenshots (desktop and phone widths) are kept in REPORT_DIR as
 # browser-desktop.png and browser-phone.png. Exits non-zero on any failure.
 set -euo pipefail
@@ -70,6 +71,9 @@ function copy() {
   if (d && d.hasAttribute('data-layout-overflow')) {
     document.documentElement.setAttribute('data-layout-overflow', d.getAttribute('data-layout-overflow'));
     document.documentElement.setAttribute('data-layout-width', d.getAttribute('data-layout-width'));
+    if (d.hasAttribute('data-anim-label-gap')) {
+      document.documentElement.setAttribute('data-anim-label-gap', d.getAttribute('data-anim-label-gap'));
+    }
   } else { setTimeout(copy, 100); }
 }
 f.addEventListener('load', copy);

@@ -145,6 +145,16 @@ def main():
     check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
           "the errata section is there, with a row per erratum")
 
+    def label_gap_check(attrs, where):
+        gap = attrs.get("data-anim-label-gap")
+        try:
+            ok = gap == "none" or float(gap) >= 0.0
+        except (TypeError, ValueError):
+            ok = False
+        check(ok, f"{where}: the animation's distance labels do not overlap (narrowest gap: {gap} px)")
+
+    label_gap_check(dom.root_attrs, "at 1280 px")
+
     raw = (report_dir / "report.html").read_text(encoding="utf-8")
     external = re.findall(r"""(?:src|href)\s*=\s*["']?(?:https?:)?//[^"'\s>]+|url\(\s*["']?(?:https?:)?//[^)]+\)|@import|<link\b""", raw)
     check(not external, f"no external resources referenced ({external[:3]})")
@@ -157,6 +167,7 @@ def main():
         check(overflow == "",
               f"at a phone's width ({width} px) no figure overflows and the page does not scroll sideways "
               f"(overflowing: {overflow!r})")
+        label_gap_check(phone.root_attrs, f"at a phone's width ({width} px)")
 
     if failures:
         print(f"browser-test: {len(failures)} check(s) failed", file=sys.stderr)

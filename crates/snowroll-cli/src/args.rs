@@ -399,7 +399,7 @@ fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind
     PossibleValuesParser::new(
         ModelKind::ALL
             .into_iter()
-            .filter(|k| snowroll::TurnVariant::of(*k).is_some())
+            .filter(|k| k.is_turn_model())
             .map(|k| PossibleValue::new(k.id()).alias(k.alias())),
     )
     .try_map(|name| name.parse::<ModelKind>())

@@ -24,7 +24,6 @@ use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::{
     run_turns, validity_warnings, CollisionModel, ModelKind, OnHop, ParamError, RunParams,
     Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
-    TurnVariant,
 };
 
 /// A bad parameter: `ValueError` with the library's message.
@@ -347,7 +346,7 @@ fn simulate<'py>(
         on_hop,
     };
     let kind = inputs.model()?;
-    if turns.is_some() && TurnVariant::of(kind).is_none() {
+    if turns.is_some() && !kind.is_turn_model() {
         return Err(PyValueError::new_err(format!(
             "turns applies only to the turn models turns, turns-exact, not to {}",
             kind.id()
@@ -421,7 +420,7 @@ fn turns<'py>(
         on_hop,
     };
     let kind = inputs.model()?;
-    if TurnVariant::of(kind).is_none() {
+    if !kind.is_turn_model() {
         return Err(PyValueError::new_err(format!(
             "turns() needs a turn model, one of turns, turns-exact (aliases eq73, eq88), not {}",
             kind.id()

@@ -18,6 +18,7 @@
   var TAU = 2 * Math.PI;
   var TICK_MS = 40;          // one tick of the clock, ms of wall time
   var HOLD_S = 0.8;          // pause at the end before looping, s of wall time
+  var LABEL_GAP_PX = 12;     // least blank space between two distance labels, px
   var n = A.t.length;
   var alpha = A.alpha_deg * Math.PI / 180;
   var rMax = Math.max.apply(null, A.r.concat(A.ring_r)) + (A.circular ? 0 : A.b_m);
@@ -39,11 +40,15 @@
     draw();
   }
 
+  // The smallest of 1, 2, 5 times a power of ten that is at least raw.
   function niceStep(raw) {
     var p = Math.pow(10, Math.floor(Math.log10(raw)));
     var m = raw / p;
-    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+    return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * p;
   }
+
+  // Decimals that show a multiple of step exactly (step = 1, 2 or 5 x 10^p).
+  function decimalsOf(step) { return Math.max(0, -Math.floor(Math.log10(step) + 1e-9)); }
 
   function fmt(v, d) { return Number(v).toFixed(d); }
 
@@ -90,17 +95,30 @@
     ctx.moveTo(-far, ground); ctx.lineTo(far, ground);
     ctx.stroke();
 
-    // Distance markers on the ground.
-    var step = niceStep(W / s / 6);
-    var first = Math.ceil((x - W / s) / step) * step;
+    // Distance markers on the ground: at most six across the width, and
+    // never closer than the widest label plus LABEL_GAP_PX, measured in the
+    // font they are drawn in, so that on a narrow screen they thin out.
     ctx.fillStyle = '#27321d';
     ctx.font = '12px sans-serif';
     ctx.textAlign = 'center';
-    for (var m = first; m < x + W / s; m += step) {
+    var lo = x - W / s, hi = x + W / s;
+    var widest = Math.max(ctx.measureText(fmt(lo, 2) + ' m').width,
+                          ctx.measureText(fmt(hi, 2) + ' m').width);
+    var step = niceStep(Math.max(W / s / 6, (widest + LABEL_GAP_PX) / s));
+    var digits = decimalsOf(step);
+    var first = Math.ceil(lo / step) * step;
+    var gap = Infinity, lastRight = -Infinity;
+    for (var m = first; m < hi; m += step) {
       var px = (m - x) * s;
+      var text = fmt(m, digits) + ' m';
+      var half = ctx.measureText(text).width / 2;
+      gap = Math.min(gap, px - half - lastRight);
+      lastRight = px + half;
       ctx.fillRect(px - 0.75, ground, 1.5, 8);
-      ctx.fillText(fmt(m, step < 1 ? 2 : 0) + ' m', px, ground + 22);
+      ctx.fillText(text, px, ground + 22);
     }
+    // The narrowest space between two neighbouring labels, px (for the browser test).
+    document.documentElement.setAttribute('data-anim-label-gap', isFinite(gap) ? gap.toFixed(1) : 'none');
 
     // The snowball (issue 11): a shaded ball of snow whose radius grows, a
     // line from the centre to show it turning; no layers, no wooden core.

@@ -114,6 +114,7 @@
 
 pub mod error;
 pub mod integrate;
+pub mod model_kind;
 pub mod models;
 pub mod output;
 pub mod physics;

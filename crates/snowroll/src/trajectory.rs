@@ -6,8 +6,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::ParamError;
 use crate::integrate::{Stats, Tolerances};
+use crate::model_kind::ModelKind;
 use crate::models::CollisionModel;
-use crate::models::ModelKind;
 use crate::units::{
     Kilograms, Meters, MetersPerSecond, MetersPerSecondSquared, Newtons, Radians, Seconds,
 };

@@ -187,7 +187,13 @@ fn svg_has_title_axis_units_legend_and_provenance() {
     let runs = circular_runs();
     let svg = speed_chart(&runs).render_svg(&provenance()).unwrap();
     assert!(svg.starts_with("<svg"));
-    assert!(svg.contains("viewBox=\"0 0 960 600\""));
+    // Shown at 960 × 600, drawn on a canvas SVG_OVERSAMPLE times finer so
+    // that nearly flat curves do not step; lines join round.
+    let k = snowroll::plot::SVG_OVERSAMPLE;
+    assert!(k >= 4, "a whole pixel of the canvas must be at most 1/4 px");
+    assert!(svg.contains(&format!("viewBox=\"0 0 {} {}\"", 960 * k, 600 * k)));
+    assert!(svg.contains("width=\"960\" height=\"600\""));
+    assert!(svg.contains("stroke-linejoin=\"round\""));
     for text in ["Speed down the slope", "time t [s]", "speed v [m/s]"] {
         assert!(svg.contains(text), "missing {text:?}");
     }
@@ -468,8 +474,8 @@ fn markdown_has_the_claims_table_and_links_every_figure() {
     ));
     assert!(md.contains("**✗ refuted (expected: holds after correction (docs/errata.md (21)))**"));
     // The tolerances shown are the checks' own, with their reasons, and the
-    // report says what "as expected" means.
-    assert!(md.contains("(tolerances: q: relative 1e-8 (why))"));
+    // report says what "as expected" means, in the report's one notation.
+    assert!(md.contains("(tolerances: q: relative 10⁻⁸ (why))"));
     assert!(md.contains(snowroll::report::EXPECTATION_NOTE));
     // Extra tables, escaped like the claims.
     assert!(md.contains("| 1 | &lt;2&gt; |"));

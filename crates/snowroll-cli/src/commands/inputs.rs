@@ -3,7 +3,7 @@
 
 use anyhow::{anyhow, Result};
 use snowroll::integrate::Tolerances;
-use snowroll::{ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimOptions, TurnVariant};
+use snowroll::{ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimOptions};
 
 use crate::args::ScenarioArgs;
 
@@ -11,7 +11,7 @@ use crate::args::ScenarioArgs;
 pub fn turn_models() -> Vec<ModelKind> {
     ModelKind::ALL
         .into_iter()
-        .filter(|k| TurnVariant::of(*k).is_some())
+        .filter(|k| k.is_turn_model())
         .collect()
 }
 

@@ -4,7 +4,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
     check_tolerances, check_turn_scale, default_atol, format_number, tolerance_warning,
     validity_warnings, write_trajectory, ModelKind, RunParams, Sampling, Scenario, SimOptions,
-    StopReason, Trajectory, TurnVariant,
+    StopReason, Trajectory,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -23,7 +23,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         None => flags,
     };
     let model = inputs::model(&args.scenario, &ModelKind::ALL)?;
-    if args.turns.is_some() && TurnVariant::of(model).is_none() {
+    if args.turns.is_some() && !model.is_turn_model() {
         bail!(
             "--turns (config key `turns`) applies only to the turn models {}, not to {}",
             id_list(&turn_models()),

@@ -7,7 +7,6 @@ use anyhow::{bail, Context, Result};
 use snowroll::{
     check_tolerances, check_turn_scale, default_atol, format_number, run_turns, tolerance_warning,
     validity_warnings, write_turn_table, RunParams, Sampling, StopReason, TurnSummary, TurnTable,
-    TurnVariant,
 };
 
 use super::inputs::{self, id_list, turn_models};
@@ -32,7 +31,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     };
     let choices = turn_models();
     let model = inputs::model(&args.scenario, &choices)?;
-    if TurnVariant::of(model).is_none() {
+    if !model.is_turn_model() {
         bail!(
             "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
             id_list(&choices),

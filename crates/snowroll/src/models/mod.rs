@@ -1,7 +1,8 @@
 //! Every model of the note behind one interface.
 //!
-//! [`ModelKind`] is the only list of model names; [`ModelKind::build`] is the
-//! only place that maps a name to an implementation.
+//! [`ModelKind`] (generated from the one table [`MODEL_TABLE`]) is the only
+//! list of model names; [`ModelKind::build`] is the only place that maps a
+//! name to an implementation.
 
 mod circular;
 mod closed_form;
@@ -30,11 +31,6 @@ pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,
     THIN_SNOW_MAX_B_OVER_R0,
 };
-
-use std::fmt;
-use std::str::FromStr;
-
-use serde::{Deserialize, Serialize};
 
 use crate::error::{ParamError, SimError};
 use crate::scenario::{Scenario, Shape};
@@ -80,162 +76,10 @@ pub trait Model {
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError>;
 }
 
-/// The models of the note, by kebab-case id; each also answers to the
-/// equation alias in the second column.
-///
-/// | id | alias | equation |
-/// |---|---|---|
-/// | `snowless` | `eq95` | App. A, a = (2/3) g sin α |
-/// | `torque-cm` | `eq4` | §2.1.1, eq. (4) |
-/// | `torque-contact` | `eq6` | §2.1.2, eq. (6) |
-/// | `energy` | `eq14` | §2.2, eq. (14) |
-/// | `energy-thin` | `eq15` | eq. (15) |
-/// | `lagrangian-printed` | `eq21` | eq. (21) as printed |
-/// | `quasi-circular` | `eq32` | §2.4, eq. (32) |
-/// | `quasi-circular-lift` | `eq32+36` | eqs. (32) + (36) |
-/// | `loney` | `fn4` | fn. 4, closed form of eq. (4) |
-/// | `turns` | `eq73` | §3.4, eqs. (73), (76), collision eq. (89) |
-/// | `turns-exact` | `eq88` | §3.4, exact geometry, eq. (88) with (87) corrected |
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum ModelKind {
-    /// App. A: no snow, a = (2/3) g sin α, eq. (95).
-    #[serde(alias = "eq95")]
-    #[cfg_attr(feature = "clap", value(alias = "eq95"))]
-    Snowless,
-    /// §2.1.1: torque about the centre of mass, eq. (4).
-    #[serde(alias = "eq4")]
-    #[cfg_attr(feature = "clap", value(alias = "eq4"))]
-    TorqueCm,
-    /// §2.1.2: torque about the contact line, eq. (6).
-    #[serde(alias = "eq6")]
-    #[cfg_attr(feature = "clap", value(alias = "eq6"))]
-    TorqueContact,
-    /// §2.2: energy conservation with the b² terms, eq. (14).
-    #[serde(alias = "eq14")]
-    #[cfg_attr(feature = "clap", value(alias = "eq14"))]
-    Energy,
-    /// §2.2: eq. (14) without the b² terms, eq. (15).
-    #[serde(alias = "eq15")]
-    #[cfg_attr(feature = "clap", value(alias = "eq15"))]
-    EnergyThin,
-    /// §2.3: the Lagrangian result exactly as printed, eq. (21) (omits ∂T/∂x, `docs/errata.md` (19)–(21)).
-    #[serde(alias = "eq21")]
-    #[cfg_attr(feature = "clap", value(alias = "eq21"))]
-    LagrangianPrinted,
-    /// §2.4: the approximately circular log, eq. (32).
-    #[serde(alias = "eq32")]
-    #[cfg_attr(feature = "clap", value(alias = "eq32"))]
-    QuasiCircular,
-    /// §2.4: eq. (32) plus the lift term (36).
-    #[serde(alias = "eq32+36")]
-    #[cfg_attr(feature = "clap", value(alias = "eq32+36"))]
-    QuasiCircularLift,
-    /// fn. 4: Loney's closed-form solution of eq. (4), no ODE solver.
-    #[serde(alias = "fn4")]
-    #[cfg_attr(feature = "clap", value(alias = "fn4"))]
-    Loney,
-    /// §3.4: turn by turn, eqs. (73), (76) to first order in b/r, collision eq. (89).
-    #[serde(alias = "eq73")]
-    #[cfg_attr(feature = "clap", value(alias = "eq73"))]
-    Turns,
-    /// §3.4: turn by turn with the exact mass properties, so that eq. (88) holds.
-    #[serde(alias = "eq88")]
-    #[cfg_attr(feature = "clap", value(alias = "eq88"))]
-    TurnsExact,
-}
+pub use crate::model_kind::{ModelInfo, ModelKind, MODEL_TABLE};
 
+/// What each model computes (the names are in [`MODEL_TABLE`]).
 impl ModelKind {
-    /// Every model, in the order of the note.
-    pub const ALL: [ModelKind; 11] = [
-        ModelKind::Snowless,
-        ModelKind::TorqueCm,
-        ModelKind::TorqueContact,
-        ModelKind::Energy,
-        ModelKind::EnergyThin,
-        ModelKind::LagrangianPrinted,
-        ModelKind::QuasiCircular,
-        ModelKind::QuasiCircularLift,
-        ModelKind::Loney,
-        ModelKind::Turns,
-        ModelKind::TurnsExact,
-    ];
-
-    /// The kebab-case id.
-    pub fn id(self) -> &'static str {
-        match self {
-            ModelKind::Snowless => "snowless",
-            ModelKind::TorqueCm => "torque-cm",
-            ModelKind::TorqueContact => "torque-contact",
-            ModelKind::Energy => "energy",
-            ModelKind::EnergyThin => "energy-thin",
-            ModelKind::LagrangianPrinted => "lagrangian-printed",
-            ModelKind::QuasiCircular => "quasi-circular",
-            ModelKind::QuasiCircularLift => "quasi-circular-lift",
-            ModelKind::Loney => "loney",
-            ModelKind::Turns => "turns",
-            ModelKind::TurnsExact => "turns-exact",
-        }
-    }
-
-    /// The equation alias (`eq4`, `fn4`, …).
-    pub fn alias(self) -> &'static str {
-        match self {
-            ModelKind::Snowless => "eq95",
-            ModelKind::TorqueCm => "eq4",
-            ModelKind::TorqueContact => "eq6",
-            ModelKind::Energy => "eq14",
-            ModelKind::EnergyThin => "eq15",
-            ModelKind::LagrangianPrinted => "eq21",
-            ModelKind::QuasiCircular => "eq32",
-            ModelKind::QuasiCircularLift => "eq32+36",
-            ModelKind::Loney => "fn4",
-            ModelKind::Turns => "eq73",
-            ModelKind::TurnsExact => "eq88",
-        }
-    }
-
-    /// Where in the note, in the citation form `eq. (N)` / `fn. N`.
-    pub fn equation(self) -> &'static str {
-        match self {
-            ModelKind::Snowless => "eq. (95)",
-            ModelKind::TorqueCm => "eq. (4)",
-            ModelKind::TorqueContact => "eq. (6)",
-            ModelKind::Energy => "eq. (14)",
-            ModelKind::EnergyThin => "eq. (15)",
-            ModelKind::LagrangianPrinted => "eq. (21) as printed",
-            ModelKind::QuasiCircular => "eq. (32)",
-            ModelKind::QuasiCircularLift => "eqs. (32)+(36)",
-            ModelKind::Loney => "fn. 4",
-            ModelKind::Turns => "eqs. (73), (76), (89)",
-            ModelKind::TurnsExact => "eqs. (88), (89), exact geometry",
-        }
-    }
-
-    /// One line for people.
-    pub fn description(self) -> &'static str {
-        match self {
-            ModelKind::Snowless => "cylinder on a bare slope (App. A)",
-            ModelKind::TorqueCm => "circular log, torque about the centre of mass (§2.1.1)",
-            ModelKind::TorqueContact => "circular log, torque about the contact line (§2.1.2)",
-            ModelKind::Energy => "circular log, energy conservation with b^2 terms (§2.2)",
-            ModelKind::EnergyThin => "circular log, energy conservation to first order in b (§2.2)",
-            ModelKind::LagrangianPrinted => {
-                "circular log, Lagrangian as printed: omits dT/dx (docs/errata.md (19)-(21); corrected = eq. 14)"
-            }
-            ModelKind::QuasiCircular => "approximately circular log, energy rate (§2.4)",
-            ModelKind::QuasiCircularLift => "eq. (32) plus the snow-lifting term (36) (§2.4)",
-            ModelKind::Loney => "Loney's closed form of eq. (4), no ODE solver (fn. 4)",
-            ModelKind::Turns => {
-                "turn by turn, first order in b/r, collision at every full turn (§3.4)"
-            }
-            ModelKind::TurnsExact => {
-                "turn by turn, exact disk + sector mass properties, eq. (88) holds (§3.4)"
-            }
-        }
-    }
-
     /// Late-time acceleration as a fraction of g sin α, where the model has
     /// one (with snow, b > 0), computed from the model's coefficients. `None`
     /// for the turn models, whose long-run mean is measured ([`run_turns`]).
@@ -308,12 +152,6 @@ impl ModelKind {
         }
     }
 
-    /// Whether the model takes the log as circular at all times (§2, App. A
-    /// and Loney's fn. 4), as opposed to following it turn by turn (§3).
-    pub fn is_circular(self) -> bool {
-        TurnVariant::of(self).is_none()
-    }
-
     /// The coefficient set of a circular model; `None` for closed forms.
     pub fn derivation(self) -> Option<Derivation> {
         Some(match self {
@@ -339,28 +177,26 @@ impl ModelKind {
     }
 }
 
-impl fmt::Display for ModelKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.id())
-    }
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-impl FromStr for ModelKind {
-    type Err = ParamError;
-
-    /// Accepts the id or the equation alias, case-insensitively.
-    fn from_str(s: &str) -> Result<Self, ParamError> {
-        let wanted = s.trim().to_ascii_lowercase();
-        ModelKind::ALL
-            .into_iter()
-            .find(|k| k.id() == wanted || k.alias() == wanted)
-            .ok_or_else(|| ParamError::UnknownModel {
-                given: s.to_string(),
-                expected: ModelKind::ALL
-                    .iter()
-                    .map(|k| format!("{} ({})", k.id(), k.alias()))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
+    #[test]
+    fn every_model_has_exactly_one_implementation_kind_matching_the_table() {
+        // Turn models have a turn variant and no coefficients; circular
+        // models have coefficients or are Loney's closed form.
+        for kind in ModelKind::ALL {
+            let variant = TurnVariant::of(kind);
+            assert_eq!(variant.is_some(), kind.is_turn_model(), "{kind}");
+            if kind.is_circular() {
+                assert!(
+                    kind.derivation().is_some() || kind == ModelKind::Loney,
+                    "{kind}"
+                );
+            } else {
+                assert!(kind.derivation().is_none(), "{kind}");
+            }
+            assert_eq!(kind.build().kind(), kind);
+        }
     }
 }

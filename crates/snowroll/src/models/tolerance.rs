@@ -21,7 +21,7 @@
 //! result is noise), and a run is warned about when it is looser than
 //! [`CLAIMS_ACCURACY`], the accuracy the note's claims are judged at.
 
-use super::{ModelKind, TurnVariant};
+use super::ModelKind;
 use crate::error::ParamError;
 use crate::scenario::Scenario;
 use crate::trajectory::SimOptions;
@@ -44,7 +44,7 @@ pub fn state_scale(kind: ModelKind, s: &Scenario) -> Option<f64> {
     let (r0, g) = (s.initial_radius(), s.gravity());
     if kind.derivation().is_some() {
         Some(r0.min((g * r0).sqrt()))
-    } else if TurnVariant::of(kind).is_some() {
+    } else if kind.is_turn_model() {
         Some((g / r0).sqrt().min(1.0))
     } else {
         None

@@ -16,7 +16,7 @@
 
 mod render;
 
-pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE};
+pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
 
@@ -122,9 +122,14 @@ impl Axis {
         self
     }
 
-    /// The label as drawn: `label [unit]`.
+    /// The label as drawn: `label [unit]`, or `label` alone for a
+    /// dimensionless ratio (unit `1`).
     pub fn title(&self) -> String {
-        format!("{} [{}]", self.label, self.unit)
+        if self.unit.trim() == "1" {
+            self.label.clone()
+        } else {
+            format!("{} [{}]", self.label, self.unit)
+        }
     }
 
     /// Whether `v` can be placed on this axis.
@@ -162,9 +167,51 @@ pub enum Style {
     Line,
     /// A dashed line (to tell apart curves that lie on top of each other).
     Dashed,
+    /// A line of long dashes.
+    LongDashed,
+    /// A dotted line (short dashes close together).
+    Dotted,
     /// A marker at each point, no line.
     Markers,
 }
+
+impl Style {
+    /// Every style, in the order a chart hands them out.
+    pub const ALL: [Style; 5] = [
+        Style::Line,
+        Style::Dashed,
+        Style::LongDashed,
+        Style::Dotted,
+        Style::Markers,
+    ];
+
+    /// Dash and gap lengths of a broken line, px at [`FIGURE_SIZE`]; `None`
+    /// for a solid line or markers.
+    pub fn dash_pattern(self) -> Option<(f64, f64)> {
+        match self {
+            Style::Dashed => Some((10.0, 6.0)),
+            Style::LongDashed => Some((22.0, 7.0)),
+            Style::Dotted => Some((3.0, 5.0)),
+            Style::Line | Style::Markers => None,
+        }
+    }
+}
+
+/// The shape of a series' markers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Marker {
+    /// A filled circle.
+    #[default]
+    Circle,
+    /// A filled triangle.
+    Triangle,
+    /// A filled square.
+    Square,
+}
+
+/// Markers placed along a line series: this many, spread evenly over its
+/// points, so that a curve hidden under another still shows its marks.
+pub const MARKS_ON_A_LINE: usize = 14;
 
 /// A named set of `(x, y)` points.
 #[derive(Debug, Clone, PartialEq)]
@@ -175,6 +222,10 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Line, dashes or markers.
     pub style: Style,
+    /// Marker shape: of every point for [`Style::Markers`], else of
+    /// [`MARKS_ON_A_LINE`] marks along the line; `None` draws a line without
+    /// marks (and circles for [`Style::Markers`]).
+    pub marker: Option<Marker>,
 }
 
 impl Series {
@@ -184,6 +235,7 @@ impl Series {
             name: name.to_string(),
             points,
             style: Style::Line,
+            marker: None,
         }
     }
 
@@ -201,6 +253,17 @@ impl Series {
     pub fn style(mut self, style: Style) -> Self {
         self.style = style;
         self
+    }
+
+    /// Sets the marker shape.
+    pub fn marker(mut self, marker: Marker) -> Self {
+        self.marker = Some(marker);
+        self
+    }
+
+    /// How the series looks apart from its colour: line style and marker.
+    pub fn look(&self) -> (Style, Option<Marker>) {
+        (self.style, self.marker)
     }
 }
 
@@ -347,6 +410,59 @@ impl Chart {
             .iter()
             .flat_map(|s| s.points.iter().copied())
             .filter(|&p| self.drawable(p))
+    }
+
+    /// Pairs of series (by name) that look the same apart from colour (same
+    /// [`Series::look`]) and lie on top of each other: over more than half
+    /// of the first one's points, within `tol` of the drawn height (0.005
+    /// is 3 px of a 600 px figure). Such a pair hides one curve under the
+    /// other; a chart should give them different dashes or markers.
+    pub fn indistinct_pairs(&self, tol: f64) -> Vec<(String, String)> {
+        let (xr, yr) = self.ranges();
+        let unit = |axis: &Axis, r: &std::ops::Range<f64>, v: f64| match axis.scale {
+            Scale::Linear => (v - r.start) / (r.end - r.start),
+            Scale::Log => (v / r.start).log10() / (r.end / r.start).log10(),
+        };
+        let drawn = |s: &Series| -> Vec<(f64, f64)> {
+            s.points
+                .iter()
+                .copied()
+                .filter(|&p| self.drawable(p))
+                .map(|(x, y)| (unit(&self.x, &xr, x), unit(&self.y, &yr, y)))
+                .collect()
+        };
+        let mut pairs = Vec::new();
+        for (i, a) in self.series.iter().enumerate() {
+            for b in &self.series[i + 1..] {
+                if a.look() != b.look() {
+                    continue;
+                }
+                let (pa, pb) = (drawn(a), drawn(b));
+                if pa.is_empty() || pb.windows(2).any(|w| w[1].0 < w[0].0) {
+                    continue;
+                }
+                let close = pa
+                    .iter()
+                    .filter(|&&(x, y)| {
+                        // pb[k−1].0 < x ≤ pb[k].0: interpolate; outside pb, skip.
+                        let k = pb.partition_point(|p| p.0 < x);
+                        let yb = match k {
+                            0 if pb[0].0 <= x => pb[0].1,
+                            k if k == 0 || k == pb.len() => return false,
+                            k => {
+                                let (l, r) = (pb[k - 1], pb[k]);
+                                l.1 + (r.1 - l.1) * (x - l.0) / (r.0 - l.0)
+                            }
+                        };
+                        (y - yb).abs() < tol
+                    })
+                    .count();
+                if 2 * close > pa.len() {
+                    pairs.push((a.name.clone(), b.name.clone()));
+                }
+            }
+        }
+        pairs
     }
 
     /// Number of points left out of the drawing because an axis cannot show

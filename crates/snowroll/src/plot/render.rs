@@ -7,7 +7,7 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{Axis, Chart, Legend, PlotError, Provenance, Scale, Style};
+use super::{Axis, Chart, Legend, Marker, PlotError, Provenance, Scale, Style, MARKS_ON_A_LINE};
 
 /// The embedded font (DejaVu Sans, Bitstream Vera licence, see
 /// `assets/fonts/DejaVuSans-LICENSE.txt`).
@@ -22,6 +22,12 @@ pub const FIGURE_SIZE: (u32, u32) = (960, 600);
 /// PNG figures are drawn this many times larger than [`FIGURE_SIZE`] so that
 /// text stays crisp when the image is viewed full width.
 pub const PNG_SCALE: f64 = 1.5;
+
+/// SVG figures are drawn on a canvas this many times [`FIGURE_SIZE`] and
+/// shown at [`FIGURE_SIZE`] through their `viewBox`: `plotters` places
+/// points on whole pixels, and on the larger canvas a whole pixel is a
+/// quarter of a shown one, so nearly flat curves do not step.
+pub const SVG_OVERSAMPLE: u32 = 4;
 
 /// Margin added around the data range of a linear axis, as a fraction of the range.
 const LINEAR_PAD: f64 = 0.04;
@@ -64,7 +70,7 @@ pub fn register_embedded_font() -> Result<(), PlotError> {
 
 impl Chart {
     /// The drawn ranges `(x_min..x_max, y_min..y_max)` with margins.
-    fn ranges(&self) -> (std::ops::Range<f64>, std::ops::Range<f64>) {
+    pub(crate) fn ranges(&self) -> (std::ops::Range<f64>, std::ops::Range<f64>) {
         let (mut x0, mut x1, mut y0, mut y1) = (
             f64::INFINITY,
             f64::NEG_INFINITY,
@@ -89,11 +95,25 @@ impl Chart {
         self.validate()?;
         register_embedded_font()?;
         let mut svg = String::new();
+        let (w, h) = FIGURE_SIZE;
+        let k = SVG_OVERSAMPLE;
         {
-            let root = SVGBackend::with_string(&mut svg, FIGURE_SIZE).into_drawing_area();
-            self.draw(&root, provenance, 1.0)?;
+            let root = SVGBackend::with_string(&mut svg, (w * k, h * k)).into_drawing_area();
+            self.draw(&root, provenance, f64::from(k))?;
             root.present().map_err(|e| self.backend(e))?;
         }
+        // Shown at FIGURE_SIZE, drawn in the oversampled viewBox; lines
+        // join and end round.
+        let svg = svg
+            .replacen(
+                &format!("width=\"{}\" height=\"{}\"", w * k, h * k),
+                &format!("width=\"{w}\" height=\"{h}\""),
+                1,
+            )
+            .replace(
+                "<polyline fill=\"none\"",
+                "<polyline fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"",
+            );
         let comment = format!(
             "<!-- {}: {} | {} -->\n",
             escape_comment(&self.name),
@@ -215,9 +235,7 @@ impl Chart {
             .draw()
             .map_err(|e| self.backend(e))?;
         let width = px(2.0);
-        let dash = px(10.0);
-        let gap = px(6.0);
-        let key = px(24.0) as i32;
+        let key = px(36.0) as i32;
         let dot = px(4.0);
         for (i, s) in self.series.iter().enumerate() {
             let colour = PALETTE[i % PALETTE.len()];
@@ -228,29 +246,82 @@ impl Chart {
                 .copied()
                 .filter(|&p| self.drawable(p))
                 .collect();
-            let drawn = match s.style {
-                Style::Line => chart.draw_series(LineSeries::new(pts, style)),
-                Style::Dashed => chart.draw_series(DashedLineSeries::new(pts, dash, gap, style)),
-                Style::Markers => {
-                    chart.draw_series(pts.into_iter().map(|p| Circle::new(p, dot, style.filled())))
+            let marker = s.marker.unwrap_or_default();
+            // Marks along a line: evenly over the points, shifted by series
+            // so that the marks of coinciding curves do not fall together.
+            let marks: Vec<(f64, f64)> = match (s.style, s.marker) {
+                (Style::Markers, _) => pts.clone(),
+                (_, Some(_)) if !pts.is_empty() => {
+                    let n = pts.len();
+                    let shift = (i as f64 * 0.37).fract();
+                    (0..MARKS_ON_A_LINE.min(n))
+                        .map(|j| {
+                            let f = (j as f64 + shift) / MARKS_ON_A_LINE.min(n) as f64;
+                            pts[((f * n as f64) as usize).min(n - 1)]
+                        })
+                        .collect()
+                }
+                _ => Vec::new(),
+            };
+            let filled = style.filled();
+            let d = dot as i32;
+            match marker {
+                Marker::Circle => {
+                    chart.draw_series(marks.into_iter().map(|p| Circle::new(p, dot, filled)))
+                }
+                Marker::Triangle => chart.draw_series(
+                    marks
+                        .into_iter()
+                        .map(|p| TriangleMarker::new(p, dot + dot / 2, filled)),
+                ),
+                Marker::Square => chart.draw_series(
+                    marks
+                        .into_iter()
+                        .map(|p| EmptyElement::at(p) + Rectangle::new([(-d, -d), (d, d)], filled)),
+                ),
+            }
+            .map_err(|e| self.backend(e))?;
+            let drawn = match s.style.dash_pattern() {
+                // Markers only: the marks above are the series.
+                _ if s.style == Style::Markers => {
+                    chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())
+                }
+                None => chart.draw_series(LineSeries::new(pts, style)),
+                Some((on, off)) => {
+                    chart.draw_series(DashedLineSeries::new(pts, px(on), px(off), style))
                 }
             }
             .map_err(|e| self.backend(e))?;
-            // One element shape for every style (a legend closure cannot
-            // return a boxed element): two line pieces and a dot, the unused
-            // parts transparent.
+            // The legend key repeats the line's pattern and marker. One
+            // element shape serves every style (a legend closure returns one
+            // type): four line pieces and a marker, unused parts transparent.
             let hidden = ShapeStyle::from(TRANSPARENT);
-            let (line, gap_px, dot_style) = match s.style {
-                Style::Line => (style, 0, hidden),
-                Style::Dashed => (style, 4, hidden),
-                Style::Markers => (hidden, 0, style.filled()),
+            let pieces = key_pieces(s.style, key);
+            let line = if s.style == Style::Markers {
+                hidden
+            } else {
+                style
+            };
+            let shown = s.style == Style::Markers || s.marker.is_some();
+            let (c, t, q) = match (shown, marker) {
+                (false, _) => (hidden, hidden, hidden),
+                (true, Marker::Circle) => (filled, hidden, hidden),
+                (true, Marker::Triangle) => (hidden, filled, hidden),
+                (true, Marker::Square) => (hidden, hidden, filled),
             };
             drawn.label(&s.name).legend(move |(x, y)| {
                 let half = key / 2;
+                let d = dot as i32;
+                let piece =
+                    |k: usize| PathElement::new(vec![(pieces[k].0, 0), (pieces[k].1, 0)], line);
                 EmptyElement::at((x, y))
-                    + PathElement::new(vec![(0, 0), (half - gap_px / 2, 0)], line)
-                    + PathElement::new(vec![(half + gap_px / 2, 0), (key, 0)], line)
-                    + Circle::new((half, 0), dot, dot_style)
+                    + piece(0)
+                    + piece(1)
+                    + piece(2)
+                    + piece(3)
+                    + Circle::new((half, 0), dot, c)
+                    + TriangleMarker::new((half, 0), dot + dot / 2, t)
+                    + Rectangle::new([(half - d, -d), (half + d, d)], q)
             });
         }
         chart
@@ -262,7 +333,7 @@ impl Chart {
                 Legend::LowerLeft => SeriesLabelPosition::LowerLeft,
             })
             .margin(px(10.0))
-            .legend_area_size(px(30.0))
+            .legend_area_size(px(46.0))
             .label_font(font(15.0))
             .background_style(WHITE.mix(0.85))
             .border_style(RGBColor(160, 160, 160))
@@ -270,6 +341,25 @@ impl Chart {
             .map_err(|e| self.backend(e))?;
         Ok(())
     }
+}
+
+/// Up to four `(start, end)` pieces of a legend key `key` px long drawing
+/// `style`'s dash pattern, shrunk to fit; unused pieces are empty.
+fn key_pieces(style: Style, key: i32) -> [(i32, i32); 4] {
+    let mut pieces = [(0, 0); 4];
+    match style.dash_pattern() {
+        None => pieces[0] = (0, key),
+        Some((on, off)) => {
+            // The pattern shrunk so that exactly four dashes fill the key.
+            let period = f64::from(key) / (4.0 - off / (on + off));
+            let on_px = period * on / (on + off);
+            for (k, piece) in pieces.iter_mut().enumerate() {
+                let start = k as f64 * period;
+                *piece = (start.round() as i32, (start + on_px).round() as i32);
+            }
+        }
+    }
+    pieces
 }
 
 /// Size of a PNG figure, px.

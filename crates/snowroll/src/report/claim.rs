@@ -13,6 +13,8 @@ use std::fmt;
 
 use serde::Serialize;
 
+use super::notation::compact;
+
 /// What the program concluded about a claim of the note.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(tag = "verdict", content = "erratum", rename_all = "kebab-case")]
@@ -126,12 +128,24 @@ impl Tolerance {
     }
 }
 
+/// ` m/s` after a number, or ` (dimensionless)` for the unit `1`.
+fn unit_suffix(unit: &str) -> String {
+    match unit.trim() {
+        "" | "1" => " (dimensionless)".to_string(),
+        u => format!(" {u}"),
+    }
+}
+
 impl fmt::Display for Tolerance {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Tolerance::Relative { value } => write!(f, "relative {value:e}"),
-            Tolerance::Absolute { value, unit } => write!(f, "absolute {value:e} {unit}"),
-            Tolerance::AtLeast { value, unit } => write!(f, "at least {value:e} {unit} apart"),
+            Tolerance::Relative { value } => write!(f, "relative {}", compact(*value)),
+            Tolerance::Absolute { value, unit } => {
+                write!(f, "absolute {}{}", compact(*value), unit_suffix(unit))
+            }
+            Tolerance::AtLeast { value, unit } => {
+                write!(f, "at least {}{} apart", compact(*value), unit_suffix(unit))
+            }
             Tolerance::Exact => f.write_str("exact"),
         }
     }

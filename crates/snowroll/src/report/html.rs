@@ -12,7 +12,7 @@ use std::fmt::Write as _;
 
 use super::errata::{errata_section, link_citations};
 use super::intro::intro_section;
-use super::{ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
+use super::{notation, ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
 
 const CSS: &str = include_str!("../../assets/report.css");
 const SCRIPT: &str = include_str!("../../assets/report.js");
@@ -25,6 +25,11 @@ const ERROR_TRAP: &str = "(function(){var n=0;function mark(){n+=1;document.docu
 /// the page itself if it scrolls sideways. The browser test reads
 /// `html[data-layout-overflow]` at a phone's width (empty: nothing overflows).
 const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
+
+/// Prose of the report, in its one notation ([`notation::prettify`]), escaped.
+fn prose(s: &str) -> String {
+    esc(&notation::prettify(s))
+}
 
 /// Escapes text for HTML element content and attribute values.
 pub(super) fn esc(s: &str) -> String {
@@ -191,13 +196,13 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
             class = r.verdict.class(),
             ok = r.as_expected(),
             paper = esc(c.paper_ref),
-            statement = esc(c.statement),
-            method = esc(c.method),
-            tol = esc(&c.tolerances_text()),
-            measured = esc(&r.measured),
+            statement = prose(c.statement),
+            method = prose(c.method),
+            tol = prose(&c.tolerances_text()),
+            measured = prose(&r.measured),
             symbol = r.verdict.symbol(),
             label = link_citations(&esc(&r.verdict.label())),
-            evidence = link_citations(&esc(&r.evidence)),
+            evidence = link_citations(&prose(&r.evidence)),
             figures = figure_links(c.id, figures),
         );
     }
@@ -209,7 +214,7 @@ fn table_section(h: &mut String, index: usize, t: &super::Table) {
         h,
         "<section id=\"table-{index}\">\n<h2>{}</h2>\n<p>{}</p>",
         esc(&t.title),
-        esc(&t.caption)
+        prose(&t.caption)
     );
     h.push_str("<div class=\"table-wrap\"><table class=\"parting\">\n<thead><tr>");
     for c in &t.header {
@@ -219,7 +224,7 @@ fn table_section(h: &mut String, index: usize, t: &super::Table) {
     for row in &t.rows {
         h.push_str("<tr>");
         for c in row {
-            let _ = write!(h, "<td>{}</td>", esc(c));
+            let _ = write!(h, "<td>{}</td>", prose(c));
         }
         h.push_str("</tr>\n");
     }
@@ -232,7 +237,7 @@ fn animation_section(h: &mut String, anim: &super::Animation) {
         h,
         "<section id=\"animation\">\n<h2>{}</h2>\n<p>{}</p>",
         esc(&anim.title),
-        esc(&anim.caption)
+        prose(&anim.caption)
     );
     let _ = writeln!(
         h,
@@ -286,7 +291,7 @@ fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
              {prov}</span></figcaption>\n</figure>",
             num = i + 1,
             title = esc(&fig.chart.title),
-            caption = esc(&fig.caption),
+            caption = prose(&fig.caption),
             prov = esc(&prov),
         );
     }

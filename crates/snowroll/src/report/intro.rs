@@ -71,12 +71,12 @@ pub(super) fn equation_of_motion(kind: ModelKind) -> String {
             }
         }
         (ModelKind::Loney, None) => {
-            "v² = 2Gs/(5b) + K s^(−7/3), s = πr0² + bx, K from v(0) (the closed form of eq. (4))"
+            "v² = 2Gs/(5b) + K s⁻⁷ᐟ³, s = πr₀² + bx, K from v(0) (the closed form of eq. (4))"
                 .to_string()
         }
         (ModelKind::Turns, None) => {
             "within turn k: eq. (73) for θ(t) with the radius and mass of eq. (76), \
-             r_k = r0 + kb; at θ = 2π the collision of eq. (89)"
+             rₖ = r0 + kb; at θ = 2π the collision of eq. (89)"
                 .to_string()
         }
         _ => "within a turn: energy conservation of the disk plus the growing layer, exact mass \
@@ -134,8 +134,8 @@ pub(super) const SYMBOLS: [(&str, &str, &str); 17] = [
     ),
     ("k", "turn number, counted from 0 (§3.4)", "1"),
     (
-        "r_k, m_k",
-        "radius and mass at the start of turn k: r_k = r0 + kb (eq. (74))",
+        "rₖ, mₖ",
+        "radius and mass at the start of turn k: rₖ = r0 + kb (eq. (74))",
         "m, kg",
     ),
     (

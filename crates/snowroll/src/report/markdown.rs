@@ -3,12 +3,13 @@
 
 use std::fmt::Write as _;
 
-use super::{Report, Tally, EXPECTATION_NOTE};
+use super::{notation, Report, Tally, EXPECTATION_NOTE};
 
 /// Makes text safe inside a Markdown table cell: no pipes, no line breaks,
-/// no raw HTML.
+/// no raw HTML; in the report's one notation ([`notation::prettify`]).
 fn cell(s: &str) -> String {
-    s.replace('&', "&amp;")
+    notation::prettify(s)
+        .replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
         .replace('|', "\\|")
@@ -82,7 +83,12 @@ pub(super) fn render(report: &Report) -> String {
     }
 
     for t in &report.tables {
-        let _ = writeln!(md, "\n## {}\n\n{}\n", t.title.replace('\n', " "), t.caption);
+        let _ = writeln!(
+            md,
+            "\n## {}\n\n{}\n",
+            t.title.replace('\n', " "),
+            notation::prettify(&t.caption)
+        );
         let _ = writeln!(
             md,
             "| {} |",
@@ -108,7 +114,8 @@ pub(super) fn render(report: &Report) -> String {
             md,
             "{} — {} Open `report.html` to play it; its frames are in \
              [`data/animation.csv`](data/animation.csv).",
-            anim.title, anim.caption
+            anim.title,
+            notation::prettify(&anim.caption)
         );
     }
 
@@ -121,7 +128,7 @@ pub(super) fn render(report: &Report) -> String {
             md,
             "{} Files: [SVG](figures/{name}.svg), [PNG](figures/{name}.png), \
              [data](data/{name}.csv). {}",
-            f.caption,
+            notation::prettify(&f.caption),
             f.provenance(m).line()
         );
     }

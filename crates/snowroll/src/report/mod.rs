@@ -42,6 +42,7 @@ mod html;
 mod intro;
 #[cfg(feature = "plot")]
 mod markdown;
+pub mod notation;
 #[cfg(feature = "plot")]
 mod paper;
 #[cfg(feature = "plot")]

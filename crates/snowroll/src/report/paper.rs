@@ -5,16 +5,18 @@
 //! scenario, the long multi-turn runs the claims already computed, and their
 //! per-turn tables.
 
+use super::notation;
 use super::{
     where_turn_models_part_ways, Animation, ClaimResult, Figure, FirstTurn, Lab, Metadata, Report,
     ReportError, Table, CLAIMS,
 };
 use crate::models::THIN_SNOW_MAX_B_OVER_R0;
 use crate::models::{
-    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, ModelKind, TurnTable,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, Coefficients, Derivation, ModelKind,
+    TurnTable,
 };
-use crate::plot::{Axis, Chart, Legend, Series, Style};
-use crate::scenario::ScenarioFile;
+use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
+use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
 /// End of the runs shown against time, s.
@@ -131,68 +133,155 @@ fn log_spread(len: usize, n: usize) -> Vec<usize> {
     out
 }
 
-/// Runs every claim and every figure's scenarios and assembles the report.
-/// `progress` is called before each step.
-///
-/// # Errors
-/// [`ReportError`] when a simulation or a figure fails.
-pub fn build_paper_report(
-    lab: &Lab,
-    progress: &mut dyn FnMut(Progress<'_>),
-) -> Result<Report, ReportError> {
-    let total = paper_steps();
-    let mut step = 0;
-    let mut tick = |label: &str| {
-        progress(Progress {
-            done: step,
-            total,
-            label,
-        });
-        step += 1;
-    };
-    let s = lab.scenario();
-    let g = s.g_along();
-    let opts = SimOptions::default();
+/// The equation a circular model integrates, as its coefficients: Loney's
+/// closed form (fn. 4) solves eq. (4), so it has eq. (4)'s.
+fn equation_of(kind: ModelKind) -> Option<Coefficients> {
+    match kind {
+        ModelKind::Loney => Some(Derivation::TorqueAboutCentre.coefficients()),
+        _ => kind.derivation().map(Derivation::coefficients),
+    }
+}
 
-    let mut claims: Vec<ClaimResult> = Vec::with_capacity(CLAIMS.len());
-    for check in CLAIMS {
-        tick(check.claim.id);
-        claims.push(check.run(lab)?);
+/// The circular models grouped by equation, in the order of the note: models
+/// with the same equation of motion (eq. (15) and eqs. (32)+(36); eq. (4) and
+/// Loney's fn. 4) draw one curve under one legend entry.
+pub(crate) fn same_equation_groups(kinds: &[ModelKind]) -> Vec<Vec<ModelKind>> {
+    let mut groups: Vec<Vec<ModelKind>> = Vec::new();
+    for &k in kinds {
+        let eq = equation_of(k);
+        match groups
+            .iter_mut()
+            .find(|g| eq.is_some() && equation_of(g[0]) == eq)
+        {
+            Some(group) => group.push(k),
+            None => groups.push(vec![k]),
+        }
+    }
+    groups
+}
+
+/// Legend entry of a model: its id and equation alias.
+fn label(k: ModelKind) -> String {
+    format!("{} ({})", k.id(), k.alias())
+}
+
+/// Legend entry of a group of models with one equation: `a (eq15) = b (eq32+36)`.
+fn group_label(group: &[ModelKind]) -> String {
+    group
+        .iter()
+        .map(|&k| label(k))
+        .collect::<Vec<_>>()
+        .join(" = ")
+}
+
+/// Line style and marker of each model: every group of models with one
+/// equation looks different apart from colour, so that curves that lie
+/// close (all start near 2G/3; three tend to G/3; G/5, 2G/9 and G/6 are
+/// near each other) stay apart for readers who cannot tell the colours apart.
+fn look(k: ModelKind) -> (Style, Option<Marker>) {
+    match k {
+        ModelKind::TorqueCm | ModelKind::Loney => (Style::Line, Some(Marker::Circle)),
+        ModelKind::TorqueContact => (Style::Dashed, None),
+        ModelKind::Energy => (Style::Dashed, Some(Marker::Circle)),
+        ModelKind::EnergyThin | ModelKind::QuasiCircularLift => {
+            (Style::LongDashed, Some(Marker::Triangle))
+        }
+        ModelKind::LagrangianPrinted => (Style::Dotted, None),
+        ModelKind::QuasiCircular => (Style::Dotted, Some(Marker::Square)),
+        ModelKind::Turns => (Style::LongDashed, None),
+        ModelKind::TurnsExact => (Style::LongDashed, Some(Marker::Square)),
+        ModelKind::Snowless => (Style::Line, None),
+    }
+}
+
+/// `series` drawn in the look of `k`.
+fn styled(series: Series, k: ModelKind) -> Series {
+    let (style, marker) = look(k);
+    let series = series.style(style);
+    match marker {
+        Some(m) => series.marker(m),
+        None => series,
+    }
+}
+
+/// The runs of every circular model on the logarithmic time grid, grouped by
+/// equation, with the largest disagreement inside each group.
+struct CircularRuns {
+    /// One trajectory per group (its first model's).
+    drawn: Vec<(Vec<ModelKind>, Trajectory)>,
+    /// For groups of more than one model: the group and the largest
+    /// |Δa|/(g sin α) between its runs at the grid's times.
+    agreement: Vec<(Vec<ModelKind>, f64)>,
+}
+
+impl CircularRuns {
+    fn new(lab: &Lab, opts: &SimOptions) -> Result<Self, ReportError> {
+        let g = lab.scenario().g_along();
+        let timed = SimOptions {
+            t_end: T_END,
+            sampling: Sampling::Times(log_times()),
+            ..opts.clone()
+        };
+        let mut drawn = Vec::new();
+        let mut agreement = Vec::new();
+        for group in same_equation_groups(&circular_models()) {
+            let first = run(group[0], lab, &timed)?;
+            if group.len() > 1 {
+                let mut worst: f64 = 0.0;
+                for &other in &group[1..] {
+                    let traj = run(other, lab, &timed)?;
+                    for (p, q) in first.samples.iter().zip(&traj.samples) {
+                        worst = worst.max((p.a_m_s2 - q.a_m_s2).abs() / g);
+                    }
+                }
+                agreement.push((group.clone(), worst));
+            }
+            drawn.push((group, first));
+        }
+        Ok(Self { drawn, agreement })
     }
 
-    tick("where the turn models part ways");
-    let parting = parting_table(lab)?;
+    /// One sentence per group of the caption: which equations are one and
+    /// how closely their runs agree on the grid.
+    fn caption(&self) -> String {
+        self.agreement
+            .iter()
+            .map(|(group, worst)| {
+                let names = group
+                    .iter()
+                    .map(|k| k.equation())
+                    .collect::<Vec<_>>()
+                    .join(" and ");
+                let agree = if *worst == 0.0 {
+                    "are identical".to_string()
+                } else {
+                    format!("differ by at most {} g sin α", notation::number(*worst, 1))
+                };
+                format!(
+                    "{names} are one equation, drawn once under one legend entry \
+                     (their runs {agree} at the {N_TIMES} times of the grid, 1 ms to 100 s)."
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+}
 
-    tick("contact forces: smallest μ, hop per turn, collision variants");
-    let contact_tables = [
-        super::contact::mu_min_table(lab)?,
-        super::contact::collision_table(lab)?,
-    ];
-    let contact_figure = super::contact::min_normal_figure(lab)?;
-
-    tick("trajectories of every model");
-    let timed = SimOptions {
-        t_end: T_END,
-        sampling: Sampling::Times(log_times()),
-        ..opts.clone()
-    };
-    let circular: Vec<ModelKind> = ModelKind::ALL
+/// The circular models (§2, App. A, fn. 4), in the order of the note.
+fn circular_models() -> Vec<ModelKind> {
+    ModelKind::ALL
         .into_iter()
         .filter(|k| k.is_circular())
-        .collect();
-    let mut trajectories = Vec::new();
-    for kind in &circular {
-        trajectories.push(run(*kind, lab, &timed)?);
-    }
-    let paper = lab.long_run(false)?;
-    let exact = lab.long_run(true)?;
+        .collect()
+}
 
-    // Short legend entries (id and equation alias) keep the legends clear of the curves.
-    let label = |k: ModelKind| format!("{} ({})", k.id(), k.alias());
-    let style = |k: ModelKind| match k {
-        ModelKind::Loney | ModelKind::QuasiCircular | ModelKind::EnergyThin => Style::Dashed,
-        _ => Style::Line,
-    };
+/// Acceleration, speed and radius of every model against time.
+fn model_charts(
+    s: &Scenario,
+    runs: &CircularRuns,
+    long_runs: [(&TurnTable, ModelKind); 2],
+) -> [Chart; 3] {
+    let g = s.g_along();
     let mut accel = Chart::new(
         "acceleration-all-models",
         "Acceleration of every model",
@@ -214,33 +303,33 @@ pub fn build_paper_report(
         Axis::linear("radius r", "m").column("r_m"),
     )
     .with_legend(Legend::UpperLeft);
-    for traj in &trajectories {
-        let k = traj.model;
-        accel = accel.with_series(
-            Series::from_samples(&label(k), &traj.samples, |p| p.t_s, |p| p.a_m_s2 / g)
-                .style(style(k)),
-        );
-        speed = speed.with_series(
-            Series::from_samples(&label(k), &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style(k)),
-        );
-        radius = radius.with_series(
-            Series::from_samples(&label(k), &traj.samples, |p| p.t_s, |p| p.r_m).style(style(k)),
-        );
+    for (group, traj) in &runs.drawn {
+        let (k, name) = (group[0], group_label(group));
+        let of = |y: fn(&crate::trajectory::Sample, f64) -> f64| {
+            let series = Series::from_samples(&name, &traj.samples, |p| p.t_s, |p| y(p, g));
+            styled(series, k)
+        };
+        accel = accel.with_series(of(|p, g| p.a_m_s2 / g));
+        speed = speed.with_series(of(|p, _| p.v_m_s));
+        radius = radius.with_series(of(|p, _| p.r_m));
     }
-    for (table, kind) in [(paper, ModelKind::Turns), (exact, ModelKind::TurnsExact)] {
+    for (table, kind) in long_runs {
+        // Markers of the turn means: circles for turns, squares for turns-exact.
+        let marker = look(kind).1.unwrap_or(Marker::Circle);
         let name = format!("{}, mean per turn", label(kind));
-        accel = accel
-            .with_series(Series::new(&name, turn_means(table, T_END, g)).style(Style::Markers));
+        accel = accel.with_series(
+            Series::new(&name, turn_means(table, T_END, g))
+                .style(Style::Markers)
+                .marker(marker),
+        );
         let speeds: Vec<(f64, f64)> = table
             .rows
             .iter()
             .take_while(|r| r.t_start_s <= T_END)
             .map(|r| (r.t_start_s, r.v_start_m_s))
             .collect();
-        speed = speed.with_series(
-            Series::new(&format!("{}, start of each turn", label(kind)), speeds)
-                .style(Style::Dashed),
-        );
+        let name = format!("{}, start of each turn", label(kind));
+        speed = speed.with_series(styled(Series::new(&name, speeds), kind));
         let radii: Vec<(f64, f64)> = table
             .rows
             .iter()
@@ -252,12 +341,20 @@ pub fn build_paper_report(
                 )
             })
             .collect();
+        let name = format!("{}, rₖ = r₀ + k b", label(kind));
         radius = radius.with_series(
-            Series::new(&format!("{}, r_k = r0 + k b", label(kind)), radii).style(Style::Markers),
+            Series::new(&name, radii)
+                .style(Style::Markers)
+                .marker(marker),
         );
     }
+    [accel, speed, radius]
+}
 
-    tick("approach to the terminal accelerations");
+/// |a − a_term|/G against x for every circular model with its own terminal
+/// value (one curve per equation).
+fn approach_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
+    let g = lab.scenario().g_along();
     let mut approach = Chart::new(
         "approach-to-terminal",
         "Approach to the terminal acceleration",
@@ -271,11 +368,11 @@ pub fn build_paper_report(
         sampling: Sampling::Steps,
         ..opts.clone()
     };
-    for kind in circular
-        .iter()
-        .copied()
-        .filter(|k| *k != ModelKind::Snowless && *k != ModelKind::Loney)
-    {
+    for group in same_equation_groups(&circular_models()) {
+        let kind = group[0];
+        if kind == ModelKind::Snowless {
+            continue;
+        }
         let a_term = kind.terminal_fraction().unwrap_or(f64::NAN);
         let traj = run(kind, lab, &far)?;
         let points: Vec<(f64, f64)> = traj
@@ -284,96 +381,87 @@ pub fn build_paper_report(
             .map(|p| (p.x_m, (p.a_m_s2 / g - a_term).abs()))
             .filter(|&(x, d)| x > 0.0 && d > APPROACH_FLOOR)
             .collect();
-        approach = approach.with_series(
-            Series::new(&format!("{}, a_term = {a_term:.4} G", label(kind)), points)
-                .style(style(kind)),
+        let name = format!(
+            "{}, a_term = {} G",
+            group_label(&group),
+            notation::fixed(a_term, 4)
         );
+        approach = approach.with_series(styled(Series::new(&name, points), kind));
     }
+    Ok(approach)
+}
 
-    tick("turn-by-turn model");
+/// The acceleration of both turn models over their first turns.
+fn in_turn_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
+    let g = lab.scenario().g_along();
     let first_turns = SimOptions {
         turns: Some(TURNS_SHOWN),
         t_end: 1e6,
         sampling: Sampling::Every(0.002),
         ..opts.clone()
     };
-    let turns_traj = run(ModelKind::Turns, lab, &first_turns)?;
-    let exact_traj = run(ModelKind::TurnsExact, lab, &first_turns)?;
-    let in_turn = Chart::new(
+    let mut chart = Chart::new(
         "turns-acceleration",
         "Acceleration over the first turns (with a collision at each full turn)",
         Axis::linear("time t", "s").column("t_s"),
         Axis::linear("a / (g sin α)", "1").column("a_over_g_sin_alpha"),
     )
-    .with_legend(Legend::LowerRight)
-    .with_series(Series::from_samples(
-        &label(ModelKind::Turns),
-        &turns_traj.samples,
-        |p| p.t_s,
-        |p| p.a_m_s2 / g,
-    ))
-    .with_series(
-        Series::from_samples(
-            &label(ModelKind::TurnsExact),
-            &exact_traj.samples,
-            |p| p.t_s,
-            |p| p.a_m_s2 / g,
-        )
-        .style(Style::Dashed),
-    );
+    .with_legend(Legend::LowerRight);
+    for kind in [ModelKind::Turns, ModelKind::TurnsExact] {
+        let traj = run(kind, lab, &first_turns)?;
+        let series = Series::from_samples(&label(kind), &traj.samples, |p| p.t_s, |p| p.a_m_s2 / g);
+        chart = chart.with_series(styled(series, kind));
+    }
+    Ok(chart)
+}
 
-    let mut means = Chart::new(
+/// The long-run means of the turn model against the number of turns.
+fn means_chart(paper: &TurnTable) -> Chart {
+    let checkpoints = &paper.summary.checkpoints;
+    let k_span: Vec<f64> = checkpoints.iter().map(|c| c.turns as f64).collect();
+    let flat = |v: f64| -> Vec<(f64, f64)> { k_span.iter().map(|&k| (k, v)).collect() };
+    let of = |f: fn(&crate::models::TurnCheckpoint) -> f64| -> Vec<(f64, f64)> {
+        checkpoints.iter().map(|c| (c.turns as f64, f(c))).collect()
+    };
+    Chart::new(
         "turns-long-run-means",
         "Long-run mean acceleration of the turn-by-turn model",
         Axis::log("turns completed K", "1").column("turns"),
         Axis::linear("mean a / (g sin α)", "1").column("mean_a_over_g_sin_alpha"),
     )
-    .with_legend(Legend::UpperRight);
-    let checkpoints = &paper.summary.checkpoints;
-    let k_span: Vec<f64> = checkpoints.iter().map(|c| c.turns as f64).collect();
-    let flat = |v: f64| -> Vec<(f64, f64)> { k_span.iter().map(|&k| (k, v)).collect() };
-    means = means
-        .with_series(Series::new(
-            "in turn, mean over turns K/10 … K",
-            checkpoints
-                .iter()
-                .map(|c| (c.turns as f64, c.window_mean_a_turn_over_g))
-                .collect(),
-        ))
-        .with_series(Series::new(
-            "with collisions, mean over turns K/10 … K",
-            checkpoints
-                .iter()
-                .map(|c| (c.turns as f64, c.window_mean_a_with_collision_over_g))
-                .collect(),
-        ))
-        .with_series(
-            Series::new(
-                "in turn, mean over all K turns",
-                checkpoints
-                    .iter()
-                    .map(|c| (c.turns as f64, c.mean_a_turn_over_g))
-                    .collect(),
-            )
-            .style(Style::Markers),
+    .with_legend(Legend::UpperRight)
+    .with_series(Series::new(
+        "in turn, mean over turns K/10 … K",
+        of(|c| c.window_mean_a_turn_over_g),
+    ))
+    .with_series(Series::new(
+        "with collisions, mean over turns K/10 … K",
+        of(|c| c.window_mean_a_with_collision_over_g),
+    ))
+    .with_series(
+        Series::new(
+            "in turn, mean over all K turns",
+            of(|c| c.mean_a_turn_over_g),
         )
-        .with_series(
-            Series::new(
-                "with collisions, mean over all K turns",
-                checkpoints
-                    .iter()
-                    .map(|c| (c.turns as f64, c.mean_a_with_collision_over_g))
-                    .collect(),
-            )
-            .style(Style::Markers),
+        .style(Style::Markers),
+    )
+    .with_series(
+        Series::new(
+            "with collisions, mean over all K turns",
+            of(|c| c.mean_a_with_collision_over_g),
         )
-        .with_series(Series::new("note, eq. (79): 4/9", flat(4.0 / 9.0)).style(Style::Dashed))
-        .with_series(Series::new("1/3", flat(1.0 / 3.0)).style(Style::Dashed))
-        .with_series(Series::new("1/4", flat(0.25)).style(Style::Dashed));
+        .style(Style::Markers)
+        .marker(Marker::Square),
+    )
+    .with_series(Series::new("note, eq. (79): 4/9", flat(4.0 / 9.0)).style(Style::Dashed))
+    .with_series(Series::new("1/3", flat(1.0 / 3.0)).style(Style::LongDashed))
+    .with_series(Series::new("1/4", flat(0.25)).style(Style::Dotted))
+}
 
-    // Energy ledger: potential energy released (T_end − T_beg within each
-    // turn, energy being conserved in the turn), kinetic energy, and the
-    // collisions' losses, summed over turns.
+/// Energy ledger of the turn model: potential energy released (T_end − T_beg
+/// within each turn, energy being conserved in the turn), kinetic energy, and
+/// the collisions' losses, summed over turns.
+fn energy_ledger_chart(s: &Scenario, paper: &TurnTable) -> Chart {
     let (b, r0) = (s.snow_depth(), s.initial_radius());
     let rho_l = s.density() * s.length();
     let mut released = 0.0;
@@ -397,7 +485,7 @@ pub fn build_paper_report(
             ledger_kinetic.push((kk, kinetic_energy_at_turn_start(rho_l, r1, row.v_after_m_s)));
         }
     }
-    let ledger = Chart::new(
+    Chart::new(
         "turns-energy-ledger",
         "Energy ledger of the turn-by-turn model",
         Axis::log("turns completed", "1").column("turns"),
@@ -411,7 +499,154 @@ pub fn build_paper_report(
     .with_series(
         Series::new("kinetic energy after the collision", ledger_kinetic).style(Style::Dashed),
     )
-    .with_series(Series::new("lost in collisions (sum)", ledger_lost));
+    .with_series(Series::new("lost in collisions (sum)", ledger_lost).style(Style::Dotted))
+}
+
+/// The report's metadata: the scenario, the tolerances, the long runs.
+fn metadata(lab: &Lab, opts: &SimOptions) -> Metadata {
+    let file = ScenarioFile::from(*lab.scenario());
+    Metadata::new("snowroll: McDonald's snowball/log note, reproduced and judged")
+        .param("alpha_deg", file.alpha_deg)
+        .param("snow_depth", file.snow_depth)
+        .param("r0", file.r0)
+        .param("g", file.g)
+        .param("density", file.density)
+        .param("length", file.length)
+        .param("v0", file.v0)
+        .param("rtol", format!("{:e}", opts.tolerances.rtol))
+        .param("atol", format!("{:e}", opts.tolerances.atol))
+        .param("long_run_turns", lab.turns())
+}
+
+/// The figures of the report, each with its caption and the claims it
+/// supports, in the order they are shown.
+fn figures(
+    charts: Charts,
+    runs: &CircularRuns,
+    paper: &TurnTable,
+    lab: &Lab,
+    opts: &SimOptions,
+) -> Vec<Figure> {
+    let file = ScenarioFile::from(*lab.scenario());
+    // Each figure's footer names the scenario; the full list is in the metadata.
+    let short = |f: Figure| {
+        f.param("alpha_deg", file.alpha_deg)
+            .param("snow_depth", file.snow_depth)
+            .param("r0", file.r0)
+            .param("v0", file.v0)
+            .param("rtol", format!("{:e}", opts.tolerances.rtol))
+    };
+    // The terminal values in the caption come from the library's coefficients.
+    let terminal_values = same_equation_groups(&circular_models())
+        .iter()
+        .filter_map(|group| {
+            group[0].terminal_fraction().map(|f| {
+                let eqs = group.iter().map(|k| k.equation()).collect::<Vec<_>>();
+                format!("{} for {}", notation::fixed(f, 4), eqs.join(" = "))
+            })
+        })
+        .collect::<Vec<_>>()
+        .join(", ");
+    let overall = paper.summary.overall();
+    let in_turn_mean = overall.map_or(f64::NAN, |c| c.window_mean_a_turn_over_g);
+    let with_collisions = overall.map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g);
+    let same = runs.caption();
+    let Charts {
+        accel,
+        speed,
+        radius,
+        approach,
+        in_turn,
+        means,
+        ledger,
+    } = charts;
+    vec![
+        Figure::new(accel, &format!("a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value ({terminal_values}); the turn-by-turn models (markers: the mean over each turn) settle near {} within a turn over the last decade of the long run. {same} Curves that lie close differ in dash pattern and markers as well as colour.", notation::fixed(in_turn_mean, 4))).supports(&["circular-analyses-differ", "terminal-accelerations", "eq35-terminal-third", "loney-limit-fifth", "multi-turn-never-settles"]),
+        Figure::new(speed, &format!("Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration. {same}")).supports(&["terminal-accelerations"]),
+        Figure::new(radius, "Radius against time: π r² = π r₀² + b x (eq. (8)); the turn models grow by b per full turn.").supports(&["eq70-mass-after-first-turn"]),
+        Figure::new(approach, &format!("How fast each circular model approaches its terminal acceleration: |a − a_term| against x, one curve per equation (eq. (4) stands for Loney's fn. 4, its closed form). Models with only the v² term approach as a power, ∝ r⁻ᵖ with p = 2(1 + 2cᵥ) (x{} for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at {}, the accuracy of the integration.", notation::superscript("-10/3"), notation::number(APPROACH_FLOOR, 1))).supports(&["eq36-slows-approach", "eq33-35-terminal-argument", "loney-limit-fifth"]),
+        Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties.").supports(&["multi-turn-never-settles", "first-turn-58-64-69", "eq89-collision", "eq73-truncates-exact"]),
+        Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {} G within turns and {} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, notation::fixed(in_turn_mean, 4), notation::fixed(with_collisions, 4))).supports(&["multi-turn-mean-four-ninths", "multi-turn-never-settles"]),
+        Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed.").supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),
+    ]
+    .into_iter()
+    .map(short)
+    .collect()
+}
+
+/// Every chart of the report before captions.
+struct Charts {
+    accel: Chart,
+    speed: Chart,
+    radius: Chart,
+    approach: Chart,
+    in_turn: Chart,
+    means: Chart,
+    ledger: Chart,
+}
+
+/// Runs every claim and every figure's scenarios and assembles the report.
+/// `progress` is called before each step.
+///
+/// # Errors
+/// [`ReportError`] when a simulation or a figure fails.
+pub fn build_paper_report(
+    lab: &Lab,
+    progress: &mut dyn FnMut(Progress<'_>),
+) -> Result<Report, ReportError> {
+    let total = paper_steps();
+    let mut step = 0;
+    let mut tick = |label: &str| {
+        progress(Progress {
+            done: step,
+            total,
+            label,
+        });
+        step += 1;
+    };
+    let s = lab.scenario();
+    let opts = SimOptions::default();
+
+    let mut claims: Vec<ClaimResult> = Vec::with_capacity(CLAIMS.len());
+    for check in CLAIMS {
+        tick(check.claim.id);
+        claims.push(check.run(lab)?);
+    }
+
+    tick("where the turn models part ways");
+    let parting = parting_table(lab)?;
+
+    tick("contact forces: smallest μ, hop per turn, collision variants");
+    let contact_tables = [
+        super::contact::mu_min_table(lab)?,
+        super::contact::collision_table(lab)?,
+    ];
+    let contact_figure = super::contact::min_normal_figure(lab)?;
+
+    tick("trajectories of every model");
+    let runs = CircularRuns::new(lab, &opts)?;
+    let paper = lab.long_run(false)?;
+    let exact = lab.long_run(true)?;
+    let [accel, speed, radius] = model_charts(
+        s,
+        &runs,
+        [(paper, ModelKind::Turns), (exact, ModelKind::TurnsExact)],
+    );
+
+    tick("approach to the terminal accelerations");
+    let approach = approach_chart(lab, &opts)?;
+
+    tick("turn-by-turn model");
+    let in_turn = in_turn_chart(lab, &opts)?;
+    let charts = Charts {
+        accel,
+        speed,
+        radius,
+        approach,
+        in_turn,
+        means: means_chart(paper),
+        ledger: energy_ledger_chart(s, paper),
+    };
 
     tick("the snowball");
     let snowball = super::snowball::snowball_figure(lab, &log_times())?;
@@ -429,54 +664,82 @@ pub fn build_paper_report(
     )?;
     let animation = Animation::from_trajectory(&anim_traj, s, FRAMES)?;
 
-    let file = ScenarioFile::from(*s);
-    let metadata = Metadata::new("snowroll: McDonald's snowball/log note, reproduced and judged")
-        .param("alpha_deg", file.alpha_deg)
-        .param("snow_depth", file.snow_depth)
-        .param("r0", file.r0)
-        .param("g", file.g)
-        .param("density", file.density)
-        .param("length", file.length)
-        .param("v0", file.v0)
-        .param("rtol", format!("{:e}", opts.tolerances.rtol))
-        .param("atol", format!("{:e}", opts.tolerances.atol))
-        .param("long_run_turns", lab.turns());
-    // Each figure's footer names the scenario; the full list is in the metadata.
-    let short = |f: Figure| {
-        f.param("alpha_deg", file.alpha_deg)
-            .param("b_m", file.snow_depth)
-            .param("r0", file.r0)
-            .param("v0", file.v0)
-            .param("rtol", format!("{:e}", opts.tolerances.rtol))
-    };
-    // The terminal values in the caption come from the library's coefficients.
-    let terminal_values = circular
-        .iter()
-        .filter_map(|k| {
-            k.terminal_fraction()
-                .map(|f| format!("{f:.4} for {}", k.equation()))
-        })
-        .collect::<Vec<_>>()
-        .join(", ");
-    let figures: Vec<Figure> = vec![
-        Figure::new(accel, &format!("a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value ({terminal_values}); the turn-by-turn models (markers: the mean over each turn) settle near {:.4} within a turn over the last decade of the long run.", paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g))).supports(&["circular-analyses-differ", "terminal-accelerations", "eq35-terminal-third", "loney-limit-fifth", "multi-turn-never-settles"]),
-        Figure::new(speed, "Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration.").supports(&["terminal-accelerations"]),
-        Figure::new(radius, "Radius against time: π r² = π r0² + b x (eq. (8)); the turn models grow by b per full turn.").supports(&["eq70-mass-after-first-turn"]),
-        Figure::new(approach, "How fast each circular model approaches its terminal acceleration: |a − a_term| against x. Models with only the v² term approach as a power r^−2(1+2c_v) (x^−10/3 for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at 1e-10, the accuracy of the integration.").supports(&["eq36-slows-approach", "eq33-35-terminal-argument", "loney-limit-fifth"]),
-        Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties.").supports(&["multi-turn-never-settles", "first-turn-58-64-69", "eq89-collision", "eq73-truncates-exact"]),
-        Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {:.4} G within turns and {:.4} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_turn_over_g), paper.summary.overall().map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g))).supports(&["multi-turn-mean-four-ninths", "multi-turn-never-settles"]),
-        Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed.").supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),
-        snowball,
-    ]
-    .into_iter()
-    .map(short)
-    .chain([contact_figure])
-    .collect();
     Ok(Report {
-        metadata,
+        metadata: metadata(lab, &opts),
         claims,
         tables: [vec![parting], contact_tables.to_vec()].concat(),
-        figures,
+        figures: figures(charts, &runs, paper, lab, &opts)
+            .into_iter()
+            .chain([snowball, contact_figure])
+            .collect(),
         animation: Some(animation),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 3 px of the 600 px figure: curves closer than this look like one.
+    const HIDDEN_TOL: f64 = 0.005;
+
+    fn lab() -> Lab {
+        Lab::new(Scenario::default(), 100)
+    }
+
+    #[test]
+    fn models_with_one_equation_are_grouped_and_agree() {
+        let groups = same_equation_groups(&circular_models());
+        let grouped: Vec<&Vec<ModelKind>> = groups.iter().filter(|g| g.len() > 1).collect();
+        assert_eq!(
+            grouped,
+            [
+                &vec![ModelKind::TorqueCm, ModelKind::Loney],
+                &vec![ModelKind::EnergyThin, ModelKind::QuasiCircularLift]
+            ]
+        );
+        // Same equation, so the runs differ only by the integration error
+        // (rtol 1e-10 on v; Loney's quadrature at 1e-14): 1e-6 G is far above
+        // that and far below a pixel (about 2e-3 G on the figure).
+        let runs = CircularRuns::new(&lab(), &SimOptions::default()).unwrap();
+        assert_eq!(runs.agreement.len(), 2);
+        for (group, worst) in &runs.agreement {
+            assert!(*worst < 1e-6, "{group:?}: {worst}");
+        }
+        let caption = runs.caption();
+        assert!(
+            caption.contains("eq. (15) and eqs. (32)+(36) are one equation"),
+            "{caption}"
+        );
+    }
+
+    #[test]
+    fn every_listed_curve_can_be_seen() {
+        let lab = lab();
+        let opts = SimOptions::default();
+        let runs = CircularRuns::new(&lab, &opts).unwrap();
+        let long = [
+            (lab.long_run(false).unwrap(), ModelKind::Turns),
+            (lab.long_run(true).unwrap(), ModelKind::TurnsExact),
+        ];
+        let [accel, speed, _] = model_charts(lab.scenario(), &runs, long);
+        let approach = approach_chart(&lab, &opts).unwrap();
+        for chart in [&accel, &speed, &approach] {
+            let hidden = chart.indistinct_pairs(HIDDEN_TOL);
+            assert!(hidden.is_empty(), "{}: {hidden:?}", chart.name);
+            // One legend entry per curve: no name twice.
+            let mut names: Vec<&str> = chart.series.iter().map(|s| s.name.as_str()).collect();
+            names.sort_unstable();
+            names.dedup();
+            assert_eq!(names.len(), chart.series.len(), "{}", chart.name);
+        }
+        // The check has teeth: drawn all alike, curves hide one another
+        // (every model starts from rest near 2G/3).
+        let mut alike = accel.clone();
+        for s in &mut alike.series {
+            s.style = Style::Line;
+            s.marker = None;
+        }
+        assert!(!alike.indistinct_pairs(HIDDEN_TOL).is_empty());
+    }
 }

@@ -66,6 +66,11 @@ pub(super) fn snowball_figure(lab: &Lab, times: &[f64]) -> Result<Figure, Report
             fractions.join(", ")
         ),
     )
+    .param("shape", "sphere")
+    .param("alpha_deg", ScenarioFile::from(s).alpha_deg)
+    .param("snow_depth", ScenarioFile::from(s).snow_depth)
+    .param("r0", ScenarioFile::from(s).r0)
+    .param("rtol", format!("{:e}", opts.tolerances.rtol))
     .supports(&[
         "snowball-five-sevenths",
         "snowball-terminal-fractions",

@@ -76,13 +76,15 @@ impl TurnVariant {
         }
     }
 
-    /// The variant of a turn model; `None` for the other models.
+    /// The variant of a turn model; `None` for the other models (those that
+    /// [`MODEL_TABLE`](crate::model_kind::MODEL_TABLE) does not mark as turn models).
     pub fn of(kind: ModelKind) -> Option<Self> {
         match kind {
             ModelKind::Turns => Some(TurnVariant::Paper),
             ModelKind::TurnsExact => Some(TurnVariant::Exact),
             _ => None,
         }
+        .filter(|_| kind.is_turn_model())
     }
 }
 

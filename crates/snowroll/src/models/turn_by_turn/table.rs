@@ -365,7 +365,7 @@ pub fn run_turns(
         given: kind.id().to_string(),
         expected: ModelKind::ALL
             .iter()
-            .filter(|k| TurnVariant::of(**k).is_some())
+            .filter(|k| k.is_turn_model())
             .map(|k| format!("{} ({})", k.id(), k.alias()))
             .collect::<Vec<_>>()
             .join(", "),

@@ -105,17 +105,21 @@ pub(super) fn never_settles(lab: &Lab) -> Result<Finding, SimError> {
         ok &= SWING.accepts(lo, lo_want) && SWING.accepts(hi, hi_want);
         numbers.extend([lo, hi]);
         parts.push(format!(
-            "{}, turns {}–{}: a/(g sin α) within a turn ranges over [{lo:.4}, {hi:.4}]",
+            "{}, turns {}–{}: a/(g sin α) within a turn ranges over [{}, {}]",
             table.model.id(),
             w.window_first_turn,
-            w.turns - 1
+            w.turns - 1,
+            crate::report::notation::fixed(lo, 4),
+            crate::report::notation::fixed(hi, 4)
         ));
     }
     Ok(Finding {
         measured: parts.join("; "),
         verdict: holds_if(ok, &numbers),
         evidence: format!(
-            "derived range [{lo_want:.4}, {hi_want:.4}] (from v² → {:.4} π G k² b): the swing does not shrink with k; measured {} {:e}",
+            "derived range [{}, {}] (from v² → {:.4} π G k² b): the swing does not shrink with k; measured {} {:e}",
+            crate::report::notation::fixed(lo_want, 4),
+            crate::report::notation::fixed(hi_want, 4),
             limits.speed_ratio,
             pass(ok),
             SWING.value()
@@ -338,7 +342,7 @@ pub(super) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> {
         ),
         verdict: holds_if(ok, &[worst_l, worst_t, first_loss]),
         evidence: format!(
-            "the angular momentum of the disk and layer about the contact line, integrated element by element, is the same just before and just after every collision ({}); the collision therefore keeps the fraction (r_{{k+1}}² + 2r_k²)/(3r_{{k+1}}²) ≈ 1 − 4b/(3r) of the kinetic energy",
+            "the angular momentum of the disk and layer about the contact line, integrated element by element, is the same just before and just after every collision ({}); the collision therefore keeps the fraction (rₖ₊₁² + 2rₖ²)/(3rₖ₊₁²) ≈ 1 − 4b/(3r) of the kinetic energy",
             bound(&COLLISION_L, ok)
         ),
     })
@@ -346,9 +350,9 @@ pub(super) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> {
 
 /// `collision-potential-jump`: the neglected lift, against its derived order.
 pub(super) const JUMP_ORDER: Criterion = Criterion {
-    quantity: "relative |(ΔV/ΔE_turn)·(r_k/b) at the last turn − C/(2πG)|",
+    quantity: "relative |(ΔV/ΔE_turn)·(rₖ/b) at the last turn − C/(2πG)|",
     tolerance: Tolerance::Relative { value: 1e-2 },
-    reason: "ΔE_turn = m G 2π r_k (1 + O(b/r_k)); b/r_k ≤ 1e-3 at the last turn of a 10⁴-turn run",
+    reason: "ΔE_turn = m G 2π rₖ (1 + O(b/rₖ)); b/rₖ ≤ 1e-3 at the last turn of a 10⁴-turn run",
 };
 
 /// §3.4 (`docs/errata.md`, the collision's potential energy): at each
@@ -392,14 +396,14 @@ pub(super) fn collision_potential_jump(lab: &Lab) -> Result<Finding, SimError> {
     let dv0 = 1.0 - (1.0 - f0).sqrt();
     Ok(Finding {
         measured: format!(
-            "turn 0: the rise m g b cos α is {:.2} % of the energy the turn released and would lower v after the collision by {:.2} %; turn {}: ratio × r_k/b = {scaled:.5}",
+            "turn 0: the rise m g b cos α is {:.2} % of the energy the turn released and would lower v after the collision by {:.2} %; turn {}: ratio × rₖ/b = {scaled:.5}",
             100.0 * q0,
             100.0 * dv0,
             last.turn
         ),
         verdict: holds_if(ok, &[q0, f0, scaled]),
         evidence: format!(
-            "the neglected potential energy is of relative order b/r per turn: (ΔV/ΔE)·(r_k/b) → C/(2πG) = {want:.5} ({} {:.0} %); it matters only in the first turns",
+            "the neglected potential energy is of relative order b/r per turn: (ΔV/ΔE)·(rₖ/b) → C/(2πG) = {want:.5} ({} {:.0} %); it matters only in the first turns",
             pass(ok),
             100.0 * JUMP_ORDER.value()
         ),
@@ -513,7 +517,7 @@ pub(super) fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
             &[worst_exact, worst_paper],
         ),
         evidence: format!(
-            "(88) is the exact-geometry energy balance of a turn: with the corrected (87) and turn k starting at r_k (the note's n = k + 1) it matches the exact-geometry integration ({} {:e}); the printed (87) puts a force where an energy belongs and uses the cumulative x_n, and reading (80)–(88) with the index of (73) shifts r by b",
+            "(88) is the exact-geometry energy balance of a turn: with the corrected (87) and turn k starting at rₖ (the note's n = k + 1) it matches the exact-geometry integration ({} {:e}); the printed (87) puts a force where an energy belongs and uses the cumulative xₙ, and reading (80)–(88) with the index of (73) shifts r by b",
             pass(corrected_ok),
             EQ88_EXACT.value()
         ),

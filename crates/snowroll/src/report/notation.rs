@@ -1,0 +1,315 @@
+//! One notation for numbers and symbols in the report: Unicode superscripts
+//! and subscripts (`10⁻¹²`, `r₀`, `s^−7/3` as `s⁻⁷ᐟ³`), no negative zero, no
+//! ASCII `^(…)` or LaTeX `_{…}`.
+
+/// The Unicode superscript of `c`, for digits, signs and `/`, `(`, `)`.
+fn superscript_char(c: char) -> Option<char> {
+    Some(match c {
+        '0' => '⁰',
+        '1' => '¹',
+        '2' => '²',
+        '3' => '³',
+        '4' => '⁴',
+        '5' => '⁵',
+        '6' => '⁶',
+        '7' => '⁷',
+        '8' => '⁸',
+        '9' => '⁹',
+        '-' | '−' => '⁻',
+        '+' => '⁺',
+        '/' => 'ᐟ',
+        '(' => '⁽',
+        ')' => '⁾',
+        'i' => 'ⁱ',
+        'k' => 'ᵏ',
+        'n' => 'ⁿ',
+        'p' => 'ᵖ',
+        'x' => 'ˣ',
+        _ => return None,
+    })
+}
+
+/// `text` in superscript: digits, signs, `/` and parentheses (other
+/// characters are kept as they are).
+pub fn superscript(text: &str) -> String {
+    text.chars()
+        .map(|c| superscript_char(c).unwrap_or(c))
+        .collect()
+}
+
+/// `x` with `digits` significant figures: plain between 10⁻³ and 10⁵,
+/// else `m×10ᵉ` (`3.2×10⁻¹²`, `10⁻¹⁰` for a mantissa of 1). Never `-0`.
+pub fn number(x: f64, digits: usize) -> String {
+    if !x.is_finite() {
+        return x.to_string();
+    }
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    let digits = digits.max(1);
+    let text = format!("{:.*e}", digits - 1, x);
+    let Some((mantissa, exp)) = text.split_once('e') else {
+        return text;
+    };
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let sign = if x < 0.0 { "−" } else { "" };
+    let mantissa = mantissa.trim_start_matches('-');
+    if (-3..5).contains(&exp) {
+        let decimals = (digits as i32 - 1 - exp).max(0) as usize;
+        let plain = format!("{:.*}", decimals, x.abs());
+        return format!("{sign}{plain}");
+    }
+    let mantissa = if mantissa.contains('.') {
+        mantissa.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        mantissa
+    };
+    let power = format!("10{}", superscript(&exp.to_string()));
+    if mantissa == "1" {
+        format!("{sign}{power}")
+    } else {
+        format!("{sign}{mantissa}×{power}")
+    }
+}
+
+/// `x` in its shortest round-trip digits: plain between 10⁻² and 10⁴
+/// (`0.01`, `2.5`), else `m×10ᵉ` (`10⁻³`, `5×10⁻⁴`): for tolerances and
+/// other numbers people typed.
+pub fn compact(x: f64) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return number(x, 1);
+    }
+    let text = format!("{:e}", x.abs());
+    let Some((mantissa, exp)) = text.split_once('e') else {
+        return text;
+    };
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let sign = if x < 0.0 { "−" } else { "" };
+    if (-2..4).contains(&exp) {
+        return format!("{sign}{}", x.abs());
+    }
+    let power = format!("10{}", superscript(&exp.to_string()));
+    if mantissa == "1" {
+        format!("{sign}{power}")
+    } else {
+        format!("{sign}{mantissa}×{power}")
+    }
+}
+
+/// `x` with `decimals` decimals and a Unicode minus, never `−0.000`: a value
+/// that rounds to zero prints as zero.
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let text = format!("{:.*}", decimals, x);
+    match text.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        Some(rest) => format!("−{rest}"),
+        None => text,
+    }
+}
+
+/// The Unicode subscript of `c`, where there is one.
+fn subscript_char(c: char) -> Option<char> {
+    Some(match c {
+        '0'..='9' => char::from_u32(0x2080 + (c as u32 - '0' as u32))?,
+        '+' => '₊',
+        '-' | '−' => '₋',
+        '(' => '₍',
+        ')' => '₎',
+        'a' => 'ₐ',
+        'e' => 'ₑ',
+        'h' => 'ₕ',
+        'i' => 'ᵢ',
+        'j' => 'ⱼ',
+        'k' => 'ₖ',
+        'l' => 'ₗ',
+        'm' => 'ₘ',
+        'n' => 'ₙ',
+        'o' => 'ₒ',
+        'p' => 'ₚ',
+        'r' => 'ᵣ',
+        's' => 'ₛ',
+        't' => 'ₜ',
+        'u' => 'ᵤ',
+        'v' => 'ᵥ',
+        'x' => 'ₓ',
+        _ => return None,
+    })
+}
+
+/// `inner` wholly in super- or subscript, if every character has one.
+fn all_in(inner: &str, map: fn(char) -> Option<char>) -> Option<String> {
+    inner.chars().map(map).collect()
+}
+
+/// Report prose in the report's one notation: `1.5e-7` → `1.5×10⁻⁷`,
+/// `s^(−7/3)` → `s⁻⁷ᐟ³`, `r_{k+1}` → `rₖ₊₁`, and a negative zero such as
+/// `-0.0000` → `0.0000`. Text between backticks is left alone (commands and
+/// identifiers), and so are tokens that are part of a word (`eq32+36`,
+/// `x_m`).
+pub fn prettify(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 16);
+    for (i, part) in text.split('`').enumerate() {
+        if i > 0 {
+            out.push('`');
+        }
+        if i % 2 == 1 {
+            out.push_str(part);
+        } else {
+            out.push_str(&prettify_plain(part));
+        }
+    }
+    out
+}
+
+fn prettify_plain(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len() + 16);
+    let mut i = 0;
+    let word = |c: char| c.is_alphanumeric() || c == '_' || c == '.';
+    while i < chars.len() {
+        let c = chars[i];
+        let starts_token = i == 0 || !word(chars[i - 1]);
+        // ^(…) and _{…}: the whole group in super/subscript, or untouched.
+        if (c == '^' && chars.get(i + 1) == Some(&'('))
+            || (c == '_' && chars.get(i + 1) == Some(&'{'))
+        {
+            let close = if c == '^' { ')' } else { '}' };
+            if let Some(len) = chars[i + 2..].iter().position(|&d| d == close) {
+                let inner: String = chars[i + 2..i + 2 + len].iter().collect();
+                let map = if c == '^' {
+                    superscript_char
+                } else {
+                    subscript_char
+                };
+                if let Some(mapped) = all_in(&inner, map) {
+                    out.push_str(&mapped);
+                    i += len + 3;
+                    continue;
+                }
+            }
+        }
+        // ^−7/3, ^2, ^−p: the run of characters that have a superscript.
+        if c == '^' && chars.get(i + 1) != Some(&'(') {
+            let run = chars[i + 1..]
+                .iter()
+                .take_while(|&&d| superscript_char(d).is_some())
+                .count();
+            if run > 0 {
+                let inner: String = chars[i + 1..i + 1 + run].iter().collect();
+                out.push_str(&superscript(&inner));
+                i += run + 1;
+                continue;
+            }
+        }
+        // A number at the start of a token: scientific form or negative zero.
+        let minus = c == '-' || c == '−';
+        let digit_at = if minus { i + 1 } else { i };
+        if starts_token && chars.get(digit_at).is_some_and(char::is_ascii_digit) {
+            let mut j = digit_at;
+            while j < chars.len() && (chars[j].is_ascii_digit() || chars[j] == '.') {
+                j += 1;
+            }
+            let mantissa: String = chars[digit_at..j].iter().collect();
+            let mut end = j;
+            let mut exponent = None;
+            if chars.get(j) == Some(&'e') {
+                let mut k = j + 1;
+                if matches!(chars.get(k), Some('-' | '+')) {
+                    k += 1;
+                }
+                let digits_start = k;
+                while k < chars.len() && chars[k].is_ascii_digit() {
+                    k += 1;
+                }
+                if k > digits_start && !chars.get(k).is_some_and(|&d| word(d)) {
+                    let e: String = chars[j + 1..k].iter().collect();
+                    exponent = e.trim_start_matches('+').parse::<i32>().ok();
+                    end = k;
+                }
+            }
+            let followed_by_word = chars
+                .get(end)
+                .is_some_and(|&d| d.is_alphabetic() || d == '_');
+            let is_zero = mantissa.chars().all(|d| d == '0' || d == '.');
+            if !followed_by_word && !mantissa.ends_with('.') {
+                let sign = if minus && !is_zero { "−" } else { "" };
+                match exponent {
+                    Some(e) => {
+                        let m = mantissa.as_str();
+                        let power = format!("10{}", superscript(&e.to_string()));
+                        if m == "1" {
+                            out.push_str(&format!("{sign}{power}"));
+                        } else {
+                            out.push_str(&format!("{sign}{m}×{power}"));
+                        }
+                    }
+                    None => out.push_str(&format!("{sign}{mantissa}")),
+                }
+                i = end;
+                continue;
+            }
+        }
+        out.push(c);
+        i += 1;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn superscripts_cover_digits_signs_and_fractions() {
+        assert_eq!(superscript("-7/3"), "⁻⁷ᐟ³");
+        assert_eq!(superscript("(12)"), "⁽¹²⁾");
+    }
+
+    #[test]
+    fn numbers_use_powers_of_ten_outside_the_plain_range() {
+        assert_eq!(number(1e-10, 2), "10⁻¹⁰");
+        assert_eq!(number(3.24e-12, 2), "3.2×10⁻¹²");
+        assert_eq!(number(-2.5e7, 3), "−2.5×10⁷");
+        assert_eq!(number(0.0123, 2), "0.012");
+        assert_eq!(number(1234.0, 2), "1234");
+        assert_eq!(number(0.0, 3), "0");
+    }
+
+    #[test]
+    fn compact_keeps_the_digits_people_typed() {
+        assert_eq!(compact(1e-3), "10⁻³");
+        assert_eq!(compact(5e-4), "5×10⁻⁴");
+        assert_eq!(compact(2.5e-12), "2.5×10⁻¹²");
+        assert_eq!(compact(0.01), "0.01");
+        assert_eq!(compact(0.5), "0.5");
+        assert_eq!(compact(1e6), "10⁶");
+    }
+
+    #[test]
+    fn prose_gets_one_notation() {
+        assert_eq!(
+            prettify("measured 1.2e-5 relative"),
+            "measured 1.2×10⁻⁵ relative"
+        );
+        assert_eq!(prettify("within 1e-10"), "within 10⁻¹⁰");
+        assert_eq!(prettify("K s^(−7/3), r_{k+1}²"), "K s⁻⁷ᐟ³, rₖ₊₁²");
+        assert_eq!(prettify("∝ r^−p, b^2 terms"), "∝ r⁻ᵖ, b² terms");
+        assert_eq!(prettify("over [-0.0000, 0.6667]"), "over [0.0000, 0.6667]");
+        assert_eq!(prettify("a = -0.25 G"), "a = −0.25 G");
+        // Words, identifiers and code stay as they are.
+        assert_eq!(prettify("eq32+36 and x_m, v2e3"), "eq32+36 and x_m, v2e3");
+        assert_eq!(
+            prettify("run `--rtol 1e-10` then"),
+            "run `--rtol 1e-10` then"
+        );
+        assert_eq!(prettify("3 turns, 2.5 m/s"), "3 turns, 2.5 m/s");
+    }
+
+    #[test]
+    fn fixed_never_prints_negative_zero() {
+        assert_eq!(fixed(-0.0, 4), "0.0000");
+        assert_eq!(fixed(-1e-9, 4), "0.0000");
+        assert_eq!(fixed(-0.25, 2), "−0.25");
+        assert_eq!(fixed(2.0 / 3.0, 4), "0.6667");
+    }
+}
