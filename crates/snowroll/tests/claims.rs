@@ -198,6 +198,13 @@ fn slip_mu_min_notices_a_model_that_needs_the_wrong_friction() {
         perturbed(Derivation::QuasiCircular, |c| c.drag = 7.0 / 6.0),
     );
     changes("slip-mu-min", &wrong);
+    // eq. (14) lifting 1 % more snow at rest: a₀, hence F/N at rest, moves
+    // by ~1e-4 relative, far outside the 1e-12 of a state known exactly.
+    let wrong = lab().with_coefficients(
+        Derivation::Energy,
+        perturbed(Derivation::Energy, |c| c.lift *= 1.01),
+    );
+    changes("slip-mu-min", &wrong);
 }
 
 #[test]

@@ -12,7 +12,9 @@
 //! F/N grows along the run for c_v > 1 (eqs. (4), (6): μ_min is F/N at the
 //! end of the run) and falls for c_v = ½ (eq. (32): μ_min is F/N at rest,
 //! `tan α/(3 + b tan α/(π r0))`). The snowless cylinder needs `tan α/3`
-//! everywhere (App. A).
+//! everywhere (App. A). With lift (eqs. (14), (15), (21) as printed,
+//! (32)+(36)) F/N is largest at rest, `(G − a₀)/(C + b a₀/(2π r0))` with
+//! `a₀` the note's acceleration at x = 0, v = 0.
 
 use super::{alpha_deg, bound, holds_if, symbols, Finding, Lab};
 use crate::error::SimError;
@@ -21,12 +23,12 @@ use crate::report::{Criterion, Tolerance};
 use crate::scenario::Scenario;
 use crate::trajectory::SimOptions;
 
-/// `slip-mu-min`: μ_min of the snowless cylinder and of eq. (32), both
-/// reached at rest, against their closed forms.
+/// `slip-mu-min`: μ_min of the snowless cylinder, of eq. (32) and of the
+/// lift models, all reached at rest, against their closed forms.
 pub(super) const MU_AT_REST: Criterion = Criterion {
-    quantity: "max over the run of |F|/N against tan α/3 (snowless) and tan α/(3 + b tan α/(π r0)) (eq. (32))",
+    quantity: "max over the run of |F|/N against tan α/3 (snowless), tan α/(3 + b tan α/(π r0)) (eq. (32)) and (G − a₀)/(C + b a₀/(2π r0)) (eqs. (14), (15), (21), (32)+(36))",
     tolerance: Tolerance::Relative { value: 1e-12 },
-    reason: "both maxima sit where the state is exact (every sample of the snowless run; the first sample, at rest, of eq. (32)): N and F are a few roundings of m g",
+    reason: "these maxima sit where the state is exact (every sample of the snowless run; the first sample, at rest, of the others): N and F are a few roundings of m g",
 };
 
 /// `slip-mu-min`: μ_min of eqs. (4) and (6), reached at the end of the run,
@@ -69,6 +71,20 @@ fn ratio_no_lift(s: &Scenario, c_v: f64, r: f64) -> f64 {
     let f = gs / 3.0 + (c_v - 1.0) * q;
     let n = gc + b / (std::f64::consts::TAU * r) * (2.0 * gs / 3.0 + (0.5 - c_v) * q);
     f / n
+}
+
+/// F/N at rest of a circular model with lift (eqs. (14), (15), (21) as
+/// printed, (32)+(36)), where its F/N is largest (§5.2):
+/// `(G − a₀)/(C + b a₀/(2π r0))` with the note's acceleration at x = 0, v = 0,
+/// `a₀ = (2G/3 − C b/(π r0) − λ₂ C b²/(3π r0²))/(1 + κ b²/(6π² r0²))`
+/// (λ₂ = κ = 1 for eqs. (14), (21); 0 for eqs. (15), (32)+(36)).
+fn ratio_lift_at_rest(s: &Scenario, lambda2: f64, kappa: f64) -> f64 {
+    let sym = symbols(s);
+    let (b, r0, gs, gc) = (sym.b, sym.r0, sym.gs, sym.gc);
+    let pi = std::f64::consts::PI;
+    let a0 = (2.0 * gs / 3.0 - gc * b / (pi * r0) - lambda2 * gc * b * b / (3.0 * pi * r0 * r0))
+        / (1.0 + kappa * b * b / (6.0 * pi * pi * r0 * r0));
+    (gs - a0) / (gc + b * a0 / (2.0 * pi * r0))
 }
 
 /// The late-turn limit of μ_min for the turn models (`docs/contact-forces.md` §5.3):
@@ -115,7 +131,15 @@ pub(crate) fn mu_min_rows(lab: &Lab) -> Result<Vec<MuMinRow>, SimError> {
                     Some(tan / (3.0 + sym.b * tan / (std::f64::consts::PI * sym.r0))),
                     "tan α/(3 + b tan α/(π r0)), at rest (§5.2)",
                 ),
-                _ => (None, "largest at rest (§5.2, lift models); no closed form"),
+                ModelKind::Energy | ModelKind::LagrangianPrinted if at_rest => (
+                    Some(ratio_lift_at_rest(s, 1.0, 1.0)),
+                    "(G − a₀)/(C + b a₀/(2π r0)), a₀ = a at rest (§5.2, lift)",
+                ),
+                ModelKind::EnergyThin | ModelKind::QuasiCircularLift if at_rest => (
+                    Some(ratio_lift_at_rest(s, 0.0, 0.0)),
+                    "(G − a₀)/(C + b a₀/(2π r0)), a₀ = a at rest (§5.2, lift)",
+                ),
+                _ => (None, "no closed form from this start (§5.2 assumes rest)"),
             };
             MuMinRow {
                 kind,
@@ -150,8 +174,8 @@ pub(crate) fn mu_min_rows(lab: &Lab) -> Result<Vec<MuMinRow>, SimError> {
     Ok(rows)
 }
 
-/// Issue 10 (§5): the smallest μ of the snowless cylinder and of
-/// eqs. (4), (6), (32) over the default run against their closed forms.
+/// Issue 10 (§5): the smallest μ of every circular ODE model over the
+/// default run against its closed form.
 pub(super) fn slip_mu_min(lab: &Lab) -> Result<Finding, SimError> {
     let rows = mu_min_rows(lab)?;
     let mut ok = true;
@@ -160,7 +184,12 @@ pub(super) fn slip_mu_min(lab: &Lab) -> Result<Finding, SimError> {
     let mut checked = 0;
     for row in &rows {
         let criterion = match row.kind {
-            ModelKind::Snowless | ModelKind::QuasiCircular => &MU_AT_REST,
+            ModelKind::Snowless
+            | ModelKind::QuasiCircular
+            | ModelKind::Energy
+            | ModelKind::EnergyThin
+            | ModelKind::LagrangianPrinted
+            | ModelKind::QuasiCircularLift => &MU_AT_REST,
             ModelKind::TorqueCm | ModelKind::TorqueContact => &MU_AT_END,
             _ => continue,
         };
@@ -181,13 +210,13 @@ pub(super) fn slip_mu_min(lab: &Lab) -> Result<Finding, SimError> {
             bound(criterion, pass)
         ));
     }
-    // A scenario that does not start from rest has no closed form for eqs. (4), (6), (32).
-    ok &= checked == 4;
+    // A scenario that does not start from rest has no closed form for the snowy models.
+    ok &= checked == 8;
     Ok(Finding {
         measured: parts.join("; "),
         verdict: holds_if(ok, &numbers),
         evidence: format!(
-            "μ_min = max over the default run (t_end 100 s, every step, from rest, α = {:.2}°) of |F|/N, F and N from the momentum balance of the accreting log (`docs/contact-forces.md` §1–§2); §5.2: F/N rises along the run for eqs. (4), (6) (c_v > 1) and falls for eq. (32) (c_v = ½), so the maxima sit at the end and at rest",
+            "μ_min = max over the default run (t_end 100 s, every step, from rest, α = {:.2}°) of |F|/N, F and N from the momentum balance of the accreting log (`docs/contact-forces.md` §1–§2); §5.2: F/N rises along the run for eqs. (4), (6) (c_v > 1) and falls for eq. (32) (c_v = ½) and the lift models, so the maxima sit at the end and at rest",
             alpha_deg(lab.scenario())
         ),
     })

@@ -363,7 +363,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
         claim: Claim {
             id: "slip-mu-min",
             paper_ref: "issue 10 (App. A, §2.4, fn. 4)",
-            statement: "The smallest coefficient of static friction that keeps a model rolling over the default run is tan α/3 for the snowless cylinder, tan α/(3 + b tan α/(π r0)) for eq. (32) (needed at rest), and for eqs. (4), (6) the closed-form F/N at the end of the run (it grows towards (2/5) tan α and (1/2) tan α).",
+            statement: "The smallest coefficient of static friction that keeps a model rolling over the default run is tan α/3 for the snowless cylinder, tan α/(3 + b tan α/(π r0)) for eq. (32) and (G − a₀)/(C + b a₀/(2π r0)) for the lift models (needed at rest), and for eqs. (4), (6) the closed-form F/N at the end of the run (it grows towards (2/5) tan α and (1/2) tan α).",
             method: "max over every step of the default run (from rest, 100 s) of |F|/N, F and N from the momentum balance; against the closed forms of `docs/contact-forces.md` §5.1–§5.2 (u = v² from fn. 4's solution at the run's final radius)",
             tolerances: &[MU_AT_REST, MU_AT_END],
             expected: Verdict::Holds,
