@@ -360,3 +360,75 @@ fn the_log_coefficients_follow_from_the_general_balance() {
         5.0 / 56.0
     ));
 }
+
+/// The sympy values of `scripts/derivations/sphere.py` are printed to 15
+/// digits; the library's evaluation differs by rounding only.
+const REFERENCE_TOL: f64 = 1e-12;
+
+#[test]
+fn ball_accelerations_and_forces_match_the_independent_reference() {
+    // `reference/sphere_models.csv`: a, N/M, F/M of the ball (w = 2r) at
+    // three states per model, from the generic equations derived in sympy.
+    let text = include_str!("../../../scripts/derivations/reference/sphere_models.csv");
+    let mut checked = 0;
+    for line in text.lines().filter(|l| l.starts_with("sphere,")) {
+        let f: Vec<&str> = line.split(',').collect();
+        let kind: ModelKind = f[1].parse().unwrap();
+        let n = |i: usize| f[i].parse::<f64>().unwrap();
+        let (x, v) = (n(3), n(4));
+        // Start a run at the state (x, v) of the reference: r0 = r(x).
+        let r = (0.1f64 * 0.1 + 0.01 * x / PI).sqrt();
+        let s = Scenario::new(ScenarioFile {
+            r0: r,
+            v0: v,
+            shape: Shape::Sphere,
+            ..ScenarioFile::default()
+        })
+        .unwrap();
+        let o = SimOptions {
+            t_end: 1e-9,
+            sampling: Sampling::Ends,
+            ..SimOptions::default()
+        };
+        let p = run(kind, &s, &o).samples[0];
+        let close = |got: f64, want: f64| (got - want).abs() <= REFERENCE_TOL * want.abs().max(1.0);
+        assert!(close(p.a_m_s2, n(5)), "{line}: a {}", p.a_m_s2);
+        assert!(close(p.normal_n / p.mass_kg, n(6)), "{line}: N/M");
+        assert!(close(p.friction_n / p.mass_kg, n(7)), "{line}: F/M");
+        let (num, den) = f[2].split_once('/').unwrap();
+        let fraction = num.parse::<f64>().unwrap() / den.parse::<f64>().unwrap();
+        assert!((kind.terminal_fraction_on(&s).unwrap() - fraction).abs() < 1e-15);
+        checked += 1;
+    }
+    assert_eq!(checked, 22);
+}
+
+#[test]
+fn ball_runs_match_the_independent_rk4_reference() {
+    // `reference/circular_mu_min.csv`: each ball model from rest for 100 s
+    // (RK4, dt 1e-3, printed to 10 digits): x, v and a/G at the end, and the
+    // largest |F|/N of the run (at t = 0 or 100 s for every model). 1e-8
+    // relative covers the printed digits and RK4's error (~dt⁴).
+    let text = include_str!("../../../scripts/derivations/reference/circular_mu_min.csv");
+    let s = ball(30.0, 0.01, 0.1, None);
+    let mut checked = 0;
+    for line in text.lines().filter(|l| l.starts_with("sphere,")) {
+        let f: Vec<&str> = line.split(',').collect();
+        let kind: ModelKind = f[1].parse().unwrap();
+        let n = |i: usize| f[i].parse::<f64>().unwrap();
+        let t = run(kind, &s, &opts(100.0, None, 1e-11));
+        let last = t.samples.last().unwrap();
+        let mu = t
+            .samples
+            .iter()
+            .filter_map(|p| p.friction_ratio)
+            .fold(0.0, f64::max);
+        let close = |got: f64, want: f64| (got - want).abs() <= 1e-8 * want.abs();
+        assert!(close(mu, n(3)), "{line}: mu {mu}");
+        assert!(close(last.x_m, n(6)), "{line}: x {}", last.x_m);
+        assert!(close(last.v_m_s, n(7)), "{line}: v {}", last.v_m_s);
+        assert!(close(last.a_m_s2 / s.g_along(), n(8)), "{line}: a/G");
+        checked += 1;
+    }
+    assert_eq!(checked, 8);
+}
