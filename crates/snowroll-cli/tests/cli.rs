@@ -1379,3 +1379,69 @@ fn a_log_that_cannot_start_on_any_slope_says_so() {
     let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
     assert!(stderr.contains("cannot start on any slope"), "{stderr}");
 }
+
+#[test]
+fn models_lists_the_shapes_and_the_balls_terminal_fractions() {
+    // issue 11: the turn models take the log only; every circular model and
+    // loney take the ball too, with the fractions of
+    // docs/snowball-and-losses.md §1.3 (1/6 for torque-cm, the TPT letter's).
+    let out = snowroll()
+        .args(["models", "--format", "json"])
+        .assert()
+        .success();
+    let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+    let model = |id: &str| {
+        doc["models"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["id"] == id)
+            .unwrap()
+            .clone()
+    };
+    for id in ["turns", "turns-exact"] {
+        assert_eq!(model(id)["shapes"], serde_json::json!(["cylinder"]), "{id}");
+        assert!(model(id)["sphere_terminal_fraction"].is_null());
+    }
+    for (id, exact) in [
+        ("snowless", "5/7"),
+        ("torque-cm", "1/6"),
+        ("loney", "1/6"),
+        ("torque-contact", "1/7"),
+        ("energy", "2/7"),
+        ("lagrangian-printed", "5/28"),
+    ] {
+        assert_eq!(
+            model(id)["shapes"],
+            serde_json::json!(["cylinder", "sphere"])
+        );
+        assert_eq!(model(id)["sphere_terminal_fraction_exact"], exact, "{id}");
+    }
+    let table = snowroll().arg("models").assert().success();
+    let text = std::str::from_utf8(&table.get_output().stdout).unwrap();
+    assert!(text.contains("shapes") && text.contains("cylinder,sphere"));
+}
+
+#[test]
+fn a_snowless_ball_rolls_at_five_sevenths_g_sin_alpha() {
+    let out = simulate(&[
+        "--model",
+        "snowless",
+        "--shape",
+        "sphere",
+        "--alpha-deg",
+        "40",
+        "--t-end",
+        "2",
+    ]);
+    let want = 5.0 / 7.0 * 9.81 * 40f64.to_radians().sin();
+    let mut rows = 0;
+    for line in out.lines().filter(|l| !l.starts_with('#')).skip(1) {
+        let a: f64 = line.split(',').nth(3).unwrap().parse().unwrap();
+        // Written in shortest round-trip form, and 5G/7 is exact to 2 ulp.
+        assert_close(a, want, 1e-14);
+        rows += 1;
+    }
+    assert!(rows > 1);
+    assert!(out.contains("# shape = sphere\n"));
+}
