@@ -361,17 +361,6 @@ impl Scenario {
         })
     }
 
-    /// The same scenario with another snow depth (validated).
-    ///
-    /// # Errors
-    /// As [`Scenario::new`].
-    pub fn with_snow_depth(&self, b: Meters) -> Result<Self, ParamError> {
-        Self::new(ScenarioFile {
-            snow_depth: b,
-            ..ScenarioFile::from(*self)
-        })
-    }
-
     /// Slope angle alpha, rad.
     pub fn slope_angle(&self) -> Radians {
         self.alpha

@@ -176,7 +176,11 @@ fn circular_models_keep_eq8_monotone_radius_energy_and_finite_output() {
             let kind = circular[which];
             // `snowless` is the b = 0 limit: its energy balance holds for b = 0.
             let s = if kind == ModelKind::Snowless {
-                s.with_snow_depth(0.0).unwrap()
+                Scenario::new(ScenarioFile {
+                    snow_depth: 0.0,
+                    ..ScenarioFile::from(s)
+                })
+                .unwrap()
             } else {
                 s
             };

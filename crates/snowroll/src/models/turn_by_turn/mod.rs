@@ -223,10 +223,18 @@ impl TurnDynamics {
         i * omega * omega / 2.0 + w
     }
 
-    /// `θ̇²` at θ from the energy integral, given `θ̇ = omega0` at θ = 0.
-    pub fn omega_squared(&self, theta: Radians, omega0: f64) -> f64 {
+    /// `θ̇²` at θ from the energy integral, given `θ̇ = omega0` at θ = 0
+    /// (for the tests, which check the written formulas against it).
+    #[cfg(test)]
+    pub(crate) fn omega_squared(&self, theta: Radians, omega0: f64) -> f64 {
         let (i, _) = self.inertia(theta);
         let (w, _) = self.potential(theta);
+        self.energy_integral(i, w, omega0)
+    }
+
+    /// The energy integral `θ̇² = [I(0)θ̇₀² − 2W]/I` with `I(0) = 3r²/2`,
+    /// for `I` and `W` at the angle in question.
+    fn energy_integral(&self, i: f64, w: f64, omega0: f64) -> f64 {
         (1.5 * self.r * self.r * omega0 * omega0 - 2.0 * w) / i
     }
 
@@ -237,7 +245,7 @@ impl TurnDynamics {
         let (s, c) = theta.sin_cos();
         let (i, di) = self.inertia_sc(theta, s, c);
         let (w, dw) = self.potential_sc(theta, s, c);
-        let omega2 = ((1.5 * self.r * self.r * omega0 * omega0 - 2.0 * w) / i).max(0.0);
+        let omega2 = self.energy_integral(i, w, omega0).max(0.0);
         self.r * (-dw - 0.5 * di * omega2) / i
     }
 

@@ -23,7 +23,8 @@ const THETA_MIN: f64 = 1e-6;
 /// radius `r0` and snow depth `b`; `None` without snow.
 ///
 /// From rest, energy conservation within turn 0 gives
-/// `θ̇²(θ) = −2W(θ)/I(θ)` with `I > 0` ([`TurnDynamics::omega_squared`]),
+/// `θ̇²(θ) = −2W(θ)/I(θ)` with `I > 0` (the energy integral of
+/// [`TurnDynamics::acceleration_on_orbit`] with θ̇₀ = 0),
 /// so the log completes the turn exactly when `W(θ) < 0` on all of
 /// (0, 2π]. Writing `W = −G P(θ) + C Q(θ)` (G = g sin α, C = g cos α) with
 /// `P = r0θ + e₁θ²/2 − e₂(1 − cos θ)` and `Q = e₃θ − e₂ sin θ`:
