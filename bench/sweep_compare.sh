@@ -12,6 +12,11 @@
 # (2) every circular model to t = 100 s at rtol 1e-8 over N_ALL points:
 #     trajectories per second of the whole process, against MIN_RATE.
 # (3) for reference, (1) with --method ode (the ODE path, no closed form).
+# (4) the grid of (1) with numbalsoda's DOP853 (bench/peer_numbalsoda.py,
+#     every trajectory in one numba-compiled loop): CPU time per trajectory,
+#     and snowroll's ratio to it. numbalsoda is installed by
+#     bench/setup-peers.sh (built from source: gfortran, cmake); when it
+#     cannot be had, (4) is skipped with the reason.
 #
 # Usage: bash bench/sweep_compare.sh   (from anywhere in a clone)
 # Environment: N_SWEEP (10000), N_SCIPY (1000), N_ALL (200000), MIN_RATIO
@@ -62,6 +67,23 @@ echo "$py_out"
 py_s="$(sed -n 's/^per_trajectory_s=//p' <<<"$py_out")"
 py_v="$(sed -n 's/^final t = .* v = \([^ ]*\) m\/s.*/\1/p' <<<"$py_out")"
 
+echo "== numbalsoda DOP853 over the same grid"
+nb_s=nan
+nb_python="${NUMBALSODA_PYTHON:-}"
+if [ -z "$nb_python" ]; then
+    if "$PYTHON" -c 'import numbalsoda, numba' 2>/dev/null; then
+        nb_python="$PYTHON"
+    else
+        nb_python="$(bash bench/setup-peers.sh)" || nb_python=""
+    fi
+fi
+if [ -n "$nb_python" ] && nb_out="$("$nb_python" bench/peer_numbalsoda.py --alphas "29:31:$N_SWEEP")"; then
+    echo "$nb_out"
+    nb_s="$(sed -n 's/^per_trajectory_s=//p' <<<"$nb_out")"
+else
+    echo "numbalsoda not available: see bench/README.md (skipped)"
+fi
+
 all_models="snowless,torque-cm,torque-contact,energy,energy-thin,lagrangian-printed,quasi-circular,quasi-circular-lift"
 per_model=$((N_ALL / 8))
 echo "== (2) snowroll sweep --model (all 8 circular) --alpha-deg 20:60:$per_model --t-end 100 --rtol 1e-8"
@@ -71,9 +93,10 @@ t2_ode="$(seconds "$bin" sweep --model "$all_models" --alpha-deg "20:60:$per_mod
     --rtol 1e-8 --quiet --method ode --output "$OUT_DIR/all-ode.csv")"
 
 "$PYTHON" - "$t1" "$t1_ode" "$N_SWEEP" "$py_s" "$py_v" "$OUT_DIR/s.csv" "$MIN_RATIO" \
-    "$t2" "$t2_ode" "$((per_model * 8))" "$MIN_RATE" <<'PY'
+    "$t2" "$t2_ode" "$((per_model * 8))" "$MIN_RATE" "$nb_s" <<'PY'
 import sys
-t1, t1_ode, n1, py_s, py_v, csv_path, min_ratio, t2, t2_ode, n2, min_rate = sys.argv[1:]
+t1, t1_ode, n1, py_s, py_v, csv_path, min_ratio, t2, t2_ode, n2, min_rate, nb_s = sys.argv[1:]
+nb_s = float(nb_s)
 t1, t1_ode, py_s, py_v, t2, t2_ode = map(float, (t1, t1_ode, py_s, py_v, t2, t2_ode))
 n1, n2, min_ratio, min_rate = int(n1), int(n2), float(min_ratio), float(min_rate)
 last = [l for l in open(csv_path) if not l.startswith("#")][-1].split(",")
@@ -85,6 +108,10 @@ ratio = py_s / per
 print(f"(1) per trajectory, process start and output included: snowroll {per * 1e6:.2f} us "
       f"(ODE path {t1_ode / n1 * 1e6:.2f} us), scipy {py_s * 1e3:.3f} ms: ratio {ratio:.0f}x "
       f"(ODE path {py_s / (t1_ode / n1):.0f}x; required >= {min_ratio:g}x)")
+if nb_s == nb_s:
+    print(f"    numbalsoda DOP853 {nb_s * 1e6:.2f} us per trajectory (CPU, compiled loop): snowroll "
+          f"{nb_s / per:.1f}x faster (ODE path {nb_s / (t1_ode / n1):.2f}x); scipy/numbalsoda "
+          f"{py_s / nb_s:.0f}x")
 rate = n2 / t2
 print(f"(2) all circular models, t = 100 s, rtol 1e-8: {rate:,.0f} trajectories/s "
       f"(ODE path {n2 / t2_ode:,.0f}/s; required >= {min_rate:,.0f}/s)")

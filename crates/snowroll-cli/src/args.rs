@@ -473,6 +473,28 @@ pub struct SweepArgs {
     /// Absolute tolerance, in m and m/s (atol >= 1e-30) [default: 1e-12]
     #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub atol: Option<String>,
+    /// Coefficient of static friction mu (dimensionless, mu > 0): a run stops with `slip` where |F| reaches mu N [default: none, no slip check]
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
+    pub mu: Option<String>,
+    /// What a run does where the normal force reaches 0: stop (stop reason `hop`) or continue; a list sweeps both, e.g. stop,continue [default: stop]
+    #[arg(long, value_name = "WHAT[,WHAT]")]
+    pub on_hop: Option<String>,
+    /// Collision law of the turn models at each new layer: note (eq. (89)), charged or pivot; a list sweeps them [default: note]
+    #[arg(long, value_name = "LAW[,LAW...]")]
+    pub collision: Option<String>,
+
+    /// Also draw a regime map of the rows as SVG: cells over two swept parameters coloured by outcome (never starts / stalls in turn k / rolls on / hops / slips / stuck) or by --plot-color, with the closed-form stall, hop and slip borders drawn over them. Needs --output FILE
+    #[arg(long, value_name = "FILE.svg", requires = "output")]
+    pub plot: Option<PathBuf>,
+    /// What colours the map's cells: outcome, t_s, x_m, v_m_s, a_over_g_sin_alpha or turns [default: outcome]
+    #[arg(long, value_name = "COLUMN", requires = "plot")]
+    pub plot_color: Option<String>,
+    /// The map's horizontal parameter, a swept axis in snake case (e.g. alpha_deg) [default: the first swept axis with two or more values]
+    #[arg(long, value_name = "PARAM", requires = "plot")]
+    pub plot_x: Option<String>,
+    /// The map's vertical parameter (e.g. snow_depth, mu) [default: the next swept axis with two or more values]
+    #[arg(long, value_name = "PARAM", requires = "plot")]
+    pub plot_y: Option<String>,
 
     /// Read axes from this TOML file, one key per flag in snake case (`alpha_deg = "5:60:12"`, `snow_depth = [0.001, 0.01]`, `model = ["energy", "eq4"]`); flags override it
     #[arg(long, value_name = "FILE.toml")]

@@ -349,3 +349,95 @@ fn parquet_without_the_feature_says_how_to_get_it() {
     assert!(e.contains("--features parquet"), "{e}");
     assert!(!p.exists());
 }
+
+#[test]
+fn plot_draws_a_regime_map_with_legend_axes_and_the_stall_border() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("e.csv");
+    let svg = dir.path().join("e.svg");
+    let (csv_s, svg_s) = (csv.display().to_string(), svg.display().to_string());
+    ok(&[
+        "sweep",
+        "--model",
+        "energy",
+        "--alpha-deg",
+        "0.5:20:12",
+        "--snow-depth",
+        "0.005:0.05:6",
+        "--t-end",
+        "2",
+        "--output",
+        &csv_s,
+        "--plot",
+        &svg_s,
+    ]);
+    let map = fs::read_to_string(&svg).unwrap();
+    assert!(map.starts_with("<svg"), "{}", &map[..80]);
+    for text in [
+        "legend",
+        "never starts",
+        "rolls on",
+        "stall slope (fn. 7)",
+        "slope angle α [deg]",
+        "snow depth b [m]",
+    ] {
+        assert!(map.contains(text), "{text} missing");
+    }
+    // The border is one polyline of many points; the cells are rectangles.
+    assert!(map.contains("<polyline"), "no border drawn");
+    assert!(map.matches("<rect").count() >= 12 * 6);
+    // The CSV is written as without --plot.
+    assert_eq!(rows(&fs::read_to_string(&csv).unwrap()).len(), 12 * 6);
+
+    // Coloured by a result column: bins of v_m_s in the legend.
+    ok(&[
+        "sweep",
+        "--model",
+        "turns",
+        "--alpha-deg",
+        "20:80:7",
+        "--mu",
+        "0.2,0.6",
+        "--t-end",
+        "1",
+        "--output",
+        &csv_s,
+        "--plot",
+        &svg_s,
+        "--plot-color",
+        "v_m_s",
+    ]);
+    let map = fs::read_to_string(&svg).unwrap();
+    assert!(
+        map.contains("≤ v_m_s &lt;") || map.contains("≤ v_m_s <"),
+        "no bins"
+    );
+    assert!(map.contains("friction coefficient μ [1]"));
+
+    for (args, message) in [
+        (vec!["--plot-color", "speed"], "expected one of outcome"),
+        (vec!["--plot-x", "beta"], "--plot-x \"beta\""),
+        (vec!["--plot-y", "r0"], "r0 is not swept"),
+    ] {
+        let mut all = vec![
+            "sweep",
+            "--model",
+            "energy",
+            "--alpha-deg",
+            "10,20",
+            "--snow-depth",
+            "0.01,0.02",
+            "--t-end",
+            "1",
+            "--output",
+            &csv_s,
+            "--plot",
+            &svg_s,
+        ];
+        all.extend(args);
+        let e = fails(&all);
+        assert!(e.contains(message), "{e}");
+    }
+    let e = fails(&["sweep", "--model", "energy", "--plot", &svg_s]);
+    assert!(e.contains("--output"), "{e}");
+}

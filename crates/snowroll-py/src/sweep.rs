@@ -6,9 +6,9 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Grid, Method, Param, SweepRow, Values, DEFAULT_CHUNK,
+    run_chunks, shard_range, Axis, Choices, Grid, Method, Param, SweepRow, Values, DEFAULT_CHUNK,
 };
-use snowroll::{ModelKind, ParamError};
+use snowroll::{CollisionModel, ModelKind, OnHop, ParamError};
 
 use crate::{column, record, value_error};
 
@@ -42,6 +42,36 @@ fn sweep_models(value: &Bound<'_, PyAny>) -> PyResult<Vec<ModelKind>> {
         .collect()
 }
 
+/// The ids of a list setting: `"a,b"` or a sequence of ids, each one of
+/// `ids` (the kebab-case names of `all`).
+fn choice_list<T: Copy>(
+    key: &str,
+    value: &Bound<'_, PyAny>,
+    all: &[T],
+    id: fn(T) -> &'static str,
+) -> PyResult<Vec<T>> {
+    let names: Vec<String> = match value.cast::<PyString>() {
+        Ok(text) => text
+            .to_cow()?
+            .split(',')
+            .map(|s| s.trim().to_string())
+            .collect(),
+        Err(_) => value.extract()?,
+    };
+    names
+        .iter()
+        .map(|n| {
+            all.iter().copied().find(|v| id(*v) == n).ok_or_else(|| {
+                let ids: Vec<&str> = all.iter().map(|v| id(*v)).collect();
+                PyValueError::new_err(format!(
+                    "{key}: unknown value {n:?}; expected one of {}",
+                    ids.join(", ")
+                ))
+            })
+        })
+        .collect()
+}
+
 /// Runs a sweep (`snowroll sweep`): every model in `grid["model"]` at every
 /// point of the other axes, one summary row each, in grid order (the last
 /// axis in `Param` order varies fastest), rows computed in parallel with the
@@ -66,15 +96,28 @@ pub(crate) fn sweep<'py>(
     };
     let mut models = Vec::new();
     let mut axes = Vec::new();
+    let mut choices = Choices::default();
     for (key, value) in grid.iter() {
         let key: String = key.extract()?;
-        if key == "model" {
-            models = sweep_models(&value)?;
-            continue;
+        match key.as_str() {
+            "model" => {
+                models = sweep_models(&value)?;
+                continue;
+            }
+            "collision" => {
+                choices.collision =
+                    choice_list(&key, &value, &CollisionModel::ALL, CollisionModel::id)?;
+                continue;
+            }
+            "on_hop" => {
+                choices.on_hop = choice_list(&key, &value, &OnHop::ALL, OnHop::id)?;
+                continue;
+            }
+            _ => {}
         }
         let param = Param::from_key(&key).ok_or_else(|| {
             PyValueError::new_err(format!(
-                "unknown axis {key:?}: expected model or one of {}",
+                "unknown axis {key:?}: expected model, collision, on_hop or one of {}",
                 Param::ALL.map(Param::key).join(", ")
             ))
         })?;
@@ -83,7 +126,9 @@ pub(crate) fn sweep<'py>(
             values: axis_values(param.key(), &value)?,
         });
     }
-    let grid = Grid::new(models, axes).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let grid = Grid::new(models, axes)
+        .and_then(|g| g.with_choices(choices))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let (i, n) = shard.unwrap_or((0, 1));
     let range = shard_range(grid.len(), i, n).map_err(PyValueError::new_err)?;
     let rows = py
@@ -114,6 +159,15 @@ pub(crate) fn sweep<'py>(
     column(py, &c, "x_end", &rows, |r| opt(r.x_end))?;
     column(py, &c, "rtol", &rows, |r| r.rtol)?;
     column(py, &c, "atol", &rows, |r| r.atol)?;
+    column(py, &c, "mu", &rows, |r| opt(r.mu))?;
+    c.set_item(
+        "on_hop",
+        rows.iter().map(|r| r.on_hop.id()).collect::<Vec<_>>(),
+    )?;
+    c.set_item(
+        "collision",
+        rows.iter().map(|r| r.collision.id()).collect::<Vec<_>>(),
+    )?;
     let stops = rows
         .iter()
         .map(|r| r.stop.map(|s| record(py, &s)).transpose())

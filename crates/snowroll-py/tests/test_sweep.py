@@ -10,7 +10,7 @@ import pytest
 import snowroll
 from conftest import run_cli, same_bits
 
-TEXT_COLUMNS = ("model", "stop", "error")
+TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error")
 
 
 def parse_sweep_csv(text):
@@ -37,11 +37,23 @@ GRID = {
 }
 
 
+# The settings a regime map varies: friction (slips), hop handling and the
+# collision law (hops of the turn models).
+SETTINGS_GRID = {
+    "model": "snowless,turns",
+    "alpha_deg": [30.0, 70.0],
+    "mu": [0.1, 0.5],
+    "on_hop": "stop,continue",
+    "collision": ["note", "charged"],
+    "t_end": 3,
+}
+
+
 def cli_flags(grid):
     out = []
     for key, value in grid.items():
         if isinstance(value, (list, tuple)):
-            value = ",".join(repr(float(v)) for v in value)
+            value = ",".join(v if isinstance(v, str) else repr(float(v)) for v in value)
         out += ["--" + key.replace("_", "-"), str(value)]
     return out
 
@@ -58,6 +70,22 @@ def test_sweep_equals_cli(cli, method):
             assert list(s[name]) == cols[name], name
         else:
             assert same_bits(s[name], cols[name]), name
+
+
+def test_settings_axes_equal_cli(cli):
+    s = snowroll.sweep(SETTINGS_GRID)
+    stdout, _ = run_cli(cli, "sweep", "--quiet", *cli_flags(SETTINGS_GRID))
+    cols = parse_sweep_csv(stdout)
+    assert s.columns == list(cols)
+    assert len(s) == 2 * 2 * 2 * 2 * 2
+    for name in cols:
+        if name in TEXT_COLUMNS:
+            assert list(s[name]) == cols[name], name
+        else:
+            assert same_bits(s[name], cols[name]), name
+    # Model, then collision, then on_hop, then the numeric axes.
+    assert list(s["collision"][:16]) == ["note"] * 8 + ["charged"] * 8
+    assert list(s["on_hop"][:8]) == ["stop"] * 4 + ["continue"] * 4
 
 
 def test_shards_join_to_the_whole():

@@ -573,3 +573,33 @@ fn snowball_checks_notice_wrong_models() {
         }),
     );
 }
+
+#[test]
+fn regime_map_borders_notice_a_turn_model_that_never_hops() {
+    // The first-order turn model with its hop event switched off: the map
+    // has no hop region, so no hop border to compare.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let opts = SimOptions {
+                on_hop: snowroll::OnHop::Continue,
+                ..opts.clone()
+            };
+            TurnModel::new(TurnVariant::Paper).simulate(s, &opts)
+        })
+    });
+    changes("regime-map-borders", &wrong);
+}
+
+#[test]
+fn regime_map_borders_notice_a_turn_model_with_twice_the_snow() {
+    // Twice the snow doubles the first-turn stall slope (tan α* ≈ ε(1 − cos θ₁),
+    // ε = b/(π r0)): the simulated stall border moves several cells.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let mut f = ScenarioFile::from(*s);
+            f.snow_depth *= 2.0;
+            TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    changes("regime-map-borders", &wrong);
+}

@@ -9,6 +9,8 @@ mod paper;
 mod parquet;
 mod simulate;
 mod sweep;
+mod sweep_grid;
+mod sweep_plot;
 mod turns;
 
 use anyhow::Result;

@@ -40,6 +40,9 @@ pub fn schema() -> Schema {
     fields.push(nullable("x_end", DataType::Float64));
     fields.push(required("rtol", DataType::Float64));
     fields.push(required("atol", DataType::Float64));
+    fields.push(nullable("mu", DataType::Float64));
+    fields.push(required("on_hop", DataType::Utf8));
+    fields.push(required("collision", DataType::Utf8));
     fields.push(nullable("stop", DataType::Utf8));
     for name in ["t_s", "x_m", "v_m_s", "a_over_g_sin_alpha"] {
         fields.push(nullable(name, DataType::Float64));
@@ -99,6 +102,13 @@ fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
         opt(|r| r.x_end),
         f(|r| r.rtol),
         f(|r| r.atol),
+        opt(|r| r.mu),
+        Arc::new(StringArray::from(
+            rows.iter().map(|r| r.on_hop.id()).collect::<Vec<_>>(),
+        )),
+        Arc::new(StringArray::from(
+            rows.iter().map(|r| r.collision.id()).collect::<Vec<_>>(),
+        )),
         Arc::new(StringArray::from(
             rows.iter()
                 .map(|r| r.stop.as_ref().and_then(name))

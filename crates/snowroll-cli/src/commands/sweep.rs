@@ -9,7 +9,6 @@
 //! run. Without `--resume` an existing partial file is refused, never
 //! overwritten.
 
-use std::collections::BTreeMap;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufRead, BufReader, Read, Seek, SeekFrom, Write};
 use std::ops::Range;
@@ -21,11 +20,9 @@ use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rustix::fs::{flock, FlockOperation};
 use snowroll::output::VERSION;
-use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Grid, Method, Param, SweepRow, Values, DEFAULT_CHUNK,
-};
-use snowroll::ModelKind;
+use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
 
+use super::sweep_grid::{flag_axes, grid};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
 use crate::sink::Sink;
@@ -45,6 +42,10 @@ const SYNC_EVERY: Duration = Duration::from_secs(10);
 /// Parses the grid, runs it (or this shard of it), writes the rows.
 pub fn run(args: &SweepArgs) -> Result<()> {
     let grid = grid(args)?;
+    let plot = match &args.plot {
+        Some(path) => Some((super::sweep_plot::plan(args, &grid)?, path)),
+        None => None,
+    };
     let (shard, shards) = match &args.shard {
         Some(text) => parse_shard(text)?,
         None => (0, 1),
@@ -93,6 +94,11 @@ pub fn run(args: &SweepArgs) -> Result<()> {
             if args.resume {
                 bail!("--resume needs --output FILE (a regular file)");
             }
+            if args.plot.is_some() {
+                bail!(
+                    "--plot needs --output FILE (a regular file): the map is drawn from its rows"
+                );
+            }
             sink.write_all(header.as_bytes())
                 .with_context(|| format!("writing {name}"))?;
             write_rows(&grid, range, chunk, args.method, &mut sink, &bar, || Ok(()))
@@ -134,6 +140,17 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                 .file
                 .seek(SeekFrom::Start(0))
                 .with_context(|| format!("reading {shown}"))?;
+            if let Some((plan, plot)) = plot {
+                partial
+                    .file
+                    .seek(SeekFrom::Start(0))
+                    .with_context(|| format!("reading {shown}"))?;
+                super::sweep_plot::draw(plan, &grid, &partial.file, plot)?;
+                partial
+                    .file
+                    .seek(SeekFrom::Start(0))
+                    .with_context(|| format!("reading {shown}"))?;
+            }
             finish(format, &mut partial, sink).with_context(|| format!("writing {name}"))?;
             fs::remove_file(&path).with_context(|| format!("removing {shown}"))?;
         }
@@ -238,101 +255,6 @@ pub fn parse_shard(text: &str) -> Result<(u64, u64)> {
     Ok((i, n))
 }
 
-/// The grid of the flags over the `--grid` file.
-fn grid(args: &SweepArgs) -> Result<Grid> {
-    let mut given: BTreeMap<String, String> = match &args.grid {
-        Some(path) => grid_file(path)?,
-        None => BTreeMap::new(),
-    };
-    for (key, value) in flag_axes(args) {
-        given.insert(key.to_string(), value.clone());
-    }
-    let models = match given.remove("model") {
-        Some(text) => text
-            .split(',')
-            .map(|id| id.parse::<ModelKind>())
-            .collect::<Result<Vec<_>, _>>()
-            .context("--model")?,
-        None => Vec::new(),
-    };
-    let mut axes = Vec::new();
-    for (key, text) in &given {
-        let param = Param::from_key(key).ok_or_else(|| anyhow!("unknown axis {key:?}"))?;
-        axes.push(Axis {
-            param,
-            values: Values::parse(param.key(), text)?,
-        });
-    }
-    Ok(Grid::new(models, axes)?)
-}
-
-/// The axes given as flags, by snake-case key (`model` included).
-fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
-    let flags: [(&'static str, &Option<String>); 12] = [
-        ("model", &a.model),
-        (Param::AlphaDeg.key(), &a.alpha_deg),
-        (Param::SnowDepth.key(), &a.snow_depth),
-        (Param::R0.key(), &a.r0),
-        (Param::G.key(), &a.g),
-        (Param::Density.key(), &a.density),
-        (Param::Length.key(), &a.length),
-        (Param::V0.key(), &a.v0),
-        (Param::TEnd.key(), &a.t_end),
-        (Param::XEnd.key(), &a.x_end),
-        (Param::Rtol.key(), &a.rtol),
-        (Param::Atol.key(), &a.atol),
-    ];
-    flags
-        .into_iter()
-        .filter_map(|(k, v)| v.as_ref().map(|v| (k, v)))
-        .collect()
-}
-
-/// The axes of a `--grid` TOML file, as axis texts by snake-case key: a
-/// string is taken as typed on the command line, a number as one value, an
-/// array as a list.
-fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
-    let shown = path.display();
-    let text = fs::read_to_string(path).with_context(|| format!("reading {shown}"))?;
-    let table: toml::Table = text
-        .parse()
-        .map_err(|e: toml::de::Error| anyhow!("{shown}: {}", e.message()))?;
-    let mut axes = BTreeMap::new();
-    for (key, value) in table {
-        let snake = key.replace('-', "_");
-        if snake != "model" && Param::from_key(&snake).is_none() {
-            let known: Vec<&str> = std::iter::once("model")
-                .chain(Param::ALL.iter().map(|p| p.key()))
-                .collect();
-            bail!(
-                "{shown}: unknown key {key:?}; expected one of {}",
-                known.join(", ")
-            );
-        }
-        let item = |v: &toml::Value| match v {
-            toml::Value::String(s) => Ok(s.clone()),
-            toml::Value::Integer(i) => Ok(i.to_string()),
-            toml::Value::Float(x) => Ok(x.to_string()),
-            other => Err(anyhow!(
-                "{shown}: {key}: expected a number, a string or an array of them, not {}",
-                other.type_str()
-            )),
-        };
-        let text = match &value {
-            toml::Value::Array(items) => items
-                .iter()
-                .map(item)
-                .collect::<Result<Vec<_>>>()?
-                .join(","),
-            v => item(v)?,
-        };
-        if axes.insert(snake, text).is_some() {
-            bail!("{shown}: {key} is given twice");
-        }
-    }
-    Ok(axes)
-}
-
 /// The `#` lines and the column names: everything a resumed run or a merge
 /// checks, plus the command line (which they do not).
 fn header(args: &SweepArgs, grid: &Grid, shard: u64, shards: u64, range: &Range<u64>) -> String {
@@ -361,6 +283,16 @@ fn header(args: &SweepArgs, grid: &Grid, shard: u64, shards: u64, range: &Range<
     let models: Vec<&str> = grid.models().iter().map(|m| m.id()).collect();
     let mut h = format!("# snowroll sweep, version {VERSION}\n{COMMAND_KEY}{command}\n");
     h.push_str(&format!("# model: {}\n", models.join(",")));
+    let ids = |v: Vec<&str>| v.join(",");
+    let choices = grid.choices();
+    h.push_str(&format!(
+        "# collision: {}\n",
+        ids(choices.collision.iter().map(|c| c.id()).collect())
+    ));
+    h.push_str(&format!(
+        "# on_hop: {}\n",
+        ids(choices.on_hop.iter().map(|c| c.id()).collect())
+    ));
     for axis in grid.axes() {
         h.push_str(&format!("# {}: {}\n", axis.param.key(), axis.values));
     }

@@ -237,10 +237,13 @@ def sweep(
 
     ``grid``: ``{"model": "torque-cm,energy" or a list of ids, AXIS: values}``
     with AXIS one of ``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``,
-    ``length``, ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol`` and values a
-    number, a sequence of numbers, or a string as the CLI reads it:
-    ``"10,20,30"`` or ``"start:end:count"`` (both ends included). Parameters
-    not in the grid take their defaults (t_end 100 s).
+    ``length``, ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``, ``mu`` and
+    values a number, a sequence of numbers, or a string as the CLI reads it:
+    ``"10,20,30"`` or ``"start:end:count"`` (both ends included); and the
+    settings ``collision`` (``"note"``, ``"charged"``, ``"pivot"``) and
+    ``on_hop`` (``"stop"``, ``"continue"``), a list of ids or ``"a,b"``.
+    Parameters not in the grid take their defaults (t_end 100 s, no mu,
+    collision note, on_hop stop).
 
     ``shard=(i, n)``: only shard i (0-based) of n, as ``--shard i/n``; the
     shards' rows, joined with :meth:`SweepResult.concat`, are the whole

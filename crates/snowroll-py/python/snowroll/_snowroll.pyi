@@ -88,8 +88,10 @@ def sweep(
     method: str = "auto",
 ) -> Dict[str, Any]:
     """Every model of ``grid["model"]`` at every point of the other axes
-    (``alpha_deg`` ... ``atol``; a number, a sequence, or ``"a,b,c"`` /
-    ``"start:end:count"``), one summary row each, in grid order; shard
+    (``alpha_deg`` ... ``atol``, ``mu``; a number, a sequence, or ``"a,b,c"`` /
+    ``"start:end:count"``) and of the settings ``collision`` (``note``,
+    ``charged``, ``pivot``) and ``on_hop`` (``stop``, ``continue``), each a
+    list of ids or ``"a,b"``, one summary row each, in grid order; shard
     ``(i, n)`` only. The circular models take the closed form of their speed
     (``method="auto"``) or the ODE (``"ode"``). ``a_over_g_sin_alpha`` is the
     end acceleration over g sin alpha, whose long-run value the note's

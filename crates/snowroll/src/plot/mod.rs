@@ -10,12 +10,15 @@
 //! Text is drawn with the DejaVu Sans font embedded in the library
 //! (`assets/fonts/`, Bitstream Vera licence), registered with `plotters` on
 //! first use, so rendering needs no system font and no fontconfig. Every
-//! figure carries a title, axis labels with units, a legend and a footer
+//! [`RegimeMap`] draws the rows of a sweep as cells over two parameters.
+//! Every figure carries a title, axis labels with units, a legend and a footer
 //! naming the program version and the parameters ([`Provenance`]); the SVG
 //! also records them in a comment and the PNG in `iTXt` chunks.
 
+mod map;
 mod render;
 
+pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;

@@ -14,7 +14,7 @@ use super::{Axis, Chart, Legend, Marker, PlotError, Provenance, Scale, Style, MA
 const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
 /// The family name the embedded font is registered under.
-const FAMILY: &str = "sans-serif";
+pub(crate) const FAMILY: &str = "sans-serif";
 
 /// Size of an SVG figure (and of a PNG before [`PNG_SCALE`]), px.
 pub const FIGURE_SIZE: (u32, u32) = (960, 600);
@@ -394,7 +394,7 @@ fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
 }
 
 /// A tick label: plain decimals between 1e-3 and 1e5, else `1.5e-7`.
-fn tick(v: f64) -> String {
+pub(crate) fn tick(v: f64) -> String {
     if v == 0.0 {
         return "0".to_string();
     }

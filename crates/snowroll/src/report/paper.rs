@@ -48,7 +48,7 @@ pub struct Progress<'a> {
 
 /// Number of progress steps of [`build_paper_report`].
 pub fn paper_steps() -> usize {
-    CLAIMS.len() + 6
+    CLAIMS.len() + 7
 }
 
 /// The table of where the turn models part ways (see [`where_turn_models_part_ways`]).
@@ -651,6 +651,9 @@ pub fn build_paper_report(
     tick("the snowball");
     let snowball = super::snowball::snowball_figure(lab, &log_times())?;
 
+    tick("regime map");
+    let regime = super::claims::regime_figure(lab)?;
+
     tick("animation");
     let anim_traj = run(
         ModelKind::Turns,
@@ -670,7 +673,7 @@ pub fn build_paper_report(
         tables: [vec![parting], contact_tables.to_vec()].concat(),
         figures: figures(charts, &runs, paper, lab, &opts)
             .into_iter()
-            .chain([snowball, contact_figure])
+            .chain([snowball, contact_figure, regime])
             .collect(),
         animation: Some(animation),
     })

@@ -2,8 +2,9 @@
 //! order in which the points are numbered.
 //!
 //! A point's index `i` in `0..len` is a mixed-radix number: the model is the
-//! most significant digit, then the parameters in [`Param::ALL`] order, the
-//! last one varying fastest (nested loops written in that order). Ranges are
+//! most significant digit, then the collision law and the hop setting (the
+//! two [`Choices`]), then the parameters in [`Param::ALL`] order, the last
+//! one varying fastest (nested loops written in that order). Ranges are
 //! never expanded into memory: [`Values::get`] computes the k-th value.
 
 use std::fmt;
@@ -12,9 +13,9 @@ use thiserror::Error;
 
 use crate::error::ParamError;
 use crate::integrate::Tolerances;
-use crate::models::ModelKind;
+use crate::models::{CollisionModel, ModelKind};
 use crate::scenario::{Scenario, ScenarioFile};
-use crate::trajectory::{Sampling, SimOptions};
+use crate::trajectory::{OnHop, Sampling, SimOptions};
 
 /// Most points of one grid. At about 200 bytes a row this is 200 GB of CSV
 /// and, at the fast path's rate, an hour of two cores: beyond it a grid is
@@ -47,11 +48,14 @@ pub enum Param {
     Rtol,
     /// Absolute tolerance of the integrator.
     Atol,
+    /// Coefficient of static friction μ, μ > 0: the run stops with `slip`
+    /// where |F| reaches μ N (none, no slip check, when not swept).
+    Mu,
 }
 
 impl Param {
     /// Every parameter, in grid order (the last varies fastest).
-    pub const ALL: [Param; 11] = [
+    pub const ALL: [Param; 12] = [
         Param::AlphaDeg,
         Param::SnowDepth,
         Param::R0,
@@ -63,6 +67,7 @@ impl Param {
         Param::XEnd,
         Param::Rtol,
         Param::Atol,
+        Param::Mu,
     ];
 
     /// The snake-case key (config files, CSV columns, metadata).
@@ -79,6 +84,7 @@ impl Param {
             Param::XEnd => "x_end",
             Param::Rtol => "rtol",
             Param::Atol => "atol",
+            Param::Mu => "mu",
         }
     }
 
@@ -294,6 +300,8 @@ pub struct Point {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
     models: Vec<ModelKind>,
+    /// The collision laws and hop settings.
+    choices: Choices,
     /// At most one per parameter, in [`Param::ALL`] order.
     axes: Vec<Axis>,
     /// Number of points.
@@ -343,9 +351,59 @@ impl Grid {
         }
         Ok(Grid {
             models,
+            choices: Choices::default(),
             axes,
             len: points as u64,
         })
+    }
+
+    /// The same grid over these collision laws and hop settings (by default
+    /// only the library's defaults, [`CollisionModel::Note`] and
+    /// [`OnHop::Stop`]).
+    ///
+    /// # Errors
+    /// [`GridError`]: an empty or repeated list, more than
+    /// [`MAX_GRID_POINTS`].
+    pub fn with_choices(self, choices: Choices) -> Result<Grid, GridError> {
+        for (name, n, distinct) in [
+            (
+                "collision",
+                choices.collision.len(),
+                distinct(&choices.collision),
+            ),
+            ("on_hop", choices.on_hop.len(), distinct(&choices.on_hop)),
+        ] {
+            if n == 0 {
+                return Err(GridError::Syntax {
+                    param: name.to_string(),
+                    text: String::new(),
+                    reason: "no values".to_string(),
+                });
+            }
+            if !distinct {
+                return Err(GridError::Duplicate {
+                    param: format!("a value of {name}"),
+                });
+            }
+        }
+        let base = self.len / self.choices.len();
+        let points = u128::from(base) * choices.len() as u128;
+        if points > u128::from(MAX_GRID_POINTS) {
+            return Err(GridError::TooLarge {
+                points,
+                limit: MAX_GRID_POINTS,
+            });
+        }
+        Ok(Grid {
+            choices,
+            len: points as u64,
+            ..self
+        })
+    }
+
+    /// The collision laws and hop settings, in grid order.
+    pub fn choices(&self) -> &Choices {
+        &self.choices
     }
 
     /// Number of points.
@@ -397,6 +455,12 @@ impl Grid {
             );
             rest /= n;
         }
+        let n_hop = self.choices.on_hop.len() as u64;
+        options.on_hop = self.choices.on_hop[(rest % n_hop) as usize];
+        rest /= n_hop;
+        let n_collision = self.choices.collision.len() as u64;
+        options.collision = self.choices.collision[(rest % n_collision) as usize];
+        rest /= n_collision;
         let model = self.models[rest as usize];
         options.validate()?;
         Ok(Point {
@@ -423,6 +487,43 @@ fn set(file: &mut ScenarioFile, options: &mut SimOptions, param: Param, x: f64) 
         Param::XEnd => options.x_end = Some(x),
         Param::Rtol => tol.rtol = x,
         Param::Atol => tol.atol = x,
+        Param::Mu => options.mu = Some(x),
+    }
+}
+
+/// Whether no value of `items` repeats.
+fn distinct<T: PartialEq>(items: &[T]) -> bool {
+    items
+        .iter()
+        .enumerate()
+        .all(|(i, a)| !items[..i].contains(a))
+}
+
+/// The settings a sweep can vary that are not numbers: the collision law of
+/// the turn models and what a run does where N reaches 0. Each list is an
+/// axis of the grid, in this order, after the model.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Choices {
+    /// Collision laws (`--collision`), default `[note]`.
+    pub collision: Vec<CollisionModel>,
+    /// Hop settings (`--on-hop`), default `[stop]`.
+    pub on_hop: Vec<OnHop>,
+}
+
+impl Default for Choices {
+    fn default() -> Self {
+        Self {
+            collision: vec![CollisionModel::default()],
+            on_hop: vec![OnHop::default()],
+        }
+    }
+}
+
+impl Choices {
+    /// Points per model: the product of the two lists' lengths (≥ 1 for a
+    /// grid's choices).
+    fn len(&self) -> u64 {
+        (self.collision.len() * self.on_hop.len()).max(1) as u64
     }
 }
 

@@ -9,15 +9,20 @@
 //!   stays bounded by one chunk whatever the grid's size.
 //! - The circular models take a fast path ([`circular_end`]): their speed is
 //!   a closed form in x and their time one quadrature, with no ODE solver.
+//! - [`Outcome`] names what the log did in a row, and [`boundaries`] gives
+//!   the closed-form borders between those regimes (stall, hop, slip), for
+//!   regime maps.
 //! - Each row is a pure function of its grid point, so the rows are
 //!   bit-identical for any thread count, chunk size and shard split.
 
 mod fast;
 mod grid;
+mod regime;
 mod row;
 mod run;
 
 pub use fast::{circular_end, ContactCheck, FastEnd, SpeedSquared};
-pub use grid::{Axis, Grid, GridError, Param, Point, Values, MAX_GRID_POINTS};
+pub use grid::{Axis, Choices, Grid, GridError, Param, Point, Values, MAX_GRID_POINTS};
+pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
 pub use row::SweepRow;
 pub use run::{run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL};

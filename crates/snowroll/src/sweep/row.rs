@@ -2,10 +2,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::grid::Point;
-use crate::models::ModelKind;
+use super::grid::{Param, Point};
+use crate::models::{CollisionModel, ModelKind};
 use crate::scenario::ScenarioFile;
-use crate::trajectory::{Sample, StopReason, Trajectory};
+use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
 
 /// One trajectory of a sweep: its grid index, its parameters (every one,
 /// swept or not, under the command line's names in snake case) and its
@@ -42,6 +42,12 @@ pub struct SweepRow {
     pub rtol: f64,
     /// Absolute tolerance.
     pub atol: f64,
+    /// Coefficient of static friction μ (empty: no slip check).
+    pub mu: Option<f64>,
+    /// What the run does where N reaches 0.
+    pub on_hop: OnHop,
+    /// The collision law of the turn models.
+    pub collision: CollisionModel,
     /// Why the run ended.
     pub stop: Option<StopReason>,
     /// Time at the end of the run, s (t_end, or the time x_end was reached, or of the stall).
@@ -66,7 +72,7 @@ pub struct SweepRow {
 impl SweepRow {
     /// The column names, in order: the field names (a test checks them
     /// against the serialised header).
-    pub const COLUMNS: [&'static str; 20] = [
+    pub const COLUMNS: [&'static str; 23] = [
         "index",
         "model",
         "alpha_deg",
@@ -80,6 +86,9 @@ impl SweepRow {
         "x_end",
         "rtol",
         "atol",
+        "mu",
+        "on_hop",
+        "collision",
         "stop",
         "t_s",
         "x_m",
@@ -107,6 +116,9 @@ impl SweepRow {
             x_end: o.x_end,
             rtol: o.tolerances.rtol,
             atol: o.tolerances.atol,
+            mu: o.mu,
+            on_hop: o.on_hop,
+            collision: o.collision,
             stop: None,
             t_s: None,
             x_m: None,
@@ -141,6 +153,24 @@ impl SweepRow {
 }
 
 impl SweepRow {
+    /// The value of parameter `p` in this row (NaN for an unset `x_end` or `mu`).
+    pub fn param(&self, p: Param) -> f64 {
+        match p {
+            Param::AlphaDeg => self.alpha_deg,
+            Param::SnowDepth => self.snow_depth,
+            Param::R0 => self.r0,
+            Param::G => self.g,
+            Param::Density => self.density,
+            Param::Length => self.length,
+            Param::V0 => self.v0,
+            Param::TEnd => self.t_end,
+            Param::XEnd => self.x_end.unwrap_or(f64::NAN),
+            Param::Rtol => self.rtol,
+            Param::Atol => self.atol,
+            Param::Mu => self.mu.unwrap_or(f64::NAN),
+        }
+    }
+
     /// Fills in the results from the state at the end of the run.
     pub(crate) fn set_results(
         &mut self,

@@ -28,6 +28,7 @@ mod contact;
 mod first_turn;
 mod multi_turn;
 mod quadrature;
+mod regime;
 mod slip;
 mod snowball;
 mod stall;
@@ -43,6 +44,7 @@ use crate::models::{run_turns, CircularModel, Coefficients, Derivation, ModelKin
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
+pub(crate) use regime::regime_figure;
 pub(crate) use slip::mu_min_rows;
 pub use table::CLAIMS;
 

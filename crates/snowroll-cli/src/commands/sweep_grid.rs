@@ -1,0 +1,141 @@
+//! The grid of `snowroll sweep`: the flags over the `--grid` TOML file.
+
+use std::collections::BTreeMap;
+use std::fs;
+use std::path::Path;
+
+use anyhow::{anyhow, bail, Context, Result};
+use clap::ValueEnum;
+use snowroll::sweep::{Axis, Choices, Grid, Param, Values};
+use snowroll::{CollisionModel, ModelKind, OnHop};
+
+use crate::args::SweepArgs;
+
+/// Keys that are not numeric axes: the models and the two settings.
+const CHOICE_KEYS: [&str; 3] = ["model", "collision", "on_hop"];
+
+/// The values of a list setting (`stop,continue`) by their kebab-case ids.
+fn choice_list<T: ValueEnum>(key: &str, text: &str) -> Result<Vec<T>> {
+    text.split(',')
+        .map(|id| {
+            T::from_str(id.trim(), true).map_err(|_| {
+                let ids: Vec<String> = T::value_variants()
+                    .iter()
+                    .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_string()))
+                    .collect();
+                anyhow!(
+                    "--{}: unknown value {id:?}; expected one of {}",
+                    key.replace('_', "-"),
+                    ids.join(", ")
+                )
+            })
+        })
+        .collect()
+}
+
+/// The grid of the flags over the `--grid` file.
+pub fn grid(args: &SweepArgs) -> Result<Grid> {
+    let mut given: BTreeMap<String, String> = match &args.grid {
+        Some(path) => grid_file(path)?,
+        None => BTreeMap::new(),
+    };
+    for (key, value) in flag_axes(args) {
+        given.insert(key.to_string(), value.clone());
+    }
+    let collision = match given.remove("collision") {
+        Some(text) => choice_list::<CollisionModel>("collision", &text)?,
+        None => Choices::default().collision,
+    };
+    let on_hop = match given.remove("on_hop") {
+        Some(text) => choice_list::<OnHop>("on_hop", &text)?,
+        None => Choices::default().on_hop,
+    };
+    let models = match given.remove("model") {
+        Some(text) => text
+            .split(',')
+            .map(|id| id.parse::<ModelKind>())
+            .collect::<Result<Vec<_>, _>>()
+            .context("--model")?,
+        None => Vec::new(),
+    };
+    let mut axes = Vec::new();
+    for (key, text) in &given {
+        let param = Param::from_key(key).ok_or_else(|| anyhow!("unknown axis {key:?}"))?;
+        axes.push(Axis {
+            param,
+            values: Values::parse(param.key(), text)?,
+        });
+    }
+    Ok(Grid::new(models, axes)?.with_choices(Choices { collision, on_hop })?)
+}
+
+/// The axes given as flags, by snake-case key (`model` included).
+pub fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
+    let flags: [(&'static str, &Option<String>); 15] = [
+        ("model", &a.model),
+        (Param::AlphaDeg.key(), &a.alpha_deg),
+        (Param::SnowDepth.key(), &a.snow_depth),
+        (Param::R0.key(), &a.r0),
+        (Param::G.key(), &a.g),
+        (Param::Density.key(), &a.density),
+        (Param::Length.key(), &a.length),
+        (Param::V0.key(), &a.v0),
+        (Param::TEnd.key(), &a.t_end),
+        (Param::XEnd.key(), &a.x_end),
+        (Param::Rtol.key(), &a.rtol),
+        (Param::Atol.key(), &a.atol),
+        (Param::Mu.key(), &a.mu),
+        ("collision", &a.collision),
+        ("on_hop", &a.on_hop),
+    ];
+    flags
+        .into_iter()
+        .filter_map(|(k, v)| v.as_ref().map(|v| (k, v)))
+        .collect()
+}
+
+/// The axes of a `--grid` TOML file, as axis texts by snake-case key: a
+/// string is taken as typed on the command line, a number as one value, an
+/// array as a list.
+fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
+    let shown = path.display();
+    let text = fs::read_to_string(path).with_context(|| format!("reading {shown}"))?;
+    let table: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| anyhow!("{shown}: {}", e.message()))?;
+    let mut axes = BTreeMap::new();
+    for (key, value) in table {
+        let snake = key.replace('-', "_");
+        if !CHOICE_KEYS.contains(&snake.as_str()) && Param::from_key(&snake).is_none() {
+            let known: Vec<&str> = CHOICE_KEYS
+                .into_iter()
+                .chain(Param::ALL.iter().map(|p| p.key()))
+                .collect();
+            bail!(
+                "{shown}: unknown key {key:?}; expected one of {}",
+                known.join(", ")
+            );
+        }
+        let item = |v: &toml::Value| match v {
+            toml::Value::String(s) => Ok(s.clone()),
+            toml::Value::Integer(i) => Ok(i.to_string()),
+            toml::Value::Float(x) => Ok(x.to_string()),
+            other => Err(anyhow!(
+                "{shown}: {key}: expected a number, a string or an array of them, not {}",
+                other.type_str()
+            )),
+        };
+        let text = match &value {
+            toml::Value::Array(items) => items
+                .iter()
+                .map(item)
+                .collect::<Result<Vec<_>>>()?
+                .join(","),
+            v => item(v)?,
+        };
+        if axes.insert(snake, text).is_some() {
+            bail!("{shown}: {key} is given twice");
+        }
+    }
+    Ok(axes)
+}

@@ -1,0 +1,349 @@
+//! Regimes of a sweep: what each row's log did ([`Outcome`]) and where the
+//! closed forms put the borders between regimes ([`boundaries`]), in the
+//! plane of two swept parameters.
+//!
+//! The borders drawn are the ones the program derives without simulating:
+//!
+//! - **stall** (fn. 7): below [`ModelKind::stall_threshold`] a circular
+//!   model with lift does not start (`tan α* = 3(λ₁ b r0 + λ₂ b²/3)/(2π r0²)`,
+//!   [`Coefficients::stall_slope`](crate::models::Coefficients::stall_slope))
+//!   and a turn model stalls in turn 0 (`docs/turn-model.md`);
+//! - **hop** (fn. 10, `docs/contact-forces.md` §4.2–4.3): a turn model hops in
+//!   late turns iff `tan α > 2`, and within K turns iff
+//!   `tan α > (1 + ε c_C)/(½ − ε c_G)`, `ε = b/r_{K−1}`, for the `note`
+//!   and `charged` collisions;
+//! - **slip** (`docs/contact-forces.md` §5): where |F|/N is largest at the
+//!   start (the snowless log, the models with lift, eq. (32)),
+//!   `μ = (G − a₀)/(C + b a₀/(2π r0))` with `a₀ = a(0, v0)`; for the turn
+//!   models the late-turn limit `μ = 4 tan α/(3(4 − tan²α))` (early turns
+//!   need slightly more).
+
+use std::f64::consts::PI;
+use std::fmt;
+
+use super::grid::{Grid, Param};
+use super::row::SweepRow;
+use crate::models::{CollisionModel, ModelKind};
+use crate::scenario::{Scenario, ScenarioFile};
+use crate::trajectory::StopReason;
+
+/// What the log did in one row of a sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Outcome {
+    /// a(0) ≤ 0: the log cannot lift the snow (fn. 7).
+    NeverStarts,
+    /// The speed returned to zero in turn `turn` (0-based; for a circular
+    /// model the full turns rolled before the stall).
+    Stalls {
+        /// The turn of the stall.
+        turn: u64,
+    },
+    /// Reached the end time, distance or number of turns still rolling.
+    RollsOn,
+    /// The normal force reached zero (fn. 10).
+    Hops,
+    /// The friction needed reached μ N.
+    Slips,
+    /// Could not climb the step onto a new layer (`--collision charged|pivot`).
+    Stuck,
+    /// The run failed (the row's `error` says why).
+    Failed,
+}
+
+impl Outcome {
+    /// The outcome of a row.
+    pub fn of(row: &SweepRow) -> Outcome {
+        if row.error.is_some() {
+            return Outcome::Failed;
+        }
+        match row.stop {
+            None => Outcome::Failed,
+            Some(StopReason::EndTime | StopReason::Distance | StopReason::Turns) => {
+                Outcome::RollsOn
+            }
+            Some(StopReason::DoesNotStart) => Outcome::NeverStarts,
+            Some(StopReason::Stalled) => Outcome::Stalls {
+                turn: row.turns.unwrap_or(0),
+            },
+            Some(StopReason::Hop) => Outcome::Hops,
+            Some(StopReason::Slip) => Outcome::Slips,
+            Some(StopReason::Stuck) => Outcome::Stuck,
+        }
+    }
+}
+
+impl fmt::Display for Outcome {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Outcome::NeverStarts => f.write_str("never starts"),
+            Outcome::Stalls { turn } => write!(f, "stalls in turn {turn}"),
+            Outcome::RollsOn => f.write_str("rolls on"),
+            Outcome::Hops => f.write_str("hops"),
+            Outcome::Slips => f.write_str("slips"),
+            Outcome::Stuck => f.write_str("stuck at a step"),
+            Outcome::Failed => f.write_str("run failed"),
+        }
+    }
+}
+
+/// A closed-form border between two regimes, as a curve in the plane of the
+/// map's two parameters (values in the parameters' own units, degrees for α).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Boundary {
+    /// What it is, with its source, e.g. `stall slope (fn. 7), energy`.
+    pub label: String,
+    /// The curve, `(x, y)` in the map's parameters.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// Points along the other axis at which a border is evaluated.
+const CURVE_POINTS: usize = 201;
+
+/// `c_C` of the early-turn hop angle, `docs/contact-forces.md` §4.3:
+/// `3/2 + 8/(13π)` for the note's collision, `3/2 + 12/(13π)` for `charged`.
+fn hop_c_c(collision: CollisionModel) -> Option<f64> {
+    match collision {
+        CollisionModel::Note => Some(1.5 + 8.0 / (13.0 * PI)),
+        CollisionModel::Charged => Some(1.5 + 12.0 / (13.0 * PI)),
+        CollisionModel::Pivot => None,
+    }
+}
+
+/// `c_G = 1/π + 14/39 − 1` of the early-turn hop angle (§4.3).
+const HOP_C_G: f64 = 1.0 / PI + 14.0 / 39.0 - 1.0;
+
+/// The slope above which a turn model hops within `k_turns` turns
+/// (`docs/contact-forces.md` §4.3): `tan α_K = (1 + ε c_C)/(½ − ε c_G)`,
+/// `ε = b/r_{K−1}`, `r_{K−1} = r0 + (K − 1) b`; radians. `None` for the
+/// `pivot` collision (no closed form) or `k_turns = 0`.
+pub fn hop_slope_within(b: f64, r0: f64, k_turns: u64, collision: CollisionModel) -> Option<f64> {
+    let c_c = hop_c_c(collision)?;
+    if k_turns == 0 {
+        return None;
+    }
+    let eps = b / (r0 + (k_turns - 1) as f64 * b);
+    Some(((1.0 + eps * c_c) / (0.5 - eps * HOP_C_G)).atan())
+}
+
+/// The smallest μ that keeps `model` rolling, where a closed form gives it
+/// (see the module doc): at the start for the snowless log, the circular
+/// models with lift and eq. (32); in late turns for the turn models (none
+/// for tan α ≥ 2, where they hop). `None` elsewhere.
+pub fn slip_mu(model: ModelKind, s: &Scenario) -> Option<f64> {
+    let alpha = s.slope_angle();
+    if !model.is_circular() {
+        let t = alpha.tan();
+        return (t < 2.0).then(|| 4.0 * t / (3.0 * (4.0 - t * t)));
+    }
+    let c = model.derivation()?.coefficients();
+    let largest_at_start =
+        !c.accretes || c.lift != 0.0 || c.lift_b2 != 0.0 || c.drag <= 1.0 || s.snow_depth() == 0.0;
+    if !largest_at_start {
+        return None;
+    }
+    let b = if c.accretes { s.snow_depth() } else { 0.0 };
+    let r0 = s.initial_radius();
+    let a0 = c.acceleration(s, 0.0, s.initial_speed());
+    let mu = (s.g_along() - a0) / (s.g_normal() + b * a0 / (2.0 * PI * r0));
+    (a0 > 0.0 && mu.is_finite() && mu > 0.0).then_some(mu)
+}
+
+/// The closed-form borders of `grid`'s models in the plane `(x, y)` of two
+/// swept parameters, one of which must be α (otherwise none are drawn).
+/// Parameters off the plane take the values of the model's first grid point;
+/// `rows` supply the number of turns the turn models reached (for the
+/// early-turn hop angle).
+pub fn boundaries(grid: &Grid, rows: &[SweepRow], x: Param, y: Param) -> Vec<Boundary> {
+    let mut out = Vec::new();
+    let (other, alpha_is_x) = match (x, y) {
+        (Param::AlphaDeg, p) => (p, true),
+        (p, Param::AlphaDeg) => (p, false),
+        _ => return out,
+    };
+    let Some(other_axis) = grid.axes().iter().find(|a| a.param == other) else {
+        return out;
+    };
+    let (lo, hi) = (0..other_axis.values.len())
+        .map(|k| other_axis.values.get(k))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    let log = lo > 0.0 && hi / lo >= 100.0;
+    let along: Vec<f64> = (0..CURVE_POINTS)
+        .map(|i| {
+            let f = i as f64 / (CURVE_POINTS - 1) as f64;
+            if log {
+                lo * (hi / lo).powf(f)
+            } else {
+                lo + (hi - lo) * f
+            }
+        })
+        .collect();
+    let place = |alpha_deg: f64, v: f64| {
+        if alpha_is_x {
+            (alpha_deg, v)
+        } else {
+            (v, alpha_deg)
+        }
+    };
+    let per_model = grid.len() / grid.models().len().max(1) as u64;
+    let several = grid.models().len() > 1;
+    for (m, &model) in grid.models().iter().enumerate() {
+        let Ok(base) = grid.point(m as u64 * per_model) else {
+            continue;
+        };
+        let named = |what: &str| {
+            if several {
+                format!("{what}, {}", model.id())
+            } else {
+                what.to_string()
+            }
+        };
+        let with = |v: f64| -> Option<Scenario> {
+            let mut f = ScenarioFile::from(base.scenario);
+            match other {
+                Param::SnowDepth => f.snow_depth = v,
+                Param::R0 => f.r0 = v,
+                Param::G => f.g = v,
+                Param::Density => f.density = v,
+                Param::Length => f.length = v,
+                Param::V0 => f.v0 = v,
+                _ => {}
+            }
+            Scenario::new(f).ok()
+        };
+        // fn. 7: the stall slope along the other axis.
+        let stall: Vec<(f64, f64)> = along
+            .iter()
+            .filter_map(|&v| {
+                let s = with(v)?;
+                let t = model.stall_threshold(s.snow_depth(), s.initial_radius())?;
+                Some(place(t.slope.to_degrees(), v))
+            })
+            .collect();
+        if stall.len() > 1 {
+            out.push(Boundary {
+                label: named("stall slope (fn. 7)"),
+                points: stall,
+            });
+        }
+        if !model.is_circular() && other != Param::Mu {
+            // fn. 10: late turns, tan α = 2.
+            let late = 2f64.atan().to_degrees();
+            out.push(Boundary {
+                label: named("hop, late turns: tan α = 2 (fn. 10)"),
+                points: vec![place(late, lo), place(late, hi)],
+            });
+            // Within the turns the rows reached: at each value of the other
+            // axis, K = the turns of the furthest run there that rolled on.
+            let mut values: Vec<f64> = rows
+                .iter()
+                .filter(|r| r.model == model)
+                .map(|r| r.param(other))
+                .collect();
+            values.sort_by(f64::total_cmp);
+            values.dedup_by(|a, b| a.to_bits() == b.to_bits());
+            let early: Vec<(f64, f64)> = values
+                .iter()
+                .filter_map(|&v| {
+                    let k = rows
+                        .iter()
+                        .filter(|r| r.model == model && r.param(other).to_bits() == v.to_bits())
+                        .filter(|r| Outcome::of(r) == Outcome::RollsOn)
+                        .filter_map(|r| r.turns)
+                        .max()?;
+                    let s = with(v)?;
+                    let a = hop_slope_within(
+                        s.snow_depth(),
+                        s.initial_radius(),
+                        k + 1,
+                        base.options.collision,
+                    )?;
+                    Some(place(a.to_degrees(), v))
+                })
+                .collect();
+            if early.len() > 1 {
+                out.push(Boundary {
+                    label: named("hop within the turns reached (§4.3)"),
+                    points: early,
+                });
+            }
+        }
+        if other == Param::Mu {
+            // Slip: μ as a function of α.
+            let Some(alpha_axis) = grid.axes().iter().find(|a| a.param == Param::AlphaDeg) else {
+                continue;
+            };
+            let (a_lo, a_hi) = (0..alpha_axis.values.len())
+                .map(|k| alpha_axis.values.get(k))
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(v), hi.max(v))
+                });
+            let slip: Vec<(f64, f64)> = (0..CURVE_POINTS)
+                .filter_map(|i| {
+                    let deg = a_lo + (a_hi - a_lo) * i as f64 / (CURVE_POINTS - 1) as f64;
+                    let mut f = ScenarioFile::from(base.scenario);
+                    f.alpha_deg = deg;
+                    let mu = slip_mu(model, &Scenario::new(f).ok()?)?;
+                    Some(place(deg, mu))
+                })
+                .collect();
+            if slip.len() > 1 {
+                let what = if model.is_circular() {
+                    "slip: μ = |F|/N at the start (§5)"
+                } else {
+                    "slip, late turns (§5.3)"
+                };
+                out.push(Boundary {
+                    label: named(what),
+                    points: slip,
+                });
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Rounding only: each form is a handful of operations.
+    const TOL: f64 = 1e-12;
+
+    #[test]
+    fn hop_angle_tends_to_arctan_2_and_matches_the_table_of_section_4_3() {
+        // docs/contact-forces.md §4.3, closed-form column: K = 20 → 64.2246°,
+        // K = 2000 → 63.4469° (b = 0.01, r0 = 0.1), to the table's 1e-4°.
+        let k20 = hop_slope_within(0.01, 0.1, 20, CollisionModel::Note)
+            .unwrap()
+            .to_degrees();
+        assert!((k20 - 64.2246).abs() < 1e-4, "{k20}");
+        let k2000 = hop_slope_within(0.01, 0.1, 2000, CollisionModel::Note)
+            .unwrap()
+            .to_degrees();
+        assert!((k2000 - 63.4469).abs() < 1e-4, "{k2000}");
+        // No snow: ε = 0 and tan α = 2 exactly.
+        let bare = hop_slope_within(0.0, 0.1, 5, CollisionModel::Note).unwrap();
+        assert!((bare.tan() - 2.0).abs() < TOL);
+        assert!(hop_slope_within(0.01, 0.1, 20, CollisionModel::Pivot).is_none());
+    }
+
+    #[test]
+    fn slip_mu_closed_forms() {
+        // Snowless cylinder: μ = tan α/3 (§5.1).
+        let s = Scenario::default();
+        let t = s.slope_angle().tan();
+        let mu = slip_mu(ModelKind::Snowless, &s).unwrap();
+        assert!((mu - t / 3.0).abs() < TOL * mu);
+        // eq. (32): μ = tan α/(3 + b tan α/(π r0)) (§5.2).
+        let mu = slip_mu(ModelKind::QuasiCircular, &s).unwrap();
+        let want = t / (3.0 + 0.01 * t / (PI * 0.1));
+        assert!((mu - want).abs() < TOL * want, "{mu} {want}");
+        // Turn models, late turns: 4 tan α/(3(4 − tan²α)) = 0.2099 at 30°.
+        let mu = slip_mu(ModelKind::Turns, &s).unwrap();
+        assert!((mu - 4.0 * t / (3.0 * (4.0 - t * t))).abs() < TOL);
+        // eq. (4): |F|/N grows along the run, no closed form at the start.
+        assert!(slip_mu(ModelKind::TorqueCm, &s).is_none());
+    }
+}
