@@ -83,7 +83,19 @@ impl Csv {
             }
         }
         let rows = lines
-            .map(|l| l.split(',').map(|c| c.parse::<f64>().unwrap()).collect())
+            // An empty cell is a quantity the output leaves undefined (|F|/N
+            // where N <= 0): NaN here, so no comparison with it can pass.
+            .map(|l| {
+                l.split(',')
+                    .map(|c| {
+                        if c.is_empty() {
+                            f64::NAN
+                        } else {
+                            c.parse::<f64>().unwrap()
+                        }
+                    })
+                    .collect()
+            })
             .collect();
         Csv {
             comments,
