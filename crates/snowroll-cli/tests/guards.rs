@@ -139,7 +139,7 @@ fn regression_7_6_valid_extremes_write_only_finite_numbers() {
             let mut columns: Vec<&str> = Vec::new();
             for line in stdout
                 .lines()
-                .filter(|l| format == "csv" && !l.starts_with('#'))
+                .filter(|l| format == "csv" && !l.starts_with('#') && !l.is_empty())
             {
                 if columns.is_empty() {
                     columns = line.split(',').collect();
