@@ -299,6 +299,26 @@ pub struct ScenarioArgs {
         )
     )]
     pub on_hop: Option<OnHop>,
+
+    #[arg(
+        long,
+        value_name = "N",
+        help = with_default(
+            "Most rows one run writes, N >= 1: a run known to need more (--dt: t_end/dt + 1, --times: their count, turns: the turn count) is refused before it starts; one sampled at every step stops there, its rows kept (stop reason row-limit)",
+            snowroll::DEFAULT_MAX_ROWS
+        )
+    )]
+    pub max_rows: Option<u64>,
+
+    #[arg(
+        long,
+        value_name = "N",
+        help = with_default(
+            "Most integrator steps (accepted, rejected, and events) of one run, N >= 1: the run stops there, its rows kept (stop reason step-limit)",
+            snowroll::integrate::Tolerances::default().max_steps
+        )
+    )]
+    pub max_steps: Option<u64>,
 }
 
 /// Where and how results are written, and the `--config` file; shared by
@@ -311,7 +331,7 @@ pub struct OutputArgs {
         ignore_case = true,
         value_name = "FORMAT",
         help = with_default(
-            "Output format: csv (with # lines recording version and parameters) or json",
+            "Output format: csv (# lines with version and parameters, the rows as computed, the stop in a last # line) or json (one object, the stop after the rows)",
             value_name(Format::default())
         )
     )]

@@ -63,6 +63,8 @@ pub struct ConfigFile {
     collision: Option<CollisionModel>,
     #[serde(alias = "on-hop")]
     on_hop: Option<OnHop>,
+    max_rows: Option<u64>,
+    max_steps: Option<u64>,
     #[serde(default, deserialize_with = "format_any_case")]
     format: Option<Format>,
     output: Option<PathBuf>,
@@ -225,10 +227,10 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             }
             k if RECORD_ONLY.contains(&k) || k == "stop" => continue,
             _ if value == "none" => continue,
-            "turns" => Value::from(
+            "turns" | "max_rows" | "max_steps" => Value::from(
                 value
                     .parse::<u64>()
-                    .map_err(|_| anyhow!("`turns = {value}` is not a whole number"))?,
+                    .map_err(|_| anyhow!("`{key} = {value}` is not a whole number"))?,
             ),
             "times" => Value::Array(
                 value
@@ -300,6 +302,8 @@ impl ScenarioArgs {
             mu,
             collision,
             on_hop,
+            max_rows,
+            max_steps,
         } = self;
         ScenarioArgs {
             model: model.or(file.model),
@@ -319,6 +323,8 @@ impl ScenarioArgs {
             mu: mu.or(file.mu),
             collision: collision.or(file.collision),
             on_hop: on_hop.or(file.on_hop),
+            max_rows: max_rows.or(file.max_rows),
+            max_steps: max_steps.or(file.max_steps),
         }
     }
 }

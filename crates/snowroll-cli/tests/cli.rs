@@ -82,21 +82,30 @@ impl Csv {
                 }
             }
         }
-        let rows = lines
-            // An empty cell is a quantity the output leaves undefined (|F|/N
-            // where N <= 0): NaN here, so no comparison with it can pass.
-            .map(|l| {
-                l.split(',')
-                    .map(|c| {
-                        if c.is_empty() {
-                            f64::NAN
-                        } else {
-                            c.parse::<f64>().unwrap()
-                        }
-                    })
-                    .collect()
-            })
-            .collect();
+        // Rows are written as they are computed, so the lines known only at
+        // the end (`# stop = ...`, the turn summary) follow them.
+        let mut rows = Vec::new();
+        for line in lines {
+            match line.strip_prefix("# ") {
+                Some(c) => {
+                    if let Some((k, v)) = c.split_once(" = ") {
+                        comments.insert(k.to_string(), v.to_string());
+                    }
+                }
+                // An empty cell is an undefined value (|F|/N where N <= 0): NaN here.
+                None => rows.push(
+                    line.split(',')
+                        .map(|c| {
+                            if c.is_empty() {
+                                f64::NAN
+                            } else {
+                                c.parse().unwrap()
+                            }
+                        })
+                        .collect(),
+                ),
+            }
+        }
         Csv {
             comments,
             first_line,

@@ -200,6 +200,47 @@ fn contact_settings_reproduce_their_runs() {
     assert_eq!(rows(&s), 1, "stops in turn 1: {s}");
 }
 
+/// The limits of issue 7 (`--max-rows`, `--max-steps`) are recorded and read
+/// back: a run cut short by either reproduces its rows and its stop.
+#[test]
+fn limits_reproduce_their_runs() {
+    // Every accepted step of eq. (4) for 30 s takes more than 40 rows.
+    let rows = ["--model", "eq4", "--t-end", "30", "--max-rows", "40"];
+    reproduces("simulate", &rows, "rows.csv");
+    reproduces(
+        "simulate",
+        &[&rows[..], &["--format", "json"]].concat(),
+        "rows.json",
+    );
+    // 25 integrator steps end a turn-model run within its first turns.
+    let steps = ["--model", "turns", "--turns", "50", "--max-steps", "25"];
+    reproduces("turns", &steps, "steps.csv");
+    reproduces(
+        "turns",
+        &[&steps[..], &["--format", "json"]].concat(),
+        "steps.json",
+    );
+
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &[&["simulate"], &rows[..], &["-o", "r.csv"]].concat(),
+    );
+    run(
+        dir.path(),
+        &[&["turns"], &steps[..], &["-o", "s.csv"]].concat(),
+    );
+    let text = |name: &str| fs::read_to_string(dir.path().join(name)).unwrap();
+    let (r, s) = (text("r.csv"), text("s.csv"));
+    assert!(r.contains("# max_rows = 40\n"), "{r}");
+    assert!(r.contains("# stop = row-limit"), "{r}");
+    assert!(s.contains("# max_steps = 25\n"), "{s}");
+    assert!(s.contains("# stop = step-limit"), "{s}");
+    let data = |t: &str| t.lines().filter(|l| !l.starts_with('#')).count() - 1;
+    assert_eq!(data(&r), 40, "{r}");
+    assert!(data(&s) < 50, "{s}");
+}
+
 #[test]
 fn an_output_of_the_other_command_is_refused_with_the_reason() {
     let dir = tempfile::tempdir().unwrap();

@@ -110,6 +110,7 @@ impl Inputs {
                 ..d.tolerances
             },
             sampling,
+            max_rows: d.max_rows,
             mu: self.mu,
             collision,
             on_hop,

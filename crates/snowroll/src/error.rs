@@ -1,5 +1,7 @@
 //! Errors of the library: bad parameters, failed integrations, failed output.
 
+use std::sync::Arc;
+
 use thiserror::Error;
 
 use crate::output::format_number as number;
@@ -74,6 +76,17 @@ pub enum ParamError {
         /// The end time, s.
         t_end: f64,
     },
+    /// A run whose row count, known before it starts, exceeds the limit.
+    #[error(
+        "the run would record {} rows, more than max_rows = {max_rows}",
+        number(*rows)
+    )]
+    TooManyRows {
+        /// Rows the run would record (a float: `t_end/dt` may exceed any integer).
+        rows: f64,
+        /// The limit.
+        max_rows: u64,
+    },
     /// Requested output times that are not finite, negative or not ascending.
     #[error("invalid output times: {reason}")]
     InvalidTimes {
@@ -97,14 +110,10 @@ pub enum SimError {
         /// The step that was too small, s.
         h: f64,
     },
-    /// More steps than allowed.
-    #[error("gave up after {steps} steps at t = {} s", number(*t))]
-    TooManySteps {
-        /// Time reached, s.
-        t: f64,
-        /// The step budget.
-        steps: u64,
-    },
+    /// The [`SampleSink`](crate::SampleSink) that received the samples
+    /// failed; the run stopped at once.
+    #[error("the output of the samples failed")]
+    Sink(#[source] SinkError),
     /// The state became NaN or infinite.
     #[error("the state became non-finite at t = {} s", number(*t))]
     NonFiniteState {
@@ -125,6 +134,38 @@ pub enum SimError {
         /// Requested time, s.
         t: f64,
     },
+}
+
+/// A failure of a [`SampleSink`](crate::SampleSink), kept whole (its
+/// source chain is the sink's own error) and shared, so that
+/// [`SimError`] stays `Clone`.
+#[derive(Debug, Clone, Error)]
+#[error(transparent)]
+pub struct SinkError(Arc<dyn std::error::Error + Send + Sync>);
+
+impl SinkError {
+    /// Wraps the sink's error.
+    pub fn new(error: impl std::error::Error + Send + Sync + 'static) -> Self {
+        Self(Arc::new(error))
+    }
+
+    /// The sink's error.
+    pub fn inner(&self) -> &(dyn std::error::Error + Send + Sync + 'static) {
+        &*self.0
+    }
+}
+
+/// Two sink errors are equal when they are the same failure (one shared value).
+impl PartialEq for SinkError {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl From<OutputError> for SinkError {
+    fn from(e: OutputError) -> Self {
+        Self::new(e)
+    }
 }
 
 /// Writing results failed.

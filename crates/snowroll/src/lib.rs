@@ -33,6 +33,13 @@
 //!
 //! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
 //! one integrator ([`integrate`]): DOP853 with dense output and events.
+//! [`Model::simulate_into`] sends each sample to a [`SampleSink`] as it is
+//! computed ([`TrajectoryWriter`] writes CSV or JSON that way), and
+//! [`TurnModel::run_table_into`] each turn's row to a [`TurnSink`]
+//! ([`TurnTableWriter`]), so memory does not grow with the length of a run;
+//! [`Model::simulate`] and [`run_turns`] gather the same values in memory.
+//! A run stops early, keeping what it computed, at its step budget
+//! ([`StopReason::StepLimit`]) or its row limit ([`StopReason::RowLimit`]).
 //!
 //! ## Quick start
 //! Build a [`Scenario`] from a [`ScenarioFile`] (its fields are the command
@@ -127,20 +134,23 @@ pub mod sweep;
 pub mod trajectory;
 pub mod units;
 
-pub use error::{OutputError, ParamError, SimError};
+pub use error::{OutputError, ParamError, SimError, SinkError};
 pub use models::{
     as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
     circular_forces, collision_speed, default_atol, first_turn_stall_slope,
-    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, state_scale,
-    tolerance_warning, validity_warnings, Balance, CircularModel, Coefficients, CollisionModel,
-    ContactForces, ContactRange, Derivation, DragOnlyClosedForm, InTurnCoefficients, LoneyModel,
-    Model, ModelKind, PivotImpact, SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes,
-    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, run_turns_into,
+    state_scale, tolerance_warning, validity_warnings, Balance, CircularModel, Coefficients,
+    CollisionModel, ContactForces, ContactRange, Derivation, DragOnlyClosedForm,
+    InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody, TurnCheckpoint,
+    TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable,
+    TurnVariant, Validity, ValidityWarning,
 };
 pub use output::{
     check_finite, format_number, write_trajectory, write_turn_table, Format, NonFinite, RunParams,
+    TrajectoryWriter, TurnTableWriter,
 };
 pub use scenario::{Scenario, ScenarioFile, Shape};
 pub use trajectory::{
-    OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState,
+    Collected, OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason,
+    Trajectory, TurnState, DEFAULT_MAX_ROWS,
 };

@@ -4,7 +4,7 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::ParamError;
+use crate::error::{ParamError, SinkError};
 use crate::integrate::{Stats, Tolerances};
 use crate::model_kind::ModelKind;
 use crate::models::CollisionModel;
@@ -75,6 +75,12 @@ pub enum StopReason {
     /// With `--collision charged|pivot`, the kinetic energy after the impact
     /// cannot lift the log onto the new layer (`docs/contact-forces.md` §6.2, §6.3).
     Stuck,
+    /// The integrator used up its step budget ([`Tolerances::max_steps`]);
+    /// the samples up to there are kept.
+    StepLimit,
+    /// The run recorded [`SimOptions::max_rows`] samples, the most allowed;
+    /// the samples up to there are kept.
+    RowLimit,
 }
 
 impl StopReason {
@@ -93,7 +99,19 @@ impl StopReason {
                 "the friction needed reached mu times the normal force: the log slips"
             }
             StopReason::Stuck => "the log cannot climb the step onto the new layer of snow (stuck)",
+            StopReason::StepLimit => {
+                "the integrator used up its step budget (max_steps); the rows computed so far are kept"
+            }
+            StopReason::RowLimit => {
+                "the run recorded max_rows rows, the most allowed; the rows computed so far are kept"
+            }
         }
+    }
+
+    /// Whether the run ended on a limit of the program rather than on its
+    /// physics or its requested end.
+    pub fn is_limit(self) -> bool {
+        matches!(self, StopReason::StepLimit | StopReason::RowLimit)
     }
 }
 
@@ -131,6 +149,62 @@ impl Stop {
     }
 }
 
+/// How a run ended: where and why, and what it cost. What
+/// [`Model::simulate_into`](crate::Model::simulate_into) returns once its
+/// samples have gone to the sink.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunEnd {
+    /// How the run ended.
+    pub stop: Stop,
+    /// Integrator counts (zero for closed forms).
+    pub stats: Stats,
+}
+
+/// Receives the samples of a run one at a time, as they are computed, so a
+/// run of any length needs memory for one sample only
+/// ([`Model::simulate_into`](crate::Model::simulate_into)).
+pub trait SampleSink {
+    /// One sample, with the turn state for the turn models (`None` for the others).
+    ///
+    /// # Errors
+    /// A [`SinkError`] ends the run at once; the model returns it as
+    /// [`SimError::Sink`](crate::SimError::Sink).
+    fn sample(&mut self, sample: &Sample, turn: Option<&TurnState>) -> Result<(), SinkError>;
+}
+
+/// The samples of a run gathered in memory: the sink behind
+/// [`Model::simulate`](crate::Model::simulate).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Collected {
+    /// Samples in time order.
+    pub samples: Vec<Sample>,
+    /// The turn states of the samples that had one.
+    pub turn_states: Vec<TurnState>,
+}
+
+impl SampleSink for Collected {
+    fn sample(&mut self, sample: &Sample, turn: Option<&TurnState>) -> Result<(), SinkError> {
+        self.samples.push(*sample);
+        if let Some(k) = turn {
+            self.turn_states.push(*k);
+        }
+        Ok(())
+    }
+}
+
+impl Collected {
+    /// The trajectory of `model` made of these samples and `end`.
+    pub fn into_trajectory(self, model: ModelKind, end: RunEnd) -> Trajectory {
+        Trajectory {
+            model,
+            samples: self.samples,
+            turn_states: self.turn_states,
+            stop: end.stop,
+            stats: end.stats,
+        }
+    }
+}
+
 /// The result of one simulation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trajectory {
@@ -163,6 +237,9 @@ pub enum Sampling {
     Ends,
 }
 
+/// Default of [`SimOptions::max_rows`]: 10^8 rows, about 10 GB of CSV.
+pub const DEFAULT_MAX_ROWS: u64 = 100_000_000;
+
 impl Sampling {
     /// Point `i` of the regular grid `0, dt, 2dt, …` that ends at `t_end`, s;
     /// `None` past the end. A point within a few ulps of `t_end` (on either
@@ -179,6 +256,19 @@ impl Sampling {
         let t = decimal_multiple(dt, i);
         let near_end = (t - t_end).abs() <= 4.0 * f64::EPSILON * t_end;
         (t <= t_end || near_end).then_some(if near_end { t_end } else { t })
+    }
+
+    /// The number of samples this sampling records on a run that reaches
+    /// `t_end`, when it is known before the run: the count of `Times`, and
+    /// `⌊t_end/dt⌋ + 1` for `Every` (a float: it may exceed every integer).
+    /// `None` for `Steps` (the step count is found while running); 2 for `Ends`.
+    pub fn known_rows(&self, t_end: Seconds) -> Option<f64> {
+        match self {
+            Sampling::Times(ts) => Some(ts.len() as f64),
+            Sampling::Every(dt) => Some((t_end / dt).floor() + 1.0),
+            Sampling::Steps => None,
+            Sampling::Ends => Some(2.0),
+        }
     }
 
     /// Checks times and grid spacing.
@@ -307,6 +397,12 @@ pub struct SimOptions {
     /// How the turn models climb the step of each new layer. Default: the
     /// note's eq. (89), [`CollisionModel::Note`].
     pub collision: CollisionModel,
+    /// Most samples one run records, at least 1. Default
+    /// [`DEFAULT_MAX_ROWS`]. A run whose count is known in advance
+    /// ([`Sampling::known_rows`]) and larger is refused by
+    /// [`validate`](Self::validate); otherwise the run stops there with
+    /// [`StopReason::RowLimit`].
+    pub max_rows: u64,
 }
 
 impl Default for SimOptions {
@@ -320,6 +416,7 @@ impl Default for SimOptions {
             mu: None,
             on_hop: OnHop::Stop,
             collision: CollisionModel::Note,
+            max_rows: DEFAULT_MAX_ROWS,
         }
     }
 }
@@ -363,7 +460,17 @@ impl SimOptions {
             return Err(bad("turns", 0.0, "turns >= 1"));
         }
         self.tolerances.validate()?;
-        self.sampling.validate()
+        if self.max_rows == 0 {
+            return Err(bad("max_rows", 0.0, "max_rows >= 1"));
+        }
+        self.sampling.validate()?;
+        match self.sampling.known_rows(self.t_end) {
+            Some(rows) if rows > self.max_rows as f64 => Err(ParamError::TooManyRows {
+                rows,
+                max_rows: self.max_rows,
+            }),
+            _ => Ok(()),
+        }
     }
 }
 

@@ -63,11 +63,46 @@ pub fn options(
         tolerances: Tolerances {
             rtol: a.rtol.unwrap_or(d.tolerances.rtol),
             atol: a.atol.unwrap_or(d.tolerances.atol),
+            max_steps: a.max_steps.unwrap_or(d.tolerances.max_steps),
             ..d.tolerances
         },
         sampling,
+        max_rows: a.max_rows.unwrap_or(d.max_rows),
         mu: a.mu,
         collision: a.collision.unwrap_or(d.collision),
         on_hop: a.on_hop.unwrap_or(d.on_hop),
     }
+}
+
+/// Refuses, before the run, a run whose row count is known and above
+/// `--max-rows`, naming the count and the flag.
+pub fn check_row_count(opts: &SimOptions, rows: Option<f64>, what: &str) -> Result<()> {
+    match rows {
+        Some(n) if n > opts.max_rows as f64 => Err(anyhow!(
+            "{what} would write {} rows, more than --max-rows {} (config key `max_rows`): \
+             raise --max-rows, or ask for fewer rows",
+            count(n),
+            opts.max_rows
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// A row count: exact up to 10^15, else to three digits (`1.00e302`).
+fn count(n: f64) -> String {
+    if n < 1e15 {
+        format!("{n:.0}")
+    } else {
+        format!("{n:.2e}")
+    }
+}
+
+/// Whether a sink failed because a number to write was not finite: a fault
+/// of the run (a quantity overflowed), reported as the run's error rather
+/// than the output's.
+pub fn is_non_finite(e: &snowroll::SinkError) -> bool {
+    matches!(
+        e.inner().downcast_ref::<snowroll::OutputError>(),
+        Some(snowroll::OutputError::NonFinite(_))
+    )
 }

@@ -3,11 +3,11 @@
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
     check_tolerances, check_turn_scale, default_atol, format_number, tolerance_warning,
-    validity_warnings, write_trajectory, ModelKind, RunParams, Sampling, Scenario, SimOptions,
-    StopReason, Trajectory,
+    validity_warnings, ModelKind, RunParams, Sampling, Scenario, SimError, SimOptions, Stop,
+    StopReason, TrajectoryWriter, TurnState,
 };
 
-use super::inputs::{self, id_list, turn_models};
+use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::SimulateArgs;
 use crate::config;
 use crate::console::report;
@@ -35,6 +35,17 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     if args.scenario.atol.is_none() {
         opts.tolerances.atol = default_atol(model, &scenario);
     }
+    // The grid spacing first: the row count needs dt > 0.
+    opts.sampling.validate()?;
+    let what = match (&opts.sampling, args.dt) {
+        (Sampling::Every(_), Some(dt)) => format!(
+            "--dt {} up to t_end = {} s",
+            format_number(dt),
+            format_number(opts.t_end)
+        ),
+        _ => "--times".to_string(),
+    };
+    inputs::check_row_count(&opts, opts.sampling.known_rows(opts.t_end), &what)?;
     opts.validate()?;
     check_turn_scale(&scenario, &opts)?;
     check_tolerances(model, &scenario, &opts)?;
@@ -51,15 +62,32 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     // Open the destination before the run, so that a bad path fails at once.
     let mut sink = Sink::open(&args.output)?;
     let name = sink.name();
-    let traj = model
-        .build()
-        .simulate(&scenario, &opts)
-        .with_context(|| format!("simulating {} ({})", model.id(), model.equation()))?;
     let mut params = RunParams::new(&scenario, &opts);
     params.warnings = warnings;
-    params.notes = stop_note(&traj, &scenario, &opts).into_iter().collect();
-    params.notes.extend(times_note(&traj, &opts));
-    write_trajectory(&mut sink, format, &traj, &params)
+    let mut writer = TrajectoryWriter::new(&mut sink, format, model, &params)
+        .with_context(|| format!("writing {name}"))?;
+    // Rows go out as they are computed; the stop and the notes are written last.
+    let end = match model.build().simulate_into(&scenario, &opts, &mut writer) {
+        Ok(end) => end,
+        Err(SimError::Sink(e)) if !is_non_finite(&e) => {
+            return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))
+        }
+        Err(e) => {
+            return Err(anyhow::Error::from(e).context(format!(
+                "simulating {} ({})",
+                model.id(),
+                model.equation()
+            )))
+        }
+    };
+    params.notes = stop_note(model, end.stop, writer.last_turn(), &scenario, &opts)
+        .into_iter()
+        .collect();
+    params
+        .notes
+        .extend(times_note(writer.rows(), end.stop, &opts));
+    let written = writer.finish(&end, &params.notes).map(drop);
+    written
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))
         .with_context(|| format!("writing {name}"))?;
@@ -88,26 +116,31 @@ fn options(a: &SimulateArgs) -> Result<SimOptions> {
 
 /// How many requested times were not written because the run stopped
 /// before them (times after `t_end` are refused before the run).
-fn times_note(traj: &Trajectory, opts: &SimOptions) -> Option<String> {
+fn times_note(rows: u64, stop: Stop, opts: &SimOptions) -> Option<String> {
     let Sampling::Times(times) = &opts.sampling else {
         return None;
     };
-    let missing = times.len().saturating_sub(traj.samples.len());
+    let missing = times.len().saturating_sub(rows as usize);
     (missing > 0).then(|| {
         format!(
             "{missing} of the {} requested times are after the stop at t = {} s and were not written",
             times.len(),
-            format_number(traj.stop.t_s)
+            format_number(stop.t_s)
         )
     })
 }
 
 /// One line for stderr when the run ended before its end time, or reached
 /// it short of the turns asked for.
-fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Option<String> {
-    let stop = traj.stop;
+fn stop_note(
+    model: ModelKind,
+    stop: Stop,
+    last_turn: Option<TurnState>,
+    scenario: &Scenario,
+    opts: &SimOptions,
+) -> Option<String> {
     if stop.reason == StopReason::EndTime {
-        let (wanted, last) = (opts.turns?, traj.turn_states.last()?);
+        let (wanted, last) = (opts.turns?, last_turn?);
         return Some(format!(
             "reached t_end = {} s in turn {} (0-based) of the {wanted} asked for; \
              raise --t-end for more",
@@ -121,7 +154,7 @@ fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Optio
         stop.reason.describe()
     );
     if stop.reason == StopReason::DoesNotStart {
-        let threshold = traj.model.derivation().and_then(|d| {
+        let threshold = model.derivation().and_then(|d| {
             d.coefficients()
                 .stall_slope(scenario.snow_depth(), scenario.initial_radius())
         });
@@ -132,6 +165,16 @@ fn stop_note(traj: &Trajectory, scenario: &Scenario, opts: &SimOptions) -> Optio
             Some(_) => note.push_str("; with this snow and radius it cannot start on any slope"),
             None => {}
         }
+    }
+    match stop.reason {
+        StopReason::StepLimit => {
+            note.push_str("; a looser --rtol or a shorter --t-end needs fewer steps");
+        }
+        StopReason::RowLimit => note.push_str(&format!(
+            " ({}); raise --max-rows, or sample with --dt",
+            opts.max_rows
+        )),
+        _ => {}
     }
     Some(note)
 }

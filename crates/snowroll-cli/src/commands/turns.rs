@@ -1,15 +1,17 @@
 //! `snowroll turns`: a turn model of §3.4 run for N turns, one row per
-//! turn ([`snowroll::write_turn_table`]), and on stderr the long-run means
+//! turn written as it ends ([`snowroll::TurnTableWriter`]), and at the end
+//! of the output and on stderr the long-run means
 //! of the acceleration that eqs. (77)–(79) leave open, as computed by the
 //! library ([`TurnSummary`]).
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    check_tolerances, check_turn_scale, default_atol, format_number, run_turns, tolerance_warning,
-    validity_warnings, write_turn_table, RunParams, Sampling, StopReason, TurnSummary, TurnTable,
+    check_tolerances, check_turn_scale, default_atol, format_number, run_turns_into,
+    tolerance_warning, validity_warnings, RunParams, Sampling, SimError, StopReason, TurnRunEnd,
+    TurnSummary, TurnTableWriter,
 };
 
-use super::inputs::{self, id_list, turn_models};
+use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::{TurnsArgs, TURNS_DEFAULT, TURNS_T_END_S};
 use crate::config;
 use crate::console::report;
@@ -50,6 +52,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     if args.scenario.atol.is_none() {
         opts.tolerances.atol = default_atol(model, &scenario);
     }
+    inputs::check_row_count(&opts, Some(wanted as f64), &format!("--turns {wanted}"))?;
     opts.validate()?;
     check_turn_scale(&scenario, &opts)?;
     check_tolerances(model, &scenario, &opts)?;
@@ -66,26 +69,42 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     // Open the destination before the run, so that a bad path fails at once.
     let mut sink = Sink::open(&args.output)?;
     let name = sink.name();
-    let table = run_turns(model, &scenario, &opts)
-        .with_context(|| format!("running {} ({})", model.id(), model.equation()))?;
     let mut params = RunParams::new(&scenario, &opts);
     params.sampling = "one row per turn".to_string();
     params.warnings = warnings;
-    params.notes = stop_note(&table, wanted, opts.t_end).into_iter().collect();
-    write_turn_table(&mut sink, format, &table, &params)
+    let mut writer = TurnTableWriter::new(&mut sink, format, model, &params)
+        .with_context(|| format!("writing {name}"))?;
+    // Rows go out as each turn ends; the stop, the notes and the summary are
+    // written last.
+    let end = match run_turns_into(model, &scenario, &opts, &mut writer) {
+        Ok(end) => end,
+        Err(SimError::Sink(e)) if !is_non_finite(&e) => {
+            return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))
+        }
+        Err(e) => {
+            return Err(anyhow::Error::from(e).context(format!(
+                "running {} ({})",
+                model.id(),
+                model.equation()
+            )))
+        }
+    };
+    params.notes = stop_note(&end, wanted, opts.t_end).into_iter().collect();
+    let written = writer.finish(&end, &params.notes).map(drop);
+    written
         .map_err(anyhow::Error::from)
         .and_then(|()| Ok(sink.commit()?))
         .with_context(|| format!("writing {name}"))?;
     for note in &params.notes {
         report!("note: {note}");
     }
-    report!("{}", summary(&table).trim_end());
+    report!("{}", summary(&end).trim_end());
     Ok(())
 }
 
 /// One line for stderr when the run ended before the turns asked for.
-fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
-    let stop = table.stop;
+fn stop_note(end: &TurnRunEnd, wanted: u64, t_end: f64) -> Option<String> {
+    let stop = end.stop;
     if stop.reason == StopReason::Turns {
         return None;
     }
@@ -93,7 +112,7 @@ fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
         "run stopped at {}: {}, after {} of the {wanted} turns asked for",
         stop.place(),
         stop.reason.describe(),
-        table.rows.len()
+        end.summary.turns
     );
     if stop.reason == StopReason::EndTime {
         note.push_str(&format!(
@@ -106,12 +125,12 @@ fn stop_note(table: &TurnTable, wanted: u64, t_end: f64) -> Option<String> {
 
 /// The long-run statistics for people: overall means, the last decade,
 /// convergence with K, and the note's claim beside them.
-fn summary(table: &TurnTable) -> String {
-    let s: &TurnSummary = &table.summary;
+fn summary(end: &TurnRunEnd) -> String {
+    let s: &TurnSummary = &end.summary;
     let mut text = format!(
         "summary of {} ({}): {} turns; accelerations as fractions of G = g sin(alpha) = {} m/s^2\n",
-        table.model.id(),
-        table.model.equation(),
+        end.model.id(),
+        end.model.equation(),
         s.turns,
         s.g_along_m_s2
     );

@@ -47,6 +47,8 @@ pub(crate) enum Kind {
     Dt,
     Times,
     Turns,
+    /// A row or step limit (`--max-rows`, `--max-steps`).
+    Limit,
     Format,
     Output,
     Config,
@@ -68,6 +70,8 @@ pub(crate) const FLAGS: &[(&str, Kind)] = &[
     ("--dt", Kind::Dt),
     ("--times", Kind::Times),
     ("--turns", Kind::Turns),
+    ("--max-rows", Kind::Limit),
+    ("--max-steps", Kind::Limit),
     ("--format", Kind::Format),
     ("--output", Kind::Output),
     ("-o", Kind::Output),
@@ -129,6 +133,8 @@ pub(crate) const KEYS: &[(&str, Kind)] = &[
     ("dt", Kind::Dt),
     ("times", Kind::Times),
     ("turns", Kind::Turns),
+    ("max_rows", Kind::Limit),
+    ("max-steps", Kind::Limit),
     ("format", Kind::Format),
     ("output", Kind::Output),
     ("alpha_deg", Kind::Physical(0.01, 89.99)),
@@ -195,6 +201,16 @@ pub(crate) fn turns() -> BoxedStrategy<String> {
     .boxed()
 }
 
+/// A row or step limit: small ones end runs early (a stop, exit 0), and
+/// values that are not limits.
+pub(crate) fn limit() -> BoxedStrategy<String> {
+    prop_oneof![
+        6 => (1..=100_000u64).prop_map(|n| n.to_string()),
+        1 => pick(&["0", "-1", "1e3", "18446744073709551615", "18446744073709551616", "abc", ""]),
+    ]
+    .boxed()
+}
+
 /// A value for a flag of `kind`, as it would be typed.
 pub(crate) fn value(kind: Kind) -> BoxedStrategy<String> {
     match kind {
@@ -212,6 +228,7 @@ pub(crate) fn value(kind: Kind) -> BoxedStrategy<String> {
         Kind::Dt => number(MIN_DT, 10.0, false),
         Kind::Times => times(),
         Kind::Turns => turns(),
+        Kind::Limit => limit(),
         Kind::Format => pick(&["csv", "json", "CSV", "Json", "xml", "", "cs v"]),
         Kind::Output => pick(PATHS),
         Kind::Config => pick(CONFIGS),
@@ -267,6 +284,7 @@ pub(crate) fn toml_value(kind: Kind) -> BoxedStrategy<String> {
             value(kind).prop_map(quoted).boxed()
         }
         Kind::Turns => turns(),
+        Kind::Limit => limit(),
         Kind::Times => times().prop_map(|t| format!("[{t}]")).boxed(),
         _ => value(kind),
     };

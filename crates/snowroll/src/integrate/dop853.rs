@@ -162,6 +162,16 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         f
     }
 
+    /// The end of the run at `(t, y)`, with the counts so far.
+    fn outcome(&self, t: f64, y: [f64; N], termination: Termination) -> Outcome<N> {
+        Outcome {
+            t,
+            y,
+            termination,
+            stats: self.stats,
+        }
+    }
+
     /// Hairer's initial step guess (DOP853's `HINIT`) for an 8th-order
     /// method, forward in time: `h` such that `h^8 max(‖f‖, ‖f'‖) = 0.01`
     /// in the scaled norm, at most 100 times the explicit-Euler guess.
@@ -248,11 +258,16 @@ fn check_times<const N: usize>(t0: f64, y0: &[f64; N], t_end: f64) -> Result<(),
 /// are offered in index order; after a `Reset` the others of the same step
 /// are dropped, and the integration restarts from the new state.
 ///
+/// Two limits end the run early without an error, at the last state the
+/// observer saw: `tol.max_steps` steps and events
+/// ([`Termination::StepLimit`]), and the observer's own request
+/// ([`Observer::stop_requested`], asked before every step:
+/// [`Termination::Stopped`]).
+///
 /// # Errors
 /// [`ParamError::InvalidParameter`] for bad tolerances or a start or end
 /// time that is not finite (or `t_end < t0`),
 /// [`SimError::StepSizeTooSmall`] when the step underflows (a singularity),
-/// [`SimError::TooManySteps`] past `tol.max_steps` steps and events,
 /// [`SimError::NonFiniteState`] when the state is or becomes non-finite, and
 /// [`SimError::TooManyEvents`] past [`MAX_EVENTS`] event functions.
 pub fn integrate<S, O, const N: usize>(
@@ -304,11 +319,11 @@ where
     let mut last_rejected = false;
     let mut events_located = 0;
     loop {
+        if observer.stop_requested() {
+            return Ok(it.outcome(t, y, Termination::Stopped));
+        }
         if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
-            return Err(SimError::TooManySteps {
-                t,
-                steps: tol.max_steps,
-            });
+            return Ok(it.outcome(t, y, Termination::StepLimit));
         }
         // Hairer's test, plus a NaN step (from a right-hand side that is
         // NaN at the start) counting as too small.
@@ -410,10 +425,7 @@ where
                 // rest of the step again with their current values. Events
                 // count towards the step budget, so a cascade cannot hang.
                 if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
-                    return Err(SimError::TooManySteps {
-                        t: t_seen,
-                        steps: tol.max_steps,
-                    });
+                    return Ok(it.outcome(t_seen, y_seen, Termination::StepLimit));
                 }
                 for i in 0..n_events {
                     g_lo[i] = it.system.event(i, t_seen, &y_seen);

@@ -171,6 +171,13 @@ pub trait Observer<S: ?Sized, const N: usize> {
     /// One located event, after the step piece that ends at it and before
     /// [`OdeSystem::commit_event`] updates the system.
     fn event(&mut self, _system: &S, _event: &EventRecord<N>) {}
+
+    /// Whether the observer wants the integration to end now (a full
+    /// output, a failed writer). Asked once before every step: the run then
+    /// ends with [`Termination::Stopped`] at the last state it reported.
+    fn stop_requested(&self) -> bool {
+        false
+    }
 }
 
 /// An observer that records nothing.
@@ -193,8 +200,8 @@ pub struct Tolerances {
     pub atol: f64,
     /// Largest step, in the time unit. Default: unbounded.
     pub max_step: f64,
-    /// Most accepted plus rejected steps, plus located events, before
-    /// giving up. Default 10^8.
+    /// Most accepted plus rejected steps, plus located events; the run
+    /// ends there with [`Termination::StepLimit`]. Default 10^8.
     pub max_steps: u64,
 }
 
@@ -246,6 +253,12 @@ impl Tolerances {
             self.max_step > 0.0,
             "max_step > 0 (may be infinite)",
         )?;
+        check(
+            "max_steps",
+            self.max_steps as f64,
+            self.max_steps >= 1,
+            "max_steps >= 1",
+        )?;
         Ok(())
     }
 }
@@ -260,6 +273,10 @@ pub enum Termination {
         /// Index of the event function.
         index: usize,
     },
+    /// It used up [`Tolerances::max_steps`] steps and events.
+    StepLimit,
+    /// The observer asked it to stop ([`Observer::stop_requested`]).
+    Stopped,
 }
 
 /// The end of an integration: final time and state, why it ended, and cost.

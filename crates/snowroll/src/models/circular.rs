@@ -29,7 +29,7 @@ use crate::error::SimError;
 use crate::integrate::{Direction, OdeSystem};
 use crate::physics::{growth_at, Growth};
 use crate::scenario::{Scenario, Shape};
-use crate::trajectory::{OnHop, Sample, SimOptions, Stop, StopReason, Trajectory};
+use crate::trajectory::{OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason};
 use crate::units::Radians;
 
 /// How an equation of motion of §2 was derived: its coefficients.
@@ -576,7 +576,12 @@ impl Model for CircularModel {
         self.derivation.kind()
     }
 
-    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
+    fn simulate_into(
+        &self,
+        scenario: &Scenario,
+        opts: &SimOptions,
+        sink: &mut dyn SampleSink,
+    ) -> Result<RunEnd, SimError> {
         opts.validate()?;
         super::check_tolerances(self.kind(), scenario, opts)?;
         let coeffs = self.coefficients_on(scenario);
@@ -591,24 +596,11 @@ impl Model for CircularModel {
         let y0 = [0.0, scenario.initial_speed()];
         // fn. 7: from rest the log moves only if a(0) > 0.
         if y0[1] == 0.0 && system.accel.at(0.0, 0.0) <= 0.0 {
-            let first = system.sample(0.0, &y0);
-            return Ok(Trajectory {
-                model: self.kind(),
-                samples: vec![first],
-                turn_states: Vec::new(),
-                stop: Stop {
-                    reason: StopReason::DoesNotStart,
-                    t_s: 0.0,
-                    x_m: 0.0,
-                    v_m_s: 0.0,
-                    turn: None,
-                },
-                stats: Default::default(),
-            });
+            return stopped_at_start(&system, y0, StopReason::DoesNotStart, sink);
         }
         if let Some(reason) = system.stops_at(&y0) {
-            return Ok(stopped_at_start(self.kind(), &system, y0, reason));
+            return stopped_at_start(&system, y0, reason, sink);
         }
-        run_ode(self.kind(), &mut system, y0, opts)
+        run_ode(&mut system, y0, opts, sink)
     }
 }

@@ -25,7 +25,9 @@ use super::{Derivation, Model, ModelKind};
 use crate::error::SimError;
 use crate::quadrature;
 use crate::scenario::Scenario;
-use crate::trajectory::{OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory};
+use crate::trajectory::{
+    OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason,
+};
 use crate::units::{Meters, MetersPerSecond, MetersPerSecondSquared, Seconds};
 
 /// Samples of the closed form when every "step" is asked for.
@@ -275,7 +277,12 @@ impl Model for LoneyModel {
         ModelKind::Loney
     }
 
-    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
+    fn simulate_into(
+        &self,
+        scenario: &Scenario,
+        opts: &SimOptions,
+        sink: &mut dyn SampleSink,
+    ) -> Result<RunEnd, SimError> {
         opts.validate()?;
         ModelKind::Loney.check_shape(scenario)?;
         // Loney's solution is that of eq. (4): its contact forces are those of
@@ -299,15 +306,17 @@ impl Model for LoneyModel {
                 None => (opts.t_end, None, StopReason::EndTime),
             },
         };
-        let times: Vec<f64> = match &opts.sampling {
-            Sampling::Times(ts) => ts.iter().copied().filter(|&t| t <= t_stop).collect(),
-            Sampling::Every(dt) => (0..)
-                .map_while(|i| Sampling::grid_time(*dt, i, t_stop))
-                .collect(),
-            Sampling::Steps => (0..=DEFAULT_SAMPLES)
-                .map(|i| t_stop * i as f64 / DEFAULT_SAMPLES as f64)
-                .collect(),
-            Sampling::Ends => vec![0.0, t_stop],
+        // The sample times, generated one at a time (a grid is never held whole).
+        let times: Box<dyn Iterator<Item = f64> + '_> = match &opts.sampling {
+            Sampling::Times(ts) => Box::new(ts.iter().copied().take_while(move |&t| t <= t_stop)),
+            Sampling::Every(dt) => {
+                let dt = *dt;
+                Box::new((0..).map_while(move |i| Sampling::grid_time(dt, i, t_stop)))
+            }
+            Sampling::Steps => Box::new(
+                (0..=DEFAULT_SAMPLES).map(move |i| t_stop * i as f64 / DEFAULT_SAMPLES as f64),
+            ),
+            Sampling::Ends => Box::new([0.0, t_stop].into_iter()),
         };
         let r0 = scenario.initial_radius();
         let b = scenario.snow_depth();
@@ -326,31 +335,43 @@ impl Model for LoneyModel {
                 friction_ratio: forces.friction_ratio(),
             }
         };
-        let mut samples = Vec::with_capacity(times.len());
         let (mut x_a, mut t_a) = (0.0, 0.0);
-        for &t in &times {
+        let mut row_limit = false;
+        for (rows, t) in (0u64..).zip(times) {
+            if rows >= opts.max_rows {
+                row_limit = true;
+                break;
+            }
             let x = match x_known {
                 Some(x) if t >= t_stop => x,
                 _ => cf.position_after(x_a, t_a, t)?,
             };
-            samples.push(sample(t, x));
+            sink.sample(&sample(t, x), None).map_err(SimError::Sink)?;
             (x_a, t_a) = (x, t);
         }
-        let x_stop = match x_known {
-            Some(x) => x,
-            None => cf.position_after(x_a, t_a, t_stop)?,
-        };
-        Ok(Trajectory {
-            model: ModelKind::Loney,
-            samples,
-            turn_states: Vec::new(),
-            stop: Stop {
+        let stop = if row_limit {
+            Stop {
+                reason: StopReason::RowLimit,
+                t_s: t_a,
+                x_m: x_a,
+                v_m_s: cf.speed(x_a),
+                turn: None,
+            }
+        } else {
+            let x_stop = match x_known {
+                Some(x) => x,
+                None => cf.position_after(x_a, t_a, t_stop)?,
+            };
+            Stop {
                 reason,
                 t_s: t_stop,
                 x_m: x_stop,
                 v_m_s: cf.speed(x_stop),
                 turn: None,
-            },
+            }
+        };
+        Ok(RunEnd {
+            stop,
             stats: Default::default(),
         })
     }

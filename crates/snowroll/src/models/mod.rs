@@ -23,9 +23,9 @@ pub use tolerance::{
 };
 pub use turn_by_turn::{
     charged_collision_speed, check_turn_scale, collision_speed, first_turn_stall_slope,
-    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, CollisionModel,
-    ContactRange, InTurnCoefficients, PivotImpact, TurnCheckpoint, TurnDynamics, TurnExtremes,
-    TurnModel, TurnRow, TurnSummary, TurnTable, TurnVariant,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, run_turns_into,
+    CollisionModel, ContactRange, InTurnCoefficients, PivotImpact, TurnCheckpoint, TurnDynamics,
+    TurnExtremes, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable, TurnVariant,
 };
 pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,
@@ -34,7 +34,9 @@ pub use validity::{
 
 use crate::error::{ParamError, SimError};
 use crate::scenario::{Scenario, Shape};
-use crate::trajectory::{SimOptions, Trajectory};
+use crate::trajectory::{Collected, RunEnd, SampleSink, SimOptions, Trajectory};
+#[cfg(doc)]
+use crate::trajectory::{Stop, StopReason};
 
 /// Turns of a turn-model run when the caller does not say (`snowroll turns`,
 /// Python's `snowroll.turns`).
@@ -69,11 +71,41 @@ pub trait Model {
     /// Which model this is.
     fn kind(&self) -> ModelKind;
 
-    /// Runs the model.
+    /// Runs the model and sends each sample to `sink` as soon as it is
+    /// computed, so memory does not grow with the number of samples. The
+    /// samples are those of [`simulate`](Self::simulate), bit for bit.
+    ///
+    /// ```
+    /// use snowroll::{Collected, Model, ModelKind, Scenario, SimOptions};
+    /// let model = ModelKind::TorqueCm.build();
+    /// let mut sink = Collected::default();
+    /// let end = model.simulate_into(&Scenario::default(), &SimOptions::default(), &mut sink)?;
+    /// assert_eq!(end.stop.t_s, sink.samples.last().unwrap().t_s);
+    /// # Ok::<(), snowroll::SimError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`SimError`] when the options are invalid or the integration fails;
+    /// [`SimError::Sink`] when the sink fails (the run stops at once). An
+    /// early stop on a limit ([`StopReason::StepLimit`], [`StopReason::RowLimit`])
+    /// is not an error: it is the [`Stop`] of the [`RunEnd`].
+    fn simulate_into(
+        &self,
+        scenario: &Scenario,
+        opts: &SimOptions,
+        sink: &mut dyn SampleSink,
+    ) -> Result<RunEnd, SimError>;
+
+    /// Runs the model and gathers its samples in a [`Trajectory`]
+    /// ([`simulate_into`](Self::simulate_into) with a [`Collected`] sink).
     ///
     /// # Errors
     /// [`SimError`] when the options are invalid or the integration fails.
-    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError>;
+    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
+        let mut collected = Collected::default();
+        let end = self.simulate_into(scenario, opts, &mut collected)?;
+        Ok(collected.into_trajectory(self.kind(), end))
+    }
 }
 
 pub use crate::model_kind::{ModelInfo, ModelKind, MODEL_TABLE};

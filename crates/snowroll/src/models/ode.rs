@@ -1,11 +1,13 @@
-//! The one adapter from an [`OdeSystem`] to a [`Trajectory`]: it runs the
-//! integrator and records samples as [`Sampling`] asks. Every ODE model goes
-//! through [`run_ode`], so the step loop exists once.
+//! The one adapter from an [`OdeSystem`] to a [`SampleSink`]: it runs the
+//! integrator and sends samples as [`Sampling`] asks, one at a time (memory
+//! O(1) in the number of samples). Every ODE model goes through [`run_ode`],
+//! so the step loop exists once.
 
-use super::ModelKind;
-use crate::error::SimError;
+use crate::error::{SimError, SinkError};
 use crate::integrate::{integrate, DenseStep, EventRecord, Observer, OdeSystem, Termination};
-use crate::trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState};
+use crate::trajectory::{
+    RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason, TurnState,
+};
 
 /// An ODE system that knows how to present its state.
 pub(crate) trait OdeModel<const N: usize>: OdeSystem<N> {
@@ -21,25 +23,36 @@ pub(crate) trait OdeModel<const N: usize>: OdeSystem<N> {
     fn stop_reason(&self, event: usize) -> StopReason;
 }
 
-/// Records samples as a [`Sampling`] asks.
+/// Sends samples to a [`SampleSink`] as a [`Sampling`] asks, and asks the
+/// integrator to stop when the sink fails or [`SimOptions::max_rows`] rows
+/// have gone out.
 pub(crate) struct Recorder<'a> {
     sampling: &'a Sampling,
     /// Next requested time (index into the list or the grid).
     next: usize,
     /// Requested end of the run (grid sampling stops there).
     t_end: f64,
-    pub samples: Vec<Sample>,
-    pub turns: Vec<TurnState>,
+    sink: &'a mut dyn SampleSink,
+    /// Rows sent so far.
+    rows: u64,
+    max_rows: u64,
+    /// Time of the last row sent, s.
+    last_t: Option<f64>,
+    /// The sink's failure, which ends the run.
+    failed: Option<SinkError>,
 }
 
 impl<'a> Recorder<'a> {
-    pub fn new(sampling: &'a Sampling, t_end: f64) -> Self {
+    pub fn new(opts: &'a SimOptions, sink: &'a mut dyn SampleSink) -> Self {
         Self {
-            sampling,
+            sampling: &opts.sampling,
             next: 0,
-            t_end,
-            samples: Vec::new(),
-            turns: Vec::new(),
+            t_end: opts.t_end,
+            sink,
+            rows: 0,
+            max_rows: opts.max_rows,
+            last_t: None,
+            failed: None,
         }
     }
 
@@ -52,10 +65,22 @@ impl<'a> Recorder<'a> {
         }
     }
 
+    /// Whether no more rows may go out (the sink failed, or the limit).
+    fn full(&self) -> bool {
+        self.failed.is_some() || self.rows >= self.max_rows
+    }
+
     fn push<const N: usize, M: OdeModel<N>>(&mut self, model: &M, t: f64, y: &[f64; N]) {
-        self.samples.push(model.sample(t, y));
-        if let Some(ts) = model.turn_state(t, y) {
-            self.turns.push(ts);
+        if self.full() {
+            return;
+        }
+        let turn = model.turn_state(t, y);
+        match self.sink.sample(&model.sample(t, y), turn.as_ref()) {
+            Ok(()) => {
+                self.rows += 1;
+                self.last_t = Some(t);
+            }
+            Err(e) => self.failed = Some(e),
         }
     }
 
@@ -67,7 +92,7 @@ impl<'a> Recorder<'a> {
         mut at: impl FnMut(f64) -> Option<[f64; N]>,
     ) {
         while let Some(t) = self.requested(self.next) {
-            if t > t_hi {
+            if t > t_hi || self.full() {
                 break;
             }
             if let Some(y) = at(t) {
@@ -79,11 +104,8 @@ impl<'a> Recorder<'a> {
 
     /// Finishes: for `Ends`, adds the final state.
     pub fn finish<const N: usize, M: OdeModel<N>>(&mut self, model: &M, t: f64, y: &[f64; N]) {
-        if matches!(self.sampling, Sampling::Ends) {
-            let last_t = self.samples.last().map(|s| s.t_s);
-            if last_t.is_none_or(|lt| lt < t) {
-                self.push(model, t, y);
-            }
+        if matches!(self.sampling, Sampling::Ends) && self.last_t.is_none_or(|lt| lt < t) {
+            self.push(model, t, y);
         }
     }
 }
@@ -97,7 +119,7 @@ impl<const N: usize, M: OdeModel<N>> Observer<M, N> for Recorder<'_> {
     }
 
     fn wants_dense(&self, _t_old: f64, t_new: f64) -> bool {
-        self.requested(self.next).is_some_and(|t| t <= t_new)
+        !self.full() && self.requested(self.next).is_some_and(|t| t <= t_new)
     }
 
     fn step(&mut self, model: &M, step: &DenseStep<'_, N>) {
@@ -111,50 +133,57 @@ impl<const N: usize, M: OdeModel<N>> Observer<M, N> for Recorder<'_> {
     }
 
     fn event(&mut self, _model: &M, _event: &EventRecord<N>) {}
+
+    fn stop_requested(&self) -> bool {
+        self.full()
+    }
 }
 
-/// The trajectory of a run that stops at its start, `y0` at t = 0, for `reason`.
+/// A run that stops at its start, `y0` at t = 0, for `reason`: the one
+/// sample goes to `sink`.
 pub(crate) fn stopped_at_start<const N: usize, M: OdeModel<N>>(
-    kind: ModelKind,
     system: &M,
     y0: [f64; N],
     reason: StopReason,
-) -> Trajectory {
+    sink: &mut dyn SampleSink,
+) -> Result<RunEnd, SimError> {
     let first = system.sample(0.0, &y0);
-    Trajectory {
-        model: kind,
-        samples: vec![first],
-        turn_states: system.turn_state(0.0, &y0).into_iter().collect(),
+    let turn = system.turn_state(0.0, &y0);
+    sink.sample(&first, turn.as_ref()).map_err(SimError::Sink)?;
+    Ok(RunEnd {
         stop: Stop {
             reason,
             t_s: 0.0,
             x_m: first.x_m,
             v_m_s: first.v_m_s,
-            turn: system.turn_state(0.0, &y0),
+            turn,
         },
         stats: Default::default(),
-    }
+    })
 }
 
-/// Runs `system` from `y0` at t = 0 under `opts` and packages the result.
+/// Runs `system` from `y0` at t = 0 under `opts`, sending the samples to
+/// `sink`, and reports how the run ended.
 pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
-    kind: ModelKind,
     system: &mut M,
     y0: [f64; N],
     opts: &SimOptions,
-) -> Result<Trajectory, SimError> {
-    let mut recorder = Recorder::new(&opts.sampling, opts.t_end);
+    sink: &mut dyn SampleSink,
+) -> Result<RunEnd, SimError> {
+    let mut recorder = Recorder::new(opts, sink);
     let outcome = integrate(system, 0.0, y0, opts.t_end, &opts.tolerances, &mut recorder)?;
     recorder.finish(system, outcome.t, &outcome.y);
+    if let Some(e) = recorder.failed {
+        return Err(SimError::Sink(e));
+    }
     let reason = match outcome.termination {
         Termination::EndTime => StopReason::EndTime,
         Termination::Event { index } => system.stop_reason(index),
+        Termination::StepLimit => StopReason::StepLimit,
+        Termination::Stopped => StopReason::RowLimit,
     };
     let last = system.sample(outcome.t, &outcome.y);
-    Ok(Trajectory {
-        model: kind,
-        samples: recorder.samples,
-        turn_states: recorder.turns,
+    Ok(RunEnd {
         stop: Stop {
             reason,
             t_s: outcome.t,

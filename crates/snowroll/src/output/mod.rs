@@ -1,18 +1,24 @@
-//! Writing trajectories as CSV or JSON. Both come from the same serde
-//! records ([`Sample`], [`TurnState`]); there is no hand-written CSV.
+//! Writing trajectories and turn tables as CSV or JSON, row by row as a run
+//! computes them ([`TrajectoryWriter`], [`TurnTableWriter`]). Both formats
+//! come from the same serde records ([`Sample`](crate::Sample),
+//! [`TurnState`](crate::TurnState), [`TurnRow`](crate::TurnRow)); there is
+//! no hand-written CSV.
 
 use std::io::Write;
 
 use serde::{Deserialize, Serialize};
 
 use crate::error::OutputError;
+use crate::models::ModelKind;
 use crate::scenario::{Scenario, ScenarioFile};
-use crate::trajectory::{Sample, Sampling, SimOptions, Stop, Trajectory, TurnState};
+use crate::trajectory::{Sampling, SimOptions, Stop, StopReason};
 
 mod finite;
+mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
-pub use turns::write_turn_table;
+pub use trajectory::{write_trajectory, TrajectoryWriter};
+pub use turns::{write_turn_table, TurnTableWriter};
 
 /// A number as people read it and programs parse it back exactly: the
 /// shortest decimal digits that round-trip to the same `f64` (Rust's `{}`
@@ -71,6 +77,10 @@ pub struct RunParams {
     pub atol: f64,
     /// Sampling, in words.
     pub sampling: String,
+    /// Most rows of the run ([`SimOptions::max_rows`]).
+    pub max_rows: u64,
+    /// Most integrator steps of the run ([`Tolerances::max_steps`](crate::integrate::Tolerances::max_steps)).
+    pub max_steps: u64,
     /// The spacing of a regular sampling grid, s (`--dt`), when one was asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dt: Option<f64>,
@@ -87,8 +97,10 @@ pub struct RunParams {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
     /// Requests the run could not honour (times after an early stop, turns
-    /// short of those asked for), one sentence each; empty when none.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    /// short of those asked for), one sentence each; empty when none. Known
+    /// only once the run ended, so the writers put them at the end, after the
+    /// stop, not among the parameters.
+    #[serde(skip)]
     pub notes: Vec<String>,
 }
 
@@ -113,6 +125,8 @@ impl RunParams {
                 Sampling::Every(dt) => format!("every {} s", format_number(*dt)),
                 Sampling::Ends => "start and end".to_string(),
             },
+            max_rows: opts.max_rows,
+            max_steps: opts.tolerances.max_steps,
             dt,
             times,
             mu: opts.mu,
@@ -148,6 +162,8 @@ impl RunParams {
             ("rtol".into(), format!("{:e}", self.rtol)),
             ("atol".into(), format!("{:e}", self.atol)),
             ("sampling".into(), self.sampling.clone()),
+            ("max_rows".into(), self.max_rows.to_string()),
+            ("max_steps".into(), self.max_steps.to_string()),
             ("collision".into(), self.collision.to_string()),
             ("on_hop".into(), self.on_hop.to_string()),
         ];
@@ -165,44 +181,7 @@ impl RunParams {
             lines.push(("times".into(), list.join(",")));
         }
         lines.extend(self.warnings.iter().map(|w| ("warning".into(), w.clone())));
-        lines.extend(self.notes.iter().map(|m| ("note".into(), m.clone())));
         lines
-    }
-}
-
-/// A sample of a turn model: [`Sample`] plus [`TurnState`] in one CSV row.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-struct TurnRow {
-    t_s: f64,
-    x_m: f64,
-    v_m_s: f64,
-    a_m_s2: f64,
-    r_m: f64,
-    mass_kg: f64,
-    normal_n: f64,
-    friction_n: f64,
-    friction_ratio: Option<f64>,
-    turn: u64,
-    theta_rad: f64,
-    omega_rad_s: f64,
-}
-
-impl TurnRow {
-    fn new(s: &Sample, k: &TurnState) -> Self {
-        Self {
-            t_s: s.t_s,
-            x_m: s.x_m,
-            v_m_s: s.v_m_s,
-            a_m_s2: s.a_m_s2,
-            r_m: s.r_m,
-            mass_kg: s.mass_kg,
-            normal_n: s.normal_n,
-            friction_n: s.friction_n,
-            friction_ratio: s.friction_ratio,
-            turn: k.turn,
-            theta_rad: k.theta_rad,
-            omega_rad_s: k.omega_rad_s,
-        }
     }
 }
 
@@ -212,9 +191,18 @@ struct ModelInfo {
     equation: &'static str,
 }
 
+impl ModelInfo {
+    fn of(model: ModelKind) -> Self {
+        Self {
+            id: model.id(),
+            equation: model.equation(),
+        }
+    }
+}
+
 #[derive(Serialize)]
 struct JsonStop {
-    reason: crate::trajectory::StopReason,
+    reason: StopReason,
     description: &'static str,
     t_s: f64,
     x_m: f64,
@@ -242,37 +230,30 @@ impl From<Stop> for JsonStop {
     }
 }
 
-#[derive(Serialize)]
-struct JsonTrajectory<'a> {
-    snowroll_version: &'static str,
-    model: ModelInfo,
-    params: &'a RunParams,
-    stop: JsonStop,
-    samples: JsonSamples<'a>,
-}
-
-#[derive(Serialize)]
-#[serde(untagged)]
-enum JsonSamples<'a> {
-    Plain(&'a [Sample]),
-    Turns(Vec<TurnRow>),
-}
-
-/// The `#` comment lines that open every CSV: version, model, every
-/// parameter in a fixed order, and how the run stopped.
+/// The `#` comment lines that open every CSV: version, model and every
+/// parameter in a fixed order.
 pub(crate) fn write_csv_header(
     w: &mut impl Write,
-    model: crate::models::ModelKind,
+    model: ModelKind,
     params: &RunParams,
-    stop: &Stop,
 ) -> Result<(), OutputError> {
     check_finite(params, None)?;
-    check_finite(stop, None)?;
     writeln!(w, "# snowroll {VERSION}")?;
     writeln!(w, "# model = {} ({})", model.id(), model.equation())?;
     for (k, v) in params.lines() {
         writeln!(w, "# {k} = {v}")?;
     }
+    Ok(())
+}
+
+/// The `#` comment lines that close every CSV: how the run stopped, then
+/// one `# note = ...` line per request the run could not honour.
+pub(crate) fn write_csv_stop(
+    w: &mut impl Write,
+    stop: &Stop,
+    notes: &[String],
+) -> Result<(), OutputError> {
+    check_finite(stop, None)?;
     let turn = stop.turn.map_or(String::new(), |k| {
         format!(
             " turn = {} theta_rad = {} omega_rad_s = {}",
@@ -291,172 +272,65 @@ pub(crate) fn write_csv_header(
         turn,
         stop.reason.describe()
     )?;
+    for note in notes {
+        writeln!(w, "# note = {note}")?;
+    }
     Ok(())
 }
 
-/// Writes `traj` in `format`, recording the version, the model and `params`.
-///
-/// # Errors
-/// [`OutputError`] when the writer fails, [`OutputError::NonFinite`] (before
-/// the offending row is written) when a number is NaN or infinite.
-pub fn write_trajectory(
+/// The opening of a streamed JSON object: version, model and parameters,
+/// then the key of the array that follows, `"key": [`.
+pub(crate) fn write_json_opening(
     w: &mut impl Write,
-    format: Format,
-    traj: &Trajectory,
+    model: ModelKind,
     params: &RunParams,
+    array_key: &str,
 ) -> Result<(), OutputError> {
-    let has_turns = !traj.turn_states.is_empty() && traj.turn_states.len() == traj.samples.len();
-    match format {
-        Format::Csv => {
-            write_csv_header(w, traj.model, params, &traj.stop)?;
-            let mut csv = csv::Writer::from_writer(&mut *w);
-            if has_turns {
-                for (row, (s, k)) in (1..).zip(traj.samples.iter().zip(&traj.turn_states)) {
-                    let record = TurnRow::new(s, k);
-                    check_finite(&record, Some(row))?;
-                    csv.serialize(record)?;
-                }
-            } else if traj.samples.is_empty() {
-                csv.write_record([
-                    "t_s",
-                    "x_m",
-                    "v_m_s",
-                    "a_m_s2",
-                    "r_m",
-                    "mass_kg",
-                    "normal_n",
-                    "friction_n",
-                    "friction_ratio",
-                ])?;
-            } else {
-                for (row, s) in (1..).zip(&traj.samples) {
-                    check_finite(s, Some(row))?;
-                    csv.serialize(s)?;
-                }
-            }
-            csv.flush()?;
-        }
-        Format::Json => {
-            let doc = JsonTrajectory {
-                snowroll_version: VERSION,
-                model: ModelInfo {
-                    id: traj.model.id(),
-                    equation: traj.model.equation(),
-                },
-                params,
-                stop: traj.stop.into(),
-                samples: if has_turns {
-                    JsonSamples::Turns(
-                        traj.samples
-                            .iter()
-                            .zip(&traj.turn_states)
-                            .map(|(s, k)| TurnRow::new(s, k))
-                            .collect(),
-                    )
-                } else {
-                    JsonSamples::Plain(&traj.samples)
-                },
-            };
-            // serde_json would write a non-finite number as `null`.
-            check_finite(&doc, None)?;
-            serde_json::to_writer_pretty(&mut *w, &doc)?;
-            writeln!(w)?;
-        }
-    }
+    write!(w, "{{\n  \"snowroll_version\": ")?;
+    serde_json::to_writer(&mut *w, VERSION)?;
+    write!(w, ",\n  \"model\": ")?;
+    serde_json::to_writer(&mut *w, &ModelInfo::of(model))?;
+    write!(w, ",\n  \"params\": ")?;
+    serde_json::to_writer(&mut *w, params)?;
+    write!(w, ",\n  \"{array_key}\": [")?;
     Ok(())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::models::ModelKind;
-    use crate::trajectory::StopReason;
+/// Element `row` (from 1) of a streamed JSON array, on its own line;
+/// refused, before anything of it is written, if a number is not finite.
+pub(crate) fn write_json_element(
+    w: &mut impl Write,
+    row: u64,
+    value: &impl Serialize,
+) -> Result<(), OutputError> {
+    // serde_json would write a non-finite number as `null`.
+    check_finite(value, Some(row))?;
+    let first = row == 1;
+    w.write_all(if first { b"\n    " } else { b",\n    " })?;
+    serde_json::to_writer(&mut *w, value)?;
+    Ok(())
+}
 
-    fn tiny() -> Trajectory {
-        Trajectory {
-            model: ModelKind::TorqueCm,
-            samples: vec![Sample {
-                t_s: 0.0,
-                x_m: 0.0,
-                v_m_s: 0.0,
-                a_m_s2: 3.27,
-                r_m: 0.1,
-                mass_kg: 12.566,
-                normal_n: 106.8,
-                friction_n: 20.5,
-                friction_ratio: Some(20.5 / 106.8),
-            }],
-            turn_states: vec![],
-            stop: Stop {
-                reason: StopReason::EndTime,
-                t_s: 0.0,
-                x_m: 0.0,
-                v_m_s: 0.0,
-                turn: None,
-            },
-            stats: Default::default(),
-        }
-    }
+/// Closes the array of a streamed JSON object.
+pub(crate) fn write_json_array_end(w: &mut impl Write, empty: bool) -> Result<(), OutputError> {
+    w.write_all(if empty { b"]" } else { b"\n  ]" })?;
+    Ok(())
+}
 
-    #[test]
-    fn csv_has_comment_header_then_unit_columns() {
-        let params = RunParams::new(&Scenario::default(), &SimOptions::default());
-        let mut out = Vec::new();
-        write_trajectory(&mut out, Format::Csv, &tiny(), &params).unwrap();
-        let text = String::from_utf8(out).unwrap();
-        let mut lines = text.lines();
-        assert!(lines.next().unwrap().starts_with("# snowroll "));
-        assert!(text.contains("# model = torque-cm (eq. (4))"));
-        assert!(text.contains("# alpha_deg = 30"));
-        let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
-        assert_eq!(
-            header,
-            "t_s,x_m,v_m_s,a_m_s2,r_m,mass_kg,normal_n,friction_n,friction_ratio"
-        );
-    }
+/// One more `"key": value` pair of a streamed JSON object.
+pub(crate) fn write_json_field(
+    w: &mut impl Write,
+    key: &str,
+    value: &impl Serialize,
+) -> Result<(), OutputError> {
+    check_finite(value, None)?;
+    write!(w, ",\n  \"{key}\": ")?;
+    serde_json::to_writer(&mut *w, value)?;
+    Ok(())
+}
 
-    #[test]
-    fn json_has_the_documented_shape() {
-        let params = RunParams::new(&Scenario::default(), &SimOptions::default());
-        let mut out = Vec::new();
-        write_trajectory(&mut out, Format::Json, &tiny(), &params).unwrap();
-        let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
-        for key in ["snowroll_version", "model", "params", "stop", "samples"] {
-            assert!(v.get(key).is_some(), "missing {key}");
-        }
-        assert_eq!(v["model"]["id"], "torque-cm");
-        assert_eq!(v["stop"]["reason"], "end-time");
-        assert_eq!(v["params"]["snow_depth"], 0.01);
-        assert_eq!(v["samples"][0]["a_m_s2"], 3.27);
-    }
-
-    #[test]
-    fn regression_7_6_a_non_finite_number_is_refused_naming_column_and_row() {
-        let params = RunParams::new(&Scenario::default(), &SimOptions::default());
-        let mut traj = tiny();
-        traj.samples.push(Sample {
-            mass_kg: f64::INFINITY,
-            ..traj.samples[0]
-        });
-        let mut out = Vec::new();
-        let err = write_trajectory(&mut out, Format::Csv, &traj, &params).unwrap_err();
-        let text = err.to_string();
-        assert!(
-            text.contains("mass_kg = inf") && text.contains("row 2"),
-            "{text}"
-        );
-        // The first row went out, the bad one did not.
-        let written = String::from_utf8(out).unwrap();
-        assert_eq!(written.lines().filter(|l| !l.starts_with('#')).count(), 2);
-        // JSON is checked whole before anything is written (serde_json
-        // would write `null`).
-        traj.samples[1].mass_kg = f64::NAN;
-        let mut out = Vec::new();
-        let err = write_trajectory(&mut out, Format::Json, &traj, &params).unwrap_err();
-        assert!(
-            err.to_string().contains("samples[1].mass_kg = NaN"),
-            "{err}"
-        );
-        assert!(out.is_empty());
-    }
+/// Closes a streamed JSON object.
+pub(crate) fn write_json_end(w: &mut impl Write) -> Result<(), OutputError> {
+    writeln!(w, "\n}}")?;
+    Ok(())
 }

@@ -1,100 +1,180 @@
-//! Writing the per-turn table of §3.4 ([`TurnTable`]) as CSV or JSON, with
-//! the same header as [`write_trajectory`](super::write_trajectory): version,
-//! model, parameters, stop; then the long-run statistics; then the rows.
+//! Writing the per-turn table of §3.4 as it is computed:
+//! [`TurnTableWriter`] is a [`TurnSink`], so a run of any number of turns
+//! needs memory for one row.
+//!
+//! Layout, as for trajectories ([`TrajectoryWriter`](super::TrajectoryWriter)):
+//! * CSV: `#` lines with version, model and parameters; the column header;
+//!   one row per turn as it ends; then `#` lines with the stop and the
+//!   long-run statistics ([`TurnSummary`], one line per checkpoint).
+//! * JSON: one object, `snowroll_version`, `model`, `params`, then `turns`
+//!   (one object per line), then `stop` and `summary`.
 
 use std::io::Write;
 
-use serde::Serialize;
+use super::{
+    check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
+    write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
+    RunParams,
+};
+use crate::error::{OutputError, SinkError};
+use crate::models::{ModelKind, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable};
+use crate::trajectory::Stop;
 
-use super::{check_finite, Format, JsonStop, ModelInfo, RunParams, VERSION};
-use crate::error::OutputError;
-use crate::models::{TurnRow, TurnSummary, TurnTable};
-
-#[derive(Serialize)]
-struct JsonTurnTable<'a> {
-    snowroll_version: &'static str,
-    model: ModelInfo,
-    params: &'a RunParams,
-    stop: JsonStop,
-    summary: &'a TurnSummary,
-    turns: &'a [TurnRow],
+enum Body<W: Write> {
+    /// Boxed: the CSV writer carries its own buffer.
+    Csv(Box<csv::Writer<W>>),
+    Json(W),
 }
 
-/// Writes `table` in `format`, recording the version, the model and `params`.
-///
-/// CSV: `#` lines (version, model, parameters, stop, then one line per
-/// checkpoint of [`TurnSummary`]), then one row per turn with the columns of
-/// [`TurnRow`]. JSON: one object with `summary` and `turns`.
+/// Writes a turn table row by row in a [`Format`]; use it as the sink of
+/// [`TurnModel::run_table_into`](crate::TurnModel::run_table_into), then
+/// call [`finish`](Self::finish) with the run's end.
+pub struct TurnTableWriter<W: Write> {
+    body: Body<W>,
+    rows: u64,
+}
+
+impl<W: Write> TurnTableWriter<W> {
+    /// Writes the opening (version, `model`, `params`, and for CSV the
+    /// column header) to `w`.
+    ///
+    /// # Errors
+    /// [`OutputError`] when the writer fails.
+    pub fn new(
+        mut w: W,
+        format: Format,
+        model: ModelKind,
+        params: &RunParams,
+    ) -> Result<Self, OutputError> {
+        let body = match format {
+            Format::Csv => {
+                write_csv_header(&mut w, model, params)?;
+                let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+                csv.write_record(COLUMNS)?;
+                Body::Csv(Box::new(csv))
+            }
+            Format::Json => {
+                write_json_opening(&mut w, model, params, "turns")?;
+                Body::Json(w)
+            }
+        };
+        Ok(Self { body, rows: 0 })
+    }
+
+    /// Rows written so far.
+    pub fn rows(&self) -> u64 {
+        self.rows
+    }
+
+    /// Writes one row; a row with a non-finite number is refused before any
+    /// of it is written ([`OutputError::NonFinite`]).
+    fn row(&mut self, row: &TurnRow) -> Result<(), OutputError> {
+        let k = self.rows + 1;
+        match &mut self.body {
+            Body::Csv(csv) => {
+                check_finite(row, Some(k))?;
+                csv.serialize(row)?;
+            }
+            Body::Json(w) => write_json_element(w, k, row)?,
+        }
+        self.rows += 1;
+        Ok(())
+    }
+
+    /// Writes the stop, `notes` (requests the run could not honour,
+    /// [`RunParams::notes`]) and the long-run statistics, and returns the
+    /// writer, flushed.
+    ///
+    /// # Errors
+    /// [`OutputError`] when the writer fails.
+    pub fn finish(self, end: &TurnRunEnd, notes: &[String]) -> Result<W, OutputError> {
+        self.finish_with(&end.stop, &end.summary, notes)
+    }
+
+    fn finish_with(
+        self,
+        stop: &Stop,
+        summary: &TurnSummary,
+        notes: &[String],
+    ) -> Result<W, OutputError> {
+        let mut w = match self.body {
+            Body::Csv(csv) => {
+                let mut w = (*csv).into_inner().map_err(|e| e.into_error())?;
+                write_csv_stop(&mut w, stop, notes)?;
+                write_csv_summary(&mut w, summary)?;
+                w
+            }
+            Body::Json(mut w) => {
+                write_json_array_end(&mut w, self.rows == 0)?;
+                write_json_field(&mut w, "stop", &JsonStop::from(*stop))?;
+                if !notes.is_empty() {
+                    write_json_field(&mut w, "notes", &notes)?;
+                }
+                write_json_field(&mut w, "summary", summary)?;
+                write_json_end(&mut w)?;
+                w
+            }
+        };
+        w.flush()?;
+        Ok(w)
+    }
+}
+
+impl<W: Write> TurnSink for TurnTableWriter<W> {
+    fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError> {
+        Ok(self.row(row)?)
+    }
+}
+
+/// The `#` lines of the long-run statistics: one per checkpoint.
+fn write_csv_summary(w: &mut impl Write, s: &TurnSummary) -> Result<(), OutputError> {
+    check_finite(s, None)?;
+    writeln!(
+        w,
+        "# summary: {} turns; accelerations over G = g sin(alpha) = {} m/s^2",
+        s.turns,
+        format_number(s.g_along_m_s2)
+    )?;
+    writeln!(
+        w,
+        "# summary columns: turns_K, mean_a_turn_over_g (k < K), \
+         mean_a_with_collision_over_g (k < K), window_first_turn, \
+         window_mean_a_turn_over_g, window_mean_a_with_collision_over_g, \
+         window_min_a_over_g, window_max_a_over_g (window: K/10 <= k < K)"
+    )?;
+    for c in &s.checkpoints {
+        writeln!(
+            w,
+            "# summary: {}, {}, {}, {}, {}, {}, {}, {}",
+            c.turns,
+            c.mean_a_turn_over_g,
+            c.mean_a_with_collision_over_g,
+            c.window_first_turn,
+            c.window_mean_a_turn_over_g,
+            c.window_mean_a_with_collision_over_g,
+            c.window_min_a_over_g,
+            c.window_max_a_over_g
+        )?;
+    }
+    Ok(())
+}
+
+/// Writes a whole `table` in `format`, recording the version, the model
+/// and `params` (the layout of [`TurnTableWriter`]).
 ///
 /// # Errors
-/// [`OutputError`] when the writer fails, [`OutputError::NonFinite`] (before
-/// the offending row is written) when a number is NaN or infinite.
+/// [`OutputError`] when the writer fails.
 pub fn write_turn_table(
     w: &mut impl Write,
     format: Format,
     table: &TurnTable,
     params: &RunParams,
 ) -> Result<(), OutputError> {
-    match format {
-        Format::Csv => {
-            super::write_csv_header(w, table.model, params, &table.stop)?;
-            let s = &table.summary;
-            check_finite(s, None)?;
-            writeln!(
-                w,
-                "# summary: {} turns; accelerations over G = g sin(alpha) = {} m/s^2",
-                s.turns,
-                super::format_number(s.g_along_m_s2)
-            )?;
-            writeln!(
-                w,
-                "# summary columns: turns_K, mean_a_turn_over_g (k < K), \
-                 mean_a_with_collision_over_g (k < K), window_first_turn, \
-                 window_mean_a_turn_over_g, window_mean_a_with_collision_over_g, \
-                 window_min_a_over_g, window_max_a_over_g (window: K/10 <= k < K)"
-            )?;
-            for c in &s.checkpoints {
-                writeln!(
-                    w,
-                    "# summary: {}, {}, {}, {}, {}, {}, {}, {}",
-                    c.turns,
-                    c.mean_a_turn_over_g,
-                    c.mean_a_with_collision_over_g,
-                    c.window_first_turn,
-                    c.window_mean_a_turn_over_g,
-                    c.window_mean_a_with_collision_over_g,
-                    c.window_min_a_over_g,
-                    c.window_max_a_over_g
-                )?;
-            }
-            let mut csv = csv::Writer::from_writer(&mut *w);
-            if table.rows.is_empty() {
-                csv.write_record(COLUMNS)?;
-            }
-            for (k, row) in (1..).zip(&table.rows) {
-                check_finite(row, Some(k))?;
-                csv.serialize(row)?;
-            }
-            csv.flush()?;
-        }
-        Format::Json => {
-            let doc = JsonTurnTable {
-                snowroll_version: VERSION,
-                model: ModelInfo {
-                    id: table.model.id(),
-                    equation: table.model.equation(),
-                },
-                params,
-                stop: table.stop.into(),
-                summary: &table.summary,
-                turns: &table.rows,
-            };
-            // serde_json would write a non-finite number as `null`.
-            check_finite(&doc, None)?;
-            serde_json::to_writer_pretty(&mut *w, &doc)?;
-            writeln!(w)?;
-        }
+    let mut writer = TurnTableWriter::new(w, format, table.model, params)?;
+    for row in &table.rows {
+        writer.row(row)?;
     }
+    writer.finish_with(&table.stop, &table.summary, &params.notes)?;
     Ok(())
 }
 
@@ -146,7 +226,11 @@ mod tests {
         assert!(text.starts_with("# snowroll "));
         assert!(text.contains("# model = turns (eqs. (73), (76), (89))"));
         assert!(text.contains("# turns = 3"));
-        assert!(text.contains("# stop = turns"));
+        // Streamed: the stop and the summary close the file.
+        let lines: Vec<&str> = text.lines().collect();
+        let stop = lines.iter().position(|l| l.starts_with("# stop = turns"));
+        let last_row = lines.iter().rposition(|l| !l.starts_with('#'));
+        assert!(stop > last_row);
         let body: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).collect();
         assert_eq!(body[0], COLUMNS.join(","));
         assert_eq!(body.len(), 1 + 3);

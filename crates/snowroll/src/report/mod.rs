@@ -21,10 +21,12 @@
 mod claim;
 mod claims;
 mod part_ways;
+mod turn_digest;
 
 pub use claim::{Claim, ClaimResult, Criterion, Tally, Tolerance, Verdict, EXPECTATION_NOTE};
 pub use claims::{ClaimCheck, Finding, Lab, Runner, CLAIMS};
 pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
+pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 #[cfg(feature = "plot")]
 mod animation;

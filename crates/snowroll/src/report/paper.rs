@@ -10,11 +10,9 @@ use super::{
     where_turn_models_part_ways, Animation, ClaimResult, Figure, FirstTurn, Lab, Metadata, Report,
     ReportError, Table, CLAIMS,
 };
+use super::{LedgerPoint, TurnDigest};
 use crate::models::THIN_SNOW_MAX_B_OVER_R0;
-use crate::models::{
-    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, Coefficients, Derivation, ModelKind,
-    TurnTable,
-};
+use crate::models::{Coefficients, Derivation, ModelKind};
 use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
@@ -114,23 +112,13 @@ fn run(kind: ModelKind, lab: &Lab, opts: &SimOptions) -> Result<Trajectory, Repo
 }
 
 /// Mid-turn time and in-turn mean acceleration of each turn up to `t_max`.
-fn turn_means(table: &TurnTable, t_max: f64, g: f64) -> Vec<(f64, f64)> {
+fn turn_means(table: &TurnDigest, t_max: f64, g: f64) -> Vec<(f64, f64)> {
     table
-        .rows
+        .head
         .iter()
         .take_while(|r| r.t_end_s <= t_max)
         .map(|r| (0.5 * (r.t_start_s + r.t_end_s), r.mean_a_turn_m_s2 / g))
         .collect()
-}
-
-/// About `n` turn indices spread evenly in log k over the table.
-fn log_spread(len: usize, n: usize) -> Vec<usize> {
-    let mut out: Vec<usize> = (0..n)
-        .map(|i| ((len as f64).powf(i as f64 / (n - 1) as f64) - 1.0).round() as usize)
-        .filter(|&k| k < len)
-        .collect();
-    out.dedup();
-    out
 }
 
 /// The equation a circular model integrates, as its coefficients: Loney's
@@ -279,7 +267,7 @@ fn circular_models() -> Vec<ModelKind> {
 fn model_charts(
     s: &Scenario,
     runs: &CircularRuns,
-    long_runs: [(&TurnTable, ModelKind); 2],
+    long_runs: [(&TurnDigest, ModelKind); 2],
 ) -> [Chart; 3] {
     let g = s.g_along();
     let mut accel = Chart::new(
@@ -323,7 +311,7 @@ fn model_charts(
                 .marker(marker),
         );
         let speeds: Vec<(f64, f64)> = table
-            .rows
+            .head
             .iter()
             .take_while(|r| r.t_start_s <= T_END)
             .map(|r| (r.t_start_s, r.v_start_m_s))
@@ -331,7 +319,7 @@ fn model_charts(
         let name = format!("{}, start of each turn", label(kind));
         speed = speed.with_series(styled(Series::new(&name, speeds), kind));
         let radii: Vec<(f64, f64)> = table
-            .rows
+            .head
             .iter()
             .take_while(|r| r.t_start_s <= T_END)
             .map(|r| {
@@ -398,6 +386,9 @@ fn in_turn_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
         turns: Some(TURNS_SHOWN),
         t_end: 1e6,
         sampling: Sampling::Every(0.002),
+        // The turn count ends the run long before t_end: the grid up to
+        // t_end is never sampled, so its size is no limit.
+        max_rows: u64::MAX,
         ..opts.clone()
     };
     let mut chart = Chart::new(
@@ -416,7 +407,7 @@ fn in_turn_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
 }
 
 /// The long-run means of the turn model against the number of turns.
-fn means_chart(paper: &TurnTable) -> Chart {
+fn means_chart(paper: &TurnDigest) -> Chart {
     let checkpoints = &paper.summary.checkpoints;
     let k_span: Vec<f64> = checkpoints.iter().map(|c| c.turns as f64).collect();
     let flat = |v: f64| -> Vec<(f64, f64)> { k_span.iter().map(|&k| (k, v)).collect() };
@@ -460,31 +451,19 @@ fn means_chart(paper: &TurnTable) -> Chart {
 
 /// Energy ledger of the turn model: potential energy released (T_end − T_beg
 /// within each turn, energy being conserved in the turn), kinetic energy, and
-/// the collisions' losses, summed over turns.
-fn energy_ledger_chart(s: &Scenario, paper: &TurnTable) -> Chart {
-    let (b, r0) = (s.snow_depth(), s.initial_radius());
-    let rho_l = s.density() * s.length();
-    let mut released = 0.0;
-    let mut lost = 0.0;
-    let mut ledger_released = Vec::new();
-    let mut ledger_lost = Vec::new();
-    let mut ledger_kinetic = Vec::new();
-    let keep = log_spread(paper.rows.len(), 200);
-    let mut next = keep.iter().peekable();
-    for row in &paper.rows {
-        let k = row.turn as f64;
-        let (r, r1) = (r0 + k * b, r0 + (k + 1.0) * b);
-        released += kinetic_energy_at_turn_end(rho_l, r, b, row.v_end_m_s)
-            - kinetic_energy_at_turn_start(rho_l, r, row.v_start_m_s);
-        lost += row.collision_loss_j;
-        if next.peek().is_some_and(|&&i| i == row.turn as usize) {
-            next.next();
-            let kk = k + 1.0;
-            ledger_released.push((kk, released));
-            ledger_lost.push((kk, lost));
-            ledger_kinetic.push((kk, kinetic_energy_at_turn_start(rho_l, r1, row.v_after_m_s)));
-        }
-    }
+/// the collisions' losses, summed over turns as the long run went by
+/// ([`TurnDigest::ledger`]).
+fn energy_ledger_chart(paper: &TurnDigest) -> Chart {
+    let points = |f: fn(&LedgerPoint) -> f64| -> Vec<(f64, f64)> {
+        paper
+            .ledger
+            .iter()
+            .map(|p| (p.turns as f64, f(p)))
+            .collect()
+    };
+    let ledger_released = points(|p| p.released_j);
+    let ledger_lost = points(|p| p.lost_j);
+    let ledger_kinetic = points(|p| p.kinetic_j);
     Chart::new(
         "turns-energy-ledger",
         "Energy ledger of the turn-by-turn model",
@@ -523,7 +502,7 @@ fn metadata(lab: &Lab, opts: &SimOptions) -> Metadata {
 fn figures(
     charts: Charts,
     runs: &CircularRuns,
-    paper: &TurnTable,
+    paper: &TurnDigest,
     lab: &Lab,
     opts: &SimOptions,
 ) -> Vec<Figure> {
@@ -645,7 +624,7 @@ pub fn build_paper_report(
         approach,
         in_turn,
         means: means_chart(paper),
-        ledger: energy_ledger_chart(s, paper),
+        ledger: energy_ledger_chart(paper),
     };
 
     tick("the snowball");
@@ -662,6 +641,9 @@ pub fn build_paper_report(
             turns: Some(TURNS_SHOWN + 2),
             t_end: 1e6,
             sampling: Sampling::Every(0.005),
+            // The turn count ends the run long before t_end: the grid up to
+            // t_end is never sampled, so its size is no limit.
+            max_rows: u64::MAX,
             ..opts.clone()
         },
     )?;

@@ -41,7 +41,10 @@ mod table;
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
 pub use contact::{ContactRange, TurnExtremes};
 pub use stall::first_turn_stall_slope;
-pub use table::{run_turns, TurnCheckpoint, TurnRow, TurnSummary, TurnTable};
+pub use table::{
+    run_turns, run_turns_into, TurnCheckpoint, TurnRow, TurnRunEnd, TurnSink, TurnSummary,
+    TurnTable,
+};
 
 use std::f64::consts::PI;
 
@@ -52,7 +55,7 @@ use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, EventAction, OdeSystem};
 use crate::scenario::Scenario;
-use crate::trajectory::{OnHop, Sample, SimOptions, StopReason, Trajectory, TurnState};
+use crate::trajectory::{OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason, TurnState};
 use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Radians};
 
 /// Full turn, rad.
@@ -754,7 +757,12 @@ impl Model for TurnModel {
         self.variant.kind()
     }
 
-    fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
+    fn simulate_into(
+        &self,
+        scenario: &Scenario,
+        opts: &SimOptions,
+        sink: &mut dyn SampleSink,
+    ) -> Result<RunEnd, SimError> {
         opts.validate()?;
         self.kind().check_shape(scenario)?;
         check_turn_scale(scenario, opts)?;
@@ -762,8 +770,8 @@ impl Model for TurnModel {
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let y0 = Self::initial_state(scenario);
         if let Some(reason) = system.start(&y0) {
-            return Ok(stopped_at_start(self.kind(), &system, y0, reason));
+            return stopped_at_start(&system, y0, reason, sink);
         }
-        run_ode(self.kind(), &mut system, y0, opts)
+        run_ode(&mut system, y0, opts, sink)
     }
 }

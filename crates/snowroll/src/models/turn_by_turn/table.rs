@@ -18,7 +18,7 @@ use super::{
     collision_speed, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, CollisionModel,
     TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END,
 };
-use crate::error::{ParamError, SimError};
+use crate::error::{ParamError, SimError, SinkError};
 use crate::integrate::{integrate, EventRecord, Observer, Stats, Termination};
 use crate::models::ode::OdeModel;
 use crate::models::ModelKind;
@@ -155,6 +155,138 @@ impl TurnSummary {
     }
 }
 
+/// Whether `k` is one of 1, 2, 5, 10, 20, 50, …
+fn is_decade_checkpoint(k: u64) -> bool {
+    let mut decade = 1u64;
+    loop {
+        if [1, 2, 5].iter().any(|&m| decade.checked_mul(m) == Some(k)) {
+            return true;
+        }
+        match decade.checked_mul(10) {
+            Some(d) if d <= k => decade = d,
+            _ => return false,
+        }
+    }
+}
+
+/// The state of the run where a window starts (turn `first`), and the
+/// extremes of a over the turns seen since.
+#[derive(Debug, Clone, Copy)]
+struct WindowStart {
+    first: u64,
+    /// Σ(v_end − v_start) over the turns before `first`, m/s.
+    gain_before: f64,
+    t_start: f64,
+    v_start: f64,
+    min_a: f64,
+    max_a: f64,
+}
+
+/// [`TurnSummary`] computed row by row in memory O(log n): running sums,
+/// and one [`WindowStart`] per turn where a checkpoint's window may start
+/// (0, 1, 2, 5, 10, …, and ⌊N/10⌋ for the N turns asked for).
+///
+/// For a run that completes the turns it was asked for, the result is that
+/// of [`TurnSummary::new`] on all the rows, bit for bit (the same sums in
+/// the same order). After an early stop at n turns, the window of the
+/// last checkpoint starts at the largest of those turns not past ⌊n/10⌋
+/// (its `window_first_turn` says which).
+#[derive(Debug, Clone)]
+pub(crate) struct SummaryBuilder {
+    g_along: f64,
+    wanted: Option<u64>,
+    turns: u64,
+    gain: f64,
+    starts: Vec<WindowStart>,
+    last: Option<TurnRow>,
+    checkpoints: Vec<TurnCheckpoint>,
+}
+
+impl SummaryBuilder {
+    pub(crate) fn new(g_along: f64, wanted: Option<u64>) -> Self {
+        Self {
+            g_along,
+            wanted,
+            turns: 0,
+            gain: 0.0,
+            starts: Vec::new(),
+            last: None,
+            checkpoints: Vec::new(),
+        }
+    }
+
+    /// Adds turn `self.turns` (rows come in order from k = 0).
+    pub(crate) fn push(&mut self, row: &TurnRow) {
+        let k = self.turns;
+        if k == 0 || is_decade_checkpoint(k) || self.wanted.is_some_and(|n| n / 10 == k) {
+            self.starts.push(WindowStart {
+                first: k,
+                gain_before: self.gain,
+                t_start: row.t_start_s,
+                v_start: row.v_start_m_s,
+                min_a: f64::INFINITY,
+                max_a: f64::NEG_INFINITY,
+            });
+        }
+        for w in &mut self.starts {
+            w.min_a = w.min_a.min(row.min_a_m_s2);
+            w.max_a = w.max_a.max(row.max_a_m_s2);
+        }
+        self.gain += row.v_end_m_s - row.v_start_m_s;
+        self.turns = k + 1;
+        self.last = Some(*row);
+        if is_decade_checkpoint(self.turns) {
+            self.checkpoint();
+        }
+    }
+
+    /// The checkpoint over the `self.turns` turns seen.
+    fn checkpoint(&mut self) {
+        let (Some(last), Some(all)) = (self.last, self.starts.first()) else {
+            return;
+        };
+        let g = self.g_along;
+        let window = |w: &WindowStart| {
+            let dt = last.t_end_s - w.t_start;
+            (
+                (self.gain - w.gain_before) / dt / g,
+                (last.v_after_m_s - w.v_start) / dt / g,
+            )
+        };
+        let wanted_first = self.turns / 10;
+        let decade = self
+            .starts
+            .iter()
+            .rev()
+            .find(|w| w.first <= wanted_first)
+            .unwrap_or(all);
+        let (mean_turn, mean_with) = window(all);
+        let (w_turn, w_with) = window(decade);
+        self.checkpoints.push(TurnCheckpoint {
+            turns: self.turns,
+            mean_a_turn_over_g: mean_turn,
+            mean_a_with_collision_over_g: mean_with,
+            window_first_turn: decade.first,
+            window_mean_a_turn_over_g: w_turn,
+            window_mean_a_with_collision_over_g: w_with,
+            window_min_a_over_g: decade.min_a / g,
+            window_max_a_over_g: decade.max_a / g,
+        });
+    }
+
+    /// The summary of the turns seen, with the last checkpoint at the last turn.
+    pub(crate) fn finish(mut self) -> TurnSummary {
+        if self.checkpoints.last().map(|c| c.turns) != Some(self.turns) {
+            self.checkpoint();
+        }
+        TurnSummary {
+            g_along_m_s2: self.g_along,
+            turns: self.turns,
+            checkpoints: self.checkpoints,
+        }
+    }
+}
+
 /// 1, 2, 5, 10, 20, 50, … below `n`, then `n` (empty when n = 0).
 fn checkpoint_turns(n: usize) -> Vec<usize> {
     let mut out = Vec::new();
@@ -178,6 +310,38 @@ fn checkpoint_turns(n: usize) -> Vec<usize> {
     out
 }
 
+/// Receives the rows of a turn run one at a time, as each turn ends
+/// ([`TurnModel::run_table_into`]), so a run of any length needs memory for
+/// one row.
+pub trait TurnSink {
+    /// One completed turn.
+    ///
+    /// # Errors
+    /// A [`SinkError`] ends the run at once; it comes back as [`SimError::Sink`].
+    fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError>;
+}
+
+/// Gathers every row in memory (the sink behind [`run_turns`]).
+impl TurnSink for Vec<TurnRow> {
+    fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError> {
+        self.push(*row);
+        Ok(())
+    }
+}
+
+/// How a turn run ended, once its rows have gone to the sink.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TurnRunEnd {
+    /// Which model ran.
+    pub model: ModelKind,
+    /// How the run ended.
+    pub stop: Stop,
+    /// Long-run statistics of the rows, computed as they went by.
+    pub summary: TurnSummary,
+    /// Integrator counts.
+    pub stats: Stats,
+}
+
 /// The per-turn table of a run of a turn model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TurnTable {
@@ -193,21 +357,25 @@ pub struct TurnTable {
     pub stats: Stats,
 }
 
-/// Gathers one [`TurnRow`] per turn-end event.
-struct TableObserver {
-    rows: Vec<TurnRow>,
+/// Makes one [`TurnRow`] per turn-end event and sends it on.
+struct TableObserver<'a> {
+    sink: &'a mut dyn TurnSink,
+    summary: SummaryBuilder,
+    rows: u64,
+    max_rows: u64,
+    failed: Option<SinkError>,
     t_start: f64,
     v_start: f64,
 }
 
-impl Observer<TurnSystem, 2> for TableObserver {
+impl Observer<TurnSystem, 2> for TableObserver<'_> {
     fn start(&mut self, system: &TurnSystem, t0: f64, y0: &[f64; 2]) {
         self.t_start = t0;
         self.v_start = system.dynamics().radius() * y0[1];
     }
 
     fn event(&mut self, system: &TurnSystem, event: &EventRecord<2>) {
-        if event.index != EVENT_TURN_END {
+        if event.index != EVENT_TURN_END || self.stop_requested() {
             return;
         }
         let dynamics = system.dynamics();
@@ -254,7 +422,7 @@ impl Observer<TurnSystem, 2> for TableObserver {
         };
         let m_k = system.start_mass();
         let dt = event.t - self.t_start;
-        self.rows.push(TurnRow {
+        let row = TurnRow {
             turn: system.turn(),
             t_start_s: self.t_start,
             x_start_m: system.turn_start_x(),
@@ -270,35 +438,66 @@ impl Observer<TurnSystem, 2> for TableObserver {
             min_normal_n: m_k * contact.min_normal_per_mk,
             min_normal_over_mg: contact.min_normal_over_mg,
             max_friction_ratio: contact.max_friction_ratio,
-        });
+        };
+        match self.sink.turn(&row) {
+            Ok(()) => {
+                self.summary.push(&row);
+                self.rows += 1;
+            }
+            Err(e) => self.failed = Some(e),
+        }
         self.t_start = event.t;
         self.v_start = v_after;
+    }
+
+    fn stop_requested(&self) -> bool {
+        self.failed.is_some() || self.rows >= self.max_rows
     }
 }
 
 impl TurnModel {
-    /// Runs the model and returns one row per completed turn (the samples
-    /// of [`Model::simulate`](crate::Model::simulate) are not recorded;
-    /// `opts.sampling` is ignored).
+    /// Runs the model and sends one row per completed turn to `sink` as
+    /// each turn ends, with the long-run statistics computed on the way
+    /// (memory O(log n) in the number of turns; `opts.sampling` is
+    /// ignored). A run asked for more turns than `opts.max_rows` is refused
+    /// before it starts; without a turn count it stops at `opts.max_rows`
+    /// rows ([`StopReason::RowLimit`]).
     ///
     /// # Errors
-    /// As [`Model::simulate`](crate::Model::simulate).
-    pub fn run_table(&self, scenario: &Scenario, opts: &SimOptions) -> Result<TurnTable, SimError> {
+    /// As [`Model::simulate_into`](crate::Model::simulate_into), and
+    /// [`ParamError::TooManyRows`] for too many turns.
+    pub fn run_table_into(
+        &self,
+        scenario: &Scenario,
+        opts: &SimOptions,
+        sink: &mut dyn TurnSink,
+    ) -> Result<TurnRunEnd, SimError> {
         opts.validate()?;
+        self.variant.kind().check_shape(scenario)?;
         super::check_turn_scale(scenario, opts)?;
         crate::models::check_tolerances(self.variant.kind(), scenario, opts)?;
+        if let Some(n) = opts.turns.filter(|&n| n > opts.max_rows) {
+            return Err(ParamError::TooManyRows {
+                rows: n as f64,
+                max_rows: opts.max_rows,
+            }
+            .into());
+        }
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let mut observer = TableObserver {
-            rows: Vec::new(),
+            sink,
+            summary: SummaryBuilder::new(scenario.g_along(), opts.turns),
+            rows: 0,
+            max_rows: opts.max_rows,
+            failed: None,
             t_start: 0.0,
             v_start: 0.0,
         };
         let y0 = Self::initial_state(scenario);
         if let Some(reason) = system.start(&y0) {
             let first = system.sample(0.0, &y0);
-            return Ok(TurnTable {
+            return Ok(TurnRunEnd {
                 model: self.variant.kind(),
-                rows: Vec::new(),
                 stop: Stop {
                     reason,
                     t_s: 0.0,
@@ -306,7 +505,7 @@ impl TurnModel {
                     v_m_s: first.v_m_s,
                     turn: system.turn_state(0.0, &y0),
                 },
-                summary: TurnSummary::new(&[], scenario.g_along()),
+                summary: observer.summary.finish(),
                 stats: Stats::default(),
             });
         }
@@ -318,15 +517,18 @@ impl TurnModel {
             &opts.tolerances,
             &mut observer,
         )?;
+        if let Some(e) = observer.failed {
+            return Err(SimError::Sink(e));
+        }
         let reason = match outcome.termination {
             Termination::EndTime => StopReason::EndTime,
             Termination::Event { index } => system.stop_reason(index),
+            Termination::StepLimit => StopReason::StepLimit,
+            Termination::Stopped => StopReason::RowLimit,
         };
         let last = system.sample(outcome.t, &outcome.y);
-        let summary = TurnSummary::new(&observer.rows, scenario.g_along());
-        Ok(TurnTable {
+        Ok(TurnRunEnd {
             model: self.variant.kind(),
-            rows: observer.rows,
             stop: Stop {
                 reason,
                 t_s: outcome.t,
@@ -334,10 +536,42 @@ impl TurnModel {
                 v_m_s: last.v_m_s,
                 turn: system.turn_state(outcome.t, &outcome.y),
             },
-            summary,
+            summary: observer.summary.finish(),
             stats: outcome.stats,
         })
     }
+
+    /// Runs the model and returns one row per completed turn (the samples
+    /// of [`Model::simulate`](crate::Model::simulate) are not recorded;
+    /// `opts.sampling` is ignored): [`run_table_into`](Self::run_table_into)
+    /// gathering the rows in memory.
+    ///
+    /// # Errors
+    /// As [`run_table_into`](Self::run_table_into).
+    pub fn run_table(&self, scenario: &Scenario, opts: &SimOptions) -> Result<TurnTable, SimError> {
+        let mut rows = Vec::new();
+        let end = self.run_table_into(scenario, opts, &mut rows)?;
+        Ok(TurnTable {
+            model: end.model,
+            rows,
+            stop: end.stop,
+            summary: end.summary,
+            stats: end.stats,
+        })
+    }
+}
+
+/// The variant of turn model `kind`, or the error that names the turn models.
+fn variant_of(kind: ModelKind) -> Result<TurnVariant, ParamError> {
+    TurnVariant::of(kind).ok_or_else(|| ParamError::UnknownModel {
+        given: kind.id().to_string(),
+        expected: ModelKind::ALL
+            .iter()
+            .filter(|k| k.is_turn_model())
+            .map(|k| format!("{} ({})", k.id(), k.alias()))
+            .collect::<Vec<_>>()
+            .join(", "),
+    })
 }
 
 /// Runs the turn model `kind` (`turns` or `turns-exact`) and returns its
@@ -355,28 +589,40 @@ impl TurnModel {
 ///
 /// # Errors
 /// [`ParamError::UnknownModel`] (inside [`SimError::Param`]) when `kind` is
-/// not a turn model; otherwise as [`Model::simulate`](crate::Model::simulate).
+/// not a turn model; otherwise as [`TurnModel::run_table_into`].
 pub fn run_turns(
     kind: ModelKind,
     scenario: &Scenario,
     opts: &SimOptions,
 ) -> Result<TurnTable, SimError> {
-    let variant = TurnVariant::of(kind).ok_or_else(|| ParamError::UnknownModel {
-        given: kind.id().to_string(),
-        expected: ModelKind::ALL
-            .iter()
-            .filter(|k| k.is_turn_model())
-            .map(|k| format!("{} ({})", k.id(), k.alias()))
-            .collect::<Vec<_>>()
-            .join(", "),
-    })?;
-    kind.check_shape(scenario)?;
-    TurnModel::new(variant).run_table(scenario, opts)
+    TurnModel::new(variant_of(kind)?).run_table(scenario, opts)
+}
+
+/// [`run_turns`] with the rows sent to `sink` as they are computed
+/// ([`TurnModel::run_table_into`]).
+///
+/// # Errors
+/// As [`run_turns`], and [`SimError::Sink`] when the sink fails.
+pub fn run_turns_into(
+    kind: ModelKind,
+    scenario: &Scenario,
+    opts: &SimOptions,
+    sink: &mut dyn TurnSink,
+) -> Result<TurnRunEnd, SimError> {
+    TurnModel::new(variant_of(kind)?).run_table_into(scenario, opts, sink)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::checkpoint_turns;
+    use super::*;
+
+    #[test]
+    fn decade_checkpoints_are_recognised() {
+        let found: Vec<u64> = (0..=1000).filter(|&k| is_decade_checkpoint(k)).collect();
+        assert_eq!(found, [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000]);
+        assert!(is_decade_checkpoint(5_000_000_000_000_000_000));
+        assert!(!is_decade_checkpoint(u64::MAX));
+    }
 
     #[test]
     fn checkpoints_are_1_2_5_per_decade_then_the_end() {

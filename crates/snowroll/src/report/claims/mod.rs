@@ -38,9 +38,12 @@ mod terminal;
 use std::fmt;
 use std::sync::OnceLock;
 
+use super::turn_digest::{DigestSink, TurnDigest};
 use super::{Claim, ClaimResult, Criterion, Verdict};
 use crate::error::SimError;
-use crate::models::{run_turns, CircularModel, Coefficients, Derivation, ModelKind, TurnTable};
+use crate::models::{
+    run_turns_into, CircularModel, Coefficients, Derivation, ModelKind, TurnTable,
+};
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
@@ -60,8 +63,8 @@ pub type Runner =
 pub struct Lab {
     scenario: Scenario,
     turns: u64,
-    long_run: OnceLock<Result<TurnTable, SimError>>,
-    long_run_exact: OnceLock<Result<TurnTable, SimError>>,
+    long_run: OnceLock<Result<TurnDigest, SimError>>,
+    long_run_exact: OnceLock<Result<TurnDigest, SimError>>,
     coefficients: Vec<(Derivation, Coefficients)>,
     runner: Option<Box<Runner>>,
 }
@@ -113,7 +116,7 @@ impl Lab {
     /// `turns-exact` (`exact`) or `turns`.
     pub fn with_long_run(self, exact: bool, table: TurnTable) -> Self {
         let cell = OnceLock::new();
-        let _ = cell.set(Ok(table));
+        let _ = cell.set(Ok(TurnDigest::from_table(&table, &self.scenario)));
         if exact {
             Self {
                 long_run_exact: cell,
@@ -173,7 +176,7 @@ impl Lab {
     ///
     /// # Errors
     /// [`SimError`] if the run fails (the error is kept and returned again).
-    pub fn long_run(&self, exact: bool) -> Result<&TurnTable, SimError> {
+    pub fn long_run(&self, exact: bool) -> Result<&TurnDigest, SimError> {
         let (cell, kind) = if exact {
             (&self.long_run_exact, ModelKind::TurnsExact)
         } else {
@@ -183,11 +186,19 @@ impl Lab {
             t_end: 1e9,
             turns: Some(self.turns),
             sampling: Sampling::Ends,
+            // The digest keeps a bounded part of the rows, so their number
+            // is no limit.
+            max_rows: u64::MAX,
             ..SimOptions::default()
         };
-        cell.get_or_init(|| run_turns(kind, &self.scenario, &opts))
-            .as_ref()
-            .map_err(Clone::clone)
+        cell.get_or_init(|| {
+            // The rows go by once; memory does not grow with the turns.
+            let mut sink = DigestSink::new(&self.scenario, self.turns);
+            let end = run_turns_into(kind, &self.scenario, &opts, &mut sink)?;
+            Ok(sink.finish(end))
+        })
+        .as_ref()
+        .map_err(Clone::clone)
     }
 
     /// The acceleration of `kind` at the state (radius `r`, speed `v`), m/s²:

@@ -13,7 +13,8 @@ use super::{
     Symbols,
 };
 use crate::error::SimError;
-use crate::models::{ModelKind, TurnCheckpoint, TurnRow, TurnTable};
+use crate::models::{ModelKind, TurnCheckpoint, TurnRow};
+use crate::report::TurnDigest;
 use crate::report::{Criterion, Tolerance, Verdict};
 use crate::trajectory::{Sampling, SimOptions};
 
@@ -64,7 +65,7 @@ fn long_run_limits() -> LongRun {
 }
 
 /// The last checkpoint of a long run (the means over its last decade of turns).
-fn last_window(table: &TurnTable) -> Option<&TurnCheckpoint> {
+fn last_window(table: &TurnDigest) -> Option<&TurnCheckpoint> {
     table.summary.checkpoints.last()
 }
 
@@ -223,7 +224,7 @@ pub(super) fn eq78_speed(lab: &Lab) -> Result<Finding, SimError> {
     let mut parts = Vec::new();
     for exact in [false, true] {
         let table = lab.long_run(exact)?;
-        let Some(row) = table.rows.last() else {
+        let Some(row) = table.last.as_ref() else {
             return Ok(no_turns());
         };
         let n = row.turn as f64;
@@ -279,8 +280,8 @@ fn collision_bodies(r: f64, b: f64, rho_l: f64) -> ([Sector; 2], [Sector; 2]) {
 }
 
 /// Rows whose collisions are checked: the first 200 and the last.
-fn checked_rows(table: &TurnTable) -> impl Iterator<Item = &TurnRow> {
-    table.rows.iter().take(200).chain(table.rows.last())
+fn checked_rows(table: &TurnDigest) -> impl Iterator<Item = &TurnRow> {
+    table.head.iter().take(200).chain(table.last.as_ref())
 }
 
 /// `eq89-collision`: L about the contact line before and after.
@@ -384,7 +385,7 @@ pub(super) fn collision_potential_jump(lab: &Lab) -> Result<Finding, SimError> {
         let t_after = 0.5 * pa.inertia * (row.v_after_m_s / (r + b)).powi(2);
         (rise / released, rise / t_after, r)
     };
-    let (Some(first), Some(last)) = (table.rows.first(), table.rows.last()) else {
+    let (Some(first), Some(last)) = (table.head.first(), table.last.as_ref()) else {
         return Ok(no_turns());
     };
     let (q0, f0, _) = ratio_of(first);
@@ -483,7 +484,7 @@ pub(super) fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
     let mut worst_paper: f64 = 0.0;
     let mut worst_printed: f64 = 0.0;
     let mut worst_index: f64 = 0.0;
-    for (re, rp) in exact.rows.iter().zip(&paper.rows).take(50) {
+    for (re, rp) in exact.head.iter().zip(&paper.head).take(50) {
         let k = re.turn as f64;
         worst_exact = worst_exact.max(rel(
             predict(k, re.v_start_m_s, Reading::Corrected),
