@@ -63,6 +63,17 @@ pub struct ConfigFile {
     collision: Option<CollisionModel>,
     #[serde(alias = "on-hop")]
     on_hop: Option<OnHop>,
+    #[serde(alias = "drag-coefficient")]
+    drag_coefficient: Option<f64>,
+    #[serde(alias = "air-density")]
+    air_density: Option<f64>,
+    #[serde(alias = "rolling-resistance")]
+    rolling_resistance: Option<f64>,
+    #[serde(alias = "compaction-energy")]
+    compaction_energy: Option<f64>,
+    ledger: Option<bool>,
+    #[serde(alias = "terminal-tol")]
+    terminal_tol: Option<f64>,
     #[serde(default, deserialize_with = "format_any_case")]
     format: Option<Format>,
     output: Option<PathBuf>,
@@ -217,6 +228,11 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             "model" | "collision" | "on_hop" | "shape" => {
                 Value::String(value.split_whitespace().next().unwrap_or("").into())
             }
+            "ledger" => Value::Bool(
+                value
+                    .parse::<bool>()
+                    .map_err(|_| anyhow!("`ledger = {value}` is not true or false"))?,
+            ),
             "sampling" => {
                 if value == TURN_TABLE_SAMPLING {
                     origin = Origin::Turns;
@@ -300,6 +316,12 @@ impl ScenarioArgs {
             mu,
             collision,
             on_hop,
+            drag_coefficient,
+            air_density,
+            rolling_resistance,
+            compaction_energy,
+            ledger,
+            terminal_tol,
         } = self;
         ScenarioArgs {
             model: model.or(file.model),
@@ -319,6 +341,12 @@ impl ScenarioArgs {
             mu: mu.or(file.mu),
             collision: collision.or(file.collision),
             on_hop: on_hop.or(file.on_hop),
+            drag_coefficient: drag_coefficient.or(file.drag_coefficient),
+            air_density: air_density.or(file.air_density),
+            rolling_resistance: rolling_resistance.or(file.rolling_resistance),
+            compaction_energy: compaction_energy.or(file.compaction_energy),
+            ledger: ledger || file.ledger.unwrap_or(false),
+            terminal_tol: terminal_tol.or(file.terminal_tol),
         }
     }
 }

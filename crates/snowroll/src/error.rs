@@ -74,6 +74,17 @@ pub enum ParamError {
         /// The end time, s.
         t_end: f64,
     },
+    /// A loss (or the energy ledger) asked of a model that does not define
+    /// it (`docs/snowball-and-losses.md` §2.1).
+    #[error("model {model} does not support {what}: {reason}")]
+    Unsupported {
+        /// The model id.
+        model: &'static str,
+        /// The option, as the user spells it.
+        what: &'static str,
+        /// Why, and what to use instead.
+        reason: &'static str,
+    },
     /// Requested output times that are not finite, negative or not ascending.
     #[error("invalid output times: {reason}")]
     InvalidTimes {

@@ -114,6 +114,7 @@
 
 pub mod error;
 pub mod integrate;
+pub mod losses;
 pub mod model_kind;
 pub mod models;
 pub mod output;
@@ -128,6 +129,7 @@ pub mod trajectory;
 pub mod units;
 
 pub use error::{OutputError, ParamError, SimError};
+pub use losses::Losses;
 pub use models::{
     as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
     circular_forces, collision_speed, default_atol, first_turn_stall_slope,
@@ -142,5 +144,5 @@ pub use output::{
 };
 pub use scenario::{Scenario, ScenarioFile, Shape};
 pub use trajectory::{
-    OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState,
+    LedgerRow, OnHop, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState,
 };

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::ParamError;
 use crate::integrate::{Stats, Tolerances};
+use crate::losses::Losses;
 use crate::model_kind::ModelKind;
 use crate::models::CollisionModel;
 use crate::units::{
@@ -75,6 +76,10 @@ pub enum StopReason {
     /// With `--collision charged|pivot`, the kinetic energy after the impact
     /// cannot lift the log onto the new layer (`docs/contact-forces.md` §6.2, §6.3).
     Stuck,
+    /// The snowless log with drag reached its terminal velocity: |a| fell to
+    /// [`Losses::terminal_tol`](crate::Losses::terminal_tol) of the initial
+    /// drive (`docs/snowball-and-losses.md` §2.2).
+    Terminal,
 }
 
 impl StopReason {
@@ -93,6 +98,9 @@ impl StopReason {
                 "the friction needed reached mu times the normal force: the log slips"
             }
             StopReason::Stuck => "the log cannot climb the step onto the new layer of snow (stuck)",
+            StopReason::Terminal => {
+                "the acceleration fell below the terminal tolerance: terminal velocity reached"
+            }
         }
     }
 }
@@ -144,6 +152,39 @@ pub struct Trajectory {
     pub stop: Stop,
     /// Integrator counts (zero for closed forms).
     pub stats: Stats,
+    /// The energy ledger of each sample when the run records one
+    /// ([`Losses::records_ledger`](crate::Losses::records_ledger)); empty otherwise.
+    pub ledger: Vec<LedgerRow>,
+}
+
+/// The energy ledger at one sample, J (`docs/snowball-and-losses.md` §3):
+/// `kinetic + drag + rolling + compaction + model + collision − created
+/// = initial + released`, the zero of potential energy being the note's
+/// (eqs. (9)–(10)): body plus all the snow it will collect, at the start.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct LedgerRow {
+    /// Kinetic energy K, eq. (7), J.
+    pub kinetic_j: f64,
+    /// Potential energy released since the start, −V (eq. (10)), J.
+    pub released_j: f64,
+    /// Work done against air drag, ∫ F_d v dt, J.
+    pub drag_j: f64,
+    /// Work done against rolling resistance, ∫ c_rr N v dt, J.
+    pub rolling_j: f64,
+    /// Work of compacting the snow picked up, ∫ e_c dM, J.
+    pub compaction_j: f64,
+    /// Energy the model's own equation destroys (negative: creates), W_model
+    /// of §3.1: 0 for `energy` and `snowless`, the inelastic pick-up for the
+    /// torque models, J.
+    pub model_j: f64,
+    /// Kinetic energy lost in the collisions of the turn models, J.
+    pub collision_j: f64,
+    /// Energy created by the note's collision (eq. (89): the free jump onto
+    /// the new layer), J.
+    pub created_j: f64,
+    /// `kinetic + drag + rolling + compaction + model + collision − created
+    /// − released − initial`: zero but for the integration error, J.
+    pub residual_j: f64,
 }
 
 /// Which samples a run records.
@@ -307,6 +348,9 @@ pub struct SimOptions {
     /// How the turn models climb the step of each new layer. Default: the
     /// note's eq. (89), [`CollisionModel::Note`].
     pub collision: CollisionModel,
+    /// Air drag, rolling resistance, compaction, the ledger and the
+    /// terminal-velocity stop. Default: no losses (fn. 5's idealisation).
+    pub losses: Losses,
 }
 
 impl Default for SimOptions {
@@ -320,6 +364,7 @@ impl Default for SimOptions {
             mu: None,
             on_hop: OnHop::Stop,
             collision: CollisionModel::Note,
+            losses: Losses::default(),
         }
     }
 }
@@ -359,6 +404,7 @@ impl SimOptions {
                 return Err(bad("mu", mu, "0 < mu < infinity"));
             }
         }
+        self.losses.validate()?;
         if self.turns == Some(0) {
             return Err(bad("turns", 0.0, "turns >= 1"));
         }

@@ -21,7 +21,7 @@
 use std::f64::consts::PI;
 
 use super::contact::{circular_forces, ContactForces};
-use super::{Derivation, Model, ModelKind};
+use super::{CircularModel, Derivation, Model, ModelKind};
 use crate::error::SimError;
 use crate::quadrature;
 use crate::scenario::Scenario;
@@ -275,9 +275,18 @@ impl Model for LoneyModel {
         ModelKind::Loney
     }
 
+    /// With losses (or the energy ledger) Loney's closed form no longer
+    /// holds: the run integrates its equation, eq. (4), with the losses
+    /// (`docs/snowball-and-losses.md` §2.1) and still reports itself as `loney`.
     fn simulate(&self, scenario: &Scenario, opts: &SimOptions) -> Result<Trajectory, SimError> {
         opts.validate()?;
         ModelKind::Loney.check_shape(scenario)?;
+        if opts.losses.records_ledger() {
+            let mut run =
+                CircularModel::new(Derivation::TorqueAboutCentre).simulate(scenario, opts)?;
+            run.model = ModelKind::Loney;
+            return Ok(run);
+        }
         // Loney's solution is that of eq. (4): its contact forces are those of
         // the circular model of eq. (4) on the closed-form trajectory. On the
         // ball, that of its `torque-cm` (c_v = 23/14).
@@ -352,6 +361,7 @@ impl Model for LoneyModel {
                 turn: None,
             },
             stats: Default::default(),
+            ledger: Vec::new(),
         })
     }
 }

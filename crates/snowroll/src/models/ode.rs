@@ -5,7 +5,9 @@
 use super::ModelKind;
 use crate::error::SimError;
 use crate::integrate::{integrate, DenseStep, EventRecord, Observer, OdeSystem, Termination};
-use crate::trajectory::{Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState};
+use crate::trajectory::{
+    LedgerRow, Sample, Sampling, SimOptions, Stop, StopReason, Trajectory, TurnState,
+};
 
 /// An ODE system that knows how to present its state.
 pub(crate) trait OdeModel<const N: usize>: OdeSystem<N> {
@@ -14,6 +16,11 @@ pub(crate) trait OdeModel<const N: usize>: OdeSystem<N> {
 
     /// The turn state, for turn models.
     fn turn_state(&self, _t: f64, _y: &[f64; N]) -> Option<TurnState> {
+        None
+    }
+
+    /// The energy ledger at state `y`, for a run that records one.
+    fn ledger(&self, _t: f64, _y: &[f64; N]) -> Option<LedgerRow> {
         None
     }
 
@@ -30,6 +37,7 @@ pub(crate) struct Recorder<'a> {
     t_end: f64,
     pub samples: Vec<Sample>,
     pub turns: Vec<TurnState>,
+    pub ledger: Vec<LedgerRow>,
 }
 
 impl<'a> Recorder<'a> {
@@ -40,6 +48,7 @@ impl<'a> Recorder<'a> {
             t_end,
             samples: Vec::new(),
             turns: Vec::new(),
+            ledger: Vec::new(),
         }
     }
 
@@ -56,6 +65,9 @@ impl<'a> Recorder<'a> {
         self.samples.push(model.sample(t, y));
         if let Some(ts) = model.turn_state(t, y) {
             self.turns.push(ts);
+        }
+        if let Some(row) = model.ledger(t, y) {
+            self.ledger.push(row);
         }
     }
 
@@ -133,6 +145,7 @@ pub(crate) fn stopped_at_start<const N: usize, M: OdeModel<N>>(
             turn: system.turn_state(0.0, &y0),
         },
         stats: Default::default(),
+        ledger: system.ledger(0.0, &y0).into_iter().collect(),
     }
 }
 
@@ -163,5 +176,6 @@ pub(crate) fn run_ode<const N: usize, M: OdeModel<N>>(
             turn: system.turn_state(outcome.t, &outcome.y),
         },
         stats: outcome.stats,
+        ledger: recorder.ledger,
     })
 }

@@ -10,6 +10,7 @@ use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sample, Sampling, SimOptions, Stop, Trajectory, TurnState};
 
 mod finite;
+mod ledger;
 mod turns;
 pub use finite::{check_finite, NonFinite};
 pub use turns::write_turn_table;
@@ -83,6 +84,10 @@ pub struct RunParams {
     pub collision: crate::models::CollisionModel,
     /// What the run does where the normal force reaches zero.
     pub on_hop: crate::trajectory::OnHop,
+    /// The losses, the ledger and the terminal stop, when any differs from
+    /// its default (outputs of lossless runs are unchanged).
+    #[serde(flatten)]
+    pub losses: Option<crate::losses::Losses>,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -118,6 +123,7 @@ impl RunParams {
             mu: opts.mu,
             collision: opts.collision,
             on_hop: opts.on_hop,
+            losses: (opts.losses != crate::losses::Losses::default()).then_some(opts.losses),
             warnings: Vec::new(),
             notes: Vec::new(),
         }
@@ -156,6 +162,16 @@ impl RunParams {
         }
         if let Some(mu) = self.mu {
             lines.push(("mu".into(), n(mu)));
+        }
+        if let Some(l) = &self.losses {
+            lines.extend([
+                ("drag_coefficient".into(), n(l.drag_coefficient)),
+                ("air_density".into(), n(l.air_density)),
+                ("rolling_resistance".into(), n(l.rolling_resistance)),
+                ("compaction_energy".into(), n(l.compaction_energy)),
+                ("ledger".into(), l.ledger.to_string()),
+                ("terminal_tol".into(), format!("{:e}", l.terminal_tol)),
+            ]);
         }
         if let Some(dt) = self.dt {
             lines.push(("dt".into(), n(dt)));
@@ -225,6 +241,9 @@ struct JsonStop {
     theta_rad: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     omega_rad_s: Option<f64>,
+    /// The closed-form terminal velocity, m/s, where one exists (§2.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    v_terminal_m_s: Option<f64>,
 }
 
 impl From<Stop> for JsonStop {
@@ -238,6 +257,7 @@ impl From<Stop> for JsonStop {
             turn: s.turn.map(|k| k.turn),
             theta_rad: s.turn.map(|k| k.theta_rad),
             omega_rad_s: s.turn.map(|k| k.omega_rad_s),
+            v_terminal_m_s: None,
         }
     }
 }
@@ -256,6 +276,7 @@ struct JsonTrajectory<'a> {
 enum JsonSamples<'a> {
     Plain(&'a [Sample]),
     Turns(Vec<TurnRow>),
+    Ledger(Vec<ledger::LedgerSample>),
 }
 
 /// The `#` comment lines that open every CSV: version, model, every
@@ -306,13 +327,29 @@ pub fn write_trajectory(
     params: &RunParams,
 ) -> Result<(), OutputError> {
     let has_turns = !traj.turn_states.is_empty() && traj.turn_states.len() == traj.samples.len();
+    let has_ledger = !traj.ledger.is_empty() && traj.ledger.len() == traj.samples.len();
+    let v_terminal = ledger::closed_form_terminal_velocity(traj.model, params);
     match format {
         Format::Csv => {
             write_csv_header(w, traj.model, params, &traj.stop)?;
+            if let Some(vt) = v_terminal {
+                writeln!(
+                    w,
+                    "# terminal velocity: closed form v_t = {} m/s (docs/snowball-and-losses.md §2.2); \
+                     measured: v_m_s at the stop `terminal`",
+                    format_number(vt)
+                )?;
+            }
             let mut csv = csv::Writer::from_writer(&mut *w);
             if has_turns {
                 for (row, (s, k)) in (1..).zip(traj.samples.iter().zip(&traj.turn_states)) {
                     let record = TurnRow::new(s, k);
+                    check_finite(&record, Some(row))?;
+                    csv.serialize(record)?;
+                }
+            } else if has_ledger {
+                for (row, (s, l)) in (1..).zip(traj.samples.iter().zip(&traj.ledger)) {
+                    let record = ledger::LedgerSample::new(s, l);
                     check_finite(&record, Some(row))?;
                     csv.serialize(record)?;
                 }
@@ -344,13 +381,24 @@ pub fn write_trajectory(
                     equation: traj.model.equation(),
                 },
                 params,
-                stop: traj.stop.into(),
+                stop: JsonStop {
+                    v_terminal_m_s: v_terminal,
+                    ..traj.stop.into()
+                },
                 samples: if has_turns {
                     JsonSamples::Turns(
                         traj.samples
                             .iter()
                             .zip(&traj.turn_states)
                             .map(|(s, k)| TurnRow::new(s, k))
+                            .collect(),
+                    )
+                } else if has_ledger {
+                    JsonSamples::Ledger(
+                        traj.samples
+                            .iter()
+                            .zip(&traj.ledger)
+                            .map(|(s, l)| ledger::LedgerSample::new(s, l))
                             .collect(),
                     )
                 } else {
@@ -395,6 +443,7 @@ mod tests {
                 turn: None,
             },
             stats: Default::default(),
+            ledger: Vec::new(),
         }
     }
 

@@ -286,6 +286,7 @@ impl TurnModel {
     pub fn run_table(&self, scenario: &Scenario, opts: &SimOptions) -> Result<TurnTable, SimError> {
         opts.validate()?;
         super::check_turn_scale(scenario, opts)?;
+        super::check_turn_losses(self.variant.kind(), opts)?;
         crate::models::check_tolerances(self.variant.kind(), scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let mut observer = TableObserver {
