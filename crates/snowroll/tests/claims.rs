@@ -573,3 +573,16 @@ fn snowball_checks_notice_wrong_models() {
         }),
     );
 }
+
+#[test]
+fn snowless_drag_terminal_velocity_notices_a_model_with_too_much_drag() {
+    // The snowless model run with 1 % more drag than asked for.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Snowless && opts.losses.drag_coefficient > 0.0).then(|| {
+            let mut opts = opts.clone();
+            opts.losses.drag_coefficient *= 1.01;
+            ModelKind::Snowless.build().simulate(s, &opts)
+        })
+    });
+    changes("snowless-drag-terminal-velocity", &wrong);
+}
