@@ -131,7 +131,6 @@ impl Inputs {
             collision,
             on_hop,
             losses: self.losses_or(&d.losses),
-            ..d
         };
         opts.validate().map_err(value_error)?;
         Ok(opts)
