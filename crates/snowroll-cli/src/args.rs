@@ -319,6 +319,64 @@ pub struct ScenarioArgs {
         )
     )]
     pub max_steps: Option<u64>,
+
+    #[arg(
+        long,
+        value_name = "CD",
+        allow_negative_numbers = true,
+        help = "Air drag coefficient C_d, dimensionless (0 <= C_d <= 100): drag 0.5 rho_a C_d A v^2 \
+                with frontal area A = 2 r l (docs/snowball-and-losses.md §2) [default: 0, no drag]"
+    )]
+    pub drag_coefficient: Option<f64>,
+
+    #[arg(
+        long,
+        value_name = "RHO_A",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Air density rho_a for the drag, kg/m^3 (> 0)",
+            snowroll::losses::AIR_DENSITY_DEFAULT
+        )
+    )]
+    pub air_density: Option<f64>,
+
+    #[arg(
+        long,
+        value_name = "C_RR",
+        allow_negative_numbers = true,
+        help = "Rolling-resistance coefficient c_rr, dimensionless (0 <= c_rr < 10): a couple \
+                c_rr N r, i.e. a force c_rr times the normal force N [default: 0, none]"
+    )]
+    pub rolling_resistance: Option<f64>,
+
+    #[arg(
+        long,
+        value_name = "E_C",
+        allow_negative_numbers = true,
+        help = "Work of compacting the snow picked up, J per kg of snow (>= 0) \
+                [default: 0, none]"
+    )]
+    pub compaction_energy: Option<f64>,
+
+    #[arg(
+        long,
+        help = "Write the energy ledger columns (kinetic, released, each loss, model, residual, \
+                J) even without losses; a run with losses always writes them [default: off]"
+    )]
+    pub ledger: bool,
+
+    #[arg(
+        long,
+        value_name = "TOL",
+        allow_negative_numbers = true,
+        help = with_default(
+            "Stop with `terminal` where |a| falls to TOL times the initial drive \
+             (g sin a - c_rr g cos a)/(1 + k): only the snowless log with drag has a terminal \
+             velocity; 0 = keep going (0 <= TOL < 1)",
+            short(snowroll::losses::TERMINAL_TOL_DEFAULT)
+        )
+    )]
+    pub terminal_tol: Option<f64>,
 }
 
 /// Where and how results are written, and the `--config` file; shared by

@@ -65,6 +65,17 @@ pub struct ConfigFile {
     on_hop: Option<OnHop>,
     max_rows: Option<u64>,
     max_steps: Option<u64>,
+    #[serde(alias = "drag-coefficient")]
+    drag_coefficient: Option<f64>,
+    #[serde(alias = "air-density")]
+    air_density: Option<f64>,
+    #[serde(alias = "rolling-resistance")]
+    rolling_resistance: Option<f64>,
+    #[serde(alias = "compaction-energy")]
+    compaction_energy: Option<f64>,
+    ledger: Option<bool>,
+    #[serde(alias = "terminal-tol")]
+    terminal_tol: Option<f64>,
     #[serde(default, deserialize_with = "format_any_case")]
     format: Option<Format>,
     output: Option<PathBuf>,
@@ -219,6 +230,11 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             "model" | "collision" | "on_hop" | "shape" => {
                 Value::String(value.split_whitespace().next().unwrap_or("").into())
             }
+            "ledger" => Value::Bool(
+                value
+                    .parse::<bool>()
+                    .map_err(|_| anyhow!("`ledger = {value}` is not true or false"))?,
+            ),
             "sampling" => {
                 if value == TURN_TABLE_SAMPLING {
                     origin = Origin::Turns;
@@ -304,6 +320,12 @@ impl ScenarioArgs {
             on_hop,
             max_rows,
             max_steps,
+            drag_coefficient,
+            air_density,
+            rolling_resistance,
+            compaction_energy,
+            ledger,
+            terminal_tol,
         } = self;
         ScenarioArgs {
             model: model.or(file.model),
@@ -325,6 +347,12 @@ impl ScenarioArgs {
             on_hop: on_hop.or(file.on_hop),
             max_rows: max_rows.or(file.max_rows),
             max_steps: max_steps.or(file.max_steps),
+            drag_coefficient: drag_coefficient.or(file.drag_coefficient),
+            air_density: air_density.or(file.air_density),
+            rolling_resistance: rolling_resistance.or(file.rolling_resistance),
+            compaction_energy: compaction_energy.or(file.compaction_energy),
+            ledger: ledger || file.ledger.unwrap_or(false),
+            terminal_tol: terminal_tol.or(file.terminal_tol),
         }
     }
 }

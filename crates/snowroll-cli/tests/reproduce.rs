@@ -457,3 +457,68 @@ fn a_shape_a_model_cannot_take_is_refused_by_name() {
     );
     assert!(err.contains("model loney does not support"), "{err}");
 }
+
+/// Issue 11: the losses, the ledger and the terminal stop are settings an
+/// output records and a `--config` of it reads back, in either format.
+#[test]
+fn a_run_with_losses_reproduces_its_run() {
+    let lossy = [
+        "--model",
+        "energy",
+        "--drag-coefficient",
+        "0.8",
+        "--air-density",
+        "1.1",
+        "--rolling-resistance",
+        "0.02",
+        "--compaction-energy",
+        "2.5",
+        "--terminal-tol",
+        "1e-6",
+        "--t-end",
+        "20",
+        "--dt",
+        "0.5",
+    ];
+    reproduces("simulate", &lossy, "lossy.json");
+    reproduces("simulate", &lossy, "lossy.csv");
+    let terminal = [
+        "--model",
+        "snowless",
+        "--drag-coefficient",
+        "1",
+        "--terminal-tol",
+        "1e-8",
+    ];
+    reproduces("simulate", &terminal, "terminal.csv");
+    reproduces("simulate", &terminal, "terminal.json");
+    let ledger_only = ["--model", "torque-cm", "--ledger", "--t-end", "5"];
+    reproduces("simulate", &ledger_only, "ledger.csv");
+    reproduces("simulate", &ledger_only, "ledger.json");
+}
+
+/// A loss the model does not carry is refused with the flag's name; a
+/// value out of range names the value and its range.
+#[test]
+fn losses_the_model_does_not_carry_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let err = fails(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "turns",
+            "--rolling-resistance",
+            "0.1",
+        ],
+    );
+    assert!(
+        err.contains("--rolling-resistance") && err.contains("turns"),
+        "{err}"
+    );
+    let err = fails(dir.path(), &["simulate", "--drag-coefficient", "-1"]);
+    assert!(
+        err.contains("drag_coefficient") && err.contains("-1"),
+        "{err}"
+    );
+}

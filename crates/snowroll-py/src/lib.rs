@@ -22,7 +22,7 @@ use pyo3::types::{PyDict, PyList};
 use snowroll::integrate::Tolerances;
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::{
-    run_turns, validity_warnings, CollisionModel, ModelKind, OnHop, ParamError, RunParams,
+    run_turns, validity_warnings, CollisionModel, Losses, ModelKind, OnHop, ParamError, RunParams,
     Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
 };
 
@@ -56,11 +56,28 @@ struct Inputs {
     mu: Option<f64>,
     collision: Option<String>,
     on_hop: Option<String>,
+    /// `drag_coefficient, air_density, rolling_resistance, compaction_energy, terminal_tol`.
+    losses: [Option<f64>; 5],
+    ledger: bool,
 }
 
 impl Inputs {
     fn model(&self) -> PyResult<ModelKind> {
         self.model.parse().map_err(value_error)
+    }
+
+    /// The losses, each `None` from `d` (the CLI's `inputs::options`).
+    fn losses_or(&self, d: &Losses) -> Losses {
+        let [drag_coefficient, air_density, rolling_resistance, compaction_energy, terminal_tol] =
+            self.losses;
+        Losses {
+            drag_coefficient: drag_coefficient.unwrap_or(d.drag_coefficient),
+            air_density: air_density.unwrap_or(d.air_density),
+            rolling_resistance: rolling_resistance.unwrap_or(d.rolling_resistance),
+            compaction_energy: compaction_energy.unwrap_or(d.compaction_energy),
+            ledger: self.ledger,
+            terminal_tol: terminal_tol.unwrap_or(d.terminal_tol),
+        }
     }
 
     /// The validated scenario, defaults from [`ScenarioFile::default`].
@@ -114,6 +131,7 @@ impl Inputs {
             mu: self.mu,
             collision,
             on_hop,
+            losses: self.losses_or(&d.losses),
         };
         opts.validate().map_err(value_error)?;
         Ok(opts)
@@ -266,6 +284,18 @@ fn trajectory_columns<'py>(py: Python<'py>, traj: &Trajectory) -> PyResult<Bound
     column(py, &c, "normal_n", s, |s| s.normal_n)?;
     column(py, &c, "friction_n", s, |s| s.friction_n)?;
     masked_column(py, &c, "friction_ratio", s, |s| s.friction_ratio)?;
+    let l = &traj.ledger;
+    if !l.is_empty() && l.len() == s.len() {
+        column(py, &c, "kinetic_j", l, |l| l.kinetic_j)?;
+        column(py, &c, "released_j", l, |l| l.released_j)?;
+        column(py, &c, "drag_j", l, |l| l.drag_j)?;
+        column(py, &c, "rolling_j", l, |l| l.rolling_j)?;
+        column(py, &c, "compaction_j", l, |l| l.compaction_j)?;
+        column(py, &c, "model_j", l, |l| l.model_j)?;
+        column(py, &c, "collision_j", l, |l| l.collision_j)?;
+        column(py, &c, "created_j", l, |l| l.created_j)?;
+        column(py, &c, "residual_j", l, |l| l.residual_j)?;
+    }
     let k = &traj.turn_states;
     if !k.is_empty() && k.len() == s.len() {
         column(py, &c, "turn", k, |k| k.turn)?;
@@ -307,7 +337,9 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
     model = "torque-cm", *, alpha_deg = None, snow_depth = None, r0 = None, g = None,
     density = None, length = None, v0 = None, shape = None, swath_width = None, t_end = None,
     x_end = None, times = None, dt = None, turns = None, rtol = None, atol = None, mu = None,
-    collision = None, on_hop = None
+    collision = None, on_hop = None,
+    drag_coefficient = None, air_density = None, rolling_resistance = None,
+    compaction_energy = None, ledger = false, terminal_tol = None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
@@ -332,6 +364,12 @@ fn simulate<'py>(
     mu: Option<f64>,
     collision: Option<String>,
     on_hop: Option<String>,
+    drag_coefficient: Option<f64>,
+    air_density: Option<f64>,
+    rolling_resistance: Option<f64>,
+    compaction_energy: Option<f64>,
+    ledger: bool,
+    terminal_tol: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let inputs = Inputs {
         model: model.to_string(),
@@ -345,6 +383,14 @@ fn simulate<'py>(
         mu,
         collision,
         on_hop,
+        losses: [
+            drag_coefficient,
+            air_density,
+            rolling_resistance,
+            compaction_energy,
+            terminal_tol,
+        ],
+        ledger,
     };
     let kind = inputs.model()?;
     if turns.is_some() && !kind.is_turn_model() {
@@ -374,6 +420,13 @@ fn simulate<'py>(
         .map(ToString::to_string)
         .collect();
     let out = common(py, kind, &params, &traj.stop)?;
+    // The closed-form terminal velocity where one exists, as the CLI's JSON `stop` has it.
+    let v_terminal = (kind == ModelKind::Snowless)
+        .then(|| snowroll::losses::terminal_velocity(&scenario, &opts.losses))
+        .flatten();
+    if let (Some(vt), Some(stop)) = (v_terminal, out.get_item("stop")?) {
+        stop.set_item("v_terminal_m_s", vt)?;
+    }
     out.set_item("columns", trajectory_columns(py, &traj)?)?;
     Ok(out)
 }
@@ -419,6 +472,8 @@ fn turns<'py>(
         mu,
         collision,
         on_hop,
+        losses: [None; 5],
+        ledger: false,
     };
     let kind = inputs.model()?;
     if !kind.is_turn_model() {

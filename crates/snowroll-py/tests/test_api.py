@@ -146,3 +146,24 @@ def test_shape_errors_name_the_problem():
         snowroll.simulate("torque-cm", shape="cube")
     with pytest.raises(ValueError, match="does not support shape = sphere"):
         snowroll.simulate("turns", shape="sphere", turns=2)
+
+
+def test_losses_keywords_terminal_velocity_and_ledger():
+    """Issue 11: the snowless log with drag stops at the closed-form terminal
+    velocity v_t^2 = M g sin(alpha) / (0.5 rho_a C_d 2 r0 l) (defaults: 22.664 m/s);
+    |1 - v/v_t| <= tol/2 at the stop, plus the integration error (~1e-10)."""
+    with pytest.warns(RuntimeWarning):
+        r = snowroll.simulate("snowless", drag_coefficient=1.0, air_density=1.2, terminal_tol=1e-10, t_end=1e4)
+    assert r.stop["reason"] == "terminal"
+    m = math.pi * 400 * 0.1**2
+    vt = math.sqrt(m * 9.81 * math.sin(math.radians(30)) / (0.5 * 1.2 * 1.0 * 2 * 0.1))
+    assert abs(r.stop["v_m_s"] / vt - 1) < 1e-9
+    assert abs(r.stop["v_terminal_m_s"] / vt - 1) < 1e-14
+    assert r.params["drag_coefficient"] == 1.0
+    # The ledger sums to the initial energy (zero from rest) within 1e-8 of its largest term.
+    r = snowroll.simulate("energy", rolling_resistance=0.02, compaction_energy=2.0, t_end=20)
+    total = r.kinetic_j + r.drag_j + r.rolling_j + r.compaction_j + r.model_j - r.released_j
+    assert np.all(np.abs(total) <= 1e-8 * np.maximum(r.released_j, 1.0))
+    assert np.allclose(r.compaction_j, 2.0 * (r.mass_kg - r.mass_kg[0]), rtol=1e-9, atol=1e-9)
+    with pytest.raises(ValueError, match="rolling_resistance"):
+        snowroll.simulate(rolling_resistance=-1)

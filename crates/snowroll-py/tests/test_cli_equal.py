@@ -18,6 +18,9 @@ def flags(kwargs):
         flag = "--" + key.replace("_", "-")
         if isinstance(value, (list, tuple)):
             value = ",".join(repr(float(v)) for v in value)
+        if value is True:
+            out += [flag]
+            continue
         out += [flag, value]
     return out
 
@@ -44,6 +47,10 @@ CASES = [
     ("torque-cm", {"shape": "sphere", "t_end": 20}),
     ("energy", {"shape": "sphere", "swath_width": 0.05, "t_end": 10}),
     ("loney", {"shape": "sphere", "t_end": 5}),
+    # Issue 11: the losses and the ledger columns.
+    ("energy", {"drag_coefficient": 0.8, "air_density": 1.1, "rolling_resistance": 0.02, "compaction_energy": 2.5}),
+    ("snowless", {"drag_coefficient": 1, "terminal_tol": 1e-6, "t_end": 200}),
+    ("torque-cm", {"ledger": True, "t_end": 10}),
 ]
 
 

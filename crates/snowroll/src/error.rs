@@ -87,6 +87,17 @@ pub enum ParamError {
         /// The limit.
         max_rows: u64,
     },
+    /// A loss (or the energy ledger) asked of a model that does not define
+    /// it (`docs/snowball-and-losses.md` §2.1).
+    #[error("model {model} does not support {what}: {reason}")]
+    Unsupported {
+        /// The model id.
+        model: &'static str,
+        /// The option, as the user spells it.
+        what: &'static str,
+        /// Why, and what to use instead.
+        reason: &'static str,
+    },
     /// Requested output times that are not finite, negative or not ascending.
     #[error("invalid output times: {reason}")]
     InvalidTimes {
@@ -185,4 +196,11 @@ pub enum OutputError {
     /// record was written.
     #[error(transparent)]
     NonFinite(#[from] crate::output::NonFinite),
+    /// A run that records the energy ledger sent row `row` without its
+    /// ledger (a bug of the model, caught before anything is written).
+    #[error("row {row} of a run that records the energy ledger came without its ledger")]
+    MissingLedger {
+        /// The row, from 1.
+        row: u64,
+    },
 }

@@ -121,6 +121,7 @@
 
 pub mod error;
 pub mod integrate;
+pub mod losses;
 pub mod model_kind;
 pub mod models;
 pub mod output;
@@ -135,6 +136,7 @@ pub mod trajectory;
 pub mod units;
 
 pub use error::{OutputError, ParamError, SimError, SinkError};
+pub use losses::Losses;
 pub use models::{
     as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
     circular_forces, collision_speed, default_atol, first_turn_stall_slope,
@@ -151,6 +153,6 @@ pub use output::{
 };
 pub use scenario::{Scenario, ScenarioFile, Shape};
 pub use trajectory::{
-    Collected, OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason,
-    Trajectory, TurnState, DEFAULT_MAX_ROWS,
+    Collected, LedgerRow, OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop,
+    StopReason, Trajectory, TurnState, DEFAULT_MAX_ROWS,
 };

@@ -6,6 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{ParamError, SinkError};
 use crate::integrate::{Stats, Tolerances};
+use crate::losses::Losses;
 use crate::model_kind::ModelKind;
 use crate::models::CollisionModel;
 use crate::units::{
@@ -81,6 +82,10 @@ pub enum StopReason {
     /// The run recorded [`SimOptions::max_rows`] samples, the most allowed;
     /// the samples up to there are kept.
     RowLimit,
+    /// The snowless log with drag reached its terminal velocity: |a| fell to
+    /// [`Losses::terminal_tol`](crate::Losses::terminal_tol) of the initial
+    /// drive (`docs/snowball-and-losses.md` §2.2).
+    Terminal,
 }
 
 impl StopReason {
@@ -104,6 +109,9 @@ impl StopReason {
             }
             StopReason::RowLimit => {
                 "the run recorded max_rows rows, the most allowed; the rows computed so far are kept"
+            }
+            StopReason::Terminal => {
+                "the acceleration fell below the terminal tolerance: terminal velocity reached"
             }
         }
     }
@@ -170,6 +178,17 @@ pub trait SampleSink {
     /// A [`SinkError`] ends the run at once; the model returns it as
     /// [`SimError::Sink`](crate::SimError::Sink).
     fn sample(&mut self, sample: &Sample, turn: Option<&TurnState>) -> Result<(), SinkError>;
+
+    /// The energy ledger of the sample that comes next, for a run that
+    /// records one ([`Losses::records_ledger`](crate::Losses::records_ledger));
+    /// sent just before that [`sample`](Self::sample). Ignored by default.
+    ///
+    /// # Errors
+    /// As [`sample`](Self::sample).
+    fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        let _ = row;
+        Ok(())
+    }
 }
 
 /// The samples of a run gathered in memory: the sink behind
@@ -180,6 +199,8 @@ pub struct Collected {
     pub samples: Vec<Sample>,
     /// The turn states of the samples that had one.
     pub turn_states: Vec<TurnState>,
+    /// The ledger rows of the samples that had one.
+    pub ledger: Vec<LedgerRow>,
 }
 
 impl SampleSink for Collected {
@@ -188,6 +209,11 @@ impl SampleSink for Collected {
         if let Some(k) = turn {
             self.turn_states.push(*k);
         }
+        Ok(())
+    }
+
+    fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        self.ledger.push(*row);
         Ok(())
     }
 }
@@ -201,6 +227,7 @@ impl Collected {
             turn_states: self.turn_states,
             stop: end.stop,
             stats: end.stats,
+            ledger: self.ledger,
         }
     }
 }
@@ -218,6 +245,39 @@ pub struct Trajectory {
     pub stop: Stop,
     /// Integrator counts (zero for closed forms).
     pub stats: Stats,
+    /// The energy ledger of each sample when the run records one
+    /// ([`Losses::records_ledger`](crate::Losses::records_ledger)); empty otherwise.
+    pub ledger: Vec<LedgerRow>,
+}
+
+/// The energy ledger at one sample, J (`docs/snowball-and-losses.md` §3):
+/// `kinetic + drag + rolling + compaction + model + collision − created
+/// = initial + released`, the zero of potential energy being the note's
+/// (eqs. (9)–(10)): body plus all the snow it will collect, at the start.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct LedgerRow {
+    /// Kinetic energy K, eq. (7), J.
+    pub kinetic_j: f64,
+    /// Potential energy released since the start, −V (eq. (10)), J.
+    pub released_j: f64,
+    /// Work done against air drag, ∫ F_d v dt, J.
+    pub drag_j: f64,
+    /// Work done against rolling resistance, ∫ c_rr N v dt, J.
+    pub rolling_j: f64,
+    /// Work of compacting the snow picked up, ∫ e_c dM, J.
+    pub compaction_j: f64,
+    /// Energy the model's own equation destroys (negative: creates), W_model
+    /// of §3.1: 0 for `energy` and `snowless`, the inelastic pick-up for the
+    /// torque models, J.
+    pub model_j: f64,
+    /// Kinetic energy lost in the collisions of the turn models, J.
+    pub collision_j: f64,
+    /// Energy created by the note's collision (eq. (89): the free jump onto
+    /// the new layer), J.
+    pub created_j: f64,
+    /// `kinetic + drag + rolling + compaction + model + collision − created
+    /// − released − initial`: zero but for the integration error, J.
+    pub residual_j: f64,
 }
 
 /// Which samples a run records.
@@ -403,6 +463,9 @@ pub struct SimOptions {
     /// [`validate`](Self::validate); otherwise the run stops there with
     /// [`StopReason::RowLimit`].
     pub max_rows: u64,
+    /// Air drag, rolling resistance, compaction, the ledger and the
+    /// terminal-velocity stop. Default: no losses (fn. 5's idealisation).
+    pub losses: Losses,
 }
 
 impl Default for SimOptions {
@@ -417,6 +480,7 @@ impl Default for SimOptions {
             on_hop: OnHop::Stop,
             collision: CollisionModel::Note,
             max_rows: DEFAULT_MAX_ROWS,
+            losses: Losses::default(),
         }
     }
 }
@@ -456,6 +520,7 @@ impl SimOptions {
                 return Err(bad("mu", mu, "0 < mu < infinity"));
             }
         }
+        self.losses.validate()?;
         if self.turns == Some(0) {
             return Err(bad("turns", 0.0, "turns >= 1"));
         }

@@ -603,3 +603,16 @@ fn regime_map_borders_notice_a_turn_model_with_twice_the_snow() {
     });
     changes("regime-map-borders", &wrong);
 }
+
+#[test]
+fn snowless_drag_terminal_velocity_notices_a_model_with_too_much_drag() {
+    // The snowless model run with 1 % more drag than asked for.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Snowless && opts.losses.drag_coefficient > 0.0).then(|| {
+            let mut opts = opts.clone();
+            opts.losses.drag_coefficient *= 1.01;
+            ModelKind::Snowless.build().simulate(s, &opts)
+        })
+    });
+    changes("snowless-drag-terminal-velocity", &wrong);
+}

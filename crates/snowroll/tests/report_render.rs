@@ -543,6 +543,7 @@ fn turn_shaped_trajectory(s: &Scenario, turns: u64, per_turn: usize) -> Trajecto
             turn: None,
         },
         stats: Default::default(),
+        ledger: Vec::new(),
     }
 }
 

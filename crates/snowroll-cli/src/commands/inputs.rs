@@ -3,7 +3,7 @@
 
 use anyhow::{anyhow, Result};
 use snowroll::integrate::Tolerances;
-use snowroll::{ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimOptions};
+use snowroll::{Losses, ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimOptions};
 
 use crate::args::ScenarioArgs;
 
@@ -71,6 +71,14 @@ pub fn options(
         mu: a.mu,
         collision: a.collision.unwrap_or(d.collision),
         on_hop: a.on_hop.unwrap_or(d.on_hop),
+        losses: Losses {
+            drag_coefficient: a.drag_coefficient.unwrap_or(d.losses.drag_coefficient),
+            air_density: a.air_density.unwrap_or(d.losses.air_density),
+            rolling_resistance: a.rolling_resistance.unwrap_or(d.losses.rolling_resistance),
+            compaction_energy: a.compaction_energy.unwrap_or(d.losses.compaction_energy),
+            ledger: a.ledger,
+            terminal_tol: a.terminal_tol.unwrap_or(d.losses.terminal_tol),
+        },
     }
 }
 

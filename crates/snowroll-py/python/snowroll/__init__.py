@@ -286,6 +286,12 @@ def simulate(
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    rolling_resistance: Optional[float] = None,
+    compaction_energy: Optional[float] = None,
+    ledger: bool = False,
+    terminal_tol: Optional[float] = None,
 ) -> Result:
     """Integrate one model for one scenario (the CLI's ``snowroll simulate``).
 
@@ -312,6 +318,17 @@ def simulate(
     ``"charged"``, ``"pivot"``; ``on_hop`` what happens where the normal
     force N reaches 0: ``"stop"`` (default: stop with ``hop``) or
     ``"continue"`` (go on as if contact were kept, past the model's validity).
+
+    Losses (docs/snowball-and-losses.md §2; each off by default):
+    ``drag_coefficient`` C_d (0), ``air_density`` kg/m^3 (1.2): drag
+    0.5 rho_a C_d (2 r l) v^2; ``rolling_resistance`` c_rr (0): a couple c_rr N r;
+    ``compaction_energy`` J per kg of snow picked up (0). ``ledger`` adds the
+    energy-ledger columns (``kinetic_j released_j drag_j rolling_j
+    compaction_j model_j collision_j created_j residual_j``) without losses;
+    a run with losses always has them. ``terminal_tol`` (1e-9; 0 = keep
+    going): stop with ``terminal`` where |a| falls to that fraction of the
+    initial drive (the snowless log with drag; ``r.stop["v_terminal_m_s"]``
+    is then the closed-form v_t).
 
     Sampling: every accepted step by default; ``times`` exactly these times, s
     (ascending); ``dt`` a regular grid 0, dt, 2 dt, ... up to the stop.
@@ -345,6 +362,12 @@ def simulate(
         mu=mu,
         collision=collision,
         on_hop=on_hop,
+        drag_coefficient=drag_coefficient,
+        air_density=air_density,
+        rolling_resistance=rolling_resistance,
+        compaction_energy=compaction_energy,
+        ledger=ledger,
+        terminal_tol=terminal_tol,
     )
     result = Result(raw)
     _warn(result.warnings)

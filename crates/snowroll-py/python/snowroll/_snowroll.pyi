@@ -31,6 +31,12 @@ def simulate(
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    rolling_resistance: Optional[float] = None,
+    compaction_energy: Optional[float] = None,
+    ledger: bool = False,
+    terminal_tol: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Integrate one model (e.g. eq. (4) ``torque-cm``, eq. (14) ``energy``,
     eq. (32) ``quasi-circular``, eqs. (73), (76) ``turns``) for one scenario,
@@ -41,7 +47,9 @@ def simulate(
     columns ``t_s x_m v_m_s a_m_s2 r_m mass_kg normal_n friction_n
     friction_ratio`` (float64; ``friction_ratio`` a ``numpy.ma.MaskedArray``
     masked where N <= 0, where it is undefined) and for the turn models ``turn`` (uint64),
-    ``theta_rad``, ``omega_rad_s``.
+    ``theta_rad``, ``omega_rad_s``; with losses or ``ledger=True`` the ledger
+    columns ``kinetic_j released_j drag_j rolling_j compaction_j model_j
+    collision_j created_j residual_j`` (J).
 
     Raises ValueError (bad parameters) or RuntimeError (failed integration).
     """

@@ -70,6 +70,9 @@ struct Integrator<'s, S, const N: usize> {
     /// (the first stage of the next step), `k[13..16]` the dense-output stages.
     k: [[f64; N]; STAGES_DENSE],
     stats: Stats,
+    /// The leading components in the error norm
+    /// ([`OdeSystem::controlled_components`]); the rest are quadratures.
+    controlled: usize,
 }
 
 impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
@@ -110,6 +113,8 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         let (mut err5, mut err3) = (0.0, 0.0);
         for n in 0..N {
             y_new[n] += h * slope[n];
+        }
+        for n in 0..self.controlled {
             let scale = self.tol.atol + self.tol.rtol * y[n].abs().max(y_new[n].abs());
             let (e5, e3) = (est5[n] / scale, est3[n] / scale);
             err5 += e5 * e5;
@@ -119,7 +124,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         if denom <= 0.0 {
             denom = 1.0;
         }
-        let err = h.abs() * err5 * (1.0 / (N as f64 * denom)).sqrt();
+        let err = h.abs() * err5 * (1.0 / (self.controlled as f64 * denom)).sqrt();
         (y_new, err)
     }
 
@@ -178,7 +183,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     fn initial_step(&mut self, t: f64, y: &[f64; N]) -> f64 {
         let f0 = self.k[0];
         let (mut dnf, mut dny) = (0.0, 0.0);
-        for n in 0..N {
+        for n in 0..self.controlled {
             let sk = self.tol.atol + self.tol.rtol * y[n].abs();
             dnf += (f0[n] / sk).powi(2);
             dny += (y[n] / sk).powi(2);
@@ -197,7 +202,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         self.system.rhs(t + h, &y1, &mut f1);
         self.stats.evaluations += 1;
         let mut der2 = 0.0;
-        for n in 0..N {
+        for n in 0..self.controlled {
             let sk = self.tol.atol + self.tol.rtol * y[n].abs();
             der2 += ((f1[n] - f0[n]) / sk).powi(2);
         }
@@ -291,11 +296,13 @@ where
             max: MAX_EVENTS,
         });
     }
+    let controlled = system.controlled_components().clamp(1, N);
     let mut it = Integrator {
         system,
         tol: *tol,
         k: [[0.0; N]; STAGES_DENSE],
         stats: Stats::default(),
+        controlled,
     };
     observer.start(&*it.system, t0, &y0);
     let (mut t, mut y) = (t0, y0);

@@ -111,6 +111,16 @@ pub trait OdeSystem<const N: usize> {
     /// Writes `f(t, y)` into `dy`.
     fn rhs(&self, t: f64, y: &[f64; N], dy: &mut [f64; N]);
 
+    /// How many leading components of the state the step-size control
+    /// sees (default: all N). The rest are quadratures, `y_i = ∫ f_i dt` of
+    /// functions of the controlled state, carried along on the steps the
+    /// controlled components choose (as CVODES's quadratures without error
+    /// control): adding them does not change those steps, and a smooth
+    /// integrand is integrated to the same order and tolerance.
+    fn controlled_components(&self) -> usize {
+        N
+    }
+
     /// Number of event functions.
     fn event_count(&self) -> usize {
         0

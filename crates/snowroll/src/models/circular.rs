@@ -23,13 +23,15 @@
 use std::f64::consts::PI;
 
 use super::contact::{circular_forces, ContactForces};
+use super::ledger;
 use super::ode::{run_ode, stopped_at_start, OdeModel};
 use super::{Model, ModelKind};
 use crate::error::SimError;
 use crate::integrate::{Direction, OdeSystem};
+use crate::losses::Losses;
 use crate::physics::{growth_at, Growth};
 use crate::scenario::{Scenario, Shape};
-use crate::trajectory::{OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason};
+use crate::trajectory::{LedgerRow, OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason};
 use crate::units::Radians;
 
 /// How an equation of motion of §2 was derived: its coefficients.
@@ -319,6 +321,46 @@ struct AreaLaw {
     inertia: f64,
     /// c₃ b³/π, m³.
     drag_b3: f64,
+    /// The losses, or `None` for a lossless run (whose arithmetic is then
+    /// exactly that of the lossless equations).
+    losses: Option<LossTerms>,
+}
+
+/// The losses of `docs/snowball-and-losses.md` §2.1 per unit mass, bound to
+/// one scenario: drag `F_d/M = ρ_a C_d v²/(π ρ r)` (A = 2 r l, M = π ρ l r²),
+/// compaction `F_c/M = e_c λ = e_c b/(π r²)`, rolling resistance `c_rr N/M`
+/// with `N/M = C + r′(a + q/2)`, r′ = b/(2πr), q = b v²/(π r²)
+/// ([`circular_forces`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct LossTerms {
+    /// ρ_a C_d/(π ρ) · √π, so that `F_d/M = air v² √(1/s)` with s = π r², dimensionless.
+    air: f64,
+    /// c_rr.
+    rolling: f64,
+    /// e_c b (0 without accretion), J m/kg: `F_c/M = compaction/s`.
+    compaction: f64,
+    /// C = g cos α, m/s².
+    g_normal: f64,
+}
+
+impl LossTerms {
+    fn new(l: &Losses, s: &Scenario, b: f64) -> Option<Self> {
+        l.any().then(|| Self {
+            air: l.air_density * l.drag_coefficient / (PI * s.density()) * PI.sqrt(),
+            rolling: l.rolling_resistance,
+            compaction: l.compaction_energy * b,
+            g_normal: s.g_normal(),
+        })
+    }
+}
+
+/// The loss terms per unit mass at one state, m/s².
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct LossesPerMass {
+    /// F_d/M.
+    drag: f64,
+    /// F_c/M.
+    compaction: f64,
 }
 
 /// The acceleration of one model on one scenario: the common form on the
@@ -337,14 +379,15 @@ enum Acceleration {
 
 impl Acceleration {
     fn new(c: &Coefficients, s: &Scenario) -> Self {
-        Self::Area(AreaLaw::new(c, s))
+        Self::Area(AreaLaw::new(c, s, &Losses::default()))
     }
 
-    /// The acceleration of `derivation` run with `c` on `s`: the common form
-    /// where r(x) follows the area law, else the balance.
-    fn of(derivation: Derivation, c: &Coefficients, s: &Scenario) -> Self {
+    /// The acceleration of `derivation` run with `c` on `s` with the losses
+    /// `l`: the common form where r(x) follows the area law, else the balance
+    /// (the ball with a fixed swath, which takes no losses).
+    fn of(derivation: Derivation, c: &Coefficients, s: &Scenario, l: &Losses) -> Self {
         if s.follows_area_law() {
-            Self::new(c, s)
+            Self::Area(AreaLaw::new(c, s, l))
         } else {
             Self::General {
                 balance: derivation.balance(),
@@ -365,10 +408,18 @@ impl Acceleration {
             } => balance.acceleration(scenario, &growth_at(scenario, x, *accretes), v),
         }
     }
+
+    /// F_d/M and F_c/M at `(x, v)`; zero without losses.
+    fn losses_at(&self, x: f64, v: f64) -> LossesPerMass {
+        match self {
+            Self::Area(law) => law.losses_at(x, v),
+            Self::General { .. } => LossesPerMass::default(),
+        }
+    }
 }
 
 impl AreaLaw {
-    fn new(c: &Coefficients, s: &Scenario) -> Self {
+    fn new(c: &Coefficients, s: &Scenario, l: &Losses) -> Self {
         let b = if c.accretes { s.snow_depth() } else { 0.0 };
         let r0 = s.initial_radius();
         let gc = s.g_normal();
@@ -382,10 +433,16 @@ impl AreaLaw {
             lift_b2: c.lift_b2 * gc * b * b / 3.0,
             inertia: c.inertia_b2 * b * b / (6.0 * PI),
             drag_b3: c.drag_b3 * b * b * b / PI,
+            losses: LossTerms::new(l, s, b),
         }
     }
 
     /// Acceleration at `(x, v)`, m/s².
+    ///
+    /// With losses, §2.1: the common form times 3/2 reads `(3/2)(1 + κ…) a =
+    /// G − …`, and G becomes `G − F_d/M − F_c/M − c_rr N/M` with
+    /// `N/M = C + r′(a + q/2)`; solved for a,
+    /// `a = [num − (2/3)(F_d/M + F_c/M + c_rr (C + r′q/2))] / (1 + κ… + (2/3) c_rr r′)`.
     fn at(&self, x: f64, v: f64) -> f64 {
         let inv_s = 1.0 / (self.s0 + self.b * x);
         let mut a = self.push - self.drag * v * v * inv_s;
@@ -395,10 +452,35 @@ impl AreaLaw {
         if self.drag_b3 != 0.0 {
             a -= self.drag_b3 * v * v * inv_s * inv_s;
         }
+        if let Some(l) = &self.losses {
+            let per_mass = self.losses_per_mass(l, inv_s, v);
+            // r′ = b/(2π r) = b √(π/s)/(2π); q = b v²/s.
+            let r_prime = self.b * (inv_s / PI).sqrt() / 2.0;
+            let q = self.b * v * v * inv_s;
+            let normal_free = l.g_normal + r_prime * q / 2.0;
+            a -= 2.0 / 3.0 * (per_mass.drag + per_mass.compaction + l.rolling * normal_free);
+            return a / (1.0 + self.inertia * inv_s + 2.0 / 3.0 * l.rolling * r_prime);
+        }
         if self.inertia != 0.0 {
             a /= 1.0 + self.inertia * inv_s;
         }
         a
+    }
+
+    /// F_d/M and F_c/M at `1/s` and `v`.
+    fn losses_per_mass(&self, l: &LossTerms, inv_s: f64, v: f64) -> LossesPerMass {
+        LossesPerMass {
+            drag: l.air * v * v.abs() * inv_s.sqrt(),
+            compaction: l.compaction * inv_s,
+        }
+    }
+
+    /// The loss terms at `(x, v)`; zero without losses.
+    fn losses_at(&self, x: f64, v: f64) -> LossesPerMass {
+        let inv_s = 1.0 / (self.s0 + self.b * x);
+        self.losses
+            .map(|l| self.losses_per_mass(&l, inv_s, v))
+            .unwrap_or_default()
     }
 }
 
@@ -467,50 +549,115 @@ const EVENT_STALL: usize = 0;
 const EVENT_DISTANCE: usize = 1;
 const EVENT_HOP: usize = 2;
 const EVENT_SLIP: usize = 3;
+const EVENT_TERMINAL: usize = 4;
 
 /// The ODE `x' = v, v' = a(x, v)` of one scenario, with the events stall
-/// (v = 0), end distance, hop (N = 0) and slip (|F| = μN),
-/// `docs/contact-forces.md` §2, §5.
-struct CircularSystem {
+/// (v = 0), end distance, hop (N = 0), slip (|F| = μN), `docs/contact-forces.md`
+/// §2, §5, and terminal velocity (`docs/snowball-and-losses.md` §2.2).
+///
+/// State `[x, v]` (N = 2), or with the energy ledger (N = 6)
+/// `[x, v, D_drag, D_rr, D_comp, W_model]` (J): the dissipated works and the
+/// model's own energy defect are integrated as extra states, quadratures on
+/// the steps that x and v choose ([`OdeSystem::controlled_components`]):
+/// the ledger then closes to the integrator tolerance at every sample,
+/// dense output included, and recording it does not change the trajectory.
+struct CircularSystem<const N: usize> {
     coeffs: Coefficients,
     scenario: Scenario,
     /// `coeffs` bound to `scenario`, for the right-hand side.
     accel: Acceleration,
+    losses: Losses,
     x_end: Option<f64>,
     mu: Option<f64>,
     stop_on_hop: bool,
+    /// `tol × (G − c_rr C)/(1 + k)`, m/s²: the terminal stop's threshold on
+    /// |a|, armed only where a terminal velocity exists (§2.2).
+    terminal_accel: Option<f64>,
 }
 
-impl CircularSystem {
-    fn forces(&self, y: &[f64; 2]) -> ContactForces {
-        let (x, v) = (y[0], y[1]);
-        circular_forces(&self.coeffs, &self.scenario, x, v, self.accel.at(x, v))
+impl<const N: usize> CircularSystem<N> {
+    fn new(
+        derivation: Derivation,
+        coeffs: Coefficients,
+        scenario: &Scenario,
+        opts: &SimOptions,
+    ) -> Self {
+        let l = opts.losses;
+        let drive = scenario.g_along() - l.rolling_resistance * scenario.g_normal();
+        let terminal_accel =
+            (!coeffs.accretes && l.drag_coefficient > 0.0 && l.terminal_tol > 0.0 && drive > 0.0)
+                .then(|| l.terminal_tol * drive / 1.5);
+        Self {
+            coeffs,
+            scenario: *scenario,
+            accel: Acceleration::of(derivation, &coeffs, scenario, &l),
+            losses: l,
+            x_end: opts.x_end,
+            mu: opts.mu,
+            stop_on_hop: opts.on_hop == OnHop::Stop,
+            terminal_accel,
+        }
     }
 
-    /// Hop or slip already at the state `y` (the events see crossings only).
-    fn stops_at(&self, y: &[f64; 2]) -> Option<StopReason> {
+    fn forces(&self, y: &[f64; N]) -> ContactForces {
+        let (x, v) = (y[0], y[1]);
+        let mut f = circular_forces(&self.coeffs, &self.scenario, x, v, self.accel.at(x, v));
+        // Drag is a body force: F = M G − F_d − dp_x/dt (§2.1).
+        f.friction_n -= self.mass(x) * self.accel.losses_at(x, v).drag;
+        f
+    }
+
+    fn mass(&self, x: f64) -> f64 {
+        if self.coeffs.accretes {
+            crate::physics::mass_at(&self.scenario, x)
+        } else {
+            self.scenario.initial_mass()
+        }
+    }
+
+    /// Hop, slip or terminal velocity already at the state `y` (the events
+    /// see crossings only).
+    fn stops_at(&self, y: &[f64; N]) -> Option<StopReason> {
         let f = self.forces(y);
         if self.stop_on_hop && f.normal_n <= 0.0 {
             Some(StopReason::Hop)
         } else if self.mu.is_some_and(|mu| f.slip_margin(mu) >= 0.0) {
             Some(StopReason::Slip)
+        } else if self
+            .terminal_accel
+            .is_some_and(|tol| self.accel.at(y[0], y[1]).abs() <= tol)
+        {
+            Some(StopReason::Terminal)
         } else {
             None
         }
     }
 }
 
-impl OdeSystem<2> for CircularSystem {
-    fn rhs(&self, _t: f64, y: &[f64; 2], dy: &mut [f64; 2]) {
-        dy[0] = y[1];
-        dy[1] = self.accel.at(y[0], y[1]);
+impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
+    fn rhs(&self, _t: f64, y: &[f64; N], dy: &mut [f64; N]) {
+        let (x, v) = (y[0], y[1]);
+        let a = self.accel.at(x, v);
+        dy[0] = v;
+        dy[1] = a;
+        if let Some(rates) = dy.get_mut(2..6) {
+            let r = ledger::rates(&self.scenario, &self.coeffs, &self.losses, [x, v, a]);
+            rates.copy_from_slice(&r);
+        }
+    }
+
+    /// x and v; the ledger's works are quadratures (their rates may be
+    /// rounding noise about 0, e.g. W_model of `energy`, which the step
+    /// control must not chase).
+    fn controlled_components(&self) -> usize {
+        2
     }
 
     fn event_count(&self) -> usize {
-        4
+        5
     }
 
-    fn event(&self, index: usize, _t: f64, y: &[f64; 2]) -> f64 {
+    fn event(&self, index: usize, _t: f64, y: &[f64; N]) -> f64 {
         match index {
             EVENT_STALL => y[1],
             EVENT_DISTANCE => match self.x_end {
@@ -519,46 +666,54 @@ impl OdeSystem<2> for CircularSystem {
             },
             EVENT_HOP if self.stop_on_hop => self.forces(y).normal_n,
             EVENT_HOP => 1.0,
-            _ => match self.mu {
+            EVENT_SLIP => match self.mu {
                 Some(mu) => self.forces(y).slip_margin(mu),
                 None => -1.0,
+            },
+            _ => match self.terminal_accel {
+                Some(tol) => self.accel.at(y[0], y[1]).abs() - tol,
+                None => 1.0,
             },
         }
     }
 
     fn event_direction(&self, index: usize) -> Direction {
         match index {
-            EVENT_STALL | EVENT_HOP => Direction::Falling,
+            EVENT_STALL | EVENT_HOP | EVENT_TERMINAL => Direction::Falling,
             _ => Direction::Rising,
         }
     }
 }
 
-impl OdeModel<2> for CircularSystem {
-    fn sample(&self, t: f64, y: &[f64; 2]) -> Sample {
+impl<const N: usize> OdeModel<N> for CircularSystem<N> {
+    fn sample(&self, t: f64, y: &[f64; N]) -> Sample {
         let s = &self.scenario;
         let (x, v) = (y[0], y[1]);
-        let (r, mass_kg) = if self.coeffs.accretes {
-            (
-                crate::physics::radius_at(s, x),
-                crate::physics::mass_at(s, x),
-            )
+        let r = if self.coeffs.accretes {
+            crate::physics::radius_at(s, x)
         } else {
-            (s.initial_radius(), s.initial_mass())
+            s.initial_radius()
         };
         let a = self.accel.at(x, v);
-        let forces = circular_forces(&self.coeffs, s, x, v, a);
+        let forces = self.forces(y);
         Sample {
             t_s: t,
             x_m: x,
             v_m_s: v,
             a_m_s2: a,
             r_m: r,
-            mass_kg,
+            mass_kg: self.mass(x),
             normal_n: forces.normal_n,
             friction_n: forces.friction_n,
             friction_ratio: forces.friction_ratio(),
         }
+    }
+
+    fn ledger(&self, _t: f64, y: &[f64; N]) -> Option<LedgerRow> {
+        let works = y.get(2..6)?;
+        let mut w = [0.0; 4];
+        w.copy_from_slice(works);
+        Some(ledger::row(&self.scenario, &self.coeffs, y[0], y[1], w))
     }
 
     fn stop_reason(&self, event: usize) -> StopReason {
@@ -566,8 +721,37 @@ impl OdeModel<2> for CircularSystem {
             EVENT_DISTANCE => StopReason::Distance,
             EVENT_HOP => StopReason::Hop,
             EVENT_SLIP => StopReason::Slip,
+            EVENT_TERMINAL => StopReason::Terminal,
             _ => StopReason::Stalled,
         }
+    }
+}
+
+impl CircularModel {
+    /// Runs the system with `N` states (2, or 6 with the ledger).
+    fn run<const N: usize>(
+        &self,
+        scenario: &Scenario,
+        opts: &SimOptions,
+        sink: &mut dyn SampleSink,
+    ) -> Result<RunEnd, SimError> {
+        let mut system = CircularSystem::<N>::new(
+            self.derivation,
+            self.coefficients_on(scenario),
+            scenario,
+            opts,
+        );
+        let mut y0 = [0.0; N];
+        y0[1] = scenario.initial_speed();
+        // fn. 7: from rest the log moves only if a(0) > 0 (with losses: if
+        // the drive exceeds the static couples, §2.2).
+        if y0[1] == 0.0 && system.accel.at(0.0, 0.0) <= 0.0 {
+            return stopped_at_start(&system, y0, StopReason::DoesNotStart, sink);
+        }
+        if let Some(reason) = system.stops_at(&y0) {
+            return stopped_at_start(&system, y0, reason, sink);
+        }
+        run_ode(&mut system, y0, opts, sink)
     }
 }
 
@@ -584,23 +768,18 @@ impl Model for CircularModel {
     ) -> Result<RunEnd, SimError> {
         opts.validate()?;
         super::check_tolerances(self.kind(), scenario, opts)?;
-        let coeffs = self.coefficients_on(scenario);
-        let mut system = CircularSystem {
-            coeffs,
-            scenario: *scenario,
-            accel: Acceleration::of(self.derivation, &coeffs, scenario),
-            x_end: opts.x_end,
-            mu: opts.mu,
-            stop_on_hop: opts.on_hop == OnHop::Stop,
-        };
-        let y0 = [0.0, scenario.initial_speed()];
-        // fn. 7: from rest the log moves only if a(0) > 0.
-        if y0[1] == 0.0 && system.accel.at(0.0, 0.0) <= 0.0 {
-            return stopped_at_start(&system, y0, StopReason::DoesNotStart, sink);
+        if opts.losses.records_ledger() && scenario.shape() != Shape::Cylinder {
+            return Err(crate::error::ParamError::Unsupported {
+                model: self.kind().id(),
+                what: "losses or --ledger with --shape sphere",
+                reason: "the ball's losses (frontal area pi r^2, docs/snowball-and-losses.md §2.1) are not built yet; use the log",
+            }
+            .into());
         }
-        if let Some(reason) = system.stops_at(&y0) {
-            return stopped_at_start(&system, y0, reason, sink);
+        if opts.losses.records_ledger() {
+            self.run::<6>(scenario, opts, sink)
+        } else {
+            self.run::<2>(scenario, opts, sink)
         }
-        run_ode(&mut system, y0, opts, sink)
     }
 }

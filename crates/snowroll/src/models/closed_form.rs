@@ -21,7 +21,7 @@
 use std::f64::consts::PI;
 
 use super::contact::{circular_forces, ContactForces};
-use super::{Derivation, Model, ModelKind};
+use super::{CircularModel, Derivation, Model, ModelKind};
 use crate::error::SimError;
 use crate::quadrature;
 use crate::scenario::Scenario;
@@ -277,6 +277,9 @@ impl Model for LoneyModel {
         ModelKind::Loney
     }
 
+    /// With losses (or the energy ledger) Loney's closed form no longer
+    /// holds: the run integrates its equation, eq. (4), with the losses
+    /// (`docs/snowball-and-losses.md` §2.1) and still reports itself as `loney`.
     fn simulate_into(
         &self,
         scenario: &Scenario,
@@ -285,6 +288,10 @@ impl Model for LoneyModel {
     ) -> Result<RunEnd, SimError> {
         opts.validate()?;
         ModelKind::Loney.check_shape(scenario)?;
+        if opts.losses.records_ledger() {
+            return CircularModel::new(Derivation::TorqueAboutCentre)
+                .simulate_into(scenario, opts, sink);
+        }
         // Loney's solution is that of eq. (4): its contact forces are those of
         // the circular model of eq. (4) on the closed-form trajectory. On the
         // ball, that of its `torque-cm` (c_v = 23/14).

@@ -8,6 +8,7 @@ mod circular;
 mod closed_form;
 mod contact;
 pub mod exact_geometry;
+mod ledger;
 mod ode;
 mod tolerance;
 mod turn_by_turn;

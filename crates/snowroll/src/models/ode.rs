@@ -6,7 +6,7 @@
 use crate::error::{SimError, SinkError};
 use crate::integrate::{integrate, DenseStep, EventRecord, Observer, OdeSystem, Termination};
 use crate::trajectory::{
-    RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason, TurnState,
+    LedgerRow, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason, TurnState,
 };
 
 /// An ODE system that knows how to present its state.
@@ -16,6 +16,11 @@ pub(crate) trait OdeModel<const N: usize>: OdeSystem<N> {
 
     /// The turn state, for turn models.
     fn turn_state(&self, _t: f64, _y: &[f64; N]) -> Option<TurnState> {
+        None
+    }
+
+    /// The energy ledger at state `y`, for a run that records one.
+    fn ledger(&self, _t: f64, _y: &[f64; N]) -> Option<LedgerRow> {
         None
     }
 
@@ -75,7 +80,13 @@ impl<'a> Recorder<'a> {
             return;
         }
         let turn = model.turn_state(t, y);
-        match self.sink.sample(&model.sample(t, y), turn.as_ref()) {
+        // The ledger row goes first: the sink writes it with the sample.
+        let sent = match model.ledger(t, y) {
+            Some(row) => self.sink.ledger(&row),
+            None => Ok(()),
+        }
+        .and_then(|()| self.sink.sample(&model.sample(t, y), turn.as_ref()));
+        match sent {
             Ok(()) => {
                 self.rows += 1;
                 self.last_t = Some(t);
@@ -149,6 +160,9 @@ pub(crate) fn stopped_at_start<const N: usize, M: OdeModel<N>>(
 ) -> Result<RunEnd, SimError> {
     let first = system.sample(0.0, &y0);
     let turn = system.turn_state(0.0, &y0);
+    if let Some(row) = system.ledger(0.0, &y0) {
+        sink.ledger(&row).map_err(SimError::Sink)?;
+    }
     sink.sample(&first, turn.as_ref()).map_err(SimError::Sink)?;
     Ok(RunEnd {
         stop: Stop {

@@ -14,6 +14,7 @@ use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Stop, StopReason};
 
 mod finite;
+mod ledger;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
@@ -93,6 +94,10 @@ pub struct RunParams {
     pub collision: crate::models::CollisionModel,
     /// What the run does where the normal force reaches zero.
     pub on_hop: crate::trajectory::OnHop,
+    /// The losses, the ledger and the terminal stop, when any differs from
+    /// its default (outputs of lossless runs are unchanged).
+    #[serde(flatten)]
+    pub losses: Option<crate::losses::Losses>,
     /// Validity warnings of the run ([`crate::validity_warnings`]); empty when in range.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
@@ -132,6 +137,7 @@ impl RunParams {
             mu: opts.mu,
             collision: opts.collision,
             on_hop: opts.on_hop,
+            losses: (opts.losses != crate::losses::Losses::default()).then_some(opts.losses),
             warnings: Vec::new(),
             notes: Vec::new(),
         }
@@ -173,6 +179,16 @@ impl RunParams {
         if let Some(mu) = self.mu {
             lines.push(("mu".into(), n(mu)));
         }
+        if let Some(l) = &self.losses {
+            lines.extend([
+                ("drag_coefficient".into(), n(l.drag_coefficient)),
+                ("air_density".into(), n(l.air_density)),
+                ("rolling_resistance".into(), n(l.rolling_resistance)),
+                ("compaction_energy".into(), n(l.compaction_energy)),
+                ("ledger".into(), l.ledger.to_string()),
+                ("terminal_tol".into(), format!("{:e}", l.terminal_tol)),
+            ]);
+        }
         if let Some(dt) = self.dt {
             lines.push(("dt".into(), n(dt)));
         }
@@ -213,6 +229,9 @@ struct JsonStop {
     theta_rad: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     omega_rad_s: Option<f64>,
+    /// The closed-form terminal velocity, m/s, where one exists (§2.2).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    v_terminal_m_s: Option<f64>,
 }
 
 impl From<Stop> for JsonStop {
@@ -226,6 +245,7 @@ impl From<Stop> for JsonStop {
             turn: s.turn.map(|k| k.turn),
             theta_rad: s.turn.map(|k| k.theta_rad),
             omega_rad_s: s.turn.map(|k| k.omega_rad_s),
+            v_terminal_m_s: None,
         }
     }
 }

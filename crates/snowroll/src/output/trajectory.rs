@@ -8,19 +8,23 @@
 //!   `samples` (one object per line), then `stop`.
 //!
 //! A turn model's rows carry its [`TurnState`] columns (`turn`,
-//! `theta_rad`, `omega_rad_s`) after those of [`Sample`].
+//! `theta_rad`, `omega_rad_s`) after those of [`Sample`]; a run that records
+//! the energy ledger carries the [`LedgerRow`] columns instead
+//! (`docs/snowball-and-losses.md` §3).
 
 use std::io::Write;
 
 use serde::Serialize;
 
+use super::ledger::{closed_form_terminal_velocity, LedgerSample, LEDGER_COLUMNS};
 use super::{
-    check_finite, write_csv_header, write_csv_stop, write_json_array_end, write_json_element,
-    write_json_end, write_json_field, write_json_opening, Format, JsonStop, RunParams,
+    check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
+    write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
+    RunParams,
 };
 use crate::error::{OutputError, SinkError};
 use crate::models::ModelKind;
-use crate::trajectory::{RunEnd, Sample, SampleSink, Stop, Trajectory, TurnState};
+use crate::trajectory::{LedgerRow, RunEnd, Sample, SampleSink, Stop, Trajectory, TurnState};
 
 /// The columns of [`Sample`], in its field order.
 const SAMPLE_COLUMNS: [&str; 9] = [
@@ -100,6 +104,12 @@ pub struct TrajectoryWriter<W: Write> {
     body: Body<W>,
     /// Whether the rows carry the turn columns.
     turns: bool,
+    /// Whether the rows carry the ledger columns.
+    ledger: bool,
+    /// The ledger row of the sample that comes next ([`SampleSink::ledger`]).
+    pending_ledger: Option<LedgerRow>,
+    /// The closed-form terminal velocity, m/s, where one exists (§2.2).
+    v_terminal: Option<f64>,
     rows: u64,
     last_turn: Option<TurnState>,
 }
@@ -117,12 +127,24 @@ impl<W: Write> TrajectoryWriter<W> {
         params: &RunParams,
     ) -> Result<Self, OutputError> {
         let turns = !model.is_circular();
+        let ledger = !turns && params.losses.is_some_and(|l| l.records_ledger());
+        let v_terminal = closed_form_terminal_velocity(model, params);
         let body = match format {
             Format::Csv => {
                 write_csv_header(&mut w, model, params)?;
+                if let Some(vt) = v_terminal {
+                    writeln!(
+                        w,
+                        "# terminal velocity: closed form v_t = {} m/s (docs/snowball-and-losses.md §2.2); \
+                         measured: v_m_s at the stop `terminal`",
+                        format_number(vt)
+                    )?;
+                }
                 let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
                 if turns {
                     csv.write_record(SAMPLE_COLUMNS.iter().chain(&TURN_COLUMNS))?;
+                } else if ledger {
+                    csv.write_record(SAMPLE_COLUMNS.iter().chain(&LEDGER_COLUMNS))?;
                 } else {
                     csv.write_record(SAMPLE_COLUMNS)?;
                 }
@@ -136,6 +158,9 @@ impl<W: Write> TrajectoryWriter<W> {
         Ok(Self {
             body,
             turns,
+            ledger,
+            pending_ledger: None,
+            v_terminal,
             rows: 0,
             last_turn: None,
         })
@@ -155,6 +180,25 @@ impl<W: Write> TrajectoryWriter<W> {
     /// of it is written ([`OutputError::NonFinite`]).
     fn row(&mut self, s: &Sample, turn: Option<&TurnState>) -> Result<(), OutputError> {
         let row = self.rows + 1;
+        if self.ledger {
+            // A ledger run sends a ledger row before each sample; one
+            // without is a model that keeps no ledger: zeros would lie.
+            let l = self
+                .pending_ledger
+                .take()
+                .ok_or(OutputError::MissingLedger { row })?;
+            let record = LedgerSample::new(s, &l);
+            match &mut self.body {
+                Body::Csv(csv) => {
+                    check_finite(&record, Some(row))?;
+                    csv.serialize(record)?;
+                }
+                Body::Json(w) => write_json_element(w, row, &record)?,
+            }
+            self.rows += 1;
+            self.last_turn = turn.copied();
+            return Ok(());
+        }
         match (&mut self.body, turn.filter(|_| self.turns)) {
             (Body::Csv(csv), Some(k)) => {
                 let record = TurnSampleRow::new(s, k);
@@ -191,7 +235,11 @@ impl<W: Write> TrajectoryWriter<W> {
             }
             Body::Json(mut w) => {
                 write_json_array_end(&mut w, self.rows == 0)?;
-                write_json_field(&mut w, "stop", &JsonStop::from(*stop))?;
+                let stop = JsonStop {
+                    v_terminal_m_s: self.v_terminal,
+                    ..JsonStop::from(*stop)
+                };
+                write_json_field(&mut w, "stop", &stop)?;
                 if !notes.is_empty() {
                     write_json_field(&mut w, "notes", &notes)?;
                 }
@@ -208,6 +256,11 @@ impl<W: Write> SampleSink for TrajectoryWriter<W> {
     fn sample(&mut self, sample: &Sample, turn: Option<&TurnState>) -> Result<(), SinkError> {
         Ok(self.row(sample, turn)?)
     }
+
+    fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        self.pending_ledger = Some(*row);
+        Ok(())
+    }
 }
 
 /// Writes a whole `traj` in `format`, recording the version, the model and
@@ -223,8 +276,12 @@ pub fn write_trajectory(
 ) -> Result<(), OutputError> {
     let mut writer = TrajectoryWriter::new(w, format, traj.model, params)?;
     let has_turns = traj.turn_states.len() == traj.samples.len();
+    let has_ledger = traj.ledger.len() == traj.samples.len();
     for (i, s) in traj.samples.iter().enumerate() {
         let turn = traj.turn_states.get(i).filter(|_| has_turns);
+        if let Some(l) = traj.ledger.get(i).filter(|_| has_ledger) {
+            writer.pending_ledger = Some(*l);
+        }
         writer.row(s, turn)?;
     }
     writer.finish_stop(&traj.stop, &params.notes)?;
@@ -260,6 +317,7 @@ mod tests {
                 turn: None,
             },
             stats: Default::default(),
+            ledger: Vec::new(),
         }
     }
 

@@ -58,9 +58,15 @@ impl Outcome {
         }
         match row.stop {
             None => Outcome::Failed,
-            Some(StopReason::EndTime | StopReason::Distance | StopReason::Turns) => {
-                Outcome::RollsOn
-            }
+            // At terminal velocity the body still rolls on.
+            Some(
+                StopReason::EndTime
+                | StopReason::Distance
+                | StopReason::Turns
+                | StopReason::Terminal,
+            ) => Outcome::RollsOn,
+            // Cut short by a limit of the program: no verdict on the physics.
+            Some(StopReason::StepLimit | StopReason::RowLimit) => Outcome::Failed,
             Some(StopReason::DoesNotStart) => Outcome::NeverStarts,
             Some(StopReason::Stalled) => Outcome::Stalls {
                 turn: row.turns.unwrap_or(0),

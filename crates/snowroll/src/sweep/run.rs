@@ -65,9 +65,11 @@ fn fast_row(point: &Point) -> Option<SweepRow> {
         kind => kind.derivation()?,
     };
     let o = &point.options;
-    // The closed form is the log's (2G/3); the ball takes the ODE path.
+    // The closed form is the log's (2G/3) and knows no losses
+    // (`docs/snowball-and-losses.md` §2); the ball and lossy runs take the ODE path.
     if o.tolerances.rtol < FAST_MIN_RTOL
         || point.scenario.shape() != crate::scenario::Shape::Cylinder
+        || o.losses.records_ledger()
     {
         return None;
     }

@@ -52,7 +52,7 @@ use super::contact::ContactForces;
 use super::exact_geometry::exact_turn_coefficients;
 use super::ode::{run_ode, stopped_at_start, OdeModel};
 use super::{Model, ModelKind};
-use crate::error::SimError;
+use crate::error::{ParamError, SimError};
 use crate::integrate::{Direction, EventAction, OdeSystem};
 use crate::scenario::Scenario;
 use crate::trajectory::{OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason, TurnState};
@@ -334,6 +334,30 @@ pub fn check_turn_scale(s: &Scenario, opts: &SimOptions) -> Result<(), crate::Pa
         false,
         hint,
     )
+}
+
+/// The turn models do not yet take the losses of fn. 5 or record the
+/// energy ledger (`docs/snowball-and-losses.md` §2.1 derives how they would,
+/// §3.2 their ledger): they refuse rather than run without them.
+pub(crate) fn check_turn_losses(kind: ModelKind, opts: &SimOptions) -> Result<(), ParamError> {
+    let l = &opts.losses;
+    let what = if l.drag_coefficient > 0.0 {
+        "--drag-coefficient"
+    } else if l.rolling_resistance > 0.0 {
+        "--rolling-resistance"
+    } else if l.compaction_energy > 0.0 {
+        "--compaction-energy"
+    } else if l.ledger {
+        "--ledger"
+    } else {
+        return Ok(());
+    };
+    Err(ParamError::Unsupported {
+        model: kind.id(),
+        what,
+        reason: "the turn models carry no losses or ledger yet; use a circular model \
+                 (torque-cm, energy, quasi-circular, ...) or snowless",
+    })
 }
 
 /// Event indices of [`TurnSystem`].
@@ -766,6 +790,7 @@ impl Model for TurnModel {
         opts.validate()?;
         self.kind().check_shape(scenario)?;
         check_turn_scale(scenario, opts)?;
+        check_turn_losses(self.kind(), opts)?;
         crate::models::check_tolerances(self.kind(), scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let y0 = Self::initial_state(scenario);

@@ -20,12 +20,14 @@
 //! [`terminal`] (§2.4), [`app_a`] (App. A), [`first_turn`] (§3.1–3.3),
 //! [`stall`] (fn. 7 in §3), [`multi_turn`] (§3.4), [`contact`] (fn. 10),
 //! [`slip`] (issue 10: the smallest μ),
-//! [`snowball`] (issue 11: the ball, and The Physics Teacher 57 (2019)).
+//! [`snowball`] (issue 11: the ball, and The Physics Teacher 57 (2019)),
+//! [`losses`] (fn. 5).
 
 mod app_a;
 mod circular;
 mod contact;
 mod first_turn;
+mod losses;
 mod multi_turn;
 mod quadrature;
 mod regime;

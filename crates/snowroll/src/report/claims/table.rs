@@ -20,6 +20,7 @@ use super::first_turn::{
     EQ48_ORDER, EQ54_ORDER, ERRATUM_47_48, ERRATUM_54, ERRATUM_58_69, ERRATUM_70, FIRST_TURN_AGREE,
     FIRST_TURN_APART, MASS_EXACT, MASS_FIRST_ORDER, MASS_PRINTED_APART,
 };
+use super::losses::{drag_terminal_velocity, DRAG_TERMINAL};
 use super::multi_turn::{
     collision_loss, collision_potential_jump, eq73_truncates_exact, eq78_speed, eq88_balance,
     mean_four_ninths, never_settles, COLLISION_L, COLLISION_T, EQ88_APART, EQ88_EXACT, ERRATUM_87,
@@ -414,5 +415,16 @@ pub static CLAIMS: &[ClaimCheck] = &[
             expected: Verdict::Holds,
         },
         check: map_borders,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowless-drag-terminal-velocity",
+            paper_ref: "fn. 5",
+            statement: "The note sets dissipation aside (fn. 5). With air drag and no snow the rolling log has a terminal velocity v_t² = M g sin α/(½ ρ_a C_d A), A = 2 r0 l (docs/snowball-and-losses.md §2.2); with snow it has none (v grows like t^(1/3)).",
+            method: "snowless with C_d = 1, ρ_a = 1.2 kg/m³ from rest until |a| ≤ 1e-10 g sin α/(1 + k) (stop `terminal`); its speed there against the closed form",
+            tolerances: &[DRAG_TERMINAL],
+            expected: Verdict::Holds,
+        },
+        check: drag_terminal_velocity,
     },
 ];

@@ -1,0 +1,103 @@
+//! The energy ledger of the circular models, `docs/snowball-and-losses.md` §3.1.
+//!
+//! Zero of potential energy: the note's (eqs. (9)–(10)), body plus all the
+//! snow it will collect, at the start. At every time
+//!
+//! `K + V + D_drag + D_rr + D_comp + W_model = E0 = K(0)`,
+//!
+//! with the dissipated works `D = ∫ (F_d, c_rr N, F_c) v dt` and W_model, the
+//! energy the model's own equation destroys, `W_model = −∫ P dt`,
+//!
+//! `P = v [M I a + ½ M′ I v² + M r′ r″ v² + V′(x) + F_d + c_rr N + F_c]`,
+//! `I = 1 + k + r′²` (k = ½ for the log),
+//!
+//! i.e. P is the rate of change of `K + V + ΣD` computed from the model's
+//! own a and N. The rates are integrated as extra ODE states; K and V are
+//! evaluated at each sample from eqs. (7) and (10) ([`crate::physics`]), so
+//! the residual stays at the integration error only if P is the right rate.
+
+use std::f64::consts::PI;
+
+use super::circular::Coefficients;
+use super::contact::circular_forces;
+use crate::losses::Losses;
+use crate::physics;
+use crate::scenario::Scenario;
+use crate::trajectory::LedgerRow;
+
+/// The log's k in `I = k M r²` about its centre.
+const K_LOG: f64 = 0.5;
+
+/// The rates `[dD_drag, dD_rr, dD_comp, dW_model]/dt`, W, at `[x, v, a]`
+/// (a the model's own acceleration). The forces are computed here from
+/// their definitions, independently of the equation of motion: for
+/// `energy` and `snowless` the model's W then stays 0 only if the equation
+/// took the losses in correctly.
+pub(super) fn rates(
+    s: &Scenario,
+    coeffs: &Coefficients,
+    l: &Losses,
+    [x, v, a]: [f64; 3],
+) -> [f64; 4] {
+    let (b, r, m) = if coeffs.accretes {
+        (
+            s.snow_depth(),
+            physics::radius_at(s, x),
+            physics::mass_at(s, x),
+        )
+    } else {
+        (0.0, s.initial_radius(), s.initial_mass())
+    };
+    let (rho, len, g_along, g_normal) = (s.density(), s.length(), s.g_along(), s.g_normal());
+    // The three losses, §2.1: F_d = ½ ρ_a C_d (2 r l) v², c_rr N, F_c = e_c dM/dx.
+    let f_drag = l.drag_factor() * 2.0 * r * len * v * v.abs();
+    let normal = circular_forces(coeffs, s, x, v, a).normal_n;
+    let f_rolling = l.rolling_resistance * normal;
+    let dm_dx = rho * b * len;
+    let f_compaction = l.compaction_energy * dm_dx;
+    // Rate of K + V: dK/dt = v [M I a + ½ M′ I v² + M r′ r″ v²], dV/dt = V′ v.
+    let r1 = b / (2.0 * PI * r);
+    let r2 = -b * b / (4.0 * PI * PI * r * r * r);
+    let inertia = 1.0 + K_LOG + r1 * r1;
+    let lambda = b / (PI * r * r);
+    let v_prime = m * g_normal * (lambda * (r + b / 2.0) + r1) - m * g_along;
+    let power = v
+        * (m * inertia * a
+            + 0.5 * dm_dx * inertia * v * v
+            + m * r1 * r2 * v * v
+            + v_prime
+            + f_drag
+            + f_rolling
+            + f_compaction);
+    [f_drag * v, f_rolling * v, f_compaction * v, -power]
+}
+
+/// The ledger row at `(x, v)` with the integrated works
+/// `[D_drag, D_rr, D_comp, W_model]`.
+pub(super) fn row(s: &Scenario, coeffs: &Coefficients, x: f64, v: f64, w: [f64; 4]) -> LedgerRow {
+    let (kinetic, potential, initial) = if coeffs.accretes {
+        (
+            physics::kinetic_energy(s, x, v),
+            physics::potential_energy(s, x),
+            physics::kinetic_energy(s, 0.0, s.initial_speed()),
+        )
+    } else {
+        // App. A: K = (3/4) M v², V = −M G x.
+        let m = s.initial_mass();
+        let v0 = s.initial_speed();
+        (0.75 * m * v * v, -m * s.g_along() * x, 0.75 * m * v0 * v0)
+    };
+    let [drag, rolling, compaction, model] = w;
+    let released = -potential;
+    LedgerRow {
+        kinetic_j: kinetic,
+        released_j: released,
+        drag_j: drag,
+        rolling_j: rolling,
+        compaction_j: compaction,
+        model_j: model,
+        collision_j: 0.0,
+        created_j: 0.0,
+        residual_j: kinetic + drag + rolling + compaction + model - released - initial,
+    }
+}
