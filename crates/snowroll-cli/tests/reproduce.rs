@@ -516,7 +516,16 @@ fn losses_the_model_does_not_carry_are_refused() {
         err.contains("--rolling-resistance") && err.contains("turns"),
         "{err}"
     );
-    let err = fails(dir.path(), &["simulate", "--drag-coefficient", "-1"]);
+    let err = fails(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "torque-cm",
+            "--drag-coefficient",
+            "-1",
+        ],
+    );
     assert!(
         err.contains("drag_coefficient") && err.contains("-1"),
         "{err}"
