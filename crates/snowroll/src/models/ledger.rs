@@ -88,7 +88,8 @@ pub(super) fn row(s: &Scenario, coeffs: &Coefficients, x: f64, v: f64, w: [f64; 
         (0.75 * m * v * v, -m * s.g_along() * x, 0.75 * m * v0 * v0)
     };
     let [drag, rolling, compaction, model] = w;
-    let released = -potential;
+    // `0.0 - V`, not `-V`: at x = 0 the released energy is +0, not −0.
+    let released = 0.0 - potential;
     LedgerRow {
         kinetic_j: kinetic,
         released_j: released,

@@ -59,8 +59,7 @@ impl LedgerSample {
             friction_n: s.friction_n,
             friction_ratio: s.friction_ratio,
             kinetic_j: l.kinetic_j,
-            // `+ 0.0` turns the −0 of a run at rest into 0 (−V at x = 0).
-            released_j: l.released_j + 0.0,
+            released_j: l.released_j,
             drag_j: l.drag_j,
             rolling_j: l.rolling_j,
             compaction_j: l.compaction_j,

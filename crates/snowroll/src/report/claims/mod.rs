@@ -49,6 +49,7 @@ use crate::models::{
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
+#[cfg(feature = "plot")]
 pub(crate) use regime::regime_figure;
 pub(crate) use slip::mu_min_rows;
 pub use table::CLAIMS;

@@ -10,8 +10,10 @@ use super::{holds_if, pass, Finding, Lab};
 use crate::error::SimError;
 use crate::models::CollisionModel;
 use crate::models::ModelKind;
+#[cfg(feature = "plot")]
 use crate::plot::{ColorBy, PlotError, RegimeMap};
 use crate::report::{Criterion, Tolerance};
+#[cfg(feature = "plot")]
 use crate::report::{Figure, ReportError};
 use crate::scenario::ScenarioFile;
 use crate::sweep::{hop_slope_within, Axis, Grid, Outcome, Param, SweepRow, Values};
@@ -174,6 +176,7 @@ pub(super) fn map_borders(lab: &Lab) -> Result<Finding, SimError> {
     })
 }
 
+#[cfg(feature = "plot")]
 /// The regime map of the turn model over slope × snow depth (the runs of
 /// claim `regime-map-borders`), with the closed-form borders, for `paper`.
 ///
