@@ -56,6 +56,10 @@ struct Inputs {
     mu: Option<f64>,
     collision: Option<String>,
     on_hop: Option<String>,
+    /// Most rows; `None` = [`snowroll::DEFAULT_MAX_ROWS`].
+    max_rows: Option<u64>,
+    /// Most integrator steps; `None` = [`Tolerances::default`]'s.
+    max_steps: Option<u64>,
     /// `drag_coefficient, air_density, rolling_resistance, compaction_energy, terminal_tol`.
     losses: [Option<f64>; 5],
     ledger: bool,
@@ -124,10 +128,11 @@ impl Inputs {
             tolerances: Tolerances {
                 rtol: self.rtol.unwrap_or(d.tolerances.rtol),
                 atol: self.atol.unwrap_or(d.tolerances.atol),
+                max_steps: self.max_steps.unwrap_or(d.tolerances.max_steps),
                 ..d.tolerances
             },
             sampling,
-            max_rows: d.max_rows,
+            max_rows: self.max_rows.unwrap_or(d.max_rows),
             mu: self.mu,
             collision,
             on_hop,
@@ -337,7 +342,7 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
     model = "torque-cm", *, alpha_deg = None, snow_depth = None, r0 = None, g = None,
     density = None, length = None, v0 = None, shape = None, swath_width = None, t_end = None,
     x_end = None, times = None, dt = None, turns = None, rtol = None, atol = None, mu = None,
-    collision = None, on_hop = None,
+    collision = None, on_hop = None, max_rows = None, max_steps = None,
     drag_coefficient = None, air_density = None, rolling_resistance = None,
     compaction_energy = None, ledger = false, terminal_tol = None
 ))]
@@ -364,6 +369,8 @@ fn simulate<'py>(
     mu: Option<f64>,
     collision: Option<String>,
     on_hop: Option<String>,
+    max_rows: Option<u64>,
+    max_steps: Option<u64>,
     drag_coefficient: Option<f64>,
     air_density: Option<f64>,
     rolling_resistance: Option<f64>,
@@ -383,6 +390,8 @@ fn simulate<'py>(
         mu,
         collision,
         on_hop,
+        max_rows,
+        max_steps,
         losses: [
             drag_coefficient,
             air_density,
@@ -437,8 +446,9 @@ fn simulate<'py>(
 #[pyfunction]
 #[pyo3(signature = (
     model = "turns", *, turns = None, alpha_deg = None, snow_depth = None, r0 = None,
-    g = None, density = None, length = None, v0 = None, t_end = None, x_end = None,
-    rtol = None, atol = None, mu = None, collision = None, on_hop = None
+    g = None, density = None, length = None, v0 = None, shape = None, swath_width = None,
+    t_end = None, x_end = None, rtol = None, atol = None, mu = None, collision = None,
+    on_hop = None, max_rows = None, max_steps = None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn turns<'py>(
@@ -452,6 +462,8 @@ fn turns<'py>(
     density: Option<f64>,
     length: Option<f64>,
     v0: Option<f64>,
+    shape: Option<String>,
+    swath_width: Option<f64>,
     t_end: Option<f64>,
     x_end: Option<f64>,
     rtol: Option<f64>,
@@ -459,12 +471,14 @@ fn turns<'py>(
     mu: Option<f64>,
     collision: Option<String>,
     on_hop: Option<String>,
+    max_rows: Option<u64>,
+    max_steps: Option<u64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let inputs = Inputs {
         model: model.to_string(),
         scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
-        shape: None,
-        swath_width: None,
+        shape,
+        swath_width,
         t_end,
         x_end,
         rtol,
@@ -472,6 +486,8 @@ fn turns<'py>(
         mu,
         collision,
         on_hop,
+        max_rows,
+        max_steps,
         losses: [None; 5],
         ledger: false,
     };

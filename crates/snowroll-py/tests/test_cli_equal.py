@@ -51,6 +51,10 @@ CASES = [
     ("energy", {"drag_coefficient": 0.8, "air_density": 1.1, "rolling_resistance": 0.02, "compaction_energy": 2.5}),
     ("snowless", {"drag_coefficient": 1, "terminal_tol": 1e-6, "t_end": 200}),
     ("torque-cm", {"ledger": True, "t_end": 10}),
+    # Issue 7's limits: a row limit and a step limit cut the run short.
+    ("torque-cm", {"t_end": 30, "max_rows": 40}),
+    ("energy", {"t_end": 30, "max_steps": 25}),
+    ("turns", {"turns": 50, "max_steps": 25, "max_rows": 1000}),
 ]
 
 
@@ -85,6 +89,8 @@ def test_simulate_equals_cli(cli, model, kwargs):
     if "swath_width" in meta:
         assert r.params["swath_width"] == float(meta["swath_width"])
     assert r.params["sampling"] == meta["sampling"]
+    for key in ("max_rows", "max_steps"):
+        assert r.params[key] == int(meta[key]), key
     assert r.model == meta["model"].split(" ")[0]
 
 
@@ -103,7 +109,9 @@ def test_json_params_equal_cli(cli):
 @pytest.mark.parametrize(
     "model,kwargs",
     [("turns", {"turns": 30}), ("turns-exact", {"turns": 12, "alpha_deg": 40}), ("eq73", {"turns": 8, "collision": "charged"}),
-     ("turns", {"turns": 4, "alpha_deg": 80, "on_hop": "continue"})],
+     ("turns", {"turns": 4, "alpha_deg": 80, "on_hop": "continue"}),
+     ("turns", {"turns": 10, "max_rows": 10, "max_steps": 1000000}),
+     ("turns-exact", {"turns": 3, "shape": "cylinder"})],
 )
 def test_turns_equals_cli(cli, model, kwargs):
     t = snowroll.turns(model, **kwargs)
@@ -116,6 +124,9 @@ def test_turns_equals_cli(cli, model, kwargs):
     assert t.params["t_end"] == float(meta["t_end"]) == 1e9
     assert t.params["sampling"] == meta["sampling"]
     assert t.params["on_hop"] == meta["on_hop"] == kwargs.get("on_hop", "stop")
+    assert t.params["shape"] == meta["shape"] == "cylinder"
+    for key in ("max_rows", "max_steps"):
+        assert t.params[key] == int(meta[key]), key
     # The summary's last checkpoint is the CSV's last `# summary: K, ...` line.
     lines = [line for line in stdout.splitlines() if line.startswith("# summary: ") and line[11].isdigit()]
     last = [float(v) for v in lines[-1][len("# summary: "):].split(", ")]

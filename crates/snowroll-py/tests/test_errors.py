@@ -73,3 +73,32 @@ def test_wrong_types_raise_type_error():
         snowroll.simulate(30)  # the model is a string; parameters are keywords
     with pytest.raises(OverflowError):
         snowroll.turns(turns=-1)
+
+
+def test_a_known_row_count_above_max_rows_is_refused_before_the_run(cli):
+    # The grid 0, 0.01, ..., 10 has t_end/dt + 1 = 1001 rows; 20 turns make 20 rows.
+    # The CLI refuses the same run, in its flags' words (`--max-rows 100`).
+    with pytest.raises(ValueError, match="1001 rows, more than max_rows = 100"):
+        snowroll.simulate("torque-cm", dt=0.01, t_end=10, max_rows=100)
+    _, stderr = run_cli(cli, "simulate", "--model", "torque-cm", "--dt", "0.01", "--t-end", "10",
+                        "--max-rows", "100", ok=False)
+    assert "1001 rows, more than --max-rows 100" in stderr, stderr
+    with pytest.raises(ValueError, match="20 rows, more than max_rows = 10"):
+        snowroll.turns(turns=20, max_rows=10)
+    with pytest.raises(ValueError, match="max_steps"):
+        snowroll.simulate("torque-cm", max_steps=0)
+    with pytest.raises(ValueError, match="max_rows"):
+        snowroll.turns(max_rows=0)
+
+
+@pytest.mark.parametrize("model", ["turns", "turns-exact"])
+def test_turn_models_refuse_a_sphere_with_the_cli_message(cli, model):
+    # A ball that picks up a swath in one turn gains a band, not a shell
+    # (docs/snowball-and-losses.md section 1.2): the turn models take the log only.
+    with pytest.raises(ValueError, match=f"model {model} does not support shape = sphere: ") as err:
+        snowroll.turns(model, shape="sphere", turns=2)
+    _, stderr = run_cli(cli, "turns", "--model", model, "--shape", "sphere", "--turns", "2", ok=False)
+    # The CLI's message is the library's, after the run it names.
+    assert stderr.startswith(f"error: running {model} ") and stderr.rstrip().endswith(f": {err.value}"), stderr
+    with pytest.raises(ValueError, match="does not support shape = sphere"):
+        snowroll.turns(model, shape="sphere", swath_width=0.05, turns=2)

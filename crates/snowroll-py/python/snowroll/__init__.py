@@ -286,6 +286,8 @@ def simulate(
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
     drag_coefficient: Optional[float] = None,
     air_density: Optional[float] = None,
     rolling_resistance: Optional[float] = None,
@@ -318,6 +320,14 @@ def simulate(
     ``"charged"``, ``"pivot"``; ``on_hop`` what happens where the normal
     force N reaches 0: ``"stop"`` (default: stop with ``hop``) or
     ``"continue"`` (go on as if contact were kept, past the model's validity).
+
+    Limits: ``max_rows`` most rows, >= 1 (1e8): a run whose row count is
+    known beforehand (``dt``: t_end/dt + 1, ``times``: their count, the turn
+    models: the turn count) and above it raises ``ValueError`` before it
+    starts; a run sampled at every step stops there with reason
+    ``row-limit``, its rows kept. ``max_steps`` most integrator steps
+    (accepted, rejected and events), >= 1 (1e8): the run stops there with
+    reason ``step-limit``, its rows kept.
 
     Losses (docs/snowball-and-losses.md §2; each off by default):
     ``drag_coefficient`` C_d (0), ``air_density`` kg/m^3 (1.2): drag
@@ -362,6 +372,8 @@ def simulate(
         mu=mu,
         collision=collision,
         on_hop=on_hop,
+        max_rows=max_rows,
+        max_steps=max_steps,
         drag_coefficient=drag_coefficient,
         air_density=air_density,
         rolling_resistance=rolling_resistance,
@@ -385,6 +397,8 @@ def turns(
     density: Optional[float] = None,
     length: Optional[float] = None,
     v0: Optional[float] = None,
+    shape: Optional[str] = None,
+    swath_width: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     rtol: Optional[float] = None,
@@ -392,6 +406,8 @@ def turns(
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
 ) -> TurnResult:
     """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
     one row per turn (the CLI's ``snowroll turns``).
@@ -400,7 +416,11 @@ def turns(
     ``"turns-exact"`` (exact geometry, eq. (88), alias ``eq88``). Each turn
     integrates eq. (64); at its end the log climbs the new layer by the
     collision ``collision`` (``"note"``: eq. (89)). ``t_end`` defaults to 1e9 s,
-    so the turn count ends the run. Other keywords as in :func:`simulate`.
+    so the turn count ends the run. Other keywords as in :func:`simulate`;
+    ``max_rows`` below the turn count raises ``ValueError``. The turn models
+    take the log only: ``shape="sphere"`` raises ``ValueError`` (a ball that
+    picks up a swath in one turn gains a band round its equator, not a shell;
+    docs/snowball-and-losses.md §1.2).
 
     Returns a :class:`TurnResult`: one numpy array per column and ``summary``,
     the long-run means of a/(g sin alpha) whose value the note's
@@ -419,6 +439,8 @@ def turns(
         density=density,
         length=length,
         v0=v0,
+        shape=shape,
+        swath_width=swath_width,
         t_end=t_end,
         x_end=x_end,
         rtol=rtol,
@@ -426,6 +448,8 @@ def turns(
         mu=mu,
         collision=collision,
         on_hop=on_hop,
+        max_rows=max_rows,
+        max_steps=max_steps,
     )
     result = TurnResult(raw)
     _warn(result.warnings)

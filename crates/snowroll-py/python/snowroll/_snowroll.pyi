@@ -31,6 +31,8 @@ def simulate(
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
     drag_coefficient: Optional[float] = None,
     air_density: Optional[float] = None,
     rolling_resistance: Optional[float] = None,
@@ -49,7 +51,9 @@ def simulate(
     masked where N <= 0, where it is undefined) and for the turn models ``turn`` (uint64),
     ``theta_rad``, ``omega_rad_s``; with losses or ``ledger=True`` the ledger
     columns ``kinetic_j released_j drag_j rolling_j compaction_j model_j
-    collision_j created_j residual_j`` (J).
+    collision_j created_j residual_j`` (J). ``max_rows`` and ``max_steps``
+    bound the run (stop reasons ``row-limit``, ``step-limit``); a row count
+    known beforehand above ``max_rows`` raises ValueError.
 
     Raises ValueError (bad parameters) or RuntimeError (failed integration).
     """
@@ -65,6 +69,8 @@ def turns(
     density: Optional[float] = None,
     length: Optional[float] = None,
     v0: Optional[float] = None,
+    shape: Optional[str] = None,
+    swath_width: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     rtol: Optional[float] = None,
@@ -72,6 +78,8 @@ def turns(
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
 ) -> Dict[str, Any]:
     """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (88)
     ``turns-exact``; collisions by eq. (89) or the ``charged``/``pivot``
@@ -79,7 +87,8 @@ def turns(
 
     Returns the keys of :func:`simulate` (``columns`` one row per turn) plus
     ``summary``: the long-run means of a/(g sin alpha) that eqs. (77)-(79)
-    estimate as 4/9.
+    estimate as 4/9. ``shape="sphere"`` raises ValueError: the turn models
+    take the log only.
     """
 
 def models(
