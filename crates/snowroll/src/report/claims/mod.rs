@@ -51,6 +51,7 @@ use crate::trajectory::{Sampling, SimOptions, Trajectory};
 
 #[cfg(feature = "plot")]
 pub(crate) use regime::regime_figure;
+#[cfg(feature = "plot")]
 pub(crate) use slip::mu_min_rows;
 pub use table::CLAIMS;
 
