@@ -187,33 +187,27 @@ impl<W: Write> TrajectoryWriter<W> {
                 .pending_ledger
                 .take()
                 .ok_or(OutputError::MissingLedger { row })?;
-            let record = LedgerSample::new(s, &l);
-            match &mut self.body {
-                Body::Csv(csv) => {
-                    check_finite(&record, Some(row))?;
-                    csv.serialize(record)?;
-                }
-                Body::Json(w) => write_json_element(w, row, &record)?,
-            }
-            self.rows += 1;
-            self.last_turn = turn.copied();
-            return Ok(());
-        }
-        match (&mut self.body, turn.filter(|_| self.turns)) {
-            (Body::Csv(csv), Some(k)) => {
-                let record = TurnSampleRow::new(s, k);
-                check_finite(&record, Some(row))?;
-                csv.serialize(record)?;
-            }
-            (Body::Csv(csv), None) => {
-                check_finite(s, Some(row))?;
-                csv.serialize(s)?;
-            }
-            (Body::Json(w), Some(k)) => write_json_element(w, row, &TurnSampleRow::new(s, k))?,
-            (Body::Json(w), None) => write_json_element(w, row, s)?,
+            self.put(row, &LedgerSample::new(s, &l))?;
+        } else if let Some(k) = turn.filter(|_| self.turns) {
+            self.put(row, &TurnSampleRow::new(s, k))?;
+        } else {
+            self.put(row, s)?;
         }
         self.rows += 1;
         self.last_turn = turn.copied();
+        Ok(())
+    }
+
+    /// Writes `record` as row `row` (from 1) in the body's format, refused
+    /// before any of it is written if a number is not finite.
+    fn put(&mut self, row: u64, record: &impl Serialize) -> Result<(), OutputError> {
+        match &mut self.body {
+            Body::Csv(csv) => {
+                check_finite(record, Some(row))?;
+                csv.serialize(record)?;
+            }
+            Body::Json(w) => write_json_element(w, row, record)?,
+        }
         Ok(())
     }
 
