@@ -435,15 +435,10 @@ impl RegimeMap {
             }?;
             root.present().map_err(backend)?;
         }
-        let comment = format!(
-            "<!-- regime map: {} | {} -->\n",
-            self.title.replace("--", "- -"),
-            provenance.line().replace("--", "- -")
-        );
-        Ok(match svg.find('>') {
-            Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
-            None => svg,
-        })
+        Ok(super::render::with_provenance_comment(
+            svg,
+            &["regime map", &self.title, &provenance.line()],
+        ))
     }
 
     fn draw_in<'a, DB, XR, YR>(

@@ -114,16 +114,10 @@ impl Chart {
                 "<polyline fill=\"none\"",
                 "<polyline fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"",
             );
-        let comment = format!(
-            "<!-- {}: {} | {} -->\n",
-            escape_comment(&self.name),
-            escape_comment(&self.title),
-            escape_comment(&provenance.line())
-        );
-        Ok(match svg.find('>') {
-            Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
-            None => svg,
-        })
+        Ok(with_provenance_comment(
+            svg,
+            &[&self.name, &self.title, &provenance.line()],
+        ))
     }
 
     /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
@@ -418,6 +412,18 @@ pub(crate) fn tick(v: f64) -> String {
 /// Makes text safe inside an XML comment (no `--`).
 fn escape_comment(s: &str) -> String {
     s.replace("--", "- -")
+}
+
+/// `svg` with an XML comment right after its opening tag naming what it
+/// shows and how it was made: `parts[0]: parts[1] | parts[2] ...`.
+pub(super) fn with_provenance_comment(svg: String, parts: &[&str]) -> String {
+    let (head, rest) = parts.split_first().map_or(("", &[][..]), |(h, r)| (*h, r));
+    let rest: Vec<String> = rest.iter().map(|p| escape_comment(p)).collect();
+    let comment = format!("<!-- {}: {} -->\n", escape_comment(head), rest.join(" | "));
+    match svg.find('>') {
+        Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
+        None => svg,
+    }
 }
 
 #[cfg(test)]
