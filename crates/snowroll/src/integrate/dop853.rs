@@ -73,6 +73,15 @@ struct Integrator<'s, S, const N: usize> {
     /// The leading components in the error norm
     /// ([`OdeSystem::controlled_components`]); the rest are quadratures.
     controlled: usize,
+    /// Number of event functions (at most [`MAX_EVENTS`]).
+    n_events: usize,
+    /// Event values at the start of the current step (a small fixed
+    /// buffer: no model has more than a handful of events).
+    g_old: [f64; MAX_EVENTS],
+    /// Event values at the end of the current step.
+    g_new: [f64; MAX_EVENTS],
+    /// Events located so far (they count towards `tol.max_steps`).
+    events_located: u64,
 }
 
 impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
@@ -303,194 +312,287 @@ where
         k: [[0.0; N]; STAGES_DENSE],
         stats: Stats::default(),
         controlled,
+        n_events,
+        g_old: [0.0; MAX_EVENTS],
+        g_new: [0.0; MAX_EVENTS],
+        events_located: 0,
     };
     observer.start(&*it.system, t0, &y0);
-    let (mut t, mut y) = (t0, y0);
     if t_end <= t0 {
-        return Ok(Outcome {
-            t,
-            y,
-            termination: Termination::EndTime,
-            stats: it.stats,
-        });
+        return Ok(it.outcome(t0, y0, Termination::EndTime));
     }
-    // Event values at the start of the current step (a small fixed buffer:
-    // no model has more than a handful of events).
-    let mut g_old = [0.0; MAX_EVENTS];
-    for (i, g) in g_old.iter_mut().enumerate().take(n_events) {
-        *g = it.system.event(i, t, &y);
-    }
-    it.system.rhs(t, &y, &mut it.k[0]);
-    it.stats.evaluations += 1;
-    let mut h = it.initial_step(t, &y);
-    let mut last_rejected = false;
-    let mut events_located = 0;
-    loop {
-        if observer.stop_requested() {
-            return Ok(it.outcome(t, y, Termination::Stopped));
-        }
-        if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
-            return Ok(it.outcome(t, y, Termination::StepLimit));
-        }
-        // Hairer's test, plus a NaN step (from a right-hand side that is
-        // NaN at the start) counting as too small.
-        if 0.1 * h <= t.abs() * f64::EPSILON || h.is_nan() {
-            return Err(SimError::StepSizeTooSmall { t, h });
-        }
-        let mut last = false;
-        if t + 1.01 * h >= t_end {
-            h = t_end - t;
-            last = true;
-        }
-        let (y_new, err) = it.trial(t, &y, h);
+    it.run(t0, y0, t_end, observer)
+}
+
+/// Hairer's step-size controller: the step to try next, shrunk after a
+/// rejection and grown (boundedly) after an acceptance.
+struct StepControl {
+    /// The step to try next.
+    h: f64,
+    /// Whether the last trial was rejected (the next accepted step then may
+    /// not grow).
+    last_rejected: bool,
+}
+
+impl StepControl {
+    /// Whether the trial step with error norm `err` is accepted. If so,
+    /// returns `err^(1/8)` for [`StepControl::grow`]; if not, shrinks the
+    /// step: by 10 when the error is not finite (a stage left the domain of
+    /// `f`, e.g. overflow), else by `min(1/FAC_MIN, err^(1/8)/SAFETY)`.
+    fn judge(&mut self, err: f64) -> Option<f64> {
         if !err.is_finite() {
-            // A stage left the domain of f (e.g. overflow): retry much smaller.
-            it.stats.rejected += 1;
-            h *= 0.1;
-            last_rejected = true;
-            continue;
+            self.h *= 0.1;
+            self.last_rejected = true;
+            return None;
         }
         let fac11 = eighth_root(err);
         if err > 1.0 {
-            it.stats.rejected += 1;
-            h /= (1.0 / FAC_MIN).min(fac11 / SAFETY);
-            last_rejected = true;
-            continue;
+            self.h /= (1.0 / FAC_MIN).min(fac11 / SAFETY);
+            self.last_rejected = true;
+            return None;
         }
-        // Accepted.
-        it.stats.accepted += 1;
-        let t_new = if last { t_end } else { t + h };
-        if !y_new.iter().all(|v| v.is_finite()) {
-            return Err(SimError::NonFiniteState { t: t_new });
+        Some(fac11)
+    }
+
+    /// The step after an accepted one with `err^(1/8) = fac11`: `h SAFETY /
+    /// err^(1/8)`, its ratio to `h` within `[FAC_MIN, FAC_MAX]`, at most
+    /// `max_step`, and not larger than `h` right after a rejection.
+    /// (Hairer's Lund stabilisation exponent beta is 0 for DOP853, so the
+    /// previous error does not enter.)
+    fn grow(&mut self, fac11: f64, max_step: f64) {
+        let fac = (fac11 / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
+        let mut h_new = (self.h / fac).min(max_step);
+        if self.last_rejected {
+            h_new = h_new.min(self.h);
         }
-        it.last_stage(t_new, &y_new);
+        self.last_rejected = false;
+        self.h = h_new;
+    }
+}
+
+/// Why an accepted step did not simply carry the integration to its end.
+enum Interrupt<const N: usize> {
+    /// The run is over (a `Stop` event, or the step budget spent on events).
+    Finish(Outcome<N>),
+    /// A `Reset` event at this time: go on from this state.
+    Reset(f64, [f64; N]),
+}
+
+impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
+    /// Steps taken so far: accepted, rejected, and located events (what
+    /// [`Tolerances::max_steps`] bounds).
+    fn steps_spent(&self) -> u64 {
+        self.stats.accepted + self.stats.rejected + self.events_located
+    }
+
+    /// Starts (or, after a reset, restarts) the integration at `(t, y)`:
+    /// the event values there and the first stage `k[0] = f(t, y)`.
+    fn restart(&mut self, t: f64, y: &[f64; N]) {
+        for (i, g) in self.g_old.iter_mut().enumerate().take(self.n_events) {
+            *g = self.system.event(i, t, y);
+        }
+        self.system.rhs(t, y, &mut self.k[0]);
+        self.stats.evaluations += 1;
+    }
+
+    /// The step loop from `(t, y)` to `t_end`: trial steps, the
+    /// controller's verdict, and for each accepted step its events and its
+    /// report to the observer ([`Integrator::accept`]).
+    fn run<O: Observer<S, N>>(
+        &mut self,
+        mut t: f64,
+        mut y: [f64; N],
+        t_end: f64,
+        observer: &mut O,
+    ) -> Result<Outcome<N>, SimError> {
+        self.restart(t, &y);
+        let mut control = StepControl {
+            h: self.initial_step(t, &y),
+            last_rejected: false,
+        };
+        loop {
+            if observer.stop_requested() {
+                return Ok(self.outcome(t, y, Termination::Stopped));
+            }
+            if self.steps_spent() >= self.tol.max_steps {
+                return Ok(self.outcome(t, y, Termination::StepLimit));
+            }
+            // Hairer's test, plus a NaN step (from a right-hand side that is
+            // NaN at the start) counting as too small.
+            let h = control.h;
+            if 0.1 * h <= t.abs() * f64::EPSILON || h.is_nan() {
+                return Err(SimError::StepSizeTooSmall { t, h });
+            }
+            // The step that would land within 1% of the end lands on it.
+            let last = t + 1.01 * h >= t_end;
+            if last {
+                control.h = t_end - t;
+            }
+            let h = control.h;
+            let (y_new, err) = self.trial(t, &y, h);
+            let Some(fac11) = control.judge(err) else {
+                self.stats.rejected += 1;
+                continue;
+            };
+            self.stats.accepted += 1;
+            let t_new = if last { t_end } else { t + h };
+            if !y_new.iter().all(|v| v.is_finite()) {
+                return Err(SimError::NonFiniteState { t: t_new });
+            }
+            self.last_stage(t_new, &y_new);
+            match self.accept(observer, (t, &y), (t_new, &y_new), h) {
+                None => {}
+                Some(Interrupt::Finish(outcome)) => return Ok(outcome),
+                Some(Interrupt::Reset(te, y_after)) => {
+                    // Start afresh from the new state, with the step size
+                    // that was just accepted (the controller shrinks it if
+                    // the new state needs that).
+                    (t, y) = (te, y_after);
+                    if !y.iter().all(|v| v.is_finite()) {
+                        return Err(SimError::NonFiniteState { t });
+                    }
+                    self.restart(t, &y);
+                    control.last_rejected = false;
+                    if t >= t_end {
+                        return Ok(self.outcome(t, y, Termination::EndTime));
+                    }
+                    continue;
+                }
+            }
+            // Advance (FSAL: stage 12 is f(t_new, y_new)).
+            self.k[0] = self.k[STAGES];
+            t = t_new;
+            y = y_new;
+            self.g_old[..self.n_events].copy_from_slice(&self.g_new[..self.n_events]);
+            if last {
+                return Ok(self.outcome(t, y, Termination::EndTime));
+            }
+            control.grow(fac11, self.tol.max_step);
+        }
+    }
+
+    /// Finishes the accepted step `(t, y) → (t_new, y_new)` of length `h`
+    /// (with `k[12]` evaluated): finds its events, builds the dense output
+    /// if they or the observer need it, and reports the step to the
+    /// observer, cut at each event ([`Integrator::handle_events`]). Leaves
+    /// the event values at `t_new` in `g_new`.
+    fn accept<O: Observer<S, N>>(
+        &mut self,
+        observer: &mut O,
+        (t, y): (f64, &[f64; N]),
+        (t_new, y_new): (f64, &[f64; N]),
+        h: f64,
+    ) -> Option<Interrupt<N>> {
         // Events: which functions changed sign in the allowed direction?
-        let mut g_new = [0.0; MAX_EVENTS];
-        let ends = scan_step_ends(&*it.system, t_new, &y_new, &g_old[..n_events], &mut g_new);
+        let ends = scan_step_ends(
+            &*self.system,
+            t_new,
+            y_new,
+            &self.g_old[..self.n_events],
+            &mut self.g_new,
+        );
         // Asked on every accepted step, so the observer sees each full step.
         let wanted = observer.wants_dense(t, t_new);
         let coefficients = if ends.needs_dense() || wanted {
-            Some(it.dense_coefficients(t, &y, &y_new, h))
+            Some(self.dense_coefficients(t, y, y_new, h))
         } else {
             None
         };
-        let dense = coefficients.as_ref().map(|f| Polynomial { t, y: &y, h, f });
+        let dense = coefficients.as_ref().map(|f| Polynomial { t, y, h, f });
         // Start of the part of the step not yet shown to the observer.
-        let (mut t_seen, mut y_seen) = (t, y);
-        let mut reset = None;
+        let mut seen = (t, *y);
         if let (true, Some(p)) = (ends.needs_dense(), dense) {
-            // Where the search for crossings starts, and the event values there.
-            let mut g_lo = g_old;
-            loop {
-                let found = crossings(&*it.system, &p, (t_seen, &g_lo[..n_events]), t_new, &g_new);
-                if found.is_empty() {
-                    break;
-                }
-                for &(te, i) in found.as_slice() {
-                    events_located += 1;
-                    let ye = p.at(te);
-                    let action = it.system.on_event(i, te, &ye);
-                    let y_after = match action {
-                        EventAction::Reset(r) => r,
-                        EventAction::Stop | EventAction::Continue => ye,
-                    };
-                    if te > t_seen {
-                        let piece = DenseStep::new((t_seen, &y_seen), (te, &ye), Some(p));
-                        observer.step(&*it.system, &piece);
-                        (t_seen, y_seen) = (te, ye);
-                    }
-                    let record = EventRecord {
-                        index: i,
-                        t: te,
-                        y_before: ye,
-                        y_after,
-                        action,
-                    };
-                    observer.event(&*it.system, &record);
-                    it.system.commit_event(i, te, &ye, &y_after);
-                    match action {
-                        EventAction::Continue => {}
-                        EventAction::Stop => {
-                            return Ok(Outcome {
-                                t: te,
-                                y: ye,
-                                termination: Termination::Event { index: i },
-                                stats: it.stats,
-                            });
-                        }
-                        EventAction::Reset(_) => {
-                            reset = Some((te, y_after));
-                            break;
-                        }
-                    }
-                }
-                if reset.is_some() || t_seen >= t_new {
-                    break;
-                }
-                // Every event so far continued, but `commit_event` may have
-                // changed the event functions (a turn counter): search the
-                // rest of the step again with their current values. Events
-                // count towards the step budget, so a cascade cannot hang.
-                if it.stats.accepted + it.stats.rejected + events_located >= tol.max_steps {
-                    return Ok(it.outcome(t_seen, y_seen, Termination::StepLimit));
-                }
-                for i in 0..n_events {
-                    g_lo[i] = it.system.event(i, t_seen, &y_seen);
-                    g_new[i] = it.system.event(i, t_new, &y_new);
-                }
+            if let Some(interrupt) = self.handle_events(observer, &p, &mut seen, (t_new, y_new)) {
+                return Some(interrupt);
             }
         }
-        if let Some((te, y_after)) = reset {
-            // Start afresh from the new state, with the step size that was
-            // just accepted (the controller shrinks it if the new state
-            // needs that).
-            (t, y) = (te, y_after);
-            if !y.iter().all(|v| v.is_finite()) {
-                return Err(SimError::NonFiniteState { t });
-            }
-            for (j, g) in g_old.iter_mut().enumerate().take(n_events) {
-                *g = it.system.event(j, t, &y);
-            }
-            it.system.rhs(t, &y, &mut it.k[0]);
-            it.stats.evaluations += 1;
-            last_rejected = false;
-            if t >= t_end {
-                return Ok(Outcome {
-                    t,
-                    y,
-                    termination: Termination::EndTime,
-                    stats: it.stats,
-                });
-            }
-            continue;
-        }
+        let (t_seen, y_seen) = seen;
         if t_new > t_seen {
-            let piece = DenseStep::new((t_seen, &y_seen), (t_new, &y_new), dense);
-            observer.step(&*it.system, &piece);
+            let piece = DenseStep::new((t_seen, &y_seen), (t_new, y_new), dense);
+            observer.step(&*self.system, &piece);
         }
-        // Advance (FSAL: stage 12 is f(t_new, y_new)).
-        it.k[0] = it.k[STAGES];
-        t = t_new;
-        y = y_new;
-        g_old[..n_events].copy_from_slice(&g_new[..n_events]);
-        if last {
-            return Ok(Outcome {
-                t,
-                y,
-                termination: Termination::EndTime,
-                stats: it.stats,
-            });
+        None
+    }
+
+    /// Locates the events of the accepted step whose dense output is `p`
+    /// on `(seen.0, t_new]`, in time order, and applies their actions: the
+    /// observer gets the piece of the step up to each event, then the
+    /// event, then the system commits it. `seen` moves to the last event
+    /// shown. A `Stop` ends the run and a `Reset` ends the step (the other
+    /// events of the step are dropped); after `Continue` events the rest of
+    /// the step is searched again, as `commit_event` may have changed the
+    /// event functions.
+    fn handle_events<O: Observer<S, N>>(
+        &mut self,
+        observer: &mut O,
+        p: &Polynomial<'_, N>,
+        seen: &mut (f64, [f64; N]),
+        (t_new, y_new): (f64, &[f64; N]),
+    ) -> Option<Interrupt<N>> {
+        let n_events = self.n_events;
+        // Where the search for crossings starts, and the event values there.
+        let mut g_lo = self.g_old;
+        loop {
+            let found = crossings(
+                &*self.system,
+                p,
+                (seen.0, &g_lo[..n_events]),
+                t_new,
+                &self.g_new,
+            );
+            if found.is_empty() {
+                return None;
+            }
+            for &(te, i) in found.as_slice() {
+                self.events_located += 1;
+                let ye = p.at(te);
+                let action = self.system.on_event(i, te, &ye);
+                let y_after = match action {
+                    EventAction::Reset(r) => r,
+                    EventAction::Stop | EventAction::Continue => ye,
+                };
+                if te > seen.0 {
+                    let piece = DenseStep::new((seen.0, &seen.1), (te, &ye), Some(*p));
+                    observer.step(&*self.system, &piece);
+                    *seen = (te, ye);
+                }
+                let record = EventRecord {
+                    index: i,
+                    t: te,
+                    y_before: ye,
+                    y_after,
+                    action,
+                };
+                observer.event(&*self.system, &record);
+                self.system.commit_event(i, te, &ye, &y_after);
+                match action {
+                    EventAction::Continue => {}
+                    EventAction::Stop => {
+                        let end = Termination::Event { index: i };
+                        return Some(Interrupt::Finish(self.outcome(te, ye, end)));
+                    }
+                    EventAction::Reset(_) => return Some(Interrupt::Reset(te, y_after)),
+                }
+            }
+            if seen.0 >= t_new {
+                return None;
+            }
+            // Every event so far continued, but `commit_event` may have
+            // changed the event functions (a turn counter): search the rest
+            // of the step again with their current values. Events count
+            // towards the step budget, so a cascade cannot hang.
+            if self.steps_spent() >= self.tol.max_steps {
+                let (t_seen, y_seen) = *seen;
+                return Some(Interrupt::Finish(self.outcome(
+                    t_seen,
+                    y_seen,
+                    Termination::StepLimit,
+                )));
+            }
+            for i in 0..n_events {
+                g_lo[i] = self.system.event(i, seen.0, &seen.1);
+                self.g_new[i] = self.system.event(i, t_new, y_new);
+            }
         }
-        // Hairer's controller: new step from the error, bounded in ratio,
-        // and not larger than the last one right after a rejection.
-        // (Hairer's Lund stabilisation exponent beta is 0 for DOP853, so the
-        // previous error does not enter.)
-        let fac = (fac11 / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
-        let mut h_new = (h / fac).min(tol.max_step);
-        if last_rejected {
-            h_new = h_new.min(h);
-        }
-        last_rejected = false;
-        h = h_new;
     }
 }
