@@ -5,9 +5,9 @@
 //!
 //! | loss | parameter | force or couple | power |
 //! |---|---|---|---|
-//! | air drag | `drag_coefficient` C_d, `air_density` ρ_a | `F_d = ½ ρ_a C_d A v²` at the centre, A = 2 r l | `F_d v` |
+//! | air drag | `drag_coefficient` C_d, `air_density` ρ_a | `F_d = ½ ρ_a C_d A v²` at the centre, A = 2 r l (log), π r² (ball) | `F_d v` |
 //! | rolling resistance | `rolling_resistance` c_rr | couple `c_rr N r` | `c_rr N v` |
-//! | compaction | `compaction_energy` e_c, J/kg | couple `F_c r`, `F_c = e_c dM/dx` | `e_c Ṁ` |
+//! | compaction | `compaction_energy` e_c, J/kg | couple `F_c r`, `F_c = e_c dM/dx` (ρ b l, ρ b w) | `e_c Ṁ` |
 //!
 //! Every circular equation of motion has g sin α with coefficient 1 once it
 //! is written as `(1 + k) a = G − …`; the losses enter by the one rule of
@@ -19,8 +19,10 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::ParamError;
-use crate::scenario::Scenario;
-use crate::units::{KilogramsPerCubicMeter, MetersPerSecond};
+use std::f64::consts::PI;
+
+use crate::scenario::{Scenario, Shape};
+use crate::units::{KilogramsPerCubicMeter, Meters, MetersPerSecond};
 
 /// Air density when the caller does not say, kg/m³ (sea level, about 15 °C).
 pub const AIR_DENSITY_DEFAULT: KilogramsPerCubicMeter = 1.2;
@@ -147,12 +149,22 @@ impl Losses {
     }
 }
 
-/// The closed-form terminal velocity of the snowless log with drag,
+/// The frontal area A of the body at radius `r`, m² (§2.1): `2 r l` for the
+/// log, `π r²` for the ball.
+pub fn frontal_area(s: &Scenario, r: Meters) -> f64 {
+    match s.shape() {
+        Shape::Cylinder => 2.0 * r * s.length(),
+        Shape::Sphere => PI * r * r,
+    }
+}
+
+/// The closed-form terminal velocity of the snowless body with drag,
 /// `docs/snowball-and-losses.md` §2.2:
-/// `v_t² = M (G − c_rr C)/(½ ρ_a C_d A)` with `M = π ρ l r0²`, `A = 2 r0 l`,
-/// i.e. `v_t² = π ρ r0 (G − c_rr C)/(ρ_a C_d)`.
+/// `v_t² = M (G − c_rr C)/(½ ρ_a C_d A)`, i.e. for the log (M = π ρ l r0²,
+/// A = 2 r0 l) `v_t² = π ρ r0 (G − c_rr C)/(ρ_a C_d)`, for the ball
+/// (M = (4/3) π ρ r0³, A = π r0²) `v_t² = (8/3) ρ r0 (G − c_rr C)/(ρ_a C_d)`.
 ///
-/// `None` without drag, or when rolling resistance holds the log
+/// `None` without drag, or when rolling resistance holds the body
 /// (`c_rr ≥ tan α`): then there is no terminal velocity.
 ///
 /// ```
@@ -168,17 +180,18 @@ pub fn terminal_velocity(s: &Scenario, l: &Losses) -> Option<MetersPerSecond> {
     }
     let r0 = s.initial_radius();
     let mass = s.initial_mass();
-    let area = 2.0 * r0 * s.length();
+    let area = frontal_area(s, r0);
     Some((mass * drive / (l.drag_factor() * area)).sqrt())
 }
 
 /// The time constant of the approach to [`terminal_velocity`], §2.2:
-/// `τ = (1 + k) v_t/(G − c_rr C)` with k = ½ (the log), s; then
-/// `v(t) = v_t tanh(t/τ + artanh(v0/v_t))`.
+/// `τ = (1 + k) v_t/(G − c_rr C)` (k = ½ for the log, 2/5 for the ball), s;
+/// then `v(t) = v_t tanh(t/τ + artanh(v0/v_t))`.
 pub fn terminal_time_constant(s: &Scenario, l: &Losses) -> Option<f64> {
     let vt = terminal_velocity(s, l)?;
     let drive = s.g_along() - l.rolling_resistance * s.g_normal();
-    Some(1.5 * vt / drive)
+    let (num, den) = s.shape().push_ratio();
+    Some(den / num * vt / drive)
 }
 
 #[cfg(test)]

@@ -272,20 +272,34 @@ impl Scenario {
             "change --r0",
         )?;
         let m0 = self.initial_mass();
-        let hint = "change --density, --length or --r0";
-        check_scale(
-            "initial mass m0 = pi rho l r0^2, eq. (37) (kg)",
-            m0,
-            false,
-            hint,
-        )?;
-        check_scale(
-            "moment of inertia about the contact line 3 m0 r0^2/2, eq. (56) (kg m^2)",
-            1.5 * m0 * r0 * r0,
-            false,
-            hint,
-        )?;
-        let hint = "change --g, --density, --length or --r0";
+        // The shape's own formulae (`docs/snowball-and-losses.md` §1.1):
+        // mass, moment of inertia about the contact line (1 + k) m0 r0²,
+        // kinetic energy ½ (1 + k) m0 v0², snow picked up per metre ρ b × swath.
+        let (mass, inertia, kinetic, picked, hint, picked_hint) = match self.shape {
+            Shape::Cylinder => (
+                "initial mass m0 = pi rho l r0^2, eq. (37) (kg)",
+                "moment of inertia about the contact line 3 m0 r0^2/2, eq. (56) (kg m^2)",
+                "initial kinetic energy 3 m0 v0^2/4, eq. (7) (J)",
+                "snow picked up per metre rolled rho l b, eq. (8) (kg/m)",
+                "change --density, --length or --r0",
+                "change --snow-depth, --density or --length",
+            ),
+            Shape::Sphere => (
+                "initial mass of the ball m0 = 4 pi rho r0^3/3 (kg)",
+                "moment of inertia of the ball about the contact point 7 m0 r0^2/5 (kg m^2)",
+                "initial kinetic energy of the ball 7 m0 v0^2/10 (J)",
+                "snow picked up per metre rolled rho b w, w the swath width (kg/m)",
+                "change --density or --r0",
+                "change --snow-depth, --density, --swath-width or --r0",
+            ),
+        };
+        let one_plus_k = 1.0 + self.shape.inertia_factor();
+        check_scale(mass, m0, false, hint)?;
+        check_scale(inertia, one_plus_k * m0 * r0 * r0, false, hint)?;
+        let hint = match self.shape {
+            Shape::Cylinder => "change --g, --density, --length or --r0",
+            Shape::Sphere => "change --g, --density or --r0",
+        };
         check_scale("weight m0 g (N)", m0 * g, false, hint)?;
         check_scale(
             "potential energy scale m0 g r0 (J)",
@@ -293,18 +307,16 @@ impl Scenario {
             false,
             hint,
         )?;
-        check_scale(
-            "initial kinetic energy 3 m0 v0^2/4, eq. (7) (J)",
-            0.75 * m0 * v0 * v0,
-            true,
-            "change --v0, --density, --length or --r0",
-        )?;
-        check_scale(
-            "snow picked up per metre rolled rho l b, eq. (8) (kg/m)",
-            rho * l * b,
-            true,
-            "change --snow-depth, --density or --length",
-        )?;
+        let hint = match self.shape {
+            Shape::Cylinder => "change --v0, --density, --length or --r0",
+            Shape::Sphere => "change --v0, --density or --r0",
+        };
+        check_scale(kinetic, 0.5 * one_plus_k * m0 * v0 * v0, true, hint)?;
+        let swath = match self.shape {
+            Shape::Cylinder => l,
+            Shape::Sphere => self.swath_width.unwrap_or(2.0 * r0),
+        };
+        check_scale(picked, rho * b * swath, true, picked_hint)?;
         check_scale(
             "area picked up per metre rolled b/pi relative to r0^2 (1/m)",
             b / (PI * r0 * r0),
@@ -470,6 +482,28 @@ impl Default for Scenario {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The scale checks use the ball's own mass (4/3) π ρ r0³, not the log's
+    /// π ρ l r0²: with ρ = 5e149 kg/m³, r0 = 1 m, l = 1 mm the ball's m0 ≈ 2.1e150 kg
+    /// is out of scale, the log's ≈ 1.6e147 kg is not.
+    #[test]
+    fn scale_checks_name_the_balls_own_formulae() {
+        let heavy = ScenarioFile {
+            r0: 1.0,
+            length: 1e-3,
+            density: 5e149,
+            shape: Shape::Sphere,
+            ..Default::default()
+        };
+        let msg = Scenario::new(heavy).unwrap_err().to_string();
+        assert!(msg.contains("4 pi rho r0^3/3"), "{msg}");
+        assert!(!msg.contains("--length"), "{msg}");
+        let log = ScenarioFile {
+            shape: Shape::Cylinder,
+            ..heavy
+        };
+        assert!(Scenario::new(log).is_ok());
+    }
 
     #[test]
     fn rejects_each_bad_value_by_name() {

@@ -10,7 +10,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use snowroll::losses::{terminal_time_constant, terminal_velocity};
 use snowroll::{
-    LedgerRow, Losses, ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimError,
+    LedgerRow, Losses, ModelKind, ParamError, Sampling, Scenario, ScenarioFile, Shape, SimError,
     SimOptions, StopReason, Trajectory,
 };
 
@@ -132,6 +132,116 @@ fn terminal_velocity_is_reached_from_above() {
     assert!(traj.stop.v_m_s > vt && rel(traj.stop.v_m_s, vt) <= 1e-9);
 }
 
+/// The ball of radius r0 and density ρ, derived here from the parameters
+/// (not from the library): M = (4/3) π ρ r0³, frontal area π r0², k = 2/5.
+fn ball_terminal_velocity(f: &ScenarioFile, cd: f64, rho_air: f64) -> f64 {
+    let mass = 4.0 / 3.0 * PI * f.density * f.r0.powi(3);
+    let area = PI * f.r0 * f.r0;
+    let g_sin = f.g * f.alpha_deg.to_radians().sin();
+    (2.0 * mass * g_sin / (rho_air * cd * area)).sqrt()
+}
+
+/// The issue's check for the ball: the snowless ball with drag stops at
+/// `v_t² = 2 M g sin α/(ρ_a C_d π r²)` to 1e-9 (stop at |a| ≤ 1e-10 of
+/// the drive, |1 − v/v_t| ≤ 5e-11, plus the integration error ~1e-12), and
+/// follows `v = v_t tanh(t/τ)` with τ = (7/5) v_t/(g sin α) on the way.
+/// The same run judged with the log's frontal area 2 r l fails the check:
+/// the test tells the ball's drag from the log's.
+#[test]
+fn terminal_velocity_of_the_snowless_ball_matches_the_closed_form_to_1e_9() {
+    for (alpha, cd, rho_air, r0) in [
+        (30.0, 1.0, 1.2, 0.1),
+        (12.0, 0.47, 1.2, 0.3),
+        (55.0, 2.0, 0.9, 0.05),
+    ] {
+        let f = ScenarioFile {
+            alpha_deg: alpha,
+            r0,
+            shape: Shape::Sphere,
+            ..ScenarioFile::default()
+        };
+        let s = scenario(f);
+        let l = Losses {
+            drag_coefficient: cd,
+            air_density: rho_air,
+            terminal_tol: 1e-10,
+            ..Losses::default()
+        };
+        let vt = ball_terminal_velocity(&f, cd, rho_air);
+        let traj = run(ModelKind::Snowless, &s, l, 1e4);
+        assert_eq!(traj.stop.reason, StopReason::Terminal);
+        assert!(
+            rel(traj.stop.v_m_s, vt) <= 1e-9,
+            "{} vs {vt}",
+            traj.stop.v_m_s
+        );
+        assert!(rel(terminal_velocity(&s, &l).unwrap(), vt) <= 1e-14);
+        let tau = 1.4 * vt / (f.g * alpha.to_radians().sin());
+        for p in &traj.samples {
+            let v = vt * (p.t_s / tau).tanh();
+            assert!(rel(p.v_m_s, v) <= CLOSED_FORM_TOL, "v {} vs {v}", p.v_m_s);
+        }
+        // Wrong model: the log's area 2 r0 l for the ball.
+        let mass = 4.0 / 3.0 * PI * f.density * r0.powi(3);
+        let g_sin = f.g * alpha.to_radians().sin();
+        let wrong = (2.0 * mass * g_sin / (rho_air * cd * 2.0 * r0 * f.length)).sqrt();
+        assert!(rel(traj.stop.v_m_s, wrong) > 1e-2, "{wrong}");
+    }
+}
+
+/// The ball's rolling resistance and compaction, against closed forms
+/// derived in the test: the snowless ball with c_rr accelerates at
+/// `(5/7)(G − c_rr C)` (N = M C) and loses `c_rr M C x`; on a fixed swath w
+/// the compaction work is `e_c ρ b w x` (M − M0 = ρ b w x), on the natural
+/// swath `e_c (4/3) π ρ (r³ − r0³)`.
+#[test]
+fn rolling_resistance_and_compaction_of_the_ball() {
+    let f = ScenarioFile {
+        shape: Shape::Sphere,
+        ..ScenarioFile::default()
+    };
+    let s = scenario(f);
+    let (g_sin, g_cos) = (
+        f.g * f.alpha_deg.to_radians().sin(),
+        f.g * f.alpha_deg.to_radians().cos(),
+    );
+    let l = Losses {
+        rolling_resistance: 0.2,
+        ..Losses::default()
+    };
+    let traj = run(ModelKind::Snowless, &s, l, 20.0);
+    let m = 4.0 / 3.0 * PI * f.density * f.r0.powi(3);
+    for (p, row) in traj.samples.iter().zip(&traj.ledger) {
+        assert!(rel(p.a_m_s2, 5.0 / 7.0 * (g_sin - 0.2 * g_cos)) <= 1e-14);
+        let d = 0.2 * m * g_cos * p.x_m;
+        assert!((row.rolling_j - d).abs() <= CLOSED_FORM_TOL * d.max(1.0));
+    }
+    let l = Losses {
+        compaction_energy: 4.0,
+        ..Losses::default()
+    };
+    for swath_width in [None, Some(0.05)] {
+        let s = scenario(ScenarioFile { swath_width, ..f });
+        let traj = run(ModelKind::TorqueCm, &s, l, 30.0);
+        assert!(traj.samples.last().unwrap().x_m > 10.0);
+        for (p, row) in traj.samples.iter().zip(&traj.ledger) {
+            let picked = match swath_width {
+                Some(w) => f.density * f.snow_depth * w * p.x_m,
+                None => {
+                    let r = (f.r0 * f.r0 + f.snow_depth * p.x_m / PI).sqrt();
+                    4.0 / 3.0 * PI * f.density * (r.powi(3) - f.r0.powi(3))
+                }
+            };
+            let d = 4.0 * picked;
+            assert!(
+                (row.compaction_j - d).abs() <= CLOSED_FORM_TOL * d.max(1.0),
+                "{swath_width:?}: {} vs {d}",
+                row.compaction_j
+            );
+        }
+    }
+}
+
 /// §2.2: the snowless log with rolling resistance alone accelerates at
 /// `(G − c_rr C)/(1 + k)`, and its loss is `c_rr M C x` (N = M C).
 #[test]
@@ -245,7 +355,9 @@ fn torque_cm_model_defect_matches_the_closed_form() {
 
 /// `energy` (eq. (14)) is an energy balance: with all three losses its
 /// W_model stays 0, so the forces the ledger computes from their
-/// definitions are those the equation of motion took in (§2.1).
+/// definitions are those the equation of motion took in (§2.1) — for the
+/// log, and for the ball on either growth law (its frontal area π r², its
+/// N and dM/dx).
 #[test]
 fn energy_model_with_all_losses_has_no_model_defect() {
     let s = Scenario::default();
@@ -255,7 +367,20 @@ fn energy_model_with_all_losses_has_no_model_defect() {
         compaction_energy: 3.0,
         ..Losses::default()
     };
-    for kind in [ModelKind::Energy, ModelKind::Snowless] {
+    let ball = |swath_width| {
+        scenario(ScenarioFile {
+            shape: Shape::Sphere,
+            swath_width,
+            ..ScenarioFile::default()
+        })
+    };
+    for (kind, s) in [
+        (ModelKind::Energy, s),
+        (ModelKind::Snowless, s),
+        (ModelKind::Energy, ball(None)),
+        (ModelKind::Energy, ball(Some(0.03))),
+        (ModelKind::Snowless, ball(None)),
+    ] {
         let traj = run(kind, &s, l, 100.0);
         let last = traj.ledger.last().unwrap();
         let scale = last.released_j;
@@ -270,15 +395,18 @@ fn energy_model_with_all_losses_has_no_model_defect() {
 }
 
 /// The ledger on random scenarios: `kinetic + Σ losses + model − released =
-/// initial` at every sample, for every circular family with random losses.
+/// initial` at every sample, for every circular family with random losses,
+/// on the log and on the ball (both growth laws).
 /// The residual is relative to the largest term of the ledger; the works
 /// are quadratures on the steps of a run at rtol 1e-10 lasting up to
-/// ~10^3 time scales: the largest seen is 1.7e-9, so 1e-8.
+/// ~10^3 time scales: the largest seen is 2.0e-9 (a ball), so 1e-8.
 const LEDGER_TOL: f64 = 1e-8;
 /// Scenarios per family (9 circular families): the issue asks for at least 1000 in all.
 const CASES: u32 = 300;
 const SEED: [u8; 32] = *b"snowroll issue 11 ledger seed 00";
 
+/// A random scenario: the log, the ball with its natural swath 2r, or the
+/// ball with a fixed swath of 0.1 to 10 times r0.
 fn random_case() -> impl Strategy<Value = (Scenario, Losses, f64)> {
     (
         (
@@ -293,14 +421,26 @@ fn random_case() -> impl Strategy<Value = (Scenario, Losses, f64)> {
             prop_oneof![Just(0.0), 0.0..5.0f64],
         ),
         (0.0..3.0f64),
+        prop_oneof![
+            Just(None),
+            Just(Some(None)),
+            (-1.0..1.0f64).prop_map(|lw| Some(Some(lw)))
+        ],
     )
-        .prop_map(|((lr0, lratio, alpha, v0), (cd, crr, ec), lt)| {
+        .prop_map(|((lr0, lratio, alpha, v0), (cd, crr, ec), lt, ball)| {
             let r0 = 10f64.powf(lr0);
+            let (shape, swath_width) = match ball {
+                None => (Shape::Cylinder, None),
+                Some(None) => (Shape::Sphere, None),
+                Some(Some(lw)) => (Shape::Sphere, Some(r0 * 10f64.powf(lw))),
+            };
             let s = scenario(ScenarioFile {
                 alpha_deg: alpha,
                 snow_depth: r0 * 10f64.powf(lratio),
                 r0,
                 v0,
+                shape,
+                swath_width,
                 ..ScenarioFile::default()
             });
             let l = Losses {
@@ -335,6 +475,7 @@ fn ledger_sums_to_the_initial_energy_on_random_scenarios() {
         .filter(|k| k.is_circular())
         .collect();
     let mut total = 0;
+    let balls = std::cell::Cell::new(0);
     for kind in kinds {
         let mut runner = TestRunner::new_with_rng(
             Config {
@@ -357,6 +498,9 @@ fn ledger_sums_to_the_initial_energy_on_random_scenarios() {
                     Err(SimError::Param(_)) => return Ok(()),
                     Err(e) => return Err(TestCaseError::fail(format!("{kind}: {e}"))),
                 };
+                if s.shape() == Shape::Sphere {
+                    balls.set(balls.get() + 1);
+                }
                 prop_assert_eq!(traj.ledger.len(), traj.samples.len());
                 let first = traj.ledger[0];
                 let initial = first.kinetic_j - first.released_j;
@@ -381,6 +525,9 @@ fn ledger_sums_to_the_initial_energy_on_random_scenarios() {
         total += CASES;
     }
     assert!(total >= 1000);
+    // About a third of the cases are balls with each growth law; at least
+    // 500 balls ran (loney refuses a fixed swath).
+    assert!(balls.get() >= 500, "{} balls", balls.get());
 }
 
 /// The turn models carry no losses yet: they refuse, naming the flag.

@@ -121,6 +121,27 @@ impl Balance {
     /// The acceleration, m/s², at speed `v` for a body of `shape` of size
     /// and growth `gr` (the equation of the type doc).
     pub fn acceleration(&self, s: &Scenario, gr: &Growth, v: f64) -> f64 {
+        let (drive, inertia) = self.drive_and_inertia(s, gr, v);
+        drive / inertia
+    }
+
+    /// The acceleration with the losses `l` by the rule of
+    /// `docs/snowball-and-losses.md` §2.1, G → G − (F_d + c_rr N + F_c)/M,
+    /// with `N/M = C + r′ a + (λ r′ + r″) v²` solved for a:
+    ///
+    /// `a = [RHS − F_d/M − e_c λ − c_rr (C + (λ r′ + r″) v²)] / (1 + k + ε r′² + c_rr r′)`.
+    pub fn acceleration_with_losses(&self, s: &Scenario, gr: &Growth, l: &Losses, v: f64) -> f64 {
+        let (drive, inertia) = self.drive_and_inertia(s, gr, v);
+        let per_mass = losses_per_mass(s, gr, l, v);
+        let normal_free = s.g_normal() + (gr.lambda * gr.dr_dx + gr.d2r_dx2) * v * v;
+        let rolling = l.rolling_resistance;
+        (drive - per_mass.drag - per_mass.compaction - rolling * normal_free)
+            / (inertia + rolling * gr.dr_dx)
+    }
+
+    /// The right-hand side `G − …` of the type doc's equation and its
+    /// inertia factor `1 + k + ε r′²`.
+    fn drive_and_inertia(&self, s: &Scenario, gr: &Growth, v: f64) -> (f64, f64) {
         let k = s.shape().inertia_factor();
         let (r, r1, r2, lam) = (gr.r, gr.dr_dx, gr.d2r_dx2, gr.lambda);
         let inertia = 1.0 + k + self.inertia_r2 * r1 * r1;
@@ -129,7 +150,17 @@ impl Balance {
             + self.inertia_r2 * self.c_rr * r1 * r2;
         let lift =
             s.g_normal() * (self.lift * (lam * r + r1) + self.lift_b * lam * s.snow_depth() / 2.0);
-        (s.g_along() - v2_coeff * v * v - lift) / inertia
+        (s.g_along() - v2_coeff * v * v - lift, inertia)
+    }
+}
+
+/// F_d/M and F_c/M of a body of size and growth `gr` at speed `v`
+/// (`docs/snowball-and-losses.md` §2.1): `F_d = ½ ρ_a C_d A v|v|` with the
+/// frontal area A of [`crate::losses::frontal_area`], `F_c/M = e_c λ`.
+fn losses_per_mass(s: &Scenario, gr: &Growth, l: &Losses, v: f64) -> LossesPerMass {
+    LossesPerMass {
+        drag: l.drag_factor() * crate::losses::frontal_area(s, gr.r) * v * v.abs() / gr.mass,
+        compaction: l.compaction_energy * gr.lambda,
     }
 }
 
@@ -327,29 +358,49 @@ struct AreaLaw {
 }
 
 /// The losses of `docs/snowball-and-losses.md` §2.1 per unit mass, bound to
-/// one scenario: drag `F_d/M = ρ_a C_d v²/(π ρ r)` (A = 2 r l, M = π ρ l r²),
-/// compaction `F_c/M = e_c λ = e_c b/(π r²)`, rolling resistance `c_rr N/M`
-/// with `N/M = C + r′(a + q/2)`, r′ = b/(2πr), q = b v²/(π r²)
-/// ([`circular_forces`]).
+/// one scenario on the area law π r² = π r0² + b x (s = π r², 1/r = √(π/s)):
+///
+/// * drag `F_d/M = ½ ρ_a C_d A v²/M`: the log (A = 2 r l, M = π ρ l r²)
+///   `ρ_a C_d v²/(π ρ r)`, the ball (A = π r², M = (4/3) π ρ r³)
+///   `3 ρ_a C_d v²/(8 ρ r)`;
+/// * compaction `F_c/M = e_c λ = e_c (n/2) b/s` (λ = n r′/r, r′ = b/(2πr));
+/// * rolling resistance `c_rr N/M` with
+///   `N/M = C + r′ a + (λ r′ + r″) v² = C + r′ (a + (n − 1) q/2)`,
+///   q = b v²/s (r″ = −r′²/r), [`circular_forces`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct LossTerms {
-    /// ρ_a C_d/(π ρ) · √π, so that `F_d/M = air v² √(1/s)` with s = π r², dimensionless.
+    /// F_d/M = `air v² √(1/s)`: ρ_a C_d √π/(π ρ) (log), 3 ρ_a C_d √π/(8 ρ) (ball).
     air: f64,
     /// c_rr.
     rolling: f64,
-    /// e_c b (0 without accretion), J m/kg: `F_c/M = compaction/s`.
+    /// e_c (n/2) b (0 without accretion), J m/kg: `F_c/M = compaction/s`.
     compaction: f64,
     /// C = g cos α, m/s².
     g_normal: f64,
+    /// 1/(1 + k): the rule G → G − (F_d + c_rr N + F_c)/M enters the common
+    /// form (which has G/(1 + k)) with this factor.
+    push: f64,
+    /// (n − 1)/2, the coefficient of r′ q in N/M.
+    normal_q: f64,
 }
 
 impl LossTerms {
-    fn new(l: &Losses, s: &Scenario, b: f64) -> Option<Self> {
+    fn new(l: &Losses, s: &Scenario, shape: Shape, b: f64) -> Option<Self> {
+        let (num, den) = shape.push_ratio();
+        let n = shape.mass_exponent();
+        let air = match shape {
+            Shape::Cylinder => l.air_density * l.drag_coefficient / (PI * s.density()) * PI.sqrt(),
+            Shape::Sphere => {
+                3.0 * l.air_density * l.drag_coefficient / (8.0 * s.density()) * PI.sqrt()
+            }
+        };
         l.any().then(|| Self {
-            air: l.air_density * l.drag_coefficient / (PI * s.density()) * PI.sqrt(),
+            air,
             rolling: l.rolling_resistance,
-            compaction: l.compaction_energy * b,
+            compaction: l.compaction_energy * b * (n / 2.0),
             g_normal: s.g_normal(),
+            push: num / den,
+            normal_q: (n - 1.0) / 2.0,
         })
     }
 }
@@ -374,6 +425,7 @@ enum Acceleration {
         balance: Balance,
         accretes: bool,
         scenario: Scenario,
+        losses: Losses,
     },
 }
 
@@ -384,7 +436,7 @@ impl Acceleration {
 
     /// The acceleration of `derivation` run with `c` on `s` with the losses
     /// `l`: the common form where r(x) follows the area law, else the balance
-    /// (the ball with a fixed swath, which takes no losses).
+    /// (the ball with a fixed swath).
     fn of(derivation: Derivation, c: &Coefficients, s: &Scenario, l: &Losses) -> Self {
         if s.follows_area_law() {
             Self::Area(AreaLaw::new(c, s, l))
@@ -393,6 +445,7 @@ impl Acceleration {
                 balance: derivation.balance(),
                 accretes: c.accretes,
                 scenario: *s,
+                losses: *l,
             }
         }
     }
@@ -405,7 +458,15 @@ impl Acceleration {
                 balance,
                 accretes,
                 scenario,
-            } => balance.acceleration(scenario, &growth_at(scenario, x, *accretes), v),
+                losses,
+            } => {
+                let gr = growth_at(scenario, x, *accretes);
+                if losses.any() {
+                    balance.acceleration_with_losses(scenario, &gr, losses, v)
+                } else {
+                    balance.acceleration(scenario, &gr, v)
+                }
+            }
         }
     }
 
@@ -413,7 +474,12 @@ impl Acceleration {
     fn losses_at(&self, x: f64, v: f64) -> LossesPerMass {
         match self {
             Self::Area(law) => law.losses_at(x, v),
-            Self::General { .. } => LossesPerMass::default(),
+            Self::General {
+                accretes,
+                scenario,
+                losses,
+                ..
+            } => losses_per_mass(scenario, &growth_at(scenario, x, *accretes), losses, v),
         }
     }
 }
@@ -433,16 +499,17 @@ impl AreaLaw {
             lift_b2: c.lift_b2 * gc * b * b / 3.0,
             inertia: c.inertia_b2 * b * b / (6.0 * PI),
             drag_b3: c.drag_b3 * b * b * b / PI,
-            losses: LossTerms::new(l, s, b),
+            losses: LossTerms::new(l, s, c.shape, b),
         }
     }
 
     /// Acceleration at `(x, v)`, m/s².
     ///
-    /// With losses, §2.1: the common form times 3/2 reads `(3/2)(1 + κ…) a =
+    /// With losses, §2.1: the common form times 1 + k reads `(1 + k)(1 + κ…) a =
     /// G − …`, and G becomes `G − F_d/M − F_c/M − c_rr N/M` with
-    /// `N/M = C + r′(a + q/2)`; solved for a,
-    /// `a = [num − (2/3)(F_d/M + F_c/M + c_rr (C + r′q/2))] / (1 + κ… + (2/3) c_rr r′)`.
+    /// `N/M = C + r′(a + (n − 1) q/2)`; solved for a, with p = 1/(1 + k),
+    /// `a = [num − p (F_d/M + F_c/M + c_rr (C + (n − 1) r′q/2))] / (1 + κ… + p c_rr r′)`
+    /// (p = 2/3, n = 2 for the log; 5/7, 3 for the ball).
     fn at(&self, x: f64, v: f64) -> f64 {
         let inv_s = 1.0 / (self.s0 + self.b * x);
         let mut a = self.push - self.drag * v * v * inv_s;
@@ -457,9 +524,9 @@ impl AreaLaw {
             // r′ = b/(2π r) = b √(π/s)/(2π); q = b v²/s.
             let r_prime = self.b * (inv_s / PI).sqrt() / 2.0;
             let q = self.b * v * v * inv_s;
-            let normal_free = l.g_normal + r_prime * q / 2.0;
-            a -= 2.0 / 3.0 * (per_mass.drag + per_mass.compaction + l.rolling * normal_free);
-            return a / (1.0 + self.inertia * inv_s + 2.0 / 3.0 * l.rolling * r_prime);
+            let normal_free = l.g_normal + r_prime * q * l.normal_q;
+            a -= l.push * (per_mass.drag + per_mass.compaction + l.rolling * normal_free);
+            return a / (1.0 + self.inertia * inv_s + l.push * l.rolling * r_prime);
         }
         if self.inertia != 0.0 {
             a /= 1.0 + self.inertia * inv_s;
@@ -584,9 +651,10 @@ impl<const N: usize> CircularSystem<N> {
     ) -> Self {
         let l = opts.losses;
         let drive = scenario.g_along() - l.rolling_resistance * scenario.g_normal();
+        let (num, den) = coeffs.shape.push_ratio();
         let terminal_accel =
             (!coeffs.accretes && l.drag_coefficient > 0.0 && l.terminal_tol > 0.0 && drive > 0.0)
-                .then(|| l.terminal_tol * drive / 1.5);
+                .then(|| l.terminal_tol * drive * num / den);
         Self {
             coeffs,
             scenario: *scenario,
@@ -768,14 +836,6 @@ impl Model for CircularModel {
     ) -> Result<RunEnd, SimError> {
         opts.validate()?;
         super::check_tolerances(self.kind(), scenario, opts)?;
-        if opts.losses.records_ledger() && scenario.shape() != Shape::Cylinder {
-            return Err(crate::error::ParamError::Unsupported {
-                model: self.kind().id(),
-                what: "losses or --ledger with --shape sphere",
-                reason: "the ball's losses (frontal area pi r^2, docs/snowball-and-losses.md §2.1) are not built yet; use the log",
-            }
-            .into());
-        }
         if opts.losses.records_ledger() {
             self.run::<6>(scenario, opts, sink)
         } else {

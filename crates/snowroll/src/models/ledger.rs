@@ -9,57 +9,47 @@
 //! energy the model's own equation destroys, `W_model = −∫ P dt`,
 //!
 //! `P = v [M I a + ½ M′ I v² + M r′ r″ v² + V′(x) + F_d + c_rr N + F_c]`,
-//! `I = 1 + k + r′²` (k = ½ for the log),
+//! `I = 1 + k + r′²` (k = ½ for the log, 2/5 for the ball),
 //!
 //! i.e. P is the rate of change of `K + V + ΣD` computed from the model's
 //! own a and N. The rates are integrated as extra ODE states; K and V are
 //! evaluated at each sample from eqs. (7) and (10) ([`crate::physics`]), so
 //! the residual stays at the integration error only if P is the right rate.
 
-use std::f64::consts::PI;
-
 use super::circular::Coefficients;
 use super::contact::circular_forces;
-use crate::losses::Losses;
-use crate::physics;
+use crate::losses::{frontal_area, Losses};
+use crate::physics::{self, growth_at};
 use crate::scenario::Scenario;
 use crate::trajectory::LedgerRow;
 
-/// The log's k in `I = k M r²` about its centre.
-const K_LOG: f64 = 0.5;
-
 /// The rates `[dD_drag, dD_rr, dD_comp, dW_model]/dt`, W, at `[x, v, a]`
-/// (a the model's own acceleration). The forces are computed here from
-/// their definitions, independently of the equation of motion: for
-/// `energy` and `snowless` the model's W then stays 0 only if the equation
-/// took the losses in correctly.
+/// (a the model's own acceleration), for the log and the ball alike: r, M,
+/// r′, r″ and λ = M′/M from the body's growth law ([`growth_at`]), k from
+/// its shape. The forces are computed here from their definitions,
+/// independently of the equation of motion: for `energy` and `snowless`
+/// the model's W then stays 0 only if the equation took the losses in
+/// correctly.
 pub(super) fn rates(
     s: &Scenario,
     coeffs: &Coefficients,
     l: &Losses,
     [x, v, a]: [f64; 3],
 ) -> [f64; 4] {
-    let (b, r, m) = if coeffs.accretes {
-        (
-            s.snow_depth(),
-            physics::radius_at(s, x),
-            physics::mass_at(s, x),
-        )
-    } else {
-        (0.0, s.initial_radius(), s.initial_mass())
-    };
-    let (rho, len, g_along, g_normal) = (s.density(), s.length(), s.g_along(), s.g_normal());
-    // The three losses, §2.1: F_d = ½ ρ_a C_d (2 r l) v², c_rr N, F_c = e_c dM/dx.
-    let f_drag = l.drag_factor() * 2.0 * r * len * v * v.abs();
+    let gr = growth_at(s, x, coeffs.accretes);
+    let (r, m, r1, r2, lambda) = (gr.r, gr.mass, gr.dr_dx, gr.d2r_dx2, gr.lambda);
+    let (g_along, g_normal) = (s.g_along(), s.g_normal());
+    let b = if coeffs.accretes { s.snow_depth() } else { 0.0 };
+    // The three losses, §2.1: F_d = ½ ρ_a C_d A v² (A = 2 r l, π r²),
+    // c_rr N, F_c = e_c dM/dx (= e_c ρ b l, e_c ρ b w).
+    let f_drag = l.drag_factor() * frontal_area(s, r) * v * v.abs();
     let normal = circular_forces(coeffs, s, x, v, a).normal_n;
     let f_rolling = l.rolling_resistance * normal;
-    let dm_dx = rho * b * len;
+    let dm_dx = lambda * m;
     let f_compaction = l.compaction_energy * dm_dx;
-    // Rate of K + V: dK/dt = v [M I a + ½ M′ I v² + M r′ r″ v²], dV/dt = V′ v.
-    let r1 = b / (2.0 * PI * r);
-    let r2 = -b * b / (4.0 * PI * PI * r * r * r);
-    let inertia = 1.0 + K_LOG + r1 * r1;
-    let lambda = b / (PI * r * r);
+    // Rate of K + V, K = ½ M (1 + k + r′²) v²: dK/dt = v [M I a + ½ M′ I v² + M r′ r″ v²],
+    // dV/dt = V′ v with V′ = M C [λ (r + b/2) + r′] − M G (§1.2).
+    let inertia = 1.0 + s.shape().inertia_factor() + r1 * r1;
     let v_prime = m * g_normal * (lambda * (r + b / 2.0) + r1) - m * g_along;
     let power = v
         * (m * inertia * a
@@ -82,10 +72,11 @@ pub(super) fn row(s: &Scenario, coeffs: &Coefficients, x: f64, v: f64, w: [f64; 
             physics::kinetic_energy(s, 0.0, s.initial_speed()),
         )
     } else {
-        // App. A: K = (3/4) M v², V = −M G x.
+        // App. A: K = ½ (1 + k) M v², V = −M G x.
         let m = s.initial_mass();
+        let half = 0.5 * (1.0 + s.shape().inertia_factor());
         let v0 = s.initial_speed();
-        (0.75 * m * v * v, -m * s.g_along() * x, 0.75 * m * v0 * v0)
+        (half * m * v * v, -m * s.g_along() * x, half * m * v0 * v0)
     };
     let [drag, rolling, compaction, model] = w;
     // `0.0 - V`, not `-V`: at x = 0 the released energy is +0, not −0.

@@ -10,7 +10,7 @@
 use serde::Serialize;
 
 use super::{first_turn_stall_slope, ModelKind, TurnVariant};
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, Shape};
 use crate::units::{Meters, Radians};
 
 /// Largest b/r0 at which the program uses a thin-snow model without a
@@ -179,12 +179,18 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
         )),
         Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(format!(
             "{} is used beyond its range: b/r0 = {} > {max}, so the terms it neglects are not small. \
-             Its range: {}. Compare {}.",
+             Its range: {}. {}",
             kind.id(),
             // Four significant digits, in the form of every other number.
             crate::output::format_number(format!("{ratio:.3e}").parse().unwrap_or(ratio)),
             validity.statement,
-            ModelKind::TurnsExact.id()
+            match scenario.shape() {
+                Shape::Cylinder => format!("Compare {}.", ModelKind::TurnsExact.id()),
+                // The turn models are the log's (docs/snowball-and-losses.md §1.2).
+                Shape::Sphere => "No model of a ball keeps its shape under thick snow \
+                                  (the turn models are the log's)."
+                    .to_owned(),
+            }
         )),
         _ => {}
     }
@@ -224,6 +230,22 @@ mod tests {
         let mut f = ScenarioFile::default();
         edit(&mut f);
         Scenario::new(f).unwrap()
+    }
+
+    /// A ball in thick snow is not sent to `turns-exact`, which is the log's.
+    #[test]
+    fn a_thick_snow_warning_for_the_ball_does_not_suggest_a_turn_model() {
+        let thick = |shape| {
+            scenario(|f| {
+                f.snow_depth = 0.05;
+                f.shape = shape;
+            })
+        };
+        let ball = validity_warnings(ModelKind::TorqueCm, &thick(Shape::Sphere));
+        assert_eq!(ball.len(), 1);
+        assert!(!ball[0].message.contains("turns-exact"), "{}", ball[0]);
+        let log = validity_warnings(ModelKind::TorqueCm, &thick(Shape::Cylinder));
+        assert!(log[0].message.contains("Compare turns-exact"), "{}", log[0]);
     }
 
     #[test]
