@@ -66,6 +66,7 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
         "turns-acceleration",
         "turns-long-run-means",
         "turns-energy-ledger",
+        "losses-ledger-shares",
     ] {
         assert!(figures.contains(&format!("{name}.svg")), "{name}.svg");
         assert!(figures.contains(&format!("{name}.png")), "{name}.png");

@@ -616,3 +616,18 @@ fn snowless_drag_terminal_velocity_notices_a_model_with_too_much_drag() {
     });
     changes("snowless-drag-terminal-velocity", &wrong);
 }
+
+#[test]
+fn energy_ledger_balances_notices_a_ledger_with_too_little_drag_work() {
+    // Every circular model's ledger books 1 % less drag work than was done.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind.is_circular() && opts.losses.drag_coefficient > 0.0).then(|| {
+            let mut traj = kind.build().simulate(s, opts)?;
+            for row in &mut traj.ledger {
+                row.drag_j *= 0.99;
+            }
+            Ok(traj)
+        })
+    });
+    changes("energy-ledger-balances", &wrong);
+}

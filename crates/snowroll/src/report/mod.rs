@@ -43,6 +43,8 @@ mod html;
 #[cfg(feature = "plot")]
 mod intro;
 #[cfg(feature = "plot")]
+mod loss_figures;
+#[cfg(feature = "plot")]
 mod markdown;
 pub mod notation;
 #[cfg(feature = "plot")]

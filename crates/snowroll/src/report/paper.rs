@@ -46,7 +46,7 @@ pub struct Progress<'a> {
 
 /// Number of progress steps of [`build_paper_report`].
 pub fn paper_steps() -> usize {
-    CLAIMS.len() + 7
+    CLAIMS.len() + 8
 }
 
 /// The table of where the turn models part ways (see [`where_turn_models_part_ways`]).
@@ -449,36 +449,51 @@ fn means_chart(paper: &TurnDigest) -> Chart {
     .with_series(Series::new("1/4", flat(0.25)).style(Style::Dotted))
 }
 
-/// Energy ledger of the turn model: potential energy released (T_end − T_beg
-/// within each turn, energy being conserved in the turn), kinetic energy, and
-/// the collisions' losses, summed over turns as the long run went by
-/// ([`TurnDigest::ledger`]).
+/// Energy ledger of the turn model as shares of the energy released within
+/// the turns (T_end − T_beg of each turn, energy being conserved in the turn,
+/// summed over turns as the long run went by, [`TurnDigest::ledger`]): the
+/// kinetic energy after the collision and what the collisions removed. From
+/// rest the two add up to what was released (eqs. (82), (85), (86), (89)
+/// telescope), so the shares sum to 1.
 fn energy_ledger_chart(paper: &TurnDigest) -> Chart {
-    let points = |f: fn(&LedgerPoint) -> f64| -> Vec<(f64, f64)> {
+    let share = |f: fn(&LedgerPoint) -> f64| -> Vec<(f64, f64)> {
         paper
             .ledger
             .iter()
-            .map(|p| (p.turns as f64, f(p)))
+            .filter(|p| p.released_j > 0.0)
+            .map(|p| (p.turns as f64, f(p) / p.released_j))
             .collect()
     };
-    let ledger_released = points(|p| p.released_j);
-    let ledger_lost = points(|p| p.lost_j);
-    let ledger_kinetic = points(|p| p.kinetic_j);
     Chart::new(
         "turns-energy-ledger",
-        "Energy ledger of the turn-by-turn model",
+        "Energy ledger of the turn-by-turn model, as shares",
         Axis::log("turns completed", "1").column("turns"),
-        Axis::log("energy", "J").column("energy_j"),
+        Axis::linear("share of the energy released in the turns", "1").column("share"),
     )
-    .with_legend(Legend::UpperLeft)
+    .with_legend(Legend::UpperRight)
     .with_series(Series::new(
-        "potential energy released (sum over turns)",
-        ledger_released,
+        "kinetic energy after the collision",
+        share(|p| p.kinetic_j),
     ))
     .with_series(
-        Series::new("kinetic energy after the collision", ledger_kinetic).style(Style::Dashed),
+        Series::new("lost in the collisions (sum)", share(|p| p.lost_j)).style(Style::Dashed),
     )
-    .with_series(Series::new("lost in collisions (sum)", ledger_lost).style(Style::Dotted))
+    .with_series(
+        Series::new("sum of the shares", share(|p| p.kinetic_j + p.lost_j))
+            .style(Style::Markers)
+            .marker(Marker::Square),
+    )
+}
+
+/// What the long run of `paper` means physically: its last radius and the
+/// distance rolled, m (rₖ = r₀ + k b; x = Σ 2π rₖ over the turns).
+fn long_run_extent(paper: &TurnDigest, s: &Scenario) -> (f64, f64) {
+    let k = paper.turns as f64;
+    let (r0, b) = (s.initial_radius(), s.snow_depth());
+    (
+        r0 + k * b,
+        std::f64::consts::TAU * (k * r0 + b * k * (k - 1.0) / 2.0),
+    )
 }
 
 /// The report's metadata: the scenario, the tolerances, the long runs.
@@ -530,6 +545,11 @@ fn figures(
     let in_turn_mean = overall.map_or(f64::NAN, |c| c.window_mean_a_turn_over_g);
     let with_collisions = overall.map_or(f64::NAN, |c| c.window_mean_a_with_collision_over_g);
     let same = runs.caption();
+    let extent = long_run_extent(paper, lab.scenario());
+    let kinetic_share = paper
+        .ledger
+        .last()
+        .map_or(f64::NAN, |p| p.kinetic_j / p.released_j);
     let Charts {
         accel,
         speed,
@@ -546,7 +566,7 @@ fn figures(
         Figure::new(approach, &format!("How fast each circular model approaches its terminal acceleration: |a − a_term| against x, one curve per equation (eq. (4) stands for Loney's fn. 4, its closed form). Models with only the v² term approach as a power, ∝ r⁻ᵖ with p = 2(1 + 2cᵥ) (x{} for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at {}, the accuracy of the integration.", notation::superscript("-10/3"), notation::number(APPROACH_FLOOR, 1))).supports(&["eq36-slows-approach", "eq33-35-terminal-argument", "loney-limit-fifth"]),
         Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties.").supports(&["multi-turn-never-settles", "first-turn-58-64-69", "eq89-collision", "eq73-truncates-exact"]),
         Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {} G within turns and {} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, notation::fixed(in_turn_mean, 4), notation::fixed(with_collisions, 4))).supports(&["multi-turn-mean-four-ninths", "multi-turn-never-settles"]),
-        Figure::new(ledger, "Where the energy goes in the turn-by-turn model (eq. (73)): the potential energy released within the turns equals the kinetic energy plus what the collisions removed.").supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),
+        Figure::new(ledger, &format!("Where the energy goes in the turn-by-turn model (eq. (73)), as shares of the energy released within the turns: the kinetic energy after each collision and what the collisions removed add up to 1 (squares). After {} turns the log keeps a share of {} as kinetic energy; the collisions took the rest. The long run is a mathematical limit, not a hill: after {} turns the log has r = {} m and has rolled x = {} m.", paper.summary.turns, notation::fixed(kinetic_share, 3), paper.summary.turns, notation::number(extent.0, 2), notation::number(extent.1, 2))).supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),
     ]
     .into_iter()
     .map(short)
@@ -630,6 +650,9 @@ pub fn build_paper_report(
     tick("the snowball");
     let snowball = super::snowball::snowball_figure(lab, &log_times())?;
 
+    tick("the losses");
+    let losses = [super::loss_figures::ledger_shares_figure(lab)?];
+
     tick("regime map");
     let regime = super::claims::regime_figure(lab)?;
 
@@ -655,7 +678,9 @@ pub fn build_paper_report(
         tables: [vec![parting], contact_tables.to_vec()].concat(),
         figures: figures(charts, &runs, paper, lab, &opts)
             .into_iter()
-            .chain([snowball, contact_figure, regime])
+            .chain([snowball])
+            .chain(losses)
+            .chain([contact_figure, regime])
             .collect(),
         animation: Some(animation),
     })
