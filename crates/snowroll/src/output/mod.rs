@@ -1,8 +1,9 @@
 //! Writing trajectories and turn tables as CSV or JSON, row by row as a run
 //! computes them ([`TrajectoryWriter`], [`TurnTableWriter`]). Both formats
 //! come from the same serde records ([`Sample`](crate::Sample),
-//! [`TurnState`](crate::TurnState), [`TurnRow`](crate::TurnRow)); there is
-//! no hand-written CSV.
+//! [`TurnState`](crate::TurnState), [`LedgerRow`](crate::LedgerRow),
+//! [`TurnRow`](crate::TurnRow)), and every CSV header from their serde field
+//! names (`row.rs`); there is no hand-written CSV and no hand-typed header.
 
 use std::io::Write;
 
@@ -15,6 +16,7 @@ use crate::trajectory::{Sampling, SimOptions, Stop, StopReason};
 
 mod finite;
 mod ledger;
+mod row;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
@@ -201,13 +203,16 @@ impl RunParams {
     }
 }
 
+/// The `model` object of a JSON output: the id and equation of
+/// [`ModelKind`] (the full description is the public
+/// [`ModelInfo`](crate::models::ModelInfo)).
 #[derive(Serialize)]
-struct ModelInfo {
+struct JsonModel {
     id: &'static str,
     equation: &'static str,
 }
 
-impl ModelInfo {
+impl JsonModel {
     fn of(model: ModelKind) -> Self {
         Self {
             id: model.id(),
@@ -309,7 +314,7 @@ pub(crate) fn write_json_opening(
     write!(w, "{{\n  \"snowroll_version\": ")?;
     serde_json::to_writer(&mut *w, VERSION)?;
     write!(w, ",\n  \"model\": ")?;
-    serde_json::to_writer(&mut *w, &ModelInfo::of(model))?;
+    serde_json::to_writer(&mut *w, &JsonModel::of(model))?;
     write!(w, ",\n  \"params\": ")?;
     serde_json::to_writer(&mut *w, params)?;
     write!(w, ",\n  \"{array_key}\": [")?;

@@ -14,9 +14,8 @@
 
 use std::io::Write;
 
-use serde::Serialize;
-
-use super::ledger::{closed_form_terminal_velocity, LedgerSample, LEDGER_COLUMNS};
+use super::ledger::closed_form_terminal_velocity;
+use super::row::{Extra, Row, RowKind};
 use super::{
     check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
     write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
@@ -25,57 +24,6 @@ use super::{
 use crate::error::{OutputError, SinkError};
 use crate::models::ModelKind;
 use crate::trajectory::{LedgerRow, RunEnd, Sample, SampleSink, Stop, Trajectory, TurnState};
-
-/// The columns of [`Sample`], in its field order.
-const SAMPLE_COLUMNS: [&str; 9] = [
-    "t_s",
-    "x_m",
-    "v_m_s",
-    "a_m_s2",
-    "r_m",
-    "mass_kg",
-    "normal_n",
-    "friction_n",
-    "friction_ratio",
-];
-/// The columns a turn model adds, from [`TurnState`].
-const TURN_COLUMNS: [&str; 3] = ["turn", "theta_rad", "omega_rad_s"];
-
-/// A sample of a turn model: [`Sample`] plus [`TurnState`] in one row.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-struct TurnSampleRow {
-    t_s: f64,
-    x_m: f64,
-    v_m_s: f64,
-    a_m_s2: f64,
-    r_m: f64,
-    mass_kg: f64,
-    normal_n: f64,
-    friction_n: f64,
-    friction_ratio: Option<f64>,
-    turn: u64,
-    theta_rad: f64,
-    omega_rad_s: f64,
-}
-
-impl TurnSampleRow {
-    fn new(s: &Sample, k: &TurnState) -> Self {
-        Self {
-            t_s: s.t_s,
-            x_m: s.x_m,
-            v_m_s: s.v_m_s,
-            a_m_s2: s.a_m_s2,
-            r_m: s.r_m,
-            mass_kg: s.mass_kg,
-            normal_n: s.normal_n,
-            friction_n: s.friction_n,
-            friction_ratio: s.friction_ratio,
-            turn: k.turn,
-            theta_rad: k.theta_rad,
-            omega_rad_s: k.omega_rad_s,
-        }
-    }
-}
 
 enum Body<W: Write> {
     /// Boxed: the CSV writer carries its own buffer.
@@ -140,14 +88,15 @@ impl<W: Write> TrajectoryWriter<W> {
                         format_number(vt)
                     )?;
                 }
-                let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
-                if turns {
-                    csv.write_record(SAMPLE_COLUMNS.iter().chain(&TURN_COLUMNS))?;
+                let kind = if turns {
+                    RowKind::Turn
                 } else if ledger {
-                    csv.write_record(SAMPLE_COLUMNS.iter().chain(&LEDGER_COLUMNS))?;
+                    RowKind::Ledger
                 } else {
-                    csv.write_record(SAMPLE_COLUMNS)?;
-                }
+                    RowKind::Plain
+                };
+                let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+                csv.write_record(Row::columns(kind))?;
                 Body::Csv(Box::new(csv))
             }
             Format::Json => {
@@ -180,19 +129,21 @@ impl<W: Write> TrajectoryWriter<W> {
     /// of it is written ([`OutputError::NonFinite`]).
     fn row(&mut self, s: &Sample, turn: Option<&TurnState>) -> Result<(), OutputError> {
         let row = self.rows + 1;
-        if self.ledger {
+        let ledger;
+        let extra = if self.ledger {
             // A ledger run sends a ledger row before each sample; one
             // without is a model that keeps no ledger: zeros would lie.
-            let l = self
+            ledger = self
                 .pending_ledger
                 .take()
                 .ok_or(OutputError::MissingLedger { row })?;
-            self.put(row, &LedgerSample::new(s, &l))?;
+            Extra::Ledger(&ledger)
         } else if let Some(k) = turn.filter(|_| self.turns) {
-            self.put(row, &TurnSampleRow::new(s, k))?;
+            Extra::Turn(k)
         } else {
-            self.put(row, s)?;
-        }
+            Extra::None
+        };
+        self.put(row, &Row { sample: s, extra })?;
         self.rows += 1;
         self.last_turn = turn.copied();
         Ok(())
@@ -200,7 +151,7 @@ impl<W: Write> TrajectoryWriter<W> {
 
     /// Writes `record` as row `row` (from 1) in the body's format, refused
     /// before any of it is written if a number is not finite.
-    fn put(&mut self, row: u64, record: &impl Serialize) -> Result<(), OutputError> {
+    fn put(&mut self, row: u64, record: &Row<'_>) -> Result<(), OutputError> {
         match &mut self.body {
             Body::Csv(csv) => {
                 check_finite(record, Some(row))?;

@@ -11,6 +11,7 @@
 
 use std::io::Write;
 
+use super::row::field_names;
 use super::{
     check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
     write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
@@ -50,7 +51,7 @@ impl<W: Write> TurnTableWriter<W> {
             Format::Csv => {
                 write_csv_header(&mut w, model, params)?;
                 let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
-                csv.write_record(COLUMNS)?;
+                csv.write_record(field_names::<TurnRow>())?;
                 Body::Csv(Box::new(csv))
             }
             Format::Json => {
@@ -178,25 +179,6 @@ pub fn write_turn_table(
     Ok(())
 }
 
-/// The CSV columns of [`TurnRow`], for the header of an empty table.
-const COLUMNS: [&str; 15] = [
-    "turn",
-    "t_start_s",
-    "x_start_m",
-    "v_start_m_s",
-    "t_end_s",
-    "v_end_m_s",
-    "v_after_m_s",
-    "collision_loss_j",
-    "mean_a_turn_m_s2",
-    "min_a_m_s2",
-    "max_a_m_s2",
-    "mean_a_with_collision_m_s2",
-    "min_normal_n",
-    "min_normal_over_mg",
-    "max_friction_ratio",
-];
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -232,7 +214,7 @@ mod tests {
         let last_row = lines.iter().rposition(|l| !l.starts_with('#'));
         assert!(stop > last_row);
         let body: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).collect();
-        assert_eq!(body[0], COLUMNS.join(","));
+        assert_eq!(body[0], field_names::<TurnRow>().join(","));
         assert_eq!(body.len(), 1 + 3);
     }
 
@@ -244,7 +226,7 @@ mod tests {
         write_turn_table(&mut out, Format::Csv, &t, &params).unwrap();
         let text = String::from_utf8(out).unwrap();
         let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
-        assert_eq!(header, COLUMNS.join(","));
+        assert_eq!(header, field_names::<TurnRow>().join(","));
     }
 
     #[test]
