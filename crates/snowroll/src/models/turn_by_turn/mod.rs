@@ -781,17 +781,24 @@ impl Model for TurnModel {
         self.variant.kind()
     }
 
+    /// The common checks, and the turn models' own: the scale of a turn
+    /// ([`check_turn_scale`]) and the losses they do not take.
+    fn check(&self, scenario: &Scenario, opts: &SimOptions) -> Result<(), SimError> {
+        opts.validate()?;
+        self.kind().check_shape(scenario)?;
+        check_turn_scale(scenario, opts)?;
+        check_turn_losses(self.kind(), opts)?;
+        crate::models::check_tolerances(self.kind(), scenario, opts)?;
+        Ok(())
+    }
+
     fn simulate_into(
         &self,
         scenario: &Scenario,
         opts: &SimOptions,
         sink: &mut dyn SampleSink,
     ) -> Result<RunEnd, SimError> {
-        opts.validate()?;
-        self.kind().check_shape(scenario)?;
-        check_turn_scale(scenario, opts)?;
-        check_turn_losses(self.kind(), opts)?;
-        crate::models::check_tolerances(self.kind(), scenario, opts)?;
+        self.check(scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let y0 = Self::initial_state(scenario);
         if let Some(reason) = system.start(&y0) {

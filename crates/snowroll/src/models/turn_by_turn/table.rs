@@ -472,11 +472,7 @@ impl TurnModel {
         opts: &SimOptions,
         sink: &mut dyn TurnSink,
     ) -> Result<TurnRunEnd, SimError> {
-        opts.validate()?;
-        self.variant.kind().check_shape(scenario)?;
-        super::check_turn_scale(scenario, opts)?;
-        super::check_turn_losses(self.variant.kind(), opts)?;
-        crate::models::check_tolerances(self.variant.kind(), scenario, opts)?;
+        crate::models::Model::check(self, scenario, opts)?;
         if let Some(n) = opts.turns.filter(|&n| n > opts.max_rows) {
             return Err(ParamError::TooManyRows {
                 rows: n as f64,
