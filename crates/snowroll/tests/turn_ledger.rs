@@ -276,3 +276,45 @@ fn turn_models_refuse_losses_but_keep_a_ledger() {
         assert!(a.ledger.is_empty() && b.ledger.len() == b.samples.len());
     }
 }
+
+/// The per-turn table (`snowroll turns`, Python `turns()`) carries the
+/// ledger at the end of each turn, before its collision: it closes like the
+/// trajectory's, and for `turns-exact` with the note's rule its collision
+/// column grows by the table's own `collision_loss_j` (eqs. (85), (86),
+/// (89), computed there from v_end) from one turn to the next.
+#[test]
+fn the_turn_table_carries_the_ledger_at_each_turn_end() {
+    let s = Scenario::default();
+    let opts = ledger_opts(30, CollisionModel::Note);
+    let table = run_turns(ModelKind::TurnsExact, &s, &opts).unwrap();
+    assert_eq!(table.ledger.len(), table.rows.len());
+    assert_eq!(table.rows.len(), 30);
+    let initial = table.ledger[0].kinetic_j - table.ledger[0].released_j;
+    for pair in table.ledger.windows(2).zip(&table.rows) {
+        let ([before, after], row) = pair else {
+            unreachable!()
+        };
+        let grown = after.collision_j - before.collision_j;
+        assert!(
+            (grown - row.collision_loss_j).abs() <= LOSS_TOL * row.collision_loss_j,
+            "turn {}: {grown} vs {}",
+            row.turn,
+            row.collision_loss_j
+        );
+    }
+    for l in &table.ledger {
+        assert!(
+            l.residual_j.abs() <= LEDGER_TOL * ledger_scale(l, initial),
+            "{l:?}"
+        );
+    }
+    // Without `ledger` the table has none.
+    let plain = SimOptions {
+        turns: Some(3),
+        ..SimOptions::default()
+    };
+    assert!(run_turns(ModelKind::Turns, &s, &plain)
+        .unwrap()
+        .ledger
+        .is_empty());
+}
