@@ -1466,3 +1466,58 @@ fn a_snowless_ball_rolls_at_five_sevenths_g_sin_alpha() {
     assert!(rows > 1);
     assert!(out.contains("# shape = sphere\n"));
 }
+
+/// A run the model refuses (`Model::check`) writes nothing to stdout: no
+/// header first. The message names the model and the reason; the same holds
+/// for an output file, which is not created.
+#[test]
+fn a_refused_run_writes_nothing_before_the_error() {
+    let cases: [(&[&str], &[&str]); 4] = [
+        (
+            &["simulate", "--model", "turns", "--shape", "sphere"],
+            &["model turns", "shape = sphere", "the log's"],
+        ),
+        (
+            &["turns", "--model", "turns-exact", "--shape", "sphere"],
+            &["model turns-exact", "shape = sphere"],
+        ),
+        (
+            &[
+                "simulate",
+                "--model",
+                "loney",
+                "--shape",
+                "sphere",
+                "--swath-width",
+                "0.1",
+            ],
+            &["model loney", "area law"],
+        ),
+        (
+            &[
+                "simulate", "--model", "turns", "--format", "json", "--rtol", "1e-20",
+            ],
+            &["rtol"],
+        ),
+    ];
+    for (args, needles) in cases {
+        let out = snowroll().args(args).assert().code(1);
+        let o = out.get_output();
+        assert!(o.stdout.is_empty(), "{args:?}: stdout {:?}", o.stdout);
+        let err = String::from_utf8(o.stderr.clone()).unwrap();
+        assert!(err.starts_with("error: "), "{err}");
+        for n in needles {
+            assert!(err.contains(n), "{args:?}: {err:?} lacks {n:?}");
+        }
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("out.csv");
+    snowroll()
+        .args([
+            "simulate", "--model", "turns", "--shape", "sphere", "--output",
+        ])
+        .arg(&path)
+        .assert()
+        .code(1);
+    assert!(!path.exists());
+}

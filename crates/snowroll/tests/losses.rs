@@ -530,7 +530,8 @@ fn ledger_sums_to_the_initial_energy_on_random_scenarios() {
     assert!(balls.get() >= 500, "{} balls", balls.get());
 }
 
-/// The turn models carry no losses yet: they refuse, naming the flag.
+/// The turn models take no losses (their slip and extremes come from the
+/// energy integral of a turn, §2.1): they refuse, naming the flag.
 #[test]
 fn turn_models_refuse_losses() {
     let l = Losses {

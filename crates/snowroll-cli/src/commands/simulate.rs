@@ -2,9 +2,8 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
-    check_tolerances, check_turn_scale, default_atol, format_number, tolerance_warning,
-    validity_warnings, ModelKind, RunParams, Sampling, Scenario, SimError, SimOptions, Stop,
-    StopReason, TrajectoryWriter, TurnState,
+    default_atol, format_number, tolerance_warning, validity_warnings, ModelKind, RunParams,
+    Sampling, Scenario, SimError, SimOptions, Stop, StopReason, TrajectoryWriter, TurnState,
 };
 
 use super::inputs::{self, id_list, is_non_finite, turn_models};
@@ -46,9 +45,9 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         _ => "--times".to_string(),
     };
     inputs::check_row_count(&opts, opts.sampling.known_rows(opts.t_end), &what)?;
-    opts.validate()?;
-    check_turn_scale(&scenario, &opts)?;
-    check_tolerances(model, &scenario, &opts)?;
+    // Everything the model refuses, before any output (nothing reaches stdout).
+    let runner = model.build();
+    runner.check(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()
@@ -67,7 +66,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     let mut writer = TrajectoryWriter::new(&mut sink, format, model, &params)
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as they are computed; the stop and the notes are written last.
-    let end = match model.build().simulate_into(&scenario, &opts, &mut writer) {
+    let end = match runner.simulate_into(&scenario, &opts, &mut writer) {
         Ok(end) => end,
         Err(SimError::Sink(e)) if !is_non_finite(&e) => {
             return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))

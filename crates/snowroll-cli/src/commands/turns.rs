@@ -6,9 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    check_tolerances, check_turn_scale, default_atol, format_number, run_turns_into,
-    tolerance_warning, validity_warnings, RunParams, Sampling, SimError, StopReason, TurnRunEnd,
-    TurnSummary, TurnTableWriter,
+    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, RunParams,
+    Sampling, SimError, StopReason, TurnRunEnd, TurnSummary, TurnTableWriter,
 };
 
 use super::inputs::{self, id_list, is_non_finite, turn_models};
@@ -53,9 +52,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         opts.tolerances.atol = default_atol(model, &scenario);
     }
     inputs::check_row_count(&opts, Some(wanted as f64), &format!("--turns {wanted}"))?;
-    opts.validate()?;
-    check_turn_scale(&scenario, &opts)?;
-    check_tolerances(model, &scenario, &opts)?;
+    // Everything the model refuses, before any output (nothing reaches stdout).
+    model.build().check(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()

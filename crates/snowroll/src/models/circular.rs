@@ -834,8 +834,7 @@ impl Model for CircularModel {
         opts: &SimOptions,
         sink: &mut dyn SampleSink,
     ) -> Result<RunEnd, SimError> {
-        opts.validate()?;
-        super::check_tolerances(self.kind(), scenario, opts)?;
+        self.check(scenario, opts)?;
         if opts.losses.records_ledger() {
             self.run::<6>(scenario, opts, sink)
         } else {

@@ -286,8 +286,7 @@ impl Model for LoneyModel {
         opts: &SimOptions,
         sink: &mut dyn SampleSink,
     ) -> Result<RunEnd, SimError> {
-        opts.validate()?;
-        ModelKind::Loney.check_shape(scenario)?;
+        self.check(scenario, opts)?;
         if opts.losses.records_ledger() {
             return CircularModel::new(Derivation::TorqueAboutCentre)
                 .simulate_into(scenario, opts, sink);

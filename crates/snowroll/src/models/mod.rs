@@ -72,6 +72,34 @@ pub trait Model {
     /// Which model this is.
     fn kind(&self) -> ModelKind;
 
+    /// Everything that makes the model refuse a run, checked before any
+    /// output: the options ([`SimOptions::validate`]), the shape
+    /// ([`ModelKind::check_shape`]) and the tolerances
+    /// ([`check_tolerances`]); models with more to refuse (the turn models:
+    /// the scale of a turn, the losses they do not take) add theirs.
+    /// [`simulate_into`](Self::simulate_into) calls it first; a caller that
+    /// writes a header before the run (the CLI) calls it before the header,
+    /// so that a refused run writes nothing.
+    ///
+    /// ```
+    /// use snowroll::{Model, ModelKind, Scenario, ScenarioFile, Shape, SimOptions};
+    /// let ball = Scenario::new(ScenarioFile { shape: Shape::Sphere, ..ScenarioFile::default() })?;
+    /// let opts = SimOptions::default();
+    /// assert!(ModelKind::TorqueCm.build().check(&ball, &opts).is_ok());
+    /// let err = ModelKind::Turns.build().check(&ball, &opts).unwrap_err();
+    /// assert!(err.to_string().contains("turns does not support shape = sphere"));
+    /// # Ok::<(), snowroll::ParamError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`SimError::Param`] naming the model and the reason.
+    fn check(&self, scenario: &Scenario, opts: &SimOptions) -> Result<(), SimError> {
+        opts.validate()?;
+        self.kind().check_shape(scenario)?;
+        check_tolerances(self.kind(), scenario, opts)?;
+        Ok(())
+    }
+
     /// Runs the model and sends each sample to `sink` as soon as it is
     /// computed, so memory does not grow with the number of samples. The
     /// samples are those of [`simulate`](Self::simulate), bit for bit.

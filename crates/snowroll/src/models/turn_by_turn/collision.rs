@@ -171,6 +171,30 @@ impl PivotImpact {
         g_along: f64,
         g_normal: f64,
     ) -> Option<f64> {
+        let dv = self.notch_lift(r, b, g_along, g_normal);
+        let inertia_new = Self::inertia_next(r, b);
+        let omega_fill = self.omega_fill(r, b, omega_end);
+        let w2 = omega_fill * omega_fill - 2.0 * dv / inertia_new;
+        (w2 > 0.0).then(|| w2.sqrt())
+    }
+
+    /// The moment of inertia of the log of turn k + 1 about its contact line
+    /// over m_k, `(3/2)(m_{k+1}/m_k) r_{k+1}²` with `m_{k+1}/m_k = (R/r)²`, m².
+    pub fn inertia_next(r: Meters, b: Meters) -> f64 {
+        let big_r = r + b;
+        1.5 * (big_r * big_r / (r * r)) * big_r * big_r
+    }
+
+    /// θ̇ once the notch is filled, before its lift is paid: angular momentum
+    /// about E conserved, `θ̇_fill = θ̇_end I_E/I_{k+1}`, rad/s.
+    pub fn omega_fill(&self, r: Meters, b: Meters, omega_end: f64) -> f64 {
+        omega_end * self.inertia_e / Self::inertia_next(r, b)
+    }
+
+    /// The potential energy of the notch's snow lifted into place, over m_k,
+    /// `ΔV = C[Δm(R + b/2) − Q sin δ] − G[Δm d/2 − Q(1 − cos δ)]`
+    /// ([`PivotImpact::omega_next`]), J/kg.
+    pub fn notch_lift(&self, r: Meters, b: Meters, g_along: f64, g_normal: f64) -> f64 {
         let big_r = r + b;
         // Per unit m_k = πρl r²: ρl/m_k = 1/(πr²).
         let per_mk = 1.0 / (PI * r * r);
@@ -179,11 +203,16 @@ impl PivotImpact {
         let dm = per_mk * self.delta * d2 / 2.0;
         let q = per_mk * d3 / 3.0;
         let (s, c) = self.delta.sin_cos();
-        let dv = g_normal * (dm * (big_r + b / 2.0) - q * s)
-            - g_along * (dm * self.d / 2.0 - q * (1.0 - c));
-        let inertia_new = 1.5 * (big_r * big_r / (r * r)) * big_r * big_r;
-        let omega_fill = omega_end * self.inertia_e / inertia_new;
-        let w2 = omega_fill * omega_fill - 2.0 * dv / inertia_new;
-        (w2 > 0.0).then(|| w2.sqrt())
+        g_normal * (dm * (big_r + b / 2.0) - q * s) - g_along * (dm * self.d / 2.0 - q * (1.0 - c))
+    }
+
+    /// The potential energy of the pivot over m_k relative to its start, at
+    /// rotation φ about E: `M ρ_E [(C cos ψ + G sin ψ) − (C cos ψ₀ + G sin ψ₀)]`,
+    /// ψ = ψ₀ − φ (= M g ρ_E [cos(ψ − α) − cos(ψ₀ − α)]; its −d/dφ is the
+    /// torque of [`PivotImpact::angular_acceleration`]), J/kg.
+    pub fn pivot_potential(&self, phi: Radians, g_along: f64, g_normal: f64) -> f64 {
+        let (s, c) = (self.psi0 - phi).sin_cos();
+        let (s0, c0) = self.psi0.sin_cos();
+        self.mass * self.rho_e * (g_normal * (c - c0) + g_along * (s - s0))
     }
 }

@@ -55,7 +55,9 @@ use super::{Model, ModelKind};
 use crate::error::{ParamError, SimError};
 use crate::integrate::{Direction, EventAction, OdeSystem};
 use crate::scenario::Scenario;
-use crate::trajectory::{OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason, TurnState};
+use crate::trajectory::{
+    LedgerRow, OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason, TurnState,
+};
 use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Radians};
 
 /// Full turn, rad.
@@ -336,9 +338,12 @@ pub fn check_turn_scale(s: &Scenario, opts: &SimOptions) -> Result<(), crate::Pa
     )
 }
 
-/// The turn models do not yet take the losses of fn. 5 or record the
-/// energy ledger (`docs/snowball-and-losses.md` §2.1 derives how they would,
-/// §3.2 their ledger): they refuse rather than run without them.
+/// The turn models record the energy ledger (`--ledger`,
+/// `docs/snowball-and-losses.md` §3.2) but take none of the losses of fn. 5:
+/// where a turn slips, the smallest N and the range of a over a turn, and
+/// the pivot's impact all come from the energy integral of the turn
+/// (`I θ̇²/2 + W` constant), which drag, rolling resistance and compaction
+/// break (§2.1). They refuse rather than run with those parts wrong.
 pub(crate) fn check_turn_losses(kind: ModelKind, opts: &SimOptions) -> Result<(), ParamError> {
     let l = &opts.losses;
     let what = if l.drag_coefficient > 0.0 {
@@ -347,16 +352,16 @@ pub(crate) fn check_turn_losses(kind: ModelKind, opts: &SimOptions) -> Result<()
         "--rolling-resistance"
     } else if l.compaction_energy > 0.0 {
         "--compaction-energy"
-    } else if l.ledger {
-        "--ledger"
     } else {
         return Ok(());
     };
     Err(ParamError::Unsupported {
         model: kind.id(),
         what,
-        reason: "the turn models carry no losses or ledger yet; use a circular model \
-                 (torque-cm, energy, quasi-circular, ...) or snowless",
+        reason: "the turn models take no losses: their slip, smallest normal force, range of a \
+                 per turn and pivot impact come from the energy integral of a turn, which \
+                 losses break (docs/snowball-and-losses.md §2.1); --ledger alone is recorded. \
+                 Use a circular model (torque-cm, energy, quasi-circular, ...) or snowless",
     })
 }
 
@@ -406,6 +411,28 @@ pub(crate) struct TurnSystem {
     stop_override: Option<StopReason>,
     /// θ where this turn slips, from the energy integral ([`TurnDynamics::first_slip`]).
     slip_theta: Option<Radians>,
+    /// The energy ledger, when the run records one.
+    ledger: Option<TurnLedger>,
+}
+
+/// The energy bookkeeping of a turn run (`docs/snowball-and-losses.md`
+/// §3.2), in the model's own terms: within turn k, `K = m_k I(θ) θ̇²/2` and
+/// `V = V_k + m_k W(θ)` (during a pivot `K = m_k I_E θ̇²/2` and
+/// `V = V_c + m_k U(φ)`, [`PivotImpact::pivot_potential`]); each collision
+/// adds to `collision_j` the kinetic energy its rule removes and, for the
+/// note's rule, to `created_j` the free lift `m_{k+1} g b cos α`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct TurnLedger {
+    /// E0 = K(0) (V(0) = 0), J.
+    initial_j: Joules,
+    /// V_k, the potential energy at the start of turn k, J.
+    base_j: Joules,
+    /// V_c, the potential energy at the impact (`pivot`), J.
+    impact_j: Joules,
+    /// Kinetic energy removed by the collisions so far, J.
+    collision_j: Joules,
+    /// Energy created by the collisions so far (the note's free lift), J.
+    created_j: Joules,
 }
 
 impl TurnSystem {
@@ -431,9 +458,100 @@ impl TurnSystem {
             pivoting: false,
             stop_override: None,
             slip_theta: None,
+            ledger: None,
         };
         system.enter_turn(0);
+        if opts.losses.records_ledger() {
+            let y0 = [0.0, s.initial_speed() / s.initial_radius()];
+            system.ledger = Some(TurnLedger {
+                initial_j: system.kinetic(&y0),
+                base_j: 0.0,
+                impact_j: 0.0,
+                collision_j: 0.0,
+                created_j: 0.0,
+            });
+        }
         system
+    }
+
+    /// The kinetic energy at `[θ, θ̇]` in the model's own terms, J:
+    /// `m_k I(θ) θ̇²/2` rolling, `m_k I_E θ̇²/2` pivoting.
+    fn kinetic(&self, y: &[f64; 2]) -> Joules {
+        let inertia = if self.pivoting {
+            self.impact.inertia_e
+        } else {
+            self.dynamics.inertia(y[0]).0
+        };
+        0.5 * self.mass * inertia * y[1] * y[1]
+    }
+
+    /// The potential energy at θ relative to the start of the run, J
+    /// ([`TurnLedger`]); 0 without a ledger.
+    fn potential(&self, theta: Radians) -> Joules {
+        let Some(l) = &self.ledger else {
+            return 0.0;
+        };
+        if self.pivoting {
+            let phi = theta - self.impact.theta_c;
+            l.impact_j
+                + self.mass
+                    * self
+                        .impact
+                        .pivot_potential(phi, self.g_along, self.g_normal)
+        } else {
+            l.base_j + self.mass * self.dynamics.potential(theta).0
+        }
+    }
+
+    /// Books the impact of the `pivot` collision: `y_before` rolling about
+    /// C, `y_after` pivoting about E (`self.pivoting` not yet set). The
+    /// kinetic energy the impact removes, `K⁻ − m_k I_E θ̇₊²/2`, is a collision loss.
+    fn book_impact(&mut self, y_before: &[f64; 2], y_after: &[f64; 2]) {
+        if self.ledger.is_none() {
+            return;
+        }
+        let k_before = self.kinetic(y_before);
+        let v_impact = self.potential(y_before[0]);
+        let k_after = 0.5 * self.mass * self.impact.inertia_e * y_after[1] * y_after[1];
+        if let Some(l) = &mut self.ledger {
+            l.impact_j = v_impact;
+            l.collision_j += k_before - k_after;
+        }
+    }
+
+    /// What the collision at the end of turn k does to the ledger, from the
+    /// state just before it (in turn k): `(V_{k+1}, collision loss, created)`
+    /// with `θ̇′ = omega_next` the speed the rule gives turn k + 1
+    /// (`docs/snowball-and-losses.md` §3.2):
+    /// * `note`: the kinetic energy `K_end − (3/2) m_{k+1} r_{k+1}² θ̇′²/2` is
+    ///   lost, the lift `m_{k+1} C b` is created;
+    /// * `charged`: the lift is paid from the kinetic energy, so the loss is
+    ///   `K_end − K′ − m_{k+1} C b`;
+    /// * `pivot`: the notch's plastic accretion loses `K_end − m_k I_{k+1} θ̇_fill²/2`
+    ///   and its lift `m_k ΔV` ([`PivotImpact::notch_lift`]) raises V.
+    fn turn_end_booking(&self, y_before: &[f64; 2], omega_next: f64) -> (Joules, Joules, Joules) {
+        let k_end = self.kinetic(y_before);
+        let v_end = self.potential(y_before[0]);
+        let r = self.dynamics.radius();
+        let r_next = r + self.b;
+        let m_next = PI * self.rho_l * r_next * r_next;
+        let k_next = 0.75 * m_next * r_next * r_next * omega_next * omega_next;
+        let lift = m_next * self.g_normal * self.b;
+        match self.collision {
+            CollisionModel::Note => (v_end + lift, k_end - k_next, lift),
+            CollisionModel::Charged => (v_end + lift, k_end - k_next - lift, 0.0),
+            CollisionModel::Pivot => {
+                let p = &self.impact;
+                let omega_fill = p.omega_fill(r, self.b, y_before[1]);
+                let k_fill = 0.5
+                    * self.mass
+                    * PivotImpact::inertia_next(r, self.b)
+                    * omega_fill
+                    * omega_fill;
+                let notch = self.mass * p.notch_lift(r, self.b, self.g_along, self.g_normal);
+                (v_end + notch, k_end - k_fill, 0.0)
+            }
+        }
     }
 
     /// Sets the constants of turn `k`: r_k, m_k, X_k (eq. (74), plus the
@@ -666,6 +784,14 @@ impl OdeSystem<2> for TurnSystem {
         match (index, outcome) {
             (_, Err(reason)) => self.stop_override = Some(reason),
             (EVENT_TURN_END, Ok(_)) => {
+                if self.ledger.is_some() {
+                    let (base, lost, created) = self.turn_end_booking(y_before, y_after[1]);
+                    if let Some(l) = &mut self.ledger {
+                        l.base_j = base;
+                        l.collision_j += lost;
+                        l.created_j += created;
+                    }
+                }
                 if self.pivoting {
                     let p = self.impact;
                     let r = self.dynamics.radius();
@@ -674,7 +800,10 @@ impl OdeSystem<2> for TurnSystem {
                 self.enter_turn(self.turn + 1);
                 self.plan_slip(y_after[1]);
             }
-            (_, Ok(_)) => self.pivoting = true,
+            (_, Ok(_)) => {
+                self.book_impact(y_before, y_after);
+                self.pivoting = true;
+            }
         }
     }
 }
@@ -719,6 +848,27 @@ impl OdeModel<2> for TurnSystem {
             friction_n: forces.friction_n,
             friction_ratio: forces.friction_ratio(),
         }
+    }
+
+    /// The ledger row (`docs/snowball-and-losses.md` §3.2): no losses act
+    /// within a turn, so `K + collision − created − released = E0` but for
+    /// the integration error.
+    fn ledger(&self, _t: f64, y: &[f64; 2]) -> Option<LedgerRow> {
+        let l = self.ledger.as_ref()?;
+        let kinetic = self.kinetic(y);
+        // `0.0 - V`, not `-V`: at the start the released energy is +0, not −0.
+        let released = 0.0 - self.potential(y[0]);
+        Some(LedgerRow {
+            kinetic_j: kinetic,
+            released_j: released,
+            drag_j: 0.0,
+            rolling_j: 0.0,
+            compaction_j: 0.0,
+            model_j: 0.0,
+            collision_j: l.collision_j,
+            created_j: l.created_j,
+            residual_j: kinetic + l.collision_j - l.created_j - released - l.initial_j,
+        })
     }
 
     fn turn_state(&self, _t: f64, y: &[f64; 2]) -> Option<TurnState> {
@@ -781,17 +931,24 @@ impl Model for TurnModel {
         self.variant.kind()
     }
 
+    /// The common checks, and the turn models' own: the scale of a turn
+    /// ([`check_turn_scale`]) and the losses they do not take.
+    fn check(&self, scenario: &Scenario, opts: &SimOptions) -> Result<(), SimError> {
+        opts.validate()?;
+        self.kind().check_shape(scenario)?;
+        check_turn_scale(scenario, opts)?;
+        check_turn_losses(self.kind(), opts)?;
+        crate::models::check_tolerances(self.kind(), scenario, opts)?;
+        Ok(())
+    }
+
     fn simulate_into(
         &self,
         scenario: &Scenario,
         opts: &SimOptions,
         sink: &mut dyn SampleSink,
     ) -> Result<RunEnd, SimError> {
-        opts.validate()?;
-        self.kind().check_shape(scenario)?;
-        check_turn_scale(scenario, opts)?;
-        check_turn_losses(self.kind(), opts)?;
-        crate::models::check_tolerances(self.kind(), scenario, opts)?;
+        self.check(scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let y0 = Self::initial_state(scenario);
         if let Some(reason) = system.start(&y0) {

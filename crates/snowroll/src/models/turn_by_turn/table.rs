@@ -23,7 +23,7 @@ use crate::integrate::{integrate, EventRecord, Observer, Stats, Termination};
 use crate::models::ode::OdeModel;
 use crate::models::ModelKind;
 use crate::scenario::Scenario;
-use crate::trajectory::{SimOptions, Stop, StopReason};
+use crate::trajectory::{LedgerRow, SimOptions, Stop, StopReason};
 use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Seconds};
 
 /// One completed turn k. Column names carry their units.
@@ -319,12 +319,42 @@ pub trait TurnSink {
     /// # Errors
     /// A [`SinkError`] ends the run at once; it comes back as [`SimError::Sink`].
     fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError>;
+
+    /// The energy ledger at the end of the turn whose row comes next, just
+    /// before its collision (`docs/snowball-and-losses.md` §3.2), for a run
+    /// that records one ([`Losses::records_ledger`](crate::Losses::records_ledger)).
+    /// Ignored unless overridden.
+    ///
+    /// # Errors
+    /// As [`turn`](Self::turn).
+    fn ledger(&mut self, _row: &LedgerRow) -> Result<(), SinkError> {
+        Ok(())
+    }
 }
 
-/// Gathers every row in memory (the sink behind [`run_turns`]).
+/// Gathers every row in memory (without the ledger).
 impl TurnSink for Vec<TurnRow> {
     fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError> {
         self.push(*row);
+        Ok(())
+    }
+}
+
+/// Gathers the rows and the ledger in memory (the sink behind [`run_turns`]).
+#[derive(Default)]
+struct Gathered {
+    rows: Vec<TurnRow>,
+    ledger: Vec<LedgerRow>,
+}
+
+impl TurnSink for Gathered {
+    fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError> {
+        self.rows.push(*row);
+        Ok(())
+    }
+
+    fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        self.ledger.push(*row);
         Ok(())
     }
 }
@@ -349,6 +379,9 @@ pub struct TurnTable {
     pub model: ModelKind,
     /// One row per completed turn, in order.
     pub rows: Vec<TurnRow>,
+    /// The energy ledger at the end of each turn, before its collision, for
+    /// a run that records one; empty otherwise.
+    pub ledger: Vec<LedgerRow>,
     /// How the run ended.
     pub stop: Stop,
     /// Long-run statistics of the rows.
@@ -439,7 +472,12 @@ impl Observer<TurnSystem, 2> for TableObserver<'_> {
             min_normal_over_mg: contact.min_normal_over_mg,
             max_friction_ratio: contact.max_friction_ratio,
         };
-        match self.sink.turn(&row) {
+        let sent = match system.ledger(event.t, &event.y_before) {
+            Some(ledger) => self.sink.ledger(&ledger),
+            None => Ok(()),
+        }
+        .and_then(|()| self.sink.turn(&row));
+        match sent {
             Ok(()) => {
                 self.summary.push(&row);
                 self.rows += 1;
@@ -472,11 +510,7 @@ impl TurnModel {
         opts: &SimOptions,
         sink: &mut dyn TurnSink,
     ) -> Result<TurnRunEnd, SimError> {
-        opts.validate()?;
-        self.variant.kind().check_shape(scenario)?;
-        super::check_turn_scale(scenario, opts)?;
-        super::check_turn_losses(self.variant.kind(), opts)?;
-        crate::models::check_tolerances(self.variant.kind(), scenario, opts)?;
+        crate::models::Model::check(self, scenario, opts)?;
         if let Some(n) = opts.turns.filter(|&n| n > opts.max_rows) {
             return Err(ParamError::TooManyRows {
                 rows: n as f64,
@@ -550,11 +584,12 @@ impl TurnModel {
     /// # Errors
     /// As [`run_table_into`](Self::run_table_into).
     pub fn run_table(&self, scenario: &Scenario, opts: &SimOptions) -> Result<TurnTable, SimError> {
-        let mut rows = Vec::new();
-        let end = self.run_table_into(scenario, opts, &mut rows)?;
+        let mut gathered = Gathered::default();
+        let end = self.run_table_into(scenario, opts, &mut gathered)?;
         Ok(TurnTable {
             model: end.model,
-            rows,
+            rows: gathered.rows,
+            ledger: gathered.ledger,
             stop: end.stop,
             summary: end.summary,
             stats: end.stats,
