@@ -674,6 +674,7 @@ pub fn build_paper_report(
         },
     )?;
     let animation = Animation::from_trajectory(&anim_traj, s, FRAMES)?;
+    let ball = super::snowball::ball_animation(lab, FRAMES)?;
 
     Ok(Report {
         metadata: metadata(lab, &opts),
@@ -685,7 +686,7 @@ pub fn build_paper_report(
             .chain(losses)
             .chain([contact_figure, regime])
             .collect(),
-        animation: Some(animation),
+        animations: vec![animation, ball],
     })
 }
 
