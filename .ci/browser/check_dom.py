@@ -154,6 +154,10 @@ def main():
     want_models = int(dom.body_attrs.get("data-models", "-1"))
     check(want_models >= 1 and dom.model_rows == want_models and "problem" in dom.ids and "geometry" in dom.ids,
           f"the problem section has the geometry drawing and {dom.model_rows} model rows (page declares {want_models})")
+    results = sorted(i for i in dom.ids if i.startswith("result-"))
+    check("snowball-and-losses" in dom.ids and len(results) == 5
+          and all(("claim-" + r[len("result-"):], r) in dom.hrefs for r in results),
+          f"the snowball-and-losses section has its 5 results, each linked to its claim ({results})")
     check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
           "the errata section is there, with a row per erratum")
 

@@ -29,7 +29,7 @@ const ERROR_TRAP: &str = "(function(){var n=0;function mark(){n+=1;document.docu
 const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure,.anim').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
 
 /// Prose of the report, in its one notation ([`notation::prettify`]), escaped.
-fn prose(s: &str) -> String {
+pub(super) fn prose(s: &str) -> String {
     esc(&notation::prettify(s))
 }
 
@@ -97,6 +97,14 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
     for (i, t) in report.tables.iter().enumerate() {
         let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
     }
+    if super::losses_section::applies(report) {
+        let _ = write!(
+            h,
+            "<a href=\"#{}\">{}</a>",
+            super::losses_section::SECTION_ID,
+            super::losses_section::TITLE
+        );
+    }
     for anim in &report.animations {
         let _ = write!(
             h,
@@ -116,6 +124,7 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
     for (i, t) in report.tables.iter().enumerate() {
         table_section(&mut h, i, t);
     }
+    super::losses_section::html(&mut h, report);
     for anim in &report.animations {
         animation_section(&mut h, anim);
     }

@@ -108,6 +108,8 @@ pub(super) fn render(report: &Report) -> String {
         }
     }
 
+    super::losses_section::markdown(&mut md, report);
+
     for anim in &report.animations {
         let _ = writeln!(md, "\n## {}\n", anim.title);
         let _ = writeln!(

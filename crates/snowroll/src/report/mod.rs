@@ -45,6 +45,8 @@ mod intro;
 #[cfg(feature = "plot")]
 mod loss_figures;
 #[cfg(feature = "plot")]
+mod losses_section;
+#[cfg(feature = "plot")]
 mod markdown;
 pub mod notation;
 #[cfg(feature = "plot")]
