@@ -8,14 +8,14 @@
 #   - the page logs nothing to the console and raises no script error,
 #   - the claims table is there, with a verdict in words on every row,
 #   - every figure (every REPORT_DIR/figures/*.svg) is shown as inline SVG,
-#   - the animation advances,
+#   - both animations (the log's and the snowball's) advance,
 #   - the page references no external resource,
 #   - every in-page link resolves; each figure links to the claims it
 #     supports and each is linked from a claim; the opening section has the
 #     geometry drawing and one row per model; the errata are there,
-#   - at a phone's width (400 px) no figure overflows and the page does not
-#     scroll sideways,
-#   - at both widths the animation's distance labels do not run together.
+#   - at a phone's width (400 px) no figure or animation overflows and the
+#     page does not scroll sideways,
+#   - at both widths neither animation's distance labels run together.
 # Screenshots (desktop and phone widths) are kept in REPORT_DIR as
 # browser-desktop.png and browser-phone.png. Exits non-zero on any failure.
 set -euo pipefail
@@ -69,10 +69,9 @@ var f = document.getElementById('f');
 function copy() {
   var d = f.contentDocument && f.contentDocument.documentElement;
   if (d && d.hasAttribute('data-layout-overflow')) {
-    document.documentElement.setAttribute('data-layout-overflow', d.getAttribute('data-layout-overflow'));
-    document.documentElement.setAttribute('data-layout-width', d.getAttribute('data-layout-width'));
-    if (d.hasAttribute('data-anim-label-gap')) {
-      document.documentElement.setAttribute('data-anim-label-gap', d.getAttribute('data-anim-label-gap'));
+    for (var i = 0; i < d.attributes.length; i++) {
+      var a = d.attributes[i];
+      if (a.name.indexOf('data-') === 0) { document.documentElement.setAttribute(a.name, a.value); }
     }
   } else { setTimeout(copy, 100); }
 }

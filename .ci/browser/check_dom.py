@@ -26,12 +26,14 @@ class Dom(html.parser.HTMLParser):
         self.claim_rows = []  # attrs of tr inside #claims-table tbody
         self.verdict_texts = []
         self.figures = {}  # data-figure -> {"svg": bool}
-        self.status = None
+        self.statuses = {}  # id of each animation's output.anim-status -> attrs
+        self.anim_shapes = {}  # id of each animation section -> its data-shape
         self.ids = set()
         self.hrefs = []  # in-page links: (target id, id of the enclosing element with an id)
         self.model_rows = 0
         self.figure_supports = {}  # figure id -> claim ids it links to
-        self.status_text = ""
+        self.status_texts = {}
+        self._status_id = None
         self._verdict_depth = None
         self._verdict_buf = []
         self._in_status = False
@@ -67,8 +69,12 @@ class Dom(html.parser.HTMLParser):
                 if t == "figure" and "data-figure" in x:
                     self.figures[x["data-figure"]]["svg"] = True
                     break
-        if tag == "output" and a.get("id") == "anim-status":
-            self.status = a
+        if tag == "section" and "data-shape" in a:
+            self.anim_shapes[a.get("id", "")] = a["data-shape"]
+        if tag == "output" and "anim-status" in a.get("class", "").split():
+            self.statuses[a.get("id", "")] = a
+            self._status_id = a.get("id", "")
+            self.status_texts[self._status_id] = ""
             self._in_status = True
         if tag not in ("br", "meta", "img", "input", "hr", "link", "source", "path", "line",
                        "circle", "rect", "polyline", "polygon"):
@@ -89,7 +95,7 @@ class Dom(html.parser.HTMLParser):
         if self._verdict_depth is not None:
             self._verdict_buf.append(data)
         if self._in_status:
-            self.status_text += data
+            self.status_texts[self._status_id] += data
 
 
 def main():
@@ -122,11 +128,17 @@ def main():
     missing = [n for n in on_disk if n not in with_svg]
     check(on_disk and not missing, f"every figures/*.svg is shown in the page (missing: {missing})")
 
-    st = dom.status or {}
-    ticks = int(st.get("data-ticks", "0"))
-    max_frame = int(st.get("data-max-frame", "0"))
-    check(dom.status is not None and ticks > 0 and max_frame > 0,
-          f"animation advanced: {ticks} ticks, reached frame {max_frame} ({dom.status_text.strip()!r})")
+    # Each animation advances: the log's (anim-status) and the snowball's
+    # (ball-anim-status, in the section whose data-shape is sphere).
+    check(sorted(dom.anim_shapes.values()) == ["cylinder", "sphere"],
+          f"the page has the log's and the snowball's animation (sections by shape: {dom.anim_shapes})")
+    for prefix in ("anim", "ball-anim"):
+        st = dom.statuses.get(prefix + "-status")
+        ticks = int((st or {}).get("data-ticks", "0"))
+        max_frame = int((st or {}).get("data-max-frame", "0"))
+        text = dom.status_texts.get(prefix + "-status", "").strip()
+        check(st is not None and ticks > 0 and max_frame > 0,
+              f"animation {prefix} advanced: {ticks} ticks, reached frame {max_frame} ({text!r})")
 
     broken = sorted({t for t, _ in dom.hrefs if t not in dom.ids})
     check(dom.hrefs and not broken, f"every in-page link resolves ({len(dom.hrefs)} links; broken: {broken[:5]})")
@@ -142,16 +154,21 @@ def main():
     want_models = int(dom.body_attrs.get("data-models", "-1"))
     check(want_models >= 1 and dom.model_rows == want_models and "problem" in dom.ids and "geometry" in dom.ids,
           f"the problem section has the geometry drawing and {dom.model_rows} model rows (page declares {want_models})")
+    results = sorted(i for i in dom.ids if i.startswith("result-"))
+    check("snowball-and-losses" in dom.ids and len(results) == 5
+          and all(("claim-" + r[len("result-"):], r) in dom.hrefs for r in results),
+          f"the snowball-and-losses section has its 5 results, each linked to its claim ({results})")
     check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
           "the errata section is there, with a row per erratum")
 
     def label_gap_check(attrs, where):
-        gap = attrs.get("data-anim-label-gap")
-        try:
-            ok = gap == "none" or float(gap) >= 0.0
-        except (TypeError, ValueError):
-            ok = False
-        check(ok, f"{where}: the animation's distance labels do not overlap (narrowest gap: {gap} px)")
+        for prefix in ("anim", "ball-anim"):
+            gap = attrs.get(f"data-{prefix}-label-gap")
+            try:
+                ok = gap == "none" or float(gap) >= 0.0
+            except (TypeError, ValueError):
+                ok = False
+            check(ok, f"{where}: animation {prefix}'s distance labels do not overlap (narrowest gap: {gap} px)")
 
     label_gap_check(dom.root_attrs, "at 1280 px")
 
@@ -165,7 +182,7 @@ def main():
         overflow = phone.root_attrs.get("data-layout-overflow")
         width = phone.root_attrs.get("data-layout-width")
         check(overflow == "",
-              f"at a phone's width ({width} px) no figure overflows and the page does not scroll sideways "
+              f"at a phone's width ({width} px) no figure or animation overflows and the page does not scroll sideways "
               f"(overflowing: {overflow!r})")
         label_gap_check(phone.root_attrs, f"at a phone's width ({width} px)")
 

@@ -339,7 +339,7 @@ fn small_report() -> Report {
             )
             .param("snow_depth", 0.01),
         ],
-        animation: Some(Animation::from_trajectory(&anim_run, &s, 300).unwrap()),
+        animations: vec![Animation::from_trajectory(&anim_run, &s, 300).unwrap()],
     }
 }
 
@@ -448,12 +448,12 @@ fn html_is_self_contained_and_holds_claims_figures_and_animation() {
     }
     // The embedded animation data parse back to the frames.
     let start = html
-        .find("<script type=\"application/json\" id=\"anim-data\">")
+        .find("<script type=\"application/json\" class=\"anim-data\" id=\"anim-data\" data-prefix=\"anim\">")
         .unwrap();
     let body = &html[start..];
     let json = &body[body.find('>').unwrap() + 1..body.find("</script>").unwrap()];
     let v: serde_json::Value = serde_json::from_str(json).unwrap();
-    let anim = report.animation.as_ref().unwrap();
+    let anim = &report.animations[0];
     assert_eq!(v["t"].as_array().unwrap().len(), anim.frames.len());
     assert_eq!(
         v["ring_r"].as_array().unwrap().len(),
@@ -610,4 +610,53 @@ fn a_snowball_animation_is_a_growing_shaded_ball() {
         .to_json()
         .unwrap()
         .contains("\"shape\":\"cylinder\""));
+}
+
+/// The log and the snowball each get their own section, elements and
+/// frames file; two animations of one shape are refused (their elements
+/// would share ids).
+#[test]
+fn a_log_and_a_ball_animate_side_by_side_and_one_shape_twice_is_refused() {
+    let mut report = small_report();
+    let ball = Scenario::new(ScenarioFile {
+        shape: snowroll::Shape::Sphere,
+        ..ScenarioFile::from(scenario(0.01))
+    })
+    .unwrap();
+    let traj = run(ModelKind::TorqueCm, &ball, 2.0, Sampling::Every(0.02));
+    let anim = Animation::from_trajectory(&traj, &ball, 100).unwrap();
+    // The ball's radius grows from r0 as it rolls (π r² = π r0² + b x).
+    let (first, last) = (anim.frames[0], *anim.frames.last().unwrap());
+    approx::assert_relative_eq!(first.r_m, 0.1, max_relative = 1e-12);
+    approx::assert_relative_eq!(
+        last.r_m,
+        (0.01 + 0.01 * last.x_m / std::f64::consts::PI).sqrt(),
+        max_relative = 1e-9
+    );
+    report.animations.push(anim);
+    let html = report.to_html().unwrap();
+    for id in ["animation", "ball-animation"] {
+        assert!(html.contains(&format!("<section id=\"{id}\"")), "{id}");
+    }
+    for id in [
+        "anim-canvas",
+        "ball-anim-canvas",
+        "anim-status",
+        "ball-anim-status",
+    ] {
+        assert_eq!(html.matches(&format!("id=\"{id}\"")).count(), 1, "{id}");
+    }
+    assert!(html.contains("data-prefix=\"ball-anim\""));
+    let dir = tempfile::tempdir().unwrap();
+    report.write_to(dir.path()).unwrap();
+    assert!(read(dir.path(), "data/ball-animation.csv").contains("# shape = sphere"));
+    let md = report.to_markdown();
+    assert!(md.contains("data/ball-animation.csv"));
+    // Twice the log: refused.
+    let log = report.animations[0].clone();
+    report.animations.push(log);
+    assert!(matches!(
+        report.validate(),
+        Err(ReportError::InvalidAnimation { .. })
+    ));
 }

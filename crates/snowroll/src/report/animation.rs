@@ -158,6 +158,26 @@ impl Animation {
         Ok(anim)
     }
 
+    /// Prefix of the page elements of this animation (`PREFIX-canvas`,
+    /// `PREFIX-status`, …): `anim` for the log, `ball-anim` for the
+    /// snowball. A report shows at most one animation of each shape.
+    pub fn prefix(&self) -> &'static str {
+        match self.shape {
+            Shape::Cylinder => "anim",
+            Shape::Sphere => "ball-anim",
+        }
+    }
+
+    /// Name of this animation's section in the page and of its frames'
+    /// file (`data/NAME.csv`): `animation` for the log, `ball-animation`
+    /// for the snowball.
+    pub fn name(&self) -> &'static str {
+        match self.shape {
+            Shape::Cylinder => "animation",
+            Shape::Sphere => "ball-animation",
+        }
+    }
+
     /// Checks that the animation can be played.
     ///
     /// # Errors

@@ -152,8 +152,9 @@ pub struct Report {
     pub tables: Vec<Table>,
     /// Figures, in display order.
     pub figures: Vec<Figure>,
-    /// The rolling-log animation, if any.
-    pub animation: Option<Animation>,
+    /// The animations: at most one of the log and one of the snowball
+    /// ([`Animation::name`] tells them apart).
+    pub animations: Vec<Animation>,
 }
 
 /// A figure drawn in both formats.
@@ -173,7 +174,7 @@ impl Report {
             claims: Vec::new(),
             tables: Vec::new(),
             figures: Vec::new(),
-            animation: None,
+            animations: Vec::new(),
         }
     }
 
@@ -192,8 +193,13 @@ impl Report {
         for f in &self.figures {
             f.chart.validate()?;
         }
-        if let Some(a) = &self.animation {
+        for (i, a) in self.animations.iter().enumerate() {
             a.validate()?;
+            if self.animations[..i].iter().any(|b| b.name() == a.name()) {
+                return Err(ReportError::InvalidAnimation {
+                    reason: "two animations of one shape",
+                });
+            }
         }
         Ok(())
     }

@@ -239,9 +239,12 @@ pub(super) fn write_all(
         let csv = figure_csv(fig, &report.metadata)?;
         put(data_dir.join(format!("{name}.csv")), csv.as_bytes())?;
     }
-    if let Some(anim) = &report.animation {
+    for anim in &report.animations {
         let csv = anim.to_csv(&report.metadata.software)?;
-        put(data_dir.join("animation.csv"), csv.as_bytes())?;
+        put(
+            data_dir.join(format!("{}.csv", anim.name())),
+            csv.as_bytes(),
+        )?;
     }
     put(dir.join("claims.json"), report.claims_json()?.as_bytes())?;
     put(dir.join("report.md"), report.to_markdown().as_bytes())?;

@@ -7,7 +7,7 @@ use super::{Figure, Lab, ReportError};
 use crate::losses::Losses;
 use crate::models::ModelKind;
 use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
-use crate::scenario::ScenarioFile;
+use crate::scenario::{Scenario, ScenarioFile, Shape};
 use crate::trajectory::{LedgerRow, Sampling, SimOptions};
 
 /// End of the ledger run, s. At 30 s the default log has rolled about 380 m
@@ -189,6 +189,147 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         .supports(&["energy-ledger-balances"]))
 }
 
+/// End of the speed figure's runs, s (as the other figures against time).
+const SPEED_T_END: f64 = 100.0;
+/// First time of the speed figure's logarithmic grid, s.
+const SPEED_T_FIRST: f64 = 0.1;
+/// Points of its grid.
+const SPEED_POINTS: usize = 150;
+/// The accreting model of the speed figure: torque about the centre,
+/// eq. (4), whose ball is the closed form of the TPT letter (§1.4).
+const ACCRETING: ModelKind = ModelKind::TorqueCm;
+/// The shapes the speed figure shows. The ball with losses is refused until
+/// the models take it; then it joins here.
+const SPEED_SHAPES: [Shape; 1] = [Shape::Cylinder];
+
+/// Drag alone, C_d of a bluff body, no terminal stop (the figure shows the
+/// whole approach).
+fn drag_only() -> Losses {
+    Losses {
+        drag_coefficient: DRAG_COEFFICIENT,
+        terminal_tol: 0.0,
+        ..Losses::default()
+    }
+}
+
+/// The closed-form terminal velocity of the snowless body with drag
+/// (`docs/snowball-and-losses.md` §2.2), m/s: `v_t² = M G/(½ ρ_a C_d A)`,
+/// M and A of the body at r0 (A = 2 r0 l for the log, π r0² for the ball).
+pub(super) fn snowless_terminal_velocity(s: &Scenario, losses: &Losses) -> f64 {
+    let r0 = s.initial_radius();
+    let area = match s.shape() {
+        Shape::Cylinder => 2.0 * r0 * s.length(),
+        Shape::Sphere => std::f64::consts::PI * r0 * r0,
+    };
+    (s.initial_mass() * s.g_along() / (losses.drag_factor() * area)).sqrt()
+}
+
+/// The name of a shape in the legend.
+fn body(shape: Shape) -> &'static str {
+    match shape {
+        Shape::Cylinder => "log",
+        Shape::Sphere => "ball",
+    }
+}
+
+/// Speed against time with and without drag, for the snowless body and the
+/// accreting one of eq. (4), each shape of [`SPEED_SHAPES`], with the
+/// closed-form terminal velocity of the snowless body with drag.
+///
+/// # Errors
+/// [`ReportError`] when a run fails.
+pub(super) fn speed_with_losses_figure(lab: &Lab) -> Result<Figure, ReportError> {
+    let mut chart = Chart::new(
+        "losses-speed",
+        "Speed with and without air drag",
+        Axis::log("time t", "s").column("t_s"),
+        Axis::log("speed v", "m/s").column("v_m_s"),
+    )
+    .with_legend(Legend::UpperLeft);
+    let times = log_grid(SPEED_T_FIRST, SPEED_T_END, SPEED_POINTS);
+    let mut terminal = Vec::new();
+    for (n, &shape) in SPEED_SHAPES.iter().enumerate() {
+        let s = Scenario::new(ScenarioFile {
+            shape,
+            swath_width: None,
+            ..ScenarioFile::from(*lab.scenario())
+        })
+        .map_err(crate::error::SimError::from)?;
+        // The log's curves are solid or dashed lines, the ball's carry markers.
+        let mark = |series: Series| match (n, series.style) {
+            (0, _) => series,
+            (_, Style::Line) => series.marker(Marker::Circle),
+            _ => series.marker(Marker::Triangle),
+        };
+        for kind in [ModelKind::Snowless, ACCRETING] {
+            for (losses, style, what) in [
+                (Losses::default(), Style::Line, "no losses"),
+                (drag_only(), Style::Dashed, "drag"),
+            ] {
+                let opts = SimOptions {
+                    t_end: SPEED_T_END,
+                    sampling: Sampling::Times(times.clone()),
+                    losses,
+                    ..SimOptions::default()
+                };
+                let traj = lab.run(kind, &s, &opts)?;
+                let name = format!(
+                    "{}, {} ({}), {what}",
+                    body(shape),
+                    kind.id(),
+                    kind.equation()
+                );
+                let style = if kind == ModelKind::Snowless {
+                    style
+                } else if style == Style::Line {
+                    Style::LongDashed
+                } else {
+                    Style::Dotted
+                };
+                chart = chart.with_series(mark(
+                    Series::from_samples(&name, &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style),
+                ));
+            }
+        }
+        let vt = snowless_terminal_velocity(&s, &drag_only());
+        chart = chart.with_series(
+            Series::new(
+                &format!("{}, snowless with drag: closed-form v_t", body(shape)),
+                times.iter().step_by(10).map(|&t| (t, vt)).collect(),
+            )
+            .style(Style::Markers)
+            .marker(if n == 0 {
+                Marker::Square
+            } else {
+                Marker::Circle
+            }),
+        );
+        terminal.push(format!(
+            "{} m/s for the {}",
+            super::notation::fixed(vt, 2),
+            body(shape)
+        ));
+    }
+    let file = ScenarioFile::from(*lab.scenario());
+    let caption = format!(
+        "Speed against time from rest on the default slope, without losses (solid and long-dashed lines) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = 1.2 kg/m³; dashed and dotted), for the snowless body and for the body gathering snow by eq. (4) (torque about the centre). \
+         Without snow, drag brings the body to the closed-form terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) ({}; markers), where the drag balances gravity's pull along the slope (docs/snowball-and-losses.md §2.2). \
+         With snow there is no terminal velocity: the mass grows like r², the frontal area like r, so drag per unit mass fades and the speed keeps growing, only more slowly than without drag (v ∝ t^(1/3) once r is well past the crossover radius ρ b/(ρ_a C_d), §2.2). \
+         Log-log axes: a constant acceleration is a line of slope 1.",
+        terminal.join(", ")
+    );
+    Ok(Figure::new(chart, &caption)
+        .param("alpha_deg", file.alpha_deg)
+        .param("snow_depth", file.snow_depth)
+        .param("r0", file.r0)
+        .param("drag_coefficient", DRAG_COEFFICIENT)
+        .param(
+            "rtol",
+            format!("{:e}", SimOptions::default().tolerances.rtol),
+        )
+        .supports(&["snowless-drag-terminal-velocity"]))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -200,6 +341,42 @@ mod tests {
             .iter()
             .find(|s| s.name == name)
             .expect("the figure draws every term")
+    }
+
+    /// The snowless log with drag follows v_t tanh(t/τ), τ = (3/2) v_t/G
+    /// (from rest, §2.2), and v_t is the closed form computed here from
+    /// the scenario; every curve with drag lies below its lossless twin.
+    #[test]
+    fn the_speed_figure_shows_the_terminal_velocity_and_drag_slows() {
+        let lab = Lab::new(Scenario::default(), 100);
+        let chart = speed_with_losses_figure(&lab).unwrap().chart;
+        let s = Scenario::default();
+        let (r0, rho, l) = (s.initial_radius(), s.density(), s.length());
+        let mass = std::f64::consts::PI * rho * l * r0 * r0;
+        let vt = (mass * s.g_along() / (0.5 * 1.2 * DRAG_COEFFICIENT * 2.0 * r0 * l)).sqrt();
+        // §2.2: 22.664 m/s with the defaults at 30°.
+        approx::assert_relative_eq!(vt, 22.664, max_relative = 1e-4);
+        let line = series(&chart, "log, snowless with drag: closed-form v_t");
+        approx::assert_relative_eq!(line.points[0].1, vt, max_relative = 1e-12);
+        let tau = 1.5 * vt / s.g_along();
+        let drag = series(
+            &chart,
+            &format!("log, snowless ({}), drag", ModelKind::Snowless.equation()),
+        );
+        for &(t, v) in &drag.points {
+            // Tolerance 1e-8: the integration at rtol 1e-10 over ≤ 15 τ.
+            approx::assert_relative_eq!(v, vt * (t / tau).tanh(), max_relative = 1e-8);
+        }
+        for kind in [ModelKind::Snowless, ACCRETING] {
+            let name = |what| format!("log, {} ({}), {what}", kind.id(), kind.equation());
+            let (free, dragged) = (
+                series(&chart, &name("no losses")),
+                series(&chart, &name("drag")),
+            );
+            for (p, q) in free.points.iter().zip(&dragged.points) {
+                assert!(q.1 < p.1, "{}: t = {} s", name("drag"), p.0);
+            }
+        }
     }
 
     /// The shares drawn sum to 1 at every time, to the ledger's residual;

@@ -108,14 +108,16 @@ pub(super) fn render(report: &Report) -> String {
         }
     }
 
-    if let Some(anim) = &report.animation {
-        md.push_str("\n## Animation\n\n");
+    super::losses_section::markdown(&mut md, report);
+
+    for anim in &report.animations {
+        let _ = writeln!(md, "\n## {}\n", anim.title);
         let _ = writeln!(
             md,
-            "{} — {} Open `report.html` to play it; its frames are in \
-             [`data/animation.csv`](data/animation.csv).",
-            anim.title,
-            notation::prettify(&anim.caption)
+            "{} Open `report.html` to play it; its frames are in \
+             [`data/{name}.csv`](data/{name}.csv).",
+            notation::prettify(&anim.caption),
+            name = anim.name()
         );
     }
 

@@ -1,9 +1,9 @@
 //! The report of `snowroll paper`: claims of the note with verdicts, figures,
-//! and an animation of the rolling log.
+//! and animations of the rolling log and snowball.
 //!
 //! [`Claim`], [`ClaimResult`] and [`Verdict`] are always available. With the
-//! feature `plot`, a [`Report`] (metadata, claim results, [`Figure`]s, an
-//! optional [`Animation`]) renders to a directory with [`Report::write_to`]:
+//! feature `plot`, a [`Report`] (metadata, claim results, [`Figure`]s,
+//! [`Animation`]s, one per shape) renders to a directory with [`Report::write_to`]:
 //!
 //! ```text
 //! report.html        self-contained: inline CSS, SVG, JS and data; no network
@@ -11,7 +11,7 @@
 //! claims.json        the claim results
 //! figures/NAME.svg   one per figure, and NAME.png
 //! data/NAME.csv      the plotted series of each figure
-//! data/animation.csv the animation frames (when there is an animation)
+//! data/animation.csv the log animation's frames (data/ball-animation.csv the snowball's)
 //! ```
 //!
 //! Every file records the program version and the parameters. Each file is
@@ -44,6 +44,8 @@ mod html;
 mod intro;
 #[cfg(feature = "plot")]
 mod loss_figures;
+#[cfg(feature = "plot")]
+mod losses_section;
 #[cfg(feature = "plot")]
 mod markdown;
 pub mod notation;

@@ -651,7 +651,10 @@ pub fn build_paper_report(
     let snowball = super::snowball::snowball_figure(lab, &log_times())?;
 
     tick("the losses");
-    let losses = [super::loss_figures::ledger_shares_figure(lab)?];
+    let losses = [
+        super::loss_figures::speed_with_losses_figure(lab)?,
+        super::loss_figures::ledger_shares_figure(lab)?,
+    ];
 
     tick("regime map");
     let regime = super::claims::regime_figure(lab)?;
@@ -671,6 +674,7 @@ pub fn build_paper_report(
         },
     )?;
     let animation = Animation::from_trajectory(&anim_traj, s, FRAMES)?;
+    let ball = super::snowball::ball_animation(lab, FRAMES)?;
 
     Ok(Report {
         metadata: metadata(lab, &opts),
@@ -682,7 +686,7 @@ pub fn build_paper_report(
             .chain(losses)
             .chain([contact_figure, regime])
             .collect(),
-        animation: Some(animation),
+        animations: vec![animation, ball],
     })
 }
 

@@ -1,26 +1,69 @@
 //! The report's figure of the snowball (issue 11): a/(g sin α) against time
 //! for every circular model run with a ball (I = (2/5) M r², swath 2r) from
 //! rest on the lab's slope, with the terminal fractions of
-//! `docs/snowball-and-losses.md` §1.3 as reference lines. It only reads
-//! trajectories.
+//! `docs/snowball-and-losses.md` §1.3 as reference lines; and the ball's
+//! animation. It only reads trajectories.
 
-use super::{Figure, Lab, ReportError};
+use super::{Animation, Figure, Lab, ReportError};
 use crate::models::ModelKind;
 use crate::plot::{Axis, Chart, Legend, Series, Style};
 use crate::scenario::{Scenario, ScenarioFile, Shape};
 use crate::trajectory::{Sampling, SimOptions};
+
+/// Distance the ball's animation rolls, m: its radius doubles on the way
+/// (π r² = π r0² + b x: r = 2 r0 at x = 3π r0²/b, 9.4 m with the defaults),
+/// in about a dozen turns, enough to see it grow.
+const BALL_ANIMATION_X: f64 = 10.0;
+/// Sampling interval of the ball's animation run, s (the page shows at most
+/// the frames it is given; 5 ms is below one frame of a 60 Hz screen).
+const BALL_ANIMATION_DT: f64 = 0.005;
+
+/// The lab's scenario with a ball of natural swath (2r) in place of the log.
+fn ball_scenario(lab: &Lab) -> Result<Scenario, ReportError> {
+    Ok(Scenario::new(ScenarioFile {
+        shape: Shape::Sphere,
+        swath_width: None,
+        ..ScenarioFile::from(*lab.scenario())
+    })
+    .map_err(crate::error::SimError::from)?)
+}
+
+/// The snowball's animation: the ball of eq. (4)'s balance (torque about
+/// the centre, the closed form of the TPT letter, §1.4) from rest over
+/// [`BALL_ANIMATION_X`], at most `frames` frames.
+///
+/// # Errors
+/// [`ReportError`] when the run fails or cannot be animated.
+pub(super) fn ball_animation(lab: &Lab, frames: usize) -> Result<Animation, ReportError> {
+    let s = ball_scenario(lab)?;
+    let opts = SimOptions {
+        t_end: 1e6,
+        x_end: Some(BALL_ANIMATION_X),
+        sampling: Sampling::Every(BALL_ANIMATION_DT),
+        // The distance ends the run long before t_end: the grid up to t_end
+        // is never sampled, so its size is no limit.
+        max_rows: u64::MAX,
+        ..SimOptions::default()
+    };
+    let traj = lab.run(ModelKind::TorqueCm, &s, &opts)?;
+    let mut anim = Animation::from_trajectory(&traj, &s, frames)?;
+    let r_end = traj.samples.last().map_or(f64::NAN, |p| p.r_m);
+    anim.caption = format!(
+        "The snowball of the closed form in The Physics Teacher 57, p. 436 (2019): torque about the centre, eq. (4)'s balance for a uniform ball of snow (I = (2/5) M r²), from rest over the first {BALL_ANIMATION_X} m (docs/snowball-and-losses.md §1.4). \
+         It picks up the layer over its diameter, so π r² = π r₀² + b x and its radius grows from {} m to {} m; its acceleration falls from (5/7) g sin α towards (1/6) g sin α. \
+         Shaded, with no wooden core, to tell it from the log's cross-section; the line on it shows it turning.",
+        s.initial_radius(),
+        super::notation::fixed(r_end, 3)
+    );
+    Ok(anim)
+}
 
 /// The figure, on times `times` (s, ascending, the last one the end).
 ///
 /// # Errors
 /// [`ReportError`] when a run fails.
 pub(super) fn snowball_figure(lab: &Lab, times: &[f64]) -> Result<Figure, ReportError> {
-    let s = Scenario::new(ScenarioFile {
-        shape: Shape::Sphere,
-        swath_width: None,
-        ..ScenarioFile::from(*lab.scenario())
-    })
-    .map_err(crate::error::SimError::from)?;
+    let s = ball_scenario(lab)?;
     let g = s.g_along();
     let t_end = times.last().copied().unwrap_or(100.0);
     let opts = SimOptions {
