@@ -432,8 +432,12 @@ pub fn circular_end(
     let series = u.series();
     let w_switch = series.map_or(f64::INFINITY, |sr| u.x_of_z(sr.z1).sqrt());
     let w_stop = w_end.min(w_switch);
-    let mut lo = 0.0;
-    let mut t_lo = 0.0;
+    // From rest, t(z1) is known in closed form (T3): no quadrature at all
+    // unless the run ends before z1.
+    let from_rest = series
+        .and_then(|sr| sr.t_z1)
+        .filter(|&t1| t1 < t_end && w_end > w_switch);
+    let (mut lo, mut t_lo) = from_rest.map_or((0.0, 0.0), |t1| (w_stop, t1));
     let mut hi = u.first_panel();
     let mut panels = 0;
     while lo < w_stop {
@@ -458,20 +462,22 @@ pub fn circular_end(
         let x = x_end?;
         return end(StopReason::Distance, t_lo, x);
     };
-    // t_lo = t(z1) < t_end: the rest from the series.
+    // t_lo = t(z1) < t_end: the rest from the series. Without quadrature
+    // nodes before z1, the contact forces are checked from the start.
+    let z_from = if from_rest.is_some() { 1.0 } else { sr.z1 };
     let z_x_end = x_end.map(|x| 1.0 + u.b * x / u.s0);
     if let Some(z) = z_x_end {
         let t = t_lo + sr.time_from_z1(z);
         if t < t_end {
             u.contact_ok
-                .set(u.contact_ok.get() && u.contact_holds_between(sr.z1, z));
+                .set(u.contact_ok.get() && u.contact_holds_between(z_from, z));
             return end(StopReason::Distance, t, x_end?);
         }
     }
     let z = sr.solve_time(t_lo, t_end)?;
     let z = z_x_end.map_or(z, |ze| z.min(ze));
     u.contact_ok
-        .set(u.contact_ok.get() && u.contact_holds_between(sr.z1, z));
+        .set(u.contact_ok.get() && u.contact_holds_between(z_from, z));
     end(StopReason::EndTime, t_end, u.x_of_z(z))
 }
 

@@ -23,6 +23,17 @@
 //! integrable `1/√x` from rest), stays with the quadrature; the time is then
 //! a few series evaluations instead of quadrature panels out to the end.
 //!
+//! From rest (`u0 = 0`, `β = −1`) the start needs no quadrature either.
+//! With `τ = z^(−(n+1))` (T1) becomes `(c/(n+1)) ∫_τ^1 τ'^(a−1) (1 − τ')^(−1/2) dτ'`,
+//! `a = −1/(2(n+1))`: an incomplete beta integral, and (T2) is its expansion
+//! about τ = 0, so that
+//!
+//! `t(Z) = c (B(a, 1/2)/(n + 1) + S(Z))`,   `B(a, 1/2) = Γ(a) Γ(1/2)/Γ(a + 1/2)`,   (T3)
+//!
+//! Euler's beta function continued to `a < 0` (the constant is fixed by
+//! `t(1) = 0`). The series is summed only from `z1`; an end before that
+//! is found by the quadrature.
+//!
 //! Contact forces: here `u/s = (α1 + (u0 − α1) z^(−(n+1)))/s0` is monotone
 //! in z, and with `a = P − D u/s`, `q = b u/s` the normal force and the
 //! friction force that `SpeedSquared::contact_holds` checks are bilinear in
@@ -30,6 +41,8 @@
 //! their values at the ends, and a bilinear function takes its least value
 //! on a rectangle at a corner: checking the four corners bounds the forces
 //! along the whole run (conservatively).
+
+use std::f64::consts::PI;
 
 use super::{Form, SpeedSquared};
 
@@ -53,6 +66,8 @@ pub(super) struct Series {
     pub(super) z1: f64,
     /// S(z1).
     s_z1: f64,
+    /// t(z1) from (T3) when the run starts from rest, s.
+    pub(super) t_z1: Option<f64>,
 }
 
 impl SpeedSquared {
@@ -76,8 +91,14 @@ impl SpeedSquared {
             scale: self.s0 / (self.b * alpha1.sqrt()),
             z1,
             s_z1: 0.0,
+            t_z1: None,
         };
         series.s_z1 = series.antiderivative(z1);
+        if self.u0 == 0.0 {
+            let a = -0.5 / np1;
+            let beta_fn = libm::tgamma(a) * PI.sqrt() / libm::tgamma(a + 0.5);
+            series.t_z1 = Some(series.scale * (beta_fn / np1 + series.s_z1));
+        }
         (series.scale.is_finite() && series.s_z1.is_finite()).then_some(series)
     }
 
@@ -211,6 +232,37 @@ mod tests {
                     let back = sr.solve_time(t1, by_series).unwrap();
                     assert!((back - z).abs() <= 1e-12 * z, "{d:?}: z {z} back {back}");
                 }
+            }
+        }
+    }
+
+    /// From rest, t(z1) of (T3) equals the quadrature of dt from the start
+    /// (to its 1e-12), for the three exponents n = 7/3, 3, 1 and two
+    /// slopes and depths.
+    #[test]
+    fn t3_time_from_rest_matches_the_quadrature() {
+        const AGREE: f64 = 1e-12;
+        let contact = ContactCheck {
+            stop_on_hop: true,
+            mu: None,
+        };
+        for d in [
+            Derivation::TorqueAboutCentre,
+            Derivation::TorqueAboutContact,
+            Derivation::QuasiCircular,
+        ] {
+            for (alpha, b) in [(30.0, 0.01), (60.0, 0.2)] {
+                let s = Scenario::new(ScenarioFile {
+                    alpha_deg: alpha,
+                    snow_depth: b,
+                    ..ScenarioFile::default()
+                })
+                .unwrap();
+                let u = SpeedSquared::new(&d.coefficients(), &s, contact).unwrap();
+                let sr = u.series().unwrap();
+                let t3 = sr.t_z1.unwrap();
+                let quad = u.time_between(0.0, u.x_of_z(sr.z1).sqrt());
+                assert!((t3 - quad).abs() <= AGREE * quad, "{d:?}: {t3} vs {quad}");
             }
         }
     }
