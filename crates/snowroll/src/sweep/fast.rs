@@ -36,6 +36,10 @@
 //! `√(s0/b)` and `√(v0²/2P)` from the origin, so panels that double in
 //! length from the smaller of these need few Gauss–Kronrod points each. The
 //! time `t_end` is reached by Newton's method in the panel that contains it.
+//!
+//! For the models without lift and inertia term (eqs. (4), (6), (32)) the
+//! panels stop soon after the start: beyond it t is a convergent series in
+//! `s^(−(n+1))` (submodule `series`), and Newton's method runs on that series.
 
 use std::cell::Cell;
 use std::f64::consts::PI;
@@ -44,6 +48,8 @@ use crate::models::Coefficients;
 use crate::quadrature::kronrod;
 use crate::scenario::Scenario;
 use crate::trajectory::StopReason;
+
+mod series;
 
 /// Largest whole n = 2c_v handled with the inertia term k ≠ 0 (eq. (21)
 /// as printed has n = 2): the polynomial of (F1) has degree 2n + 1.
@@ -422,11 +428,24 @@ pub fn circular_end(
         };
     }
     let w_end = x_end.map_or(f64::INFINITY, f64::sqrt);
-    let mut lo = 0.0;
-    let mut t_lo = 0.0;
+    // Where the series (T2) of `series.rs` takes over from the quadrature.
+    let series = u.series();
+    let w_switch = series.map_or(f64::INFINITY, |sr| u.x_of_z(sr.z1).sqrt());
+    let w_stop = w_end.min(w_switch);
+    // From rest, t(z1) is known in closed form (T3): no quadrature at all
+    // unless the run ends before z1.
+    let from_rest = series
+        .and_then(|sr| sr.t_z1)
+        .filter(|&t1| t1 < t_end && w_end > w_switch);
+    let (mut lo, mut t_lo) = from_rest.map_or((0.0, 0.0), |t1| (w_stop, t1));
     let mut hi = u.first_panel();
-    for _ in 0..MAX_PANELS {
-        hi = hi.min(w_end);
+    let mut panels = 0;
+    while lo < w_stop {
+        panels += 1;
+        if panels > MAX_PANELS {
+            return None;
+        }
+        hi = hi.min(w_stop);
         let dt = u.time_between(lo, hi);
         if !dt.is_finite() {
             return None;
@@ -435,15 +454,31 @@ pub fn circular_end(
             let w = solve_time(&u, lo, t_lo, hi, dt, t_end)?;
             return end(StopReason::EndTime, t_end, w * w);
         }
-        if hi >= w_end {
-            let x = x_end?;
-            return end(StopReason::Distance, t_lo + dt, x);
-        }
         t_lo += dt;
         lo = hi;
         hi *= 2.0;
     }
-    None
+    let Some(sr) = series.filter(|_| w_end > w_switch) else {
+        let x = x_end?;
+        return end(StopReason::Distance, t_lo, x);
+    };
+    // t_lo = t(z1) < t_end: the rest from the series. Without quadrature
+    // nodes before z1, the contact forces are checked from the start.
+    let z_from = if from_rest.is_some() { 1.0 } else { sr.z1 };
+    let z_x_end = x_end.map(|x| 1.0 + u.b * x / u.s0);
+    if let Some(z) = z_x_end {
+        let t = t_lo + sr.time_from_z1(z);
+        if t < t_end {
+            u.contact_ok
+                .set(u.contact_ok.get() && u.contact_holds_between(z_from, z));
+            return end(StopReason::Distance, t, x_end?);
+        }
+    }
+    let z = sr.solve_time(t_lo, t_end)?;
+    let z = z_x_end.map_or(z, |ze| z.min(ze));
+    u.contact_ok
+        .set(u.contact_ok.get() && u.contact_holds_between(z_from, z));
+    end(StopReason::EndTime, t_end, u.x_of_z(z))
 }
 
 /// The w in `[lo, hi]` where t = `t_end`, given t(lo) = `t_lo` and the
