@@ -459,7 +459,7 @@ pub struct SimOptions {
     pub collision: CollisionModel,
     /// Most samples one run records, at least 1. Default
     /// [`DEFAULT_MAX_ROWS`]. A run whose count is known in advance
-    /// ([`Sampling::known_rows`]) and larger is refused by
+    /// ([`known_rows`](Self::known_rows)) and larger is refused by
     /// [`validate`](Self::validate); otherwise the run stops there with
     /// [`StopReason::RowLimit`].
     pub max_rows: u64,
@@ -486,6 +486,21 @@ impl Default for SimOptions {
 }
 
 impl SimOptions {
+    /// The number of samples this run records, when it is known before the
+    /// run: [`Sampling::known_rows`] up to `t_end`, except for a grid
+    /// (`Every`) with a turn count, which gives `None`. A turn model stops
+    /// after [`turns`](Self::turns) turns, and how long they take has no
+    /// bound known in advance (a log that slows towards a stall may take
+    /// any time), so the grid count up to `t_end` is then only an upper
+    /// bound: such a run is not refused, and stops at `max_rows` rows if it
+    /// gets there.
+    pub fn known_rows(&self) -> Option<f64> {
+        match (&self.sampling, self.turns) {
+            (Sampling::Every(_), Some(_)) => None,
+            (sampling, _) => sampling.known_rows(self.t_end),
+        }
+    }
+
     /// Checks every option.
     ///
     /// # Errors
@@ -529,7 +544,7 @@ impl SimOptions {
             return Err(bad("max_rows", 0.0, "max_rows >= 1"));
         }
         self.sampling.validate()?;
-        match self.sampling.known_rows(self.t_end) {
+        match self.known_rows() {
             Some(rows) if rows > self.max_rows as f64 => Err(ParamError::TooManyRows {
                 rows,
                 max_rows: self.max_rows,

@@ -449,9 +449,6 @@ fn friction_ratio_is_empty_in_csv_and_null_in_json_where_n_is_not_positive() {
     let opts = SimOptions {
         on_hop: OnHop::Continue,
         sampling: Sampling::Every(0.01),
-        // Four turns end the run long before t_end: the grid up to t_end
-        // (1e9 rows) is never sampled, so its size is no limit.
-        max_rows: u64::MAX,
         ..turn_opts(4)
     };
     let traj = ModelKind::Turns.build().simulate(&s, &opts).unwrap();

@@ -134,6 +134,62 @@ fn a_known_row_count_over_the_limit_is_refused_before_the_run() {
     }
 }
 
+/// A turn count ends a turn model's run at a time not known in advance, so
+/// the grid count up to a far t_end is only an upper bound on its rows
+/// (`SimOptions::known_rows`): the run is not refused. It records the grid
+/// points up to its stop, ⌊t_stop/dt⌋ + 1 of them; and where the turns would
+/// need more than max_rows, it stops there with its rows.
+#[test]
+fn a_turn_count_lets_a_far_grid_run_start_and_the_row_limit_still_holds() {
+    let s = Scenario::default();
+    let dt = 0.01;
+    for kind in [ModelKind::Turns, ModelKind::TurnsExact] {
+        let opts = SimOptions {
+            t_end: 1e9,
+            turns: Some(3),
+            sampling: Sampling::Every(dt),
+            max_rows: 1000,
+            ..SimOptions::default()
+        };
+        // 1e11 + 1 grid points up to t_end: refused without the turn count.
+        let unbounded = SimOptions {
+            turns: None,
+            ..opts.clone()
+        };
+        assert!(matches!(
+            unbounded.validate(),
+            Err(ParamError::TooManyRows { .. })
+        ));
+        assert_eq!(opts.known_rows(), None);
+        let traj = kind.build().simulate(&s, &opts).unwrap();
+        assert_eq!(traj.stop.reason, StopReason::Turns, "{kind}");
+        // Three turns of a log from rest take about a second: far from
+        // t_end, well within max_rows.
+        let expected = (traj.stop.t_s / dt).floor() as usize + 1;
+        assert_eq!(traj.samples.len(), expected, "{kind}");
+        for (i, p) in traj.samples.iter().enumerate() {
+            // Grid points are the f64 nearest the decimals i·dt; i·dt in
+            // floating point is within a few ulps (1e-15 s at t ~ 1 s) of
+            // them, so 1e-12 s only catches a skipped or repeated point.
+            assert!(
+                (p.t_s - i as f64 * dt).abs() <= 1e-12,
+                "{kind} {i}: {}",
+                p.t_s
+            );
+        }
+        // Fifty turns on the same grid need more than 40 rows: the run is
+        // cut there, rows kept.
+        let cut = SimOptions {
+            turns: Some(50),
+            max_rows: 40,
+            ..opts
+        };
+        let traj = kind.build().simulate(&s, &cut).unwrap();
+        assert_eq!(traj.stop.reason, StopReason::RowLimit, "{kind}");
+        assert_eq!(traj.samples.len(), 40, "{kind}");
+    }
+}
+
 /// Accepts `ok` samples, then fails.
 struct Failing {
     ok: usize,

@@ -44,7 +44,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         ),
         _ => "--times".to_string(),
     };
-    inputs::check_row_count(&opts, opts.sampling.known_rows(opts.t_end), &what)?;
+    inputs::check_row_count(&opts, opts.known_rows(), &what)?;
     // Everything the model refuses, before any output (nothing reaches stdout).
     let runner = model.build();
     runner.check(&scenario, &opts)?;

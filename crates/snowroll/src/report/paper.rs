@@ -386,9 +386,6 @@ fn in_turn_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
         turns: Some(TURNS_SHOWN),
         t_end: 1e6,
         sampling: Sampling::Every(0.002),
-        // The turn count ends the run long before t_end: the grid up to
-        // t_end is never sampled, so its size is no limit.
-        max_rows: u64::MAX,
         ..opts.clone()
     };
     let mut chart = Chart::new(
@@ -667,9 +664,6 @@ pub fn build_paper_report(
             turns: Some(TURNS_SHOWN + 2),
             t_end: 1e6,
             sampling: Sampling::Every(0.005),
-            // The turn count ends the run long before t_end: the grid up to
-            // t_end is never sampled, so its size is no limit.
-            max_rows: u64::MAX,
             ..opts.clone()
         },
     )?;
