@@ -304,7 +304,7 @@ pub struct ScenarioArgs {
         long,
         value_name = "N",
         help = with_default(
-            "Most rows one run writes, N >= 1: a run known to need more (--dt: t_end/dt + 1, --times: their count, turns: the turn count) is refused before it starts; one sampled at every step, or on a --dt grid that --turns may end before t_end, stops there, its rows kept (stop reason row-limit)",
+            "Most rows one run writes, N >= 1: a run known to need more (--dt: t_end/dt + 1, --times: their count, turns: the turn count) is refused before it starts; one sampled at every step, or on a --dt grid that --turns or --x-end may end before t_end, stops there, its rows kept (stop reason row-limit)",
             snowroll::DEFAULT_MAX_ROWS
         )
     )]

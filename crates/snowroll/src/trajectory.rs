@@ -488,16 +488,17 @@ impl Default for SimOptions {
 impl SimOptions {
     /// The number of samples this run records, when it is known before the
     /// run: [`Sampling::known_rows`] up to `t_end`, except for a grid
-    /// (`Every`) with a turn count, which gives `None`. A turn model stops
-    /// after [`turns`](Self::turns) turns, and how long they take has no
-    /// bound known in advance (a log that slows towards a stall may take
-    /// any time), so the grid count up to `t_end` is then only an upper
-    /// bound: such a run is not refused, and stops at `max_rows` rows if it
-    /// gets there.
+    /// (`Every`) with a turn count or an end distance, which gives `None`.
+    /// Such a run stops after [`turns`](Self::turns) turns or at
+    /// [`x_end`](Self::x_end), and how long that takes has no bound known
+    /// in advance (a log that slows towards a stall may take any time), so
+    /// the grid count up to `t_end` is then only an upper bound: the run is
+    /// not refused, and stops at `max_rows` rows if it gets there.
     pub fn known_rows(&self) -> Option<f64> {
-        match (&self.sampling, self.turns) {
-            (Sampling::Every(_), Some(_)) => None,
-            (sampling, _) => sampling.known_rows(self.t_end),
+        let other_end = self.turns.is_some() || self.x_end.is_some();
+        match &self.sampling {
+            Sampling::Every(_) if other_end => None,
+            sampling => sampling.known_rows(self.t_end),
         }
     }
 

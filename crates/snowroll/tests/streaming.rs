@@ -190,6 +190,29 @@ fn a_turn_count_lets_a_far_grid_run_start_and_the_row_limit_still_holds() {
     }
 }
 
+/// An end distance, like a turn count, ends a run at a time not known in
+/// advance: a grid up to a far t_end is not refused, and the run records
+/// the grid points up to where it reaches x_end.
+#[test]
+fn an_end_distance_lets_a_far_grid_run_start() {
+    let s = Scenario::default();
+    let dt = 0.01;
+    let opts = SimOptions {
+        t_end: 1e9,
+        x_end: Some(10.0),
+        sampling: Sampling::Every(dt),
+        max_rows: 1000,
+        ..SimOptions::default()
+    };
+    assert_eq!(opts.known_rows(), None);
+    let traj = ModelKind::TorqueCm.build().simulate(&s, &opts).unwrap();
+    assert_eq!(traj.stop.reason, StopReason::Distance);
+    assert_eq!(
+        traj.samples.len(),
+        (traj.stop.t_s / dt).floor() as usize + 1
+    );
+}
+
 /// Accepts `ok` samples, then fails.
 struct Failing {
     ok: usize,

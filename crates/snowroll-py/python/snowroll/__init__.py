@@ -325,8 +325,8 @@ def simulate(
     known beforehand (``dt``: t_end/dt + 1, ``times``: their count, the turn
     models: the turn count) and above it raises ``ValueError`` before it
     starts; a run sampled at every step, or on a ``dt`` grid that ``turns``
-    may end before t_end, stops there with reason ``row-limit``, its rows
-    kept. ``max_steps`` most integrator steps
+    or ``x_end`` may end before t_end, stops there with reason
+    ``row-limit``, its rows kept. ``max_steps`` most integrator steps
     (accepted, rejected and events), >= 1 (1e8): the run stops there with
     reason ``step-limit``, its rows kept.
 

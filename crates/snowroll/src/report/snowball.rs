@@ -40,9 +40,6 @@ pub(super) fn ball_animation(lab: &Lab, frames: usize) -> Result<Animation, Repo
         t_end: 1e6,
         x_end: Some(BALL_ANIMATION_X),
         sampling: Sampling::Every(BALL_ANIMATION_DT),
-        // The distance ends the run long before t_end: the grid up to t_end
-        // is never sampled, so its size is no limit.
-        max_rows: u64::MAX,
         ..SimOptions::default()
     };
     let traj = lab.run(ModelKind::TorqueCm, &s, &opts)?;
