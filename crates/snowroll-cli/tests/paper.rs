@@ -68,6 +68,7 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
         "turns-energy-ledger",
         "losses-ledger-shares",
         "losses-speed",
+        "losses-speed-ball",
     ] {
         assert!(figures.contains(&format!("{name}.svg")), "{name}.svg");
         assert!(figures.contains(&format!("{name}.png")), "{name}.png");

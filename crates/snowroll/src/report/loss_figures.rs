@@ -198,9 +198,8 @@ const SPEED_POINTS: usize = 150;
 /// The accreting model of the speed figure: torque about the centre,
 /// eq. (4), whose ball is the closed form of the TPT letter (§1.4).
 const ACCRETING: ModelKind = ModelKind::TorqueCm;
-/// The shapes the speed figure shows. The ball with losses is refused until
-/// the models take it; then it joins here.
-const SPEED_SHAPES: [Shape; 1] = [Shape::Cylinder];
+/// The shapes the speed figure shows, side by side: the log and the ball.
+const SPEED_SHAPES: [Shape; 2] = [Shape::Cylinder, Shape::Sphere];
 
 /// Drag alone, C_d of a bluff body, no terminal stop (the figure shows the
 /// whole approach).
@@ -224,101 +223,92 @@ pub(super) fn snowless_terminal_velocity(s: &Scenario, losses: &Losses) -> f64 {
     (s.initial_mass() * s.g_along() / (losses.drag_factor() * area)).sqrt()
 }
 
-/// The name of a shape in the legend.
-fn body(shape: Shape) -> &'static str {
-    match shape {
-        Shape::Cylinder => "log",
-        Shape::Sphere => "ball",
-    }
-}
-
-/// Speed against time with and without drag, for the snowless body and the
-/// accreting one of eq. (4), each shape of [`SPEED_SHAPES`], with the
-/// closed-form terminal velocity of the snowless body with drag.
+/// Speed against time with and without drag, one figure per shape of
+/// [`SPEED_SHAPES`] (the two panels shown one after the other): the
+/// snowless body and the accreting one of eq. (4), with the closed-form
+/// terminal velocity of the snowless body with drag.
 ///
 /// # Errors
 /// [`ReportError`] when a run fails.
-pub(super) fn speed_with_losses_figure(lab: &Lab) -> Result<Figure, ReportError> {
+pub(super) fn speed_with_losses_figures(lab: &Lab) -> Result<Vec<Figure>, ReportError> {
+    SPEED_SHAPES
+        .iter()
+        .map(|&shape| speed_with_losses_figure(lab, shape))
+        .collect()
+}
+
+/// The speed figure of one shape.
+fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportError> {
+    let s = Scenario::new(ScenarioFile {
+        shape,
+        swath_width: None,
+        ..ScenarioFile::from(*lab.scenario())
+    })
+    .map_err(crate::error::SimError::from)?;
+    let (name, title, body, extra, ratio) = match shape {
+        Shape::Cylinder => (
+            "losses-speed",
+            "Speed with and without air drag: the log",
+            "log",
+            "",
+            "r² against r",
+        ),
+        Shape::Sphere => (
+            "losses-speed-ball",
+            "Speed with and without air drag: the snowball",
+            "ball",
+            " (a uniform ball, I = (2/5) M r², picking up the layer over its diameter; with eq. (4), the closed form of the TPT letter)",
+            "r³ against r²",
+        ),
+    };
     let mut chart = Chart::new(
-        "losses-speed",
-        "Speed with and without air drag",
+        name,
+        title,
         Axis::log("time t", "s").column("t_s"),
         Axis::log("speed v", "m/s").column("v_m_s"),
     )
     .with_legend(Legend::UpperLeft);
     let times = log_grid(SPEED_T_FIRST, SPEED_T_END, SPEED_POINTS);
-    let mut terminal = Vec::new();
-    for (n, &shape) in SPEED_SHAPES.iter().enumerate() {
-        let s = Scenario::new(ScenarioFile {
-            shape,
-            swath_width: None,
-            ..ScenarioFile::from(*lab.scenario())
-        })
-        .map_err(crate::error::SimError::from)?;
-        // The log's curves are solid or dashed lines, the ball's carry markers.
-        let mark = |series: Series| match (n, series.style) {
-            (0, _) => series,
-            (_, Style::Line) => series.marker(Marker::Circle),
-            _ => series.marker(Marker::Triangle),
-        };
-        for kind in [ModelKind::Snowless, ACCRETING] {
-            for (losses, style, what) in [
-                (Losses::default(), Style::Line, "no losses"),
-                (drag_only(), Style::Dashed, "drag"),
-            ] {
-                let opts = SimOptions {
-                    t_end: SPEED_T_END,
-                    sampling: Sampling::Times(times.clone()),
-                    losses,
-                    ..SimOptions::default()
-                };
-                let traj = lab.run(kind, &s, &opts)?;
-                let name = format!(
-                    "{}, {} ({}), {what}",
-                    body(shape),
-                    kind.id(),
-                    kind.equation()
-                );
-                let style = if kind == ModelKind::Snowless {
-                    style
-                } else if style == Style::Line {
-                    Style::LongDashed
-                } else {
-                    Style::Dotted
-                };
-                chart = chart.with_series(mark(
-                    Series::from_samples(&name, &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style),
-                ));
-            }
+    for kind in [ModelKind::Snowless, ACCRETING] {
+        for (losses, what) in [(Losses::default(), "no losses"), (drag_only(), "drag")] {
+            let opts = SimOptions {
+                t_end: SPEED_T_END,
+                sampling: Sampling::Times(times.clone()),
+                losses,
+                ..SimOptions::default()
+            };
+            let traj = lab.run(kind, &s, &opts)?;
+            let style = match (kind == ModelKind::Snowless, losses.any()) {
+                (true, false) => Style::Line,
+                (true, true) => Style::Dashed,
+                (false, false) => Style::LongDashed,
+                (false, true) => Style::Dotted,
+            };
+            let label = format!("{} ({}), {what}", kind.id(), kind.equation());
+            chart = chart.with_series(
+                Series::from_samples(&label, &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style),
+            );
         }
-        let vt = snowless_terminal_velocity(&s, &drag_only());
-        chart = chart.with_series(
-            Series::new(
-                &format!("{}, snowless with drag: closed-form v_t", body(shape)),
-                times.iter().step_by(10).map(|&t| (t, vt)).collect(),
-            )
-            .style(Style::Markers)
-            .marker(if n == 0 {
-                Marker::Square
-            } else {
-                Marker::Circle
-            }),
-        );
-        terminal.push(format!(
-            "{} m/s for the {}",
-            super::notation::fixed(vt, 2),
-            body(shape)
-        ));
     }
-    let file = ScenarioFile::from(*lab.scenario());
+    let vt = snowless_terminal_velocity(&s, &drag_only());
+    chart = chart.with_series(
+        Series::new(
+            VT_NAME,
+            times.iter().step_by(10).map(|&t| (t, vt)).collect(),
+        )
+        .style(Style::Markers)
+        .marker(Marker::Square),
+    );
+    let file = ScenarioFile::from(s);
     let caption = format!(
-        "Speed against time from rest on the default slope, without losses (solid and long-dashed lines) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = 1.2 kg/m³; dashed and dotted), for the snowless body and for the body gathering snow by eq. (4) (torque about the centre). \
-         Without snow, drag brings the body to the closed-form terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) ({}; markers), where the drag balances gravity's pull along the slope (docs/snowball-and-losses.md §2.2). \
-         With snow there is no terminal velocity: the mass grows like r², the frontal area like r, so drag per unit mass fades and the speed keeps growing, only more slowly than without drag (v ∝ t^(1/3) once r is well past the crossover radius ρ b/(ρ_a C_d), §2.2). \
-         Log-log axes: a constant acceleration is a line of slope 1.",
-        terminal.join(", ")
+        "Speed of the {body}{extra} against time from rest on the default slope: without losses (solid and long-dashed) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = 1.2 kg/m³; dashed and dotted), snowless and gathering snow by eq. (4) (torque about the centre). \
+         Without snow, drag brings the {body} to the closed-form terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) = ({} m/s)² (squares), where drag balances gravity's pull along the slope (docs/snowball-and-losses.md §2.2). \
+         With snow there is no terminal velocity: the mass grows faster than the frontal area ({ratio}), so drag per unit mass fades and the speed keeps growing, more slowly than without drag (v ∝ t^(1/3) once r is past a crossover of a few metres, §2.2). \
+         Log-log axes: a constant acceleration is a line of slope 1. The log and the ball are drawn in two figures on the same axes.",
+        super::notation::fixed(vt, 2),
     );
     Ok(Figure::new(chart, &caption)
+        .param("shape", shape)
         .param("alpha_deg", file.alpha_deg)
         .param("snow_depth", file.snow_depth)
         .param("r0", file.r0)
@@ -329,6 +319,9 @@ pub(super) fn speed_with_losses_figure(lab: &Lab) -> Result<Figure, ReportError>
         )
         .supports(&["snowless-drag-terminal-velocity"]))
 }
+
+/// Legend entry of the closed-form terminal velocity.
+const VT_NAME: &str = "snowless with drag: closed-form v_t";
 
 #[cfg(test)]
 mod tests {
@@ -343,38 +336,50 @@ mod tests {
             .expect("the figure draws every term")
     }
 
-    /// The snowless log with drag follows v_t tanh(t/τ), τ = (3/2) v_t/G
-    /// (from rest, §2.2), and v_t is the closed form computed here from
-    /// the scenario; every curve with drag lies below its lossless twin.
+    /// The snowless log and ball with drag follow v_t tanh(t/τ),
+    /// τ = (1 + k) v_t/G (from rest, §2.2), and each v_t is the closed form
+    /// computed here from the scenario; every curve with drag lies below its
+    /// lossless twin.
     #[test]
     fn the_speed_figure_shows_the_terminal_velocity_and_drag_slows() {
         let lab = Lab::new(Scenario::default(), 100);
-        let chart = speed_with_losses_figure(&lab).unwrap().chart;
+        let figures = speed_with_losses_figures(&lab).unwrap();
+        assert_eq!(figures.len(), 2);
         let s = Scenario::default();
-        let (r0, rho, l) = (s.initial_radius(), s.density(), s.length());
+        let (r0, rho, l, g) = (s.initial_radius(), s.density(), s.length(), s.g_along());
+        // The log: M = π ρ l r0², A = 2 r0 l; 22.664 m/s with the defaults
+        // at 30° (§2.2); τ = (1 + 1/2) v_t/G.
         let mass = std::f64::consts::PI * rho * l * r0 * r0;
-        let vt = (mass * s.g_along() / (0.5 * 1.2 * DRAG_COEFFICIENT * 2.0 * r0 * l)).sqrt();
-        // §2.2: 22.664 m/s with the defaults at 30°.
-        approx::assert_relative_eq!(vt, 22.664, max_relative = 1e-4);
-        let line = series(&chart, "log, snowless with drag: closed-form v_t");
-        approx::assert_relative_eq!(line.points[0].1, vt, max_relative = 1e-12);
-        let tau = 1.5 * vt / s.g_along();
-        let drag = series(
-            &chart,
-            &format!("log, snowless ({}), drag", ModelKind::Snowless.equation()),
-        );
-        for &(t, v) in &drag.points {
-            // Tolerance 1e-8: the integration at rtol 1e-10 over ≤ 15 τ.
-            approx::assert_relative_eq!(v, vt * (t / tau).tanh(), max_relative = 1e-8);
-        }
-        for kind in [ModelKind::Snowless, ACCRETING] {
-            let name = |what| format!("log, {} ({}), {what}", kind.id(), kind.equation());
-            let (free, dragged) = (
-                series(&chart, &name("no losses")),
-                series(&chart, &name("drag")),
+        let vt_log = (mass * g / (0.5 * 1.2 * DRAG_COEFFICIENT * 2.0 * r0 * l)).sqrt();
+        approx::assert_relative_eq!(vt_log, 22.664, max_relative = 1e-4);
+        // The ball: M = (4/3) π ρ r0³, A = π r0², so v_t² = (8/3) ρ r0 G/(ρ_a C_d);
+        // τ = (1 + 2/5) v_t/G.
+        let vt_ball = (8.0 / 3.0 * rho * r0 * g / (1.2 * DRAG_COEFFICIENT)).sqrt();
+        for (fig, vt, tau) in [
+            (&figures[0], vt_log, 1.5 * vt_log / g),
+            (&figures[1], vt_ball, 1.4 * vt_ball / g),
+        ] {
+            let chart = &fig.chart;
+            approx::assert_relative_eq!(
+                series(chart, VT_NAME).points[0].1,
+                vt,
+                max_relative = 1e-12
             );
-            for (p, q) in free.points.iter().zip(&dragged.points) {
-                assert!(q.1 < p.1, "{}: t = {} s", name("drag"), p.0);
+            let snowless = ModelKind::Snowless;
+            let drag = series(chart, &format!("snowless ({}), drag", snowless.equation()));
+            for &(t, v) in &drag.points {
+                // Tolerance 1e-8: the integration at rtol 1e-10 over ≤ 15 τ.
+                approx::assert_relative_eq!(v, vt * (t / tau).tanh(), max_relative = 1e-8);
+            }
+            for kind in [snowless, ACCRETING] {
+                let name = |what| format!("{} ({}), {what}", kind.id(), kind.equation());
+                let (free, dragged) = (
+                    series(chart, &name("no losses")),
+                    series(chart, &name("drag")),
+                );
+                for (p, q) in free.points.iter().zip(&dragged.points) {
+                    assert!(q.1 < p.1, "{}: {}: t = {} s", chart.name, name("drag"), p.0);
+                }
             }
         }
     }

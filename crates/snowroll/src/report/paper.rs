@@ -648,10 +648,8 @@ pub fn build_paper_report(
     let snowball = super::snowball::snowball_figure(lab, &log_times())?;
 
     tick("the losses");
-    let losses = [
-        super::loss_figures::speed_with_losses_figure(lab)?,
-        super::loss_figures::ledger_shares_figure(lab)?,
-    ];
+    let mut losses = super::loss_figures::speed_with_losses_figures(lab)?;
+    losses.push(super::loss_figures::ledger_shares_figure(lab)?);
 
     tick("regime map");
     let regime = super::claims::regime_figure(lab)?;
