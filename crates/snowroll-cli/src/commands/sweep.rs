@@ -22,6 +22,7 @@ use rustix::fs::{flock, FlockOperation};
 use snowroll::output::VERSION;
 use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
 
+use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
@@ -203,8 +204,9 @@ fn write_rows(
                     let mut w = csv::WriterBuilder::new()
                         .has_headers(false)
                         .from_writer(Vec::with_capacity(part.len() * 200));
+                    let mut rows = RowWriter::new();
                     for row in part {
-                        w.serialize(row)?;
+                        rows.write(&mut w, row)?;
                     }
                     w.into_inner().map_err(|e| e.into_error().into())
                 })
