@@ -6,9 +6,9 @@
 //! stop reason) repeat from one row to the next. [`RowWriter`] keeps the
 //! text of each column's last value and formats only what changed, with
 //! the same formatters the csv crate uses (`ryu` for floats, `itoa` for
-//! integers, the serde name for enums); every field still goes through
-//! `csv::Writer::write_field`, so quoting is the crate's own. A test checks
-//! the bytes against `serialize` on rows of every kind.
+//! integers, the serde name for enums) and writes the record's bytes
+//! itself; a row with free text (an error) is left to `csv`, which quotes
+//! it. A test checks the bytes against `serialize` on rows of every kind.
 
 use serde::Serialize;
 use snowroll::sweep::SweepRow;
@@ -78,15 +78,24 @@ impl RowWriter {
         }
     }
 
-    /// Writes `row` as one record of `w`.
+    /// Appends `row` as one CSV record to `out`.
+    ///
+    /// A row without an error has no field that needs quoting (numbers,
+    /// enum names, empty fields): its fields are written as they are, with
+    /// `,` between them and `\n` after, which is what `csv` writes for
+    /// them. A row with an error (free text) is serialised by `csv`.
     ///
     /// # Errors
-    /// What `w` returns.
-    pub fn write<W: std::io::Write>(
-        &mut self,
-        w: &mut csv::Writer<W>,
-        row: &SweepRow,
-    ) -> csv::Result<()> {
+    /// Only from serialising a row with an error.
+    pub fn write(&mut self, out: &mut Vec<u8>, row: &SweepRow) -> csv::Result<()> {
+        if row.error.is_some() {
+            let mut w = csv::WriterBuilder::new()
+                .has_headers(false)
+                .from_writer(Vec::new());
+            w.serialize(row)?;
+            out.extend_from_slice(&w.into_inner().map_err(|e| e.into_error())?);
+            return Ok(());
+        }
         let bits = |v: f64| Some(v.to_bits());
         let opt = |v: Option<f64>| v.map(f64::to_bits);
         let floats = [
@@ -107,32 +116,35 @@ impl RowWriter {
             opt(row.v_m_s),
             opt(row.a_over_g_sin_alpha),
         ];
-        let mut text = floats
-            .iter()
-            .zip(&mut self.floats)
-            .map(|(&v, last)| last.get(v, opt_float));
-        let mut next = || text.next().unwrap_or_default();
-        w.write_field(itoa::Buffer::new().format(row.index))?;
-        w.write_field(self.model.get(row.model, variant))?;
-        for _ in 0..12 {
-            w.write_field(next())?;
+        let mut field = |text: &[u8]| {
+            out.extend_from_slice(text);
+            out.push(b',');
+        };
+        field(itoa::Buffer::new().format(row.index).as_bytes());
+        field(self.model.get(row.model, variant));
+        let (params, results) = floats.split_at(12);
+        let (params_text, results_text) = self.floats.split_at_mut(12);
+        for (&v, last) in params.iter().zip(params_text) {
+            field(last.get(v, opt_float));
         }
-        w.write_field(self.on_hop.get(row.on_hop, variant))?;
-        w.write_field(self.collision.get(row.collision, variant))?;
-        w.write_field(self.stop.get(row.stop, |s, out| {
+        field(self.on_hop.get(row.on_hop, variant));
+        field(self.collision.get(row.collision, variant));
+        field(self.stop.get(row.stop, |s, out| {
             if let Some(s) = s {
                 variant(s, out);
             }
-        }))?;
-        for _ in 0..4 {
-            w.write_field(next())?;
+        }));
+        for (&v, last) in results.iter().zip(results_text) {
+            field(last.get(v, opt_float));
         }
-        match row.turns {
-            Some(k) => w.write_field(itoa::Buffer::new().format(k))?,
-            None => w.write_field([])?,
+        if let Some(k) = row.turns {
+            field(itoa::Buffer::new().format(k).as_bytes());
+        } else {
+            field(&[]);
         }
-        w.write_field(row.error.as_deref().unwrap_or_default())?;
-        w.write_record(None::<&[u8]>)
+        // The error column is empty: the record ends after its comma.
+        out.push(b'\n');
+        Ok(())
     }
 }
 
@@ -153,14 +165,12 @@ mod tests {
     }
 
     fn written(rows: &[SweepRow]) -> Vec<u8> {
-        let mut w = csv::WriterBuilder::new()
-            .has_headers(false)
-            .from_writer(Vec::new());
+        let mut out = Vec::new();
         let mut r = RowWriter::new();
         for row in rows {
-            r.write(&mut w, row).unwrap();
+            r.write(&mut out, row).unwrap();
         }
-        w.into_inner().unwrap()
+        out
     }
 
     /// Rows of a real sweep (every model; runs that end, do not start, hop),
