@@ -4,8 +4,8 @@
 #
 # (1) `snowroll sweep --model torque-cm --alpha-deg 29:31:N_SWEEP --snow-depth
 #     0.01 --r0 0.1 --t-end 100 --rtol 1e-10 --atol 1e-12 --output s.csv`,
-#     wall clock of the whole process (start, grid, rows, CSV, fsync, rename)
-#     divided by N_SWEEP, against the median CPU time of one SciPy solve_ivp
+#     wall clock and CPU time (medians of RUNS runs) of the whole process
+#     (start, grid, rows, CSV, fsync, rename) divided by N_SWEEP, against the median CPU time of one SciPy solve_ivp
 #     (DOP853, same tolerances) at the same angles (bench/peer_scipy.py
 #     --alphas, N_SCIPY of them); the ratio must reach MIN_RATIO. The last
 #     rows of the two are checked to agree (final speed, 1e-9).
@@ -19,14 +19,15 @@
 #     cannot be had, (4) is skipped with the reason.
 #
 # Usage: bash bench/sweep_compare.sh   (from anywhere in a clone)
-# Environment: N_SWEEP (10000), N_SCIPY (1000), N_ALL (200000), MIN_RATIO
+# Environment: N_SWEEP (10000), N_SCIPY (300), RUNS (5), N_ALL (200000), MIN_RATIO
 # (1000), MIN_RATE (100000), PYTHON (python3), OUT_DIR (a temporary directory;
 # its file system's fsync is part of the measured time).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 N_SWEEP="${N_SWEEP:-10000}"
-N_SCIPY="${N_SCIPY:-1000}"
+N_SCIPY="${N_SCIPY:-300}"
+RUNS="${RUNS:-5}"
 N_ALL="${N_ALL:-200000}"
 MIN_RATIO="${MIN_RATIO:-1000}"
 MIN_RATE="${MIN_RATE:-100000}"
@@ -45,21 +46,31 @@ echo "building snowroll (release) ..." >&2
 cargo build --release --quiet -p snowroll-cli
 bin="$PWD/target/release/snowroll"
 
-# Wall-clock seconds of a command, from bash's own clock.
-seconds() {
-    local start end
-    start="$(date +%s.%N)"
-    "$@"
-    end="$(date +%s.%N)"
-    "$PYTHON" -c "print($end - $start)"
+# "wall cpu": the medians over RUNS runs of a command's wall-clock seconds
+# and its CPU seconds (user + system, every thread), the latter from
+# getrusage of the finished child.
+measure() {
+    "$PYTHON" - "$RUNS" "$@" <<'PY'
+import resource, statistics, subprocess, sys, time
+runs, cmd = int(sys.argv[1]), sys.argv[2:]
+walls, cpus = [], []
+for _ in range(runs):
+    r0, t0 = resource.getrusage(resource.RUSAGE_CHILDREN), time.perf_counter()
+    subprocess.run(cmd, check=True)
+    t1, r1 = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
+    walls.append(t1 - t0)
+    cpus.append(r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime)
+print(statistics.median(walls), statistics.median(cpus))
+PY
 }
 
 sweep1=(sweep --model torque-cm --alpha-deg "29:31:$N_SWEEP" --snow-depth 0.01 --r0 0.1
     --t-end 100 --rtol 1e-10 --atol 1e-12 --quiet)
-echo "== (1) snowroll ${sweep1[*]} --output s.csv"
-t1="$(seconds "$bin" "${sweep1[@]}" --output "$OUT_DIR/s.csv")"
-t1_ode="$(seconds "$bin" "${sweep1[@]}" --method ode --output "$OUT_DIR/s-ode.csv")"
-echo "whole process: $t1 s for $N_SWEEP trajectories (--method ode: $t1_ode s)"
+echo "== (1) snowroll ${sweep1[*]} --output s.csv ($RUNS runs, medians)"
+"$bin" "${sweep1[@]}" --output "$OUT_DIR/s.csv" # warm the page cache
+read -r t1 c1 < <(measure "$bin" "${sweep1[@]}" --output "$OUT_DIR/s.csv")
+read -r t1_ode c1_ode < <(measure "$bin" "${sweep1[@]}" --method ode --output "$OUT_DIR/s-ode.csv")
+echo "whole process: wall $t1 s, CPU $c1 s for $N_SWEEP trajectories (--method ode: wall $t1_ode s, CPU $c1_ode s)"
 
 echo "== SciPy solve_ivp DOP853 at $N_SCIPY of those angles"
 py_out="$("$PYTHON" bench/peer_scipy.py --alphas "29:31:$N_SWEEP" --n "$N_SCIPY")"
@@ -87,34 +98,40 @@ fi
 all_models="snowless,torque-cm,torque-contact,energy,energy-thin,lagrangian-printed,quasi-circular,quasi-circular-lift"
 per_model=$((N_ALL / 8))
 echo "== (2) snowroll sweep --model (all 8 circular) --alpha-deg 20:60:$per_model --t-end 100 --rtol 1e-8"
-t2="$(seconds "$bin" sweep --model "$all_models" --alpha-deg "20:60:$per_model" --t-end 100 \
-    --rtol 1e-8 --quiet --output "$OUT_DIR/all.csv")"
-t2_ode="$(seconds "$bin" sweep --model "$all_models" --alpha-deg "20:60:$per_model" --t-end 100 \
-    --rtol 1e-8 --quiet --method ode --output "$OUT_DIR/all-ode.csv")"
+read -r t2 c2 < <(RUNS=1 measure "$bin" sweep --model "$all_models" --alpha-deg "20:60:$per_model" \
+    --t-end 100 --rtol 1e-8 --quiet --output "$OUT_DIR/all.csv")
+read -r t2_ode c2_ode < <(RUNS=1 measure "$bin" sweep --model "$all_models" \
+    --alpha-deg "20:60:$per_model" --t-end 100 --rtol 1e-8 --quiet --method ode \
+    --output "$OUT_DIR/all-ode.csv")
 
 "$PYTHON" - "$t1" "$t1_ode" "$N_SWEEP" "$py_s" "$py_v" "$OUT_DIR/s.csv" "$MIN_RATIO" \
-    "$t2" "$t2_ode" "$((per_model * 8))" "$MIN_RATE" "$nb_s" <<'PY'
+    "$t2" "$t2_ode" "$((per_model * 8))" "$MIN_RATE" "$nb_s" "$c1" "$c2" <<'PY'
 import sys
-t1, t1_ode, n1, py_s, py_v, csv_path, min_ratio, t2, t2_ode, n2, min_rate, nb_s = sys.argv[1:]
-nb_s = float(nb_s)
+t1, t1_ode, n1, py_s, py_v, csv_path, min_ratio, t2, t2_ode, n2, min_rate, nb_s, c1, c2 = sys.argv[1:]
+nb_s, c1, c2 = float(nb_s), float(c1), float(c2)
 t1, t1_ode, py_s, py_v, t2, t2_ode = map(float, (t1, t1_ode, py_s, py_v, t2, t2_ode))
 n1, n2, min_ratio, min_rate = int(n1), int(n2), float(min_ratio), float(min_rate)
-last = [l for l in open(csv_path) if not l.startswith("#")][-1].split(",")
-v = float(last[16])
+lines = [l.rstrip("\n").split(",") for l in open(csv_path) if not l.startswith("#")]
+column = {name: k for k, name in enumerate(lines[0])}
+last = lines[-1]
+v = float(last[column["v_m_s"]])
 diff = abs(v - py_v) / py_v
-print(f"last row (alpha {last[2]} deg): snowroll v = {v:.15e}, scipy {py_v:.15e} m/s, relative difference {diff:.1e}")
+print(f"last row (alpha {last[column['alpha_deg']]} deg): snowroll v = {v:.15e}, scipy {py_v:.15e} m/s, relative difference {diff:.1e}")
 per = t1 / n1
 ratio = py_s / per
 print(f"(1) per trajectory, process start and output included: snowroll {per * 1e6:.2f} us "
       f"(ODE path {t1_ode / n1 * 1e6:.2f} us), scipy {py_s * 1e3:.3f} ms: ratio {ratio:.0f}x "
       f"(ODE path {py_s / (t1_ode / n1):.0f}x; required >= {min_ratio:g}x)")
+print(f"    CPU per trajectory (all threads, process included): snowroll {c1 / n1 * 1e6:.2f} us, "
+      f"ratio {py_s / (c1 / n1):.0f}x")
 if nb_s == nb_s:
     print(f"    numbalsoda DOP853 {nb_s * 1e6:.2f} us per trajectory (CPU, compiled loop): snowroll "
           f"{nb_s / per:.1f}x faster (ODE path {nb_s / (t1_ode / n1):.2f}x); scipy/numbalsoda "
           f"{py_s / nb_s:.0f}x")
 rate = n2 / t2
 print(f"(2) all circular models, t = 100 s, rtol 1e-8: {rate:,.0f} trajectories/s "
-      f"(ODE path {n2 / t2_ode:,.0f}/s; required >= {min_rate:,.0f}/s)")
+      f"(ODE path {n2 / t2_ode:,.0f}/s; required >= {min_rate:,.0f}/s); "
+      f"{n2 / c2:,.0f} per CPU second")
 bad = []
 if not diff <= 1e-9:
     bad.append(f"the programs disagree by {diff:.1e}")

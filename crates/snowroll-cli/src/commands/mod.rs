@@ -9,6 +9,7 @@ mod paper;
 mod parquet;
 mod simulate;
 mod sweep;
+mod sweep_csv;
 mod sweep_grid;
 mod sweep_plot;
 mod turns;

@@ -22,6 +22,7 @@ use rustix::fs::{flock, FlockOperation};
 use snowroll::output::VERSION;
 use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
 
+use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
@@ -200,13 +201,12 @@ fn write_rows(
             let parts = rows
                 .par_chunks(FORMAT_ROWS)
                 .map(|part| -> Result<Vec<u8>, csv::Error> {
-                    let mut w = csv::WriterBuilder::new()
-                        .has_headers(false)
-                        .from_writer(Vec::with_capacity(part.len() * 200));
+                    let mut buf = Vec::with_capacity(part.len() * 200);
+                    let mut rows = RowWriter::new();
                     for row in part {
-                        w.serialize(row)?;
+                        rows.write(&mut buf, row)?;
                     }
-                    w.into_inner().map_err(|e| e.into_error().into())
+                    Ok(buf)
                 })
                 .collect::<Result<Vec<_>, _>>()?;
             for buf in parts {

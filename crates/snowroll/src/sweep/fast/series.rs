@@ -42,6 +42,7 @@
 //! on a rectangle at a corner: checking the four corners bounds the forces
 //! along the whole run (conservatively).
 
+use std::cell::Cell;
 use std::f64::consts::PI;
 
 use super::{Form, SpeedSquared};
@@ -95,9 +96,7 @@ impl SpeedSquared {
         };
         series.s_z1 = series.antiderivative(z1);
         if self.u0 == 0.0 {
-            let a = -0.5 / np1;
-            let beta_fn = libm::tgamma(a) * PI.sqrt() / libm::tgamma(a + 0.5);
-            series.t_z1 = Some(series.scale * (beta_fn / np1 + series.s_z1));
+            series.t_z1 = Some(series.scale * (beta_over_np1(np1) + series.s_z1));
         }
         (series.scale.is_finite() && series.s_z1.is_finite()).then_some(series)
     }
@@ -118,6 +117,26 @@ impl SpeedSquared {
                 .all(|&p| self.contact_holds(self.x_of_z(z), p * self.s0 * z))
         })
     }
+}
+
+/// `B(a, 1/2)/(n + 1)` of (T3), `a = −1/(2(n+1))`. It depends on the
+/// model only, so each thread keeps the last one: a sweep of one model
+/// evaluates Γ once per thread, not once per row (the value is the same
+/// either way).
+fn beta_over_np1(np1: f64) -> f64 {
+    thread_local! {
+        static LAST: Cell<(u64, f64)> = const { Cell::new((u64::MAX, 0.0)) };
+    }
+    LAST.with(|last| {
+        let (key, value) = last.get();
+        if key == np1.to_bits() {
+            return value;
+        }
+        let a = -0.5 / np1;
+        let value = libm::tgamma(a) * PI.sqrt() / libm::tgamma(a + 0.5) / np1;
+        last.set((np1.to_bits(), value));
+        value
+    })
 }
 
 impl Series {
