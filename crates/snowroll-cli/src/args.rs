@@ -325,7 +325,8 @@ pub struct ScenarioArgs {
         value_name = "CD",
         allow_negative_numbers = true,
         help = "Air drag coefficient C_d, dimensionless (0 <= C_d <= 100): drag 0.5 rho_a C_d A v^2 \
-                with frontal area A = 2 r l (docs/snowball-and-losses.md §2) [default: 0, no drag]"
+                with frontal area A = 2 r l for the log, pi r^2 for the ball \
+                (docs/snowball-and-losses.md §2) [default: 0, no drag]"
     )]
     pub drag_coefficient: Option<f64>,
 
@@ -360,8 +361,10 @@ pub struct ScenarioArgs {
 
     #[arg(
         long,
-        help = "Write the energy ledger columns (kinetic, released, each loss, model, residual, \
-                J) even without losses; a run with losses always writes them [default: off]"
+        help = "Write the energy ledger columns (kinetic, released, each loss, model, collision, \
+                created, residual, J) even without losses; a run with losses always writes them. \
+                The turn models take no losses but keep the ledger (their collisions' losses; \
+                `snowroll turns`: at each turn end, before its collision) [default: off]"
     )]
     pub ledger: bool,
 
@@ -371,8 +374,8 @@ pub struct ScenarioArgs {
         allow_negative_numbers = true,
         help = with_default(
             "Stop with `terminal` where |a| falls to TOL times the initial drive \
-             (g sin a - c_rr g cos a)/(1 + k): only the snowless log with drag has a terminal \
-             velocity; 0 = keep going (0 <= TOL < 1)",
+             (g sin a - c_rr g cos a)/(1 + k): only the snowless log or ball with drag has a \
+             terminal velocity; 0 = keep going (0 <= TOL < 1)",
             short(snowroll::losses::TERMINAL_TOL_DEFAULT)
         )
     )]

@@ -495,6 +495,42 @@ fn a_run_with_losses_reproduces_its_run() {
     let ledger_only = ["--model", "torque-cm", "--ledger", "--t-end", "5"];
     reproduces("simulate", &ledger_only, "ledger.csv");
     reproduces("simulate", &ledger_only, "ledger.json");
+    // The ball's losses, on both growth laws.
+    let ball = [
+        "--model",
+        "torque-cm",
+        "--shape",
+        "sphere",
+        "--drag-coefficient",
+        "0.5",
+        "--rolling-resistance",
+        "0.03",
+        "--compaction-energy",
+        "1.5",
+        "--t-end",
+        "5",
+    ];
+    reproduces("simulate", &ball, "ball.csv");
+    let fixed = [&ball[..], &["--swath-width", "0.05", "--format", "json"]].concat();
+    reproduces("simulate", &fixed, "fixed.json");
+    // The turn models' ledger, per sample and per turn.
+    let turns = ["--model", "turns", "--turns", "4", "--ledger"];
+    reproduces("simulate", &turns, "turns.csv");
+    reproduces("turns", &turns, "table.csv");
+    let pivot = [
+        "--model",
+        "turns-exact",
+        "--turns",
+        "3",
+        "--collision",
+        "pivot",
+        "--on-hop",
+        "continue",
+        "--ledger",
+        "--format",
+        "json",
+    ];
+    reproduces("turns", &pivot, "pivot.json");
 }
 
 /// A loss the model does not carry is refused with the flag's name; a

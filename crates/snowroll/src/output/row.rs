@@ -14,6 +14,7 @@
 use serde::de::{self, Deserialize, Deserializer, Visitor};
 use serde::ser::{self, Impossible, Serialize, SerializeStruct, Serializer};
 
+use crate::models::TurnRow;
 use crate::trajectory::{LedgerRow, Sample, TurnState};
 
 /// What a row adds after the sample's columns.
@@ -25,6 +26,8 @@ pub(crate) enum Extra<'a> {
     Turn(&'a TurnState),
     /// The energy ledger (`docs/snowball-and-losses.md` §3).
     Ledger(&'a LedgerRow),
+    /// A turn model's state and its ledger (§3.2), in that order.
+    TurnLedger(&'a TurnState, &'a LedgerRow),
 }
 
 /// Which columns a run's rows carry (the [`Extra`] variant, without data).
@@ -36,6 +39,8 @@ pub(crate) enum RowKind {
     Turn,
     /// [`Sample`] then [`LedgerRow`].
     Ledger,
+    /// [`Sample`], [`TurnState`], then [`LedgerRow`].
+    TurnLedger,
 }
 
 /// One output row: a sample and what its run adds, written as one flat
@@ -55,24 +60,29 @@ impl Row<'_> {
             Extra::None => RowKind::Plain,
             Extra::Turn(_) => RowKind::Turn,
             Extra::Ledger(_) => RowKind::Ledger,
+            Extra::TurnLedger(..) => RowKind::TurnLedger,
         }
     }
 
     /// The column names of rows of `kind`, in the order they are written.
     pub fn columns(kind: RowKind) -> Vec<&'static str> {
         let sample = field_names::<Sample>();
-        sample.iter().chain(kind.extra_columns()).copied().collect()
+        sample.iter().copied().chain(kind.extra_columns()).collect()
     }
 }
 
 impl RowKind {
     /// The columns this kind adds after the sample's.
-    fn extra_columns(self) -> &'static [&'static str] {
-        match self {
-            RowKind::Plain => &[],
-            RowKind::Turn => field_names::<TurnState>(),
-            RowKind::Ledger => field_names::<LedgerRow>(),
-        }
+    fn extra_columns(self) -> Vec<&'static str> {
+        let (turn, ledger) = match self {
+            RowKind::Plain => (false, false),
+            RowKind::Turn => (true, false),
+            RowKind::Ledger => (false, true),
+            RowKind::TurnLedger => (true, true),
+        };
+        let turn = turn.then(field_names::<TurnState>).unwrap_or_default();
+        let ledger = ledger.then(field_names::<LedgerRow>).unwrap_or_default();
+        turn.iter().chain(ledger).copied().collect()
     }
 }
 
@@ -85,6 +95,45 @@ impl Serialize for Row<'_> {
             Extra::None => {}
             Extra::Turn(k) => k.serialize(Fields(&mut out))?,
             Extra::Ledger(l) => l.serialize(Fields(&mut out))?,
+            Extra::TurnLedger(k, l) => {
+                k.serialize(Fields(&mut out))?;
+                l.serialize(Fields(&mut out))?;
+            }
+        }
+        out.end()
+    }
+}
+
+/// One row of the per-turn table (`snowroll turns`): a [`TurnRow`] and,
+/// for a run that records one, the ledger at the end of that turn
+/// (`docs/snowball-and-losses.md` §3.2), written as one flat record.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct TableRow<'a> {
+    /// The turn.
+    pub turn: &'a TurnRow,
+    /// Its ledger.
+    pub ledger: Option<&'a LedgerRow>,
+}
+
+impl TableRow<'_> {
+    /// The column names, with or without the ledger's.
+    pub fn columns(ledger: bool) -> Vec<&'static str> {
+        let extra = ledger.then(field_names::<LedgerRow>).unwrap_or_default();
+        field_names::<TurnRow>()
+            .iter()
+            .chain(extra)
+            .copied()
+            .collect()
+    }
+}
+
+impl Serialize for TableRow<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let len = Self::columns(self.ledger.is_some()).len();
+        let mut out = serializer.serialize_struct("TableRow", len)?;
+        self.turn.serialize(Fields(&mut out))?;
+        if let Some(l) = self.ledger {
+            l.serialize(Fields(&mut out))?;
         }
         out.end()
     }
@@ -299,8 +348,13 @@ mod tests {
         samples
             .iter()
             .flat_map(|sample| {
-                [Extra::None, Extra::Turn(&TURN), Extra::Ledger(l)]
-                    .map(|extra| Row { sample, extra })
+                [
+                    Extra::None,
+                    Extra::Turn(&TURN),
+                    Extra::Ledger(l),
+                    Extra::TurnLedger(&TURN, l),
+                ]
+                .map(|extra| Row { sample, extra })
             })
             .collect()
     }
@@ -319,7 +373,7 @@ mod tests {
         assert_eq!(plain, field_names::<Sample>());
         assert_eq!(plain.len(), 9);
         assert_eq!(plain[0], "t_s");
-        for kind in [RowKind::Turn, RowKind::Ledger] {
+        for kind in [RowKind::Turn, RowKind::Ledger, RowKind::TurnLedger] {
             let cols = Row::columns(kind);
             assert_eq!(cols[..9], plain[..]);
             assert_eq!(&cols[9..], kind.extra_columns());
@@ -334,6 +388,10 @@ mod tests {
             ["turn", "theta_rad", "omega_rad_s"]
         );
         assert_eq!(RowKind::Ledger.extra_columns().len(), 9);
+        assert_eq!(RowKind::TurnLedger.extra_columns().len(), 12);
+        let table = TableRow::columns(true);
+        assert_eq!(table[..15], TableRow::columns(false)[..]);
+        assert_eq!(table[15], "kinetic_j");
     }
 
     #[test]
@@ -360,6 +418,10 @@ mod tests {
                 Extra::None => {}
                 Extra::Turn(k) => assert_eq!(by_name::<TurnState>(&names, &records[0]), *k),
                 Extra::Ledger(l) => assert_eq!(by_name::<LedgerRow>(&names, &records[0]), *l),
+                Extra::TurnLedger(k, l) => {
+                    assert_eq!(by_name::<TurnState>(&names, &records[0]), *k);
+                    assert_eq!(by_name::<LedgerRow>(&names, &records[0]), *l);
+                }
             }
         }
     }
@@ -382,6 +444,13 @@ mod tests {
                     assert_eq!(serde_json::from_value::<TurnState>(value).unwrap(), *k);
                 }
                 Extra::Ledger(l) => {
+                    assert_eq!(serde_json::from_value::<LedgerRow>(value).unwrap(), *l);
+                }
+                Extra::TurnLedger(k, l) => {
+                    assert_eq!(
+                        serde_json::from_value::<TurnState>(value.clone()).unwrap(),
+                        *k
+                    );
                     assert_eq!(serde_json::from_value::<LedgerRow>(value).unwrap(), *l);
                 }
             }

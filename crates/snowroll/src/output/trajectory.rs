@@ -9,7 +9,7 @@
 //!
 //! A turn model's rows carry its [`TurnState`] columns (`turn`,
 //! `theta_rad`, `omega_rad_s`) after those of [`Sample`]; a run that records
-//! the energy ledger carries the [`LedgerRow`] columns instead
+//! the energy ledger carries the [`LedgerRow`] columns last
 //! (`docs/snowball-and-losses.md` §3).
 
 use std::io::Write;
@@ -75,7 +75,7 @@ impl<W: Write> TrajectoryWriter<W> {
         params: &RunParams,
     ) -> Result<Self, OutputError> {
         let turns = !model.is_circular();
-        let ledger = !turns && params.losses.is_some_and(|l| l.records_ledger());
+        let ledger = params.losses.is_some_and(|l| l.records_ledger());
         let v_terminal = closed_form_terminal_velocity(model, params);
         let body = match format {
             Format::Csv => {
@@ -88,7 +88,9 @@ impl<W: Write> TrajectoryWriter<W> {
                         format_number(vt)
                     )?;
                 }
-                let kind = if turns {
+                let kind = if turns && ledger {
+                    RowKind::TurnLedger
+                } else if turns {
                     RowKind::Turn
                 } else if ledger {
                     RowKind::Ledger
@@ -129,19 +131,21 @@ impl<W: Write> TrajectoryWriter<W> {
     /// of it is written ([`OutputError::NonFinite`]).
     fn row(&mut self, s: &Sample, turn: Option<&TurnState>) -> Result<(), OutputError> {
         let row = self.rows + 1;
-        let ledger;
-        let extra = if self.ledger {
-            // A ledger run sends a ledger row before each sample; one
-            // without is a model that keeps no ledger: zeros would lie.
-            ledger = self
-                .pending_ledger
-                .take()
-                .ok_or(OutputError::MissingLedger { row })?;
-            Extra::Ledger(&ledger)
-        } else if let Some(k) = turn.filter(|_| self.turns) {
-            Extra::Turn(k)
-        } else {
-            Extra::None
+        // A ledger run sends a ledger row before each sample; one without
+        // is a model that keeps no ledger: zeros would lie.
+        let ledger = match self.ledger {
+            true => Some(
+                self.pending_ledger
+                    .take()
+                    .ok_or(OutputError::MissingLedger { row })?,
+            ),
+            false => None,
+        };
+        let extra = match (turn.filter(|_| self.turns), &ledger) {
+            (Some(k), Some(l)) => Extra::TurnLedger(k, l),
+            (Some(k), None) => Extra::Turn(k),
+            (None, Some(l)) => Extra::Ledger(l),
+            (None, None) => Extra::None,
         };
         self.put(row, &Row { sample: s, extra })?;
         self.rows += 1;

@@ -11,7 +11,7 @@
 
 use std::io::Write;
 
-use super::row::field_names;
+use super::row::TableRow;
 use super::{
     check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
     write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
@@ -19,7 +19,7 @@ use super::{
 };
 use crate::error::{OutputError, SinkError};
 use crate::models::{ModelKind, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable};
-use crate::trajectory::Stop;
+use crate::trajectory::{LedgerRow, Stop};
 
 enum Body<W: Write> {
     /// Boxed: the CSV writer carries its own buffer.
@@ -33,6 +33,11 @@ enum Body<W: Write> {
 pub struct TurnTableWriter<W: Write> {
     body: Body<W>,
     rows: u64,
+    /// Whether the rows carry the ledger at each turn end (`--ledger`,
+    /// `docs/snowball-and-losses.md` §3.2).
+    ledger: bool,
+    /// The ledger of the row that comes next ([`TurnSink::ledger`]).
+    pending_ledger: Option<LedgerRow>,
 }
 
 impl<W: Write> TurnTableWriter<W> {
@@ -47,11 +52,12 @@ impl<W: Write> TurnTableWriter<W> {
         model: ModelKind,
         params: &RunParams,
     ) -> Result<Self, OutputError> {
+        let ledger = params.losses.is_some_and(|l| l.records_ledger());
         let body = match format {
             Format::Csv => {
                 write_csv_header(&mut w, model, params)?;
                 let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
-                csv.write_record(field_names::<TurnRow>())?;
+                csv.write_record(TableRow::columns(ledger))?;
                 Body::Csv(Box::new(csv))
             }
             Format::Json => {
@@ -59,7 +65,12 @@ impl<W: Write> TurnTableWriter<W> {
                 Body::Json(w)
             }
         };
-        Ok(Self { body, rows: 0 })
+        Ok(Self {
+            body,
+            rows: 0,
+            ledger,
+            pending_ledger: None,
+        })
     }
 
     /// Rows written so far.
@@ -69,8 +80,20 @@ impl<W: Write> TurnTableWriter<W> {
 
     /// Writes one row; a row with a non-finite number is refused before any
     /// of it is written ([`OutputError::NonFinite`]).
-    fn row(&mut self, row: &TurnRow) -> Result<(), OutputError> {
+    fn row(&mut self, turn: &TurnRow) -> Result<(), OutputError> {
         let k = self.rows + 1;
+        let ledger = match self.ledger {
+            true => Some(
+                self.pending_ledger
+                    .take()
+                    .ok_or(OutputError::MissingLedger { row: k })?,
+            ),
+            false => None,
+        };
+        let row = &TableRow {
+            turn,
+            ledger: ledger.as_ref(),
+        };
         match &mut self.body {
             Body::Csv(csv) => {
                 check_finite(row, Some(k))?;
@@ -125,6 +148,11 @@ impl<W: Write> TurnSink for TurnTableWriter<W> {
     fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError> {
         Ok(self.row(row)?)
     }
+
+    fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        self.pending_ledger = Some(*row);
+        Ok(())
+    }
 }
 
 /// The `#` lines of the long-run statistics: one per checkpoint.
@@ -172,7 +200,11 @@ pub fn write_turn_table(
     params: &RunParams,
 ) -> Result<(), OutputError> {
     let mut writer = TurnTableWriter::new(w, format, table.model, params)?;
-    for row in &table.rows {
+    let has_ledger = table.ledger.len() == table.rows.len();
+    for (i, row) in table.rows.iter().enumerate() {
+        if let Some(l) = table.ledger.get(i).filter(|_| has_ledger) {
+            writer.pending_ledger = Some(*l);
+        }
         writer.row(row)?;
     }
     writer.finish_with(&table.stop, &table.summary, &params.notes)?;
@@ -214,8 +246,40 @@ mod tests {
         let last_row = lines.iter().rposition(|l| !l.starts_with('#'));
         assert!(stop > last_row);
         let body: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).collect();
-        assert_eq!(body[0], field_names::<TurnRow>().join(","));
+        assert_eq!(body[0], TableRow::columns(false).join(","));
         assert_eq!(body.len(), 1 + 3);
+    }
+
+    /// With `ledger` each row carries the ledger at its turn end, after the
+    /// turn's columns, and a row whose ledger is missing is an error.
+    #[test]
+    fn a_ledger_run_writes_the_ledger_columns_last() {
+        let opts = SimOptions {
+            turns: Some(3),
+            t_end: 1e4,
+            losses: crate::Losses {
+                ledger: true,
+                ..crate::Losses::default()
+            },
+            ..SimOptions::default()
+        };
+        let s = Scenario::default();
+        let t = run_turns(ModelKind::Turns, &s, &opts).unwrap();
+        let params = RunParams::new(&s, &opts);
+        let mut out = Vec::new();
+        write_turn_table(&mut out, Format::Csv, &t, &params).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let body: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).collect();
+        assert_eq!(body[0], TableRow::columns(true).join(","));
+        assert!(body[0].ends_with(",collision_j,created_j,residual_j"));
+        let width = body[0].split(',').count();
+        assert!(body[1..].iter().all(|r| r.split(',').count() == width));
+        assert_eq!(body.len(), 1 + 3);
+        let mut writer = TurnTableWriter::new(Vec::new(), Format::Csv, t.model, &params).unwrap();
+        assert!(matches!(
+            writer.row(&t.rows[0]),
+            Err(OutputError::MissingLedger { row: 1 })
+        ));
     }
 
     #[test]
@@ -226,7 +290,7 @@ mod tests {
         write_turn_table(&mut out, Format::Csv, &t, &params).unwrap();
         let text = String::from_utf8(out).unwrap();
         let header = text.lines().find(|l| !l.starts_with('#')).unwrap();
-        assert_eq!(header, field_names::<TurnRow>().join(","));
+        assert_eq!(header, TableRow::columns(false).join(","));
     }
 
     #[test]
