@@ -141,10 +141,12 @@ def test_every_column_is_a_numpy_array():
         assert isinstance(col, np.ndarray), (name, type(col))
         assert len(col) == len(s), name
         assert col.dtype == (object if name in TEXT_COLUMNS else np.uint64 if name == "index" else np.float64), name
-    # Each column named in the docstring, and no other.
+    # Each column named in the docstring, and reachable as an attribute
+    # (`s.model` and `s.stop` are the columns, not metadata).
     doc = snowroll.SweepResult.__doc__
     for name in s.columns:
         assert f"``{name}``" in doc, name
+        assert getattr(s, name) is s[name], name
 
 
 @pytest.mark.parametrize(
@@ -212,3 +214,30 @@ def test_dask_example_on_a_local_dask_cluster():
     with LocalCluster(n_workers=1, threads_per_worker=2, processes=False) as cluster, Client(cluster) as client:
         merged = example.check_merge(client, example.SMALL_GRID, 3)
     assert len(merged) == merged.grid_len
+
+
+def sweep_with_an_empty_text_column():
+    # No run fails, so every cell of `error` is empty.
+    s = snowroll.sweep({"model": "snowless,turns", "alpha_deg": [30, 89.9], "t_end": 3})
+    assert all(e is None for e in s.error)
+    return s
+
+
+def test_text_columns_are_pandas_strings():
+    pd = pytest.importorskip("pandas", reason="pandas is optional and not installed")
+    s = sweep_with_an_empty_text_column()
+    frame = s.to_pandas()
+    for name in TEXT_COLUMNS:
+        assert isinstance(frame[name].dtype, pd.StringDtype), (name, frame[name].dtype)
+        assert list(frame[name].isna()) == [v is None for v in s[name]], name
+    assert list(frame["model"]) == list(s.model)
+    assert frame.attrs == {"grid_len": len(s), "shard": (0, 1), "version": snowroll.__version__}
+
+
+def test_text_columns_are_polars_strings():
+    pl = pytest.importorskip("polars", reason="polars is optional and not installed")
+    s = sweep_with_an_empty_text_column()
+    frame = s.to_polars()
+    for name in TEXT_COLUMNS:
+        assert frame.schema[name] == pl.String, (name, frame.schema[name])
+        assert frame[name].to_list() == list(s[name]), name

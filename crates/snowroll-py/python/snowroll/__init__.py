@@ -78,12 +78,19 @@ class _Columns:
         """The columns as a dict of numpy arrays (the arrays themselves, not copies)."""
         return dict(self._columns)
 
-    def _undefined_as_missing(self, missing: Any) -> Dict[str, Any]:
+    def _undefined_as_missing(self, missing: Any, text: Any) -> Dict[str, Any]:
         # Masked entries (|F|/N where N <= 0) as the frame library's own
-        # missing value, never NaN.
+        # missing value, never NaN; text columns (object arrays of str or
+        # None) as the library's string type, None as its missing value,
+        # even in a column where every cell is missing.
         out: Dict[str, Any] = {}
         for name, col in self._columns.items():
-            out[name] = missing(col) if isinstance(col, _np.ma.MaskedArray) else col
+            if isinstance(col, _np.ma.MaskedArray):
+                out[name] = missing(col)
+            elif col.dtype == object:
+                out[name] = text(col)
+            else:
+                out[name] = col
         return out
 
     def to_pandas(self) -> Any:
@@ -96,14 +103,21 @@ class _Columns:
             self._undefined_as_missing(
                 lambda c: pd.arrays.FloatingArray(
                     _np.ma.getdata(c).copy(), _np.ma.getmaskarray(c).copy()
-                )
+                ),
+                lambda c: pd.array(c, dtype="string"),
             )
         )
-        frame.attrs["params"] = dict(self.params)
-        frame.attrs["stop"] = dict(self.stop)
-        frame.attrs["model"] = self.model
-        frame.attrs["version"] = self.version
+        frame.attrs.update(self._frame_attrs())
         return frame
+
+    def _frame_attrs(self) -> Dict[str, Any]:
+        # What a pandas frame keeps besides the columns (`DataFrame.attrs`).
+        return {
+            "params": dict(self.params),
+            "stop": dict(self.stop),
+            "model": self.model,
+            "version": self.version,
+        }
 
     def to_polars(self) -> Any:
         """The columns as a ``polars.DataFrame`` (needs polars, not a dependency)."""
@@ -112,7 +126,10 @@ class _Columns:
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("to_polars() needs polars: pip install polars") from e
         return pl.DataFrame(
-            self._undefined_as_missing(lambda c: pl.Series(c.tolist(), dtype=pl.Float64))
+            self._undefined_as_missing(
+                lambda c: pl.Series(c.tolist(), dtype=pl.Float64),
+                lambda c: pl.Series(c.tolist(), dtype=pl.String),
+            )
         )
 
 
@@ -190,10 +207,10 @@ class SweepResult(_Columns):
     arrays with NaN where the CSV cell is empty (``x_end`` or ``mu`` not
     swept, a failed run). The text columns ``model``, ``on_hop``,
     ``collision``, ``stop`` and ``error`` are numpy object arrays of ``str``,
-    ``None`` where the cell is empty: pandas keeps them as ``object``
-    columns with ``None`` as missing, polars reads them as ``String``
-    columns with nulls (a fixed-width numpy ``str`` array could not hold the
-    missing cells). ``len`` is the size of the whole grid, ``shard`` the
+    ``None`` where the cell is empty (a fixed-width numpy ``str`` array could
+    not hold the missing cells); :meth:`to_pandas` makes them ``string``
+    columns with ``pd.NA`` there, :meth:`to_polars` ``String`` columns with
+    nulls, even where every cell is empty (``error`` when no run failed). ``len`` is the size of the whole grid, ``shard`` the
     ``(i, n)`` these rows are.
     """
 
@@ -210,9 +227,8 @@ class SweepResult(_Columns):
         self.grid_len: int = raw["len"]
         self.shard: Tuple[int, int] = tuple(raw["shard"])
         self.version: str = raw["version"]
-        self.params: Dict[str, Any] = {}
-        self.stop: Dict[str, Any] = {}
-        self.model: str = ""
+        # No `params`, `stop` or `model` attributes: `r.model` and `r.stop`
+        # are the columns of those names.
 
     def __repr__(self) -> str:
         i, n = self.shard
@@ -235,8 +251,10 @@ class SweepResult(_Columns):
         out.grid_len = parts[0].grid_len
         out.shard = (0, 1)
         out.version = parts[0].version
-        out.params, out.stop, out.model = {}, {}, ""
         return out
+
+    def _frame_attrs(self) -> Dict[str, Any]:
+        return {"grid_len": self.grid_len, "shard": self.shard, "version": self.version}
 
 
 def sweep(
