@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The Python package's tests (issue 13): a virtual environment in target/,
+# The Python package's tests (issue 13): a virtual environment in the cargo
+# target directory ($CARGO_TARGET_DIR when set, else target/),
 # pinned maturin, pytest and numpy, the wheel built ONCE from
 # crates/snowroll-py and installed, then pytest against the release CLI
 # (crates/snowroll-py/tests compare every value with the CLI's to the bit).
@@ -8,8 +9,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 
-venv=target/pyenv-test
-wheels=target/wheels
+# Cargo's own rule: a relative CARGO_TARGET_DIR is taken from the directory
+# cargo runs in, here the repository root.
+target=${CARGO_TARGET_DIR:-target}
+case $target in
+    /*) ;;
+    *) target=$root/$target ;;
+esac
+venv=$target/pyenv-test
+wheels=$target/wheels
 if [ ! -x "$venv/bin/python" ]; then
     python3 -m venv "$venv"
 fi
@@ -29,4 +37,4 @@ rm -f "$wheels"/snowroll-*.whl
 # Run from the tests directory so that `import snowroll` is the installed
 # wheel, not the source tree.
 cd crates/snowroll-py/tests
-SNOWROLL_CLI="$root/target/release/snowroll" "$root/$venv/bin/python" -m pytest -q -p no:cacheprovider .
+SNOWROLL_CLI="$target/release/snowroll" "$venv/bin/python" -m pytest -q -p no:cacheprovider .

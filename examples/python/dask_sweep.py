@@ -15,7 +15,6 @@ at its scheduler instead of starting a local one; with Ray, replace
 import sys
 
 import numpy as np
-from dask.distributed import Client, LocalCluster
 
 import snowroll
 
@@ -28,6 +27,9 @@ GRID = {
     "t_end": 60,
 }
 
+# The grid of the merge check: every model at 5 slopes and 2 snow depths.
+SMALL_GRID = dict(GRID, alpha_deg="5:45:5", snow_depth=[0.01, 0.02], r0=[0.1])
+
 
 def run_shard(grid, i, n):
     """One task: the rows of shard i of n (the library runs them on the
@@ -36,11 +38,32 @@ def run_shard(grid, i, n):
 
 
 def distributed_sweep(client, grid, shards):
+    """The whole sweep of `grid`, its shards run as tasks of `client` (any
+    object with Dask's `submit(fn, *args, pure=...)` and `gather(futures)`)."""
     futures = [client.submit(run_shard, grid, i, shards, pure=False) for i in range(shards)]
     return snowroll.SweepResult.concat(client.gather(futures))
 
 
+def check_merge(client, grid, shards):
+    """Checks that `grid` run in `shards` shards and merged equals the same
+    grid run in one call, column by column, bit for bit (every column is a
+    numpy array: the text ones of dtype object, compared element by element;
+    the numbers by their bytes, so NaN cells must match too). Returns the
+    merged rows."""
+    whole = snowroll.sweep(grid)
+    merged = distributed_sweep(client, grid, shards)
+    assert merged.columns == whole.columns, (merged.columns, whole.columns)
+    for name in whole.columns:
+        a, b = whole[name], merged[name]
+        assert a.dtype == b.dtype, name
+        same = (a == b).all() if a.dtype == object else a.tobytes() == b.tobytes()
+        assert same, name
+    return merged
+
+
 def main():
+    from dask.distributed import Client, LocalCluster
+
     shards = int(sys.argv[1]) if len(sys.argv) > 1 else 8
     workers = int(sys.argv[2]) if len(sys.argv) > 2 else 2
     # One thread per worker process: each shard already uses every core of
@@ -50,13 +73,7 @@ def main():
     ) as client:
         # The merge is exact: a small grid, sharded and joined, equals the
         # same grid run in one call, column by column, bit for bit.
-        small = dict(GRID, alpha_deg="5:45:5", snow_depth=[0.01, 0.02], r0=[0.1])
-        whole = snowroll.sweep(small)
-        merged = distributed_sweep(client, small, 3)
-        for name in whole.columns:
-            a, b = whole[name], merged[name]
-            same = (a == b).all() if a.dtype == object else a.tobytes() == b.tobytes()
-            assert same, name
+        merged = check_merge(client, SMALL_GRID, 3)
         print(f"check: {len(merged)} rows from 3 shards equal the single run")
 
         rows = distributed_sweep(client, GRID, shards)

@@ -12,6 +12,8 @@
 //! The GIL is released while the library computes ([`Python::detach`]).
 //! Bad parameters raise `ValueError` with the library's message
 //! ([`ParamError`]); a failed integration raises `RuntimeError` ([`SimError`]).
+//! Where the message names a CLI flag (`--snow-depth`), the Python keyword
+//! (`snow_depth`) replaces it ([`python_message`]).
 
 mod sweep;
 
@@ -26,9 +28,46 @@ use snowroll::{
     Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
 };
 
-/// A bad parameter: `ValueError` with the library's message.
+/// A library message in Python's words: each CLI flag `--kebab-name` (two
+/// dashes, then a lowercase letter, then letters, digits and dashes) becomes
+/// the keyword `kebab_name` that a Python caller passes instead; the rest of
+/// the text is kept as it is.
+pub(crate) fn python_message(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(at) = rest.find("--") {
+        let (before, flag) = rest.split_at(at);
+        out.push_str(before);
+        let name = &flag[2..];
+        let len = if name.starts_with(|c: char| c.is_ascii_lowercase()) {
+            name.find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'))
+                .unwrap_or(name.len())
+        } else {
+            0
+        };
+        if len == 0 {
+            out.push_str("--");
+        } else {
+            // A dash that ends the word is punctuation, not part of the flag.
+            let word = name[..len].trim_end_matches('-');
+            out.push_str(&word.replace('-', "_"));
+            out.push_str(&name[word.len()..len]);
+        }
+        rest = &name[len..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// `ValueError` with `message` in Python's words ([`python_message`]).
+pub(crate) fn value_error_text(message: &str) -> PyErr {
+    PyValueError::new_err(python_message(message))
+}
+
+/// A bad parameter: `ValueError` with the library's message, its flags
+/// named as keywords ([`python_message`]).
 pub(crate) fn value_error(e: ParamError) -> PyErr {
-    PyValueError::new_err(e.to_string())
+    value_error_text(&e.to_string())
 }
 
 /// A failed run: `ValueError` for bad parameters found by the run,
@@ -36,7 +75,7 @@ pub(crate) fn value_error(e: ParamError) -> PyErr {
 fn sim_error(e: SimError) -> PyErr {
     match e {
         SimError::Param(p) => value_error(p),
-        other => PyRuntimeError::new_err(other.to_string()),
+        other => PyRuntimeError::new_err(python_message(&other.to_string())),
     }
 }
 

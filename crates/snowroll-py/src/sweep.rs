@@ -2,22 +2,22 @@
 //! given as a Python dict, rows as numpy columns named as in the CLI's
 //! `snowroll sweep` CSV.
 
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Choices, Grid, Method, Param, SweepRow, Values, DEFAULT_CHUNK,
+    run_chunks, shard_range, Axis, Choices, Grid, GridError, Method, Param, SweepRow, Values,
+    DEFAULT_CHUNK,
 };
 use snowroll::{CollisionModel, ModelKind, OnHop, ParamError};
 
-use crate::{column, record, value_error};
+use crate::{column, record, value_error, value_error_text};
 
 /// The values of one sweep axis: a string as the CLI reads it (`a,b,c` or
 /// `start:end:count`), one number, or a sequence of numbers.
 fn axis_values(key: &str, value: &Bound<'_, PyAny>) -> PyResult<Values> {
     if let Ok(text) = value.cast::<PyString>() {
-        return Values::parse(key, &text.to_cow()?)
-            .map_err(|e| PyValueError::new_err(e.to_string()));
+        return Values::parse(key, &text.to_cow()?).map_err(|e| value_error_text(&e.to_string()));
     }
     if let Ok(x) = value.extract::<f64>() {
         return Ok(Values::List(vec![x]));
@@ -30,11 +30,19 @@ fn axis_values(key: &str, value: &Bound<'_, PyAny>) -> PyResult<Values> {
     Ok(Values::List(list))
 }
 
+/// The `TypeError` of a list setting given neither as a string nor as a
+/// sequence of strings, naming its key.
+fn ids_expected(key: &str) -> PyErr {
+    PyTypeError::new_err(format!(
+        "{key}: expected a string \"a,b\" or a sequence of ids (str)"
+    ))
+}
+
 /// The models of a sweep: `"a,b"` or a sequence of ids.
 fn sweep_models(value: &Bound<'_, PyAny>) -> PyResult<Vec<ModelKind>> {
     let names: Vec<String> = match value.cast::<PyString>() {
         Ok(text) => text.to_cow()?.split(',').map(str::to_string).collect(),
-        Err(_) => value.extract()?,
+        Err(_) => value.extract().map_err(|_| ids_expected("model"))?,
     };
     names
         .iter()
@@ -56,7 +64,7 @@ fn choice_list<T: Copy>(
             .split(',')
             .map(|s| s.trim().to_string())
             .collect(),
-        Err(_) => value.extract()?,
+        Err(_) => value.extract().map_err(|_| ids_expected(key))?,
     };
     names
         .iter()
@@ -76,7 +84,10 @@ fn choice_list<T: Copy>(
 /// point of the other axes, one summary row each, in grid order (the last
 /// axis in `Param` order varies fastest), rows computed in parallel with the
 /// GIL released. `shard = (i, n)` runs only shard i of n, as `--shard i/n`.
-/// Returns `{"columns": {name: ndarray or list}, "len": int, "shard": (i, n)}`.
+/// Returns `{"columns": {name: ndarray or list}, "len": int, "shard": (i, n)}`:
+/// numbers as numpy arrays, the text columns (`model`, `on_hop`,
+/// `collision`, `stop`, `error`) as lists of `str` or `None`, which the
+/// Python layer turns into numpy object arrays.
 #[pyfunction]
 #[pyo3(signature = (grid, *, shard = None, method = "auto"))]
 pub(crate) fn sweep<'py>(
@@ -128,9 +139,16 @@ pub(crate) fn sweep<'py>(
     }
     let grid = Grid::new(models, axes)
         .and_then(|g| g.with_choices(choices))
-        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        .map_err(|e| match e {
+            // The CLI's wording names its flag; a Python caller writes a grid key.
+            GridError::NoModel => PyValueError::new_err(
+                "no model given: put \"model\": \"ID[,ID...]\" (or a list of ids) in the grid \
+                 (snowroll.models() lists them)",
+            ),
+            other => value_error_text(&other.to_string()),
+        })?;
     let (i, n) = shard.unwrap_or((0, 1));
-    let range = shard_range(grid.len(), i, n).map_err(PyValueError::new_err)?;
+    let range = shard_range(grid.len(), i, n).map_err(|e| value_error_text(&e))?;
     let rows = py
         .detach(|| {
             let mut rows: Vec<SweepRow> = Vec::new();

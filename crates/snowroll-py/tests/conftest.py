@@ -13,7 +13,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[3]
 @pytest.fixture(scope="session")
 def cli() -> pathlib.Path:
     """The `snowroll` CLI built from the same sources (scripts/test-python.sh builds it)."""
-    path = pathlib.Path(os.environ.get("SNOWROLL_CLI", ROOT / "target" / "release" / "snowroll"))
+    target = ROOT / os.environ.get("CARGO_TARGET_DIR", "target")  # an absolute one replaces ROOT
+    path = pathlib.Path(os.environ.get("SNOWROLL_CLI", target / "release" / "snowroll"))
     if not path.exists():
         pytest.fail(f"the CLI binary {path} is missing: run `cargo build --release -p snowroll-cli`")
     return path

@@ -1,8 +1,11 @@
 """snowroll.sweep equals the CLI's `snowroll sweep` row for row, bit for bit;
 shards joined equal the whole sweep; bad grids raise ValueError."""
 
+import concurrent.futures
 import csv
+import importlib.util
 import io
+import pathlib
 
 import numpy as np
 import pytest
@@ -127,3 +130,114 @@ def test_bad_grid(grid, match):
 def test_bad_shard():
     with pytest.raises(ValueError, match="shard"):
         snowroll.sweep({"model": "torque-cm"}, shard=(3, 3))
+
+
+def test_every_column_is_a_numpy_array():
+    s = snowroll.sweep(SETTINGS_GRID)
+    assert set(TEXT_COLUMNS) <= set(s.columns)
+    assert tuple(snowroll.SweepResult.TEXT_COLUMNS) == TEXT_COLUMNS
+    for name in s.columns:
+        col = s[name]
+        assert isinstance(col, np.ndarray), (name, type(col))
+        assert len(col) == len(s), name
+        assert col.dtype == (object if name in TEXT_COLUMNS else np.uint64 if name == "index" else np.float64), name
+    # Each column named in the docstring, and reachable as an attribute
+    # (`s.model` and `s.stop` are the columns, not metadata).
+    doc = snowroll.SweepResult.__doc__
+    for name in s.columns:
+        assert f"``{name}``" in doc, name
+        assert getattr(s, name) is s[name], name
+
+
+@pytest.mark.parametrize(
+    "shard,error,match",
+    [
+        ((-1, 3), ValueError, r"^shard = -1 is out of range: expected an integer 0 <= shard"),
+        ((0, 0), ValueError, r"^shard = 0 is out of range: expected an integer 1 <= shard"),
+        ((3, 3), ValueError, r"^shard = \(3, 3\) is out of range: expected 0 <= i < n$"),
+        ((0.0, 3), TypeError, r"^shard: expected an integer, got float$"),
+        (5, TypeError, r"^shard: expected a pair \(i, n\) of integers, got int$"),
+    ],
+)
+def test_bad_shard_names_the_keyword(shard, error, match):
+    with pytest.raises(error, match=match):
+        snowroll.sweep({"model": "torque-cm"}, shard=shard)
+
+
+def test_a_list_setting_of_the_wrong_type_names_its_key():
+    with pytest.raises(TypeError, match="^on_hop: expected a string"):
+        snowroll.sweep({"model": "turns", "on_hop": 1})
+    with pytest.raises(TypeError, match="^model: expected a string"):
+        snowroll.sweep({"model": 4})
+
+
+def load_dask_example():
+    path = pathlib.Path(__file__).resolve().parents[3] / "examples" / "python" / "dask_sweep.py"
+    spec = importlib.util.spec_from_file_location("dask_sweep_example", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+class ThreadClient:
+    """The two methods of a Dask client the example uses, on a local thread
+    pool, so the example's core runs where dask is not installed."""
+
+    def __init__(self, pool):
+        self.pool = pool
+
+    def submit(self, fn, *args, pure=True):
+        return self.pool.submit(fn, *args)
+
+    def gather(self, futures):
+        return [f.result() for f in futures]
+
+
+@pytest.mark.parametrize("shards", [1, 3, 7])
+def test_dask_example_core_merges_shards_into_the_single_run(shards):
+    example = load_dask_example()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=3) as pool:
+        merged = example.check_merge(ThreadClient(pool), example.SMALL_GRID, shards)
+    models = len(snowroll.models())
+    assert len(merged) == merged.grid_len == models * 5 * 2
+    assert np.array_equal(merged.index, np.arange(len(merged), dtype=np.uint64))
+
+
+def test_dask_example_on_a_local_dask_cluster():
+    pytest.importorskip(
+        "dask.distributed",
+        reason="dask is not installed (scripts/test-python.sh installs maturin, pytest and numpy only)",
+    )
+    from dask.distributed import Client, LocalCluster
+
+    example = load_dask_example()
+    with LocalCluster(n_workers=1, threads_per_worker=2, processes=False) as cluster, Client(cluster) as client:
+        merged = example.check_merge(client, example.SMALL_GRID, 3)
+    assert len(merged) == merged.grid_len
+
+
+def sweep_with_an_empty_text_column():
+    # No run fails, so every cell of `error` is empty.
+    s = snowroll.sweep({"model": "snowless,turns", "alpha_deg": [30, 89.9], "t_end": 3})
+    assert all(e is None for e in s.error)
+    return s
+
+
+def test_text_columns_are_pandas_strings():
+    pd = pytest.importorskip("pandas", reason="pandas is optional and not installed")
+    s = sweep_with_an_empty_text_column()
+    frame = s.to_pandas()
+    for name in TEXT_COLUMNS:
+        assert isinstance(frame[name].dtype, pd.StringDtype), (name, frame[name].dtype)
+        assert list(frame[name].isna()) == [v is None for v in s[name]], name
+    assert list(frame["model"]) == list(s.model)
+    assert frame.attrs == {"grid_len": len(s), "shard": (0, 1), "version": snowroll.__version__}
+
+
+def test_text_columns_are_polars_strings():
+    pl = pytest.importorskip("polars", reason="polars is optional and not installed")
+    s = sweep_with_an_empty_text_column()
+    frame = s.to_polars()
+    for name in TEXT_COLUMNS:
+        assert frame.schema[name] == pl.String, (name, frame.schema[name])
+        assert frame[name].to_list() == list(s[name]), name

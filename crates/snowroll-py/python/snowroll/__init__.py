@@ -13,14 +13,19 @@ project's one parameter vocabulary: the CLI's long flags in snake_case
 >>> r.stop["reason"], r.v_m_s[-1] > 0
 ('end-time', True)
 
-Functions: :func:`simulate`, :func:`turns`, :func:`models`. Bad parameters
-raise ``ValueError`` with the library's message, a failed integration
-``RuntimeError``. The computation runs with the GIL released, so threads
+Functions: :func:`simulate`, :func:`turns`, :func:`models`, :func:`sweep`.
+Bad parameters raise ``ValueError`` with the library's message (where it
+names a CLI flag such as ``--snow-depth``, the keyword ``snow_depth`` stands
+instead), a parameter of the wrong type ``TypeError`` naming its keyword, a
+failed integration ``RuntimeError``. Float keywords take any real number
+(int, float, numpy scalar), count keywords (``turns``, ``max_rows``,
+``max_steps``) an integer. The computation runs with the GIL released, so threads
 calling these functions run in parallel.
 """
 
 from __future__ import annotations
 
+import numbers as _numbers
 import warnings as _warnings
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple
 
@@ -73,12 +78,19 @@ class _Columns:
         """The columns as a dict of numpy arrays (the arrays themselves, not copies)."""
         return dict(self._columns)
 
-    def _undefined_as_missing(self, missing: Any) -> Dict[str, Any]:
+    def _undefined_as_missing(self, missing: Any, text: Any) -> Dict[str, Any]:
         # Masked entries (|F|/N where N <= 0) as the frame library's own
-        # missing value, never NaN.
+        # missing value, never NaN; text columns (object arrays of str or
+        # None) as the library's string type, None as its missing value,
+        # even in a column where every cell is missing.
         out: Dict[str, Any] = {}
         for name, col in self._columns.items():
-            out[name] = missing(col) if isinstance(col, _np.ma.MaskedArray) else col
+            if isinstance(col, _np.ma.MaskedArray):
+                out[name] = missing(col)
+            elif col.dtype == object:
+                out[name] = text(col)
+            else:
+                out[name] = col
         return out
 
     def to_pandas(self) -> Any:
@@ -91,14 +103,21 @@ class _Columns:
             self._undefined_as_missing(
                 lambda c: pd.arrays.FloatingArray(
                     _np.ma.getdata(c).copy(), _np.ma.getmaskarray(c).copy()
-                )
+                ),
+                lambda c: pd.array(c, dtype="string"),
             )
         )
-        frame.attrs["params"] = dict(self.params)
-        frame.attrs["stop"] = dict(self.stop)
-        frame.attrs["model"] = self.model
-        frame.attrs["version"] = self.version
+        frame.attrs.update(self._frame_attrs())
         return frame
+
+    def _frame_attrs(self) -> Dict[str, Any]:
+        # What a pandas frame keeps besides the columns (`DataFrame.attrs`).
+        return {
+            "params": dict(self.params),
+            "stop": dict(self.stop),
+            "model": self.model,
+            "version": self.version,
+        }
 
     def to_polars(self) -> Any:
         """The columns as a ``polars.DataFrame`` (needs polars, not a dependency)."""
@@ -107,7 +126,10 @@ class _Columns:
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("to_polars() needs polars: pip install polars") from e
         return pl.DataFrame(
-            self._undefined_as_missing(lambda c: pl.Series(c.tolist(), dtype=pl.Float64))
+            self._undefined_as_missing(
+                lambda c: pl.Series(c.tolist(), dtype=pl.Float64),
+                lambda c: pl.Series(c.tolist(), dtype=pl.String),
+            )
         )
 
 
@@ -176,19 +198,28 @@ class TurnResult(_Columns):
 class SweepResult(_Columns):
     """The rows of a sweep: what :func:`sweep` returns.
 
-    Columns (those of the CLI's ``snowroll sweep`` CSV): ``index`` (uint64,
-    the grid index), ``model``, ``alpha_deg``, ``snow_depth``, ``r0``, ``g``,
-    ``density``, ``length``, ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``,
-    ``stop``, ``t_s``, ``x_m``, ``v_m_s``, ``a_over_g_sin_alpha``, ``turns``,
-    ``error``. Numbers are float64 arrays with NaN where the CSV cell is
-    empty (``x_end`` not swept, a failed run); ``model``, ``stop`` and
-    ``error`` are object arrays of str (``None`` where empty). ``len`` is the
-    size of the whole grid, ``shard`` the ``(i, n)`` these rows are.
+    Columns (those of the CLI's ``snowroll sweep`` CSV, in its order), every
+    one a numpy array: ``index`` (uint64, the grid index), ``model``,
+    ``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``, ``length``,
+    ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``, ``mu``, ``on_hop``,
+    ``collision``, ``stop``, ``t_s``, ``x_m``, ``v_m_s``,
+    ``a_over_g_sin_alpha``, ``turns``, ``error``. The numbers are float64
+    arrays with NaN where the CSV cell is empty (``x_end`` or ``mu`` not
+    swept, a failed run). The text columns ``model``, ``on_hop``,
+    ``collision``, ``stop`` and ``error`` are numpy object arrays of ``str``,
+    ``None`` where the cell is empty (a fixed-width numpy ``str`` array could
+    not hold the missing cells); :meth:`to_pandas` makes them ``string``
+    columns with ``pd.NA`` there, :meth:`to_polars` ``String`` columns with
+    nulls, even where every cell is empty (``error`` when no run failed). ``len`` is the size of the whole grid, ``shard`` the
+    ``(i, n)`` these rows are.
     """
+
+    #: The columns holding text, as object arrays.
+    TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error")
 
     def __init__(self, raw: Dict[str, Any]) -> None:
         cols = raw["columns"]
-        for name in ("model", "stop", "error"):
+        for name in self.TEXT_COLUMNS:
             arr = _np.empty(len(cols[name]), dtype=object)
             arr[:] = cols[name]
             cols[name] = arr
@@ -196,9 +227,8 @@ class SweepResult(_Columns):
         self.grid_len: int = raw["len"]
         self.shard: Tuple[int, int] = tuple(raw["shard"])
         self.version: str = raw["version"]
-        self.params: Dict[str, Any] = {}
-        self.stop: Dict[str, Any] = {}
-        self.model: str = ""
+        # No `params`, `stop` or `model` attributes: `r.model` and `r.stop`
+        # are the columns of those names.
 
     def __repr__(self) -> str:
         i, n = self.shard
@@ -221,8 +251,10 @@ class SweepResult(_Columns):
         out.grid_len = parts[0].grid_len
         out.shard = (0, 1)
         out.version = parts[0].version
-        out.params, out.stop, out.model = {}, {}, ""
         return out
+
+    def _frame_attrs(self) -> Dict[str, Any]:
+        return {"grid_len": self.grid_len, "shard": self.shard, "version": self.version}
 
 
 def sweep(
@@ -254,9 +286,110 @@ def sweep(
     g sin alpha, to compare with the late-time fractions of :func:`models`
     and the note's eq. (79) (4/9).
 
-    Raises ``ValueError`` for a bad grid (the library's message).
+    Raises ``ValueError`` for a bad grid (the library's message) or a shard
+    outside ``0 <= i < n``, ``TypeError`` for a value of the wrong type.
     """
-    return SweepResult(_snowroll.sweep(dict(grid), shard=shard, method=method))
+    if shard is not None:
+        try:
+            i, n = shard
+        except (TypeError, ValueError):
+            raise TypeError(
+                f"shard: expected a pair (i, n) of integers, got {type(shard).__name__}"
+            ) from None
+        i, n = _count("shard", i, 0), _count("shard", n, 1)
+        if i >= n:
+            raise ValueError(f"shard = ({i}, {n}) is out of range: expected 0 <= i < n")
+        shard = (i, n)
+    return SweepResult(
+        _snowroll.sweep(dict(grid), shard=shard, method=_text("method", method))
+    )
+
+
+# The largest count the library takes (a u64).
+_COUNT_MAX = 2**64 - 1
+
+
+def _number(name: str, value: Any) -> Optional[float]:
+    """``None``, or ``value`` (any real number: int, float, numpy scalar) as a
+    float, rounded as the native module would round it; ``TypeError`` naming
+    the keyword for anything else (a ``str`` is not read as a number)."""
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+        raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
+    try:
+        return float(value)
+    except OverflowError:
+        raise ValueError(f"{name} = {value} is out of range: expected a finite number") from None
+
+
+def _numbers_list(name: str, value: Any) -> Optional[List[float]]:
+    """``None``, or a sequence of real numbers as a list of floats."""
+    if value is None:
+        return None
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
+        raise TypeError(f"{name}: expected a sequence of numbers, got {type(value).__name__}")
+    return [_number(name, v) for v in value]
+
+
+def _count(name: str, value: Any, lowest: int = 1) -> Optional[int]:
+    """``None``, or an integer from ``lowest`` to 2^64 - 1 (the native
+    module's u64): ``TypeError`` for a non-integer, ``ValueError`` naming
+    the keyword and its range for an integer outside it."""
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+        raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
+    n = int(value)
+    if not lowest <= n <= _COUNT_MAX:
+        raise ValueError(
+            f"{name} = {n} is out of range: expected an integer {lowest} <= {name} <= 2^64 - 1"
+        )
+    return n
+
+
+def _text(name: str, value: Any) -> Optional[str]:
+    """``None``, or a ``str``; ``TypeError`` naming the keyword otherwise."""
+    if value is None or isinstance(value, str):
+        return value
+    raise TypeError(f"{name}: expected a str, got {type(value).__name__}")
+
+
+def _flag(name: str, value: Any) -> bool:
+    """A bool (Python's or numpy's); ``TypeError`` naming the keyword otherwise."""
+    if isinstance(value, (bool, _np.bool_)):
+        return bool(value)
+    raise TypeError(f"{name}: expected True or False, got {type(value).__name__}")
+
+
+# How each keyword of simulate() and turns() is checked before the native
+# module sees it; a keyword not listed here is passed on as it is.
+_CHECKS = {
+    **dict.fromkeys(
+        (
+            "alpha_deg", "snow_depth", "r0", "g", "density", "length", "v0", "swath_width",
+            "t_end", "x_end", "dt", "rtol", "atol", "mu", "drag_coefficient", "air_density",
+            "rolling_resistance", "compaction_energy", "terminal_tol",
+        ),
+        _number,
+    ),
+    "turns": _count,
+    "max_rows": _count,
+    "max_steps": _count,
+    "times": _numbers_list,
+    "shape": _text,
+    "collision": _text,
+    "on_hop": _text,
+    "ledger": _flag,
+}
+
+
+def _checked(**kwargs: Any) -> Dict[str, Any]:
+    """The keywords, each checked and converted by :data:`_CHECKS`: a wrong
+    type raises ``TypeError`` and an out-of-range count ``ValueError``, both
+    naming the keyword (the native module would raise ``TypeError`` or
+    ``OverflowError`` without it)."""
+    return {k: _CHECKS[k](k, v) if k in _CHECKS else v for k, v in kwargs.items()}
 
 
 def _warn(messages: Sequence[str]) -> None:
@@ -353,34 +486,36 @@ def simulate(
     ``RuntimeError`` when the integration fails.
     """
     raw = _snowroll.simulate(
-        model,
-        alpha_deg=alpha_deg,
-        snow_depth=snow_depth,
-        r0=r0,
-        g=g,
-        density=density,
-        length=length,
-        v0=v0,
-        shape=shape,
-        swath_width=swath_width,
-        t_end=t_end,
-        x_end=x_end,
-        times=None if times is None else [float(t) for t in times],
-        dt=dt,
-        turns=turns,
-        rtol=rtol,
-        atol=atol,
-        mu=mu,
-        collision=collision,
-        on_hop=on_hop,
-        max_rows=max_rows,
-        max_steps=max_steps,
-        drag_coefficient=drag_coefficient,
-        air_density=air_density,
-        rolling_resistance=rolling_resistance,
-        compaction_energy=compaction_energy,
-        ledger=ledger,
-        terminal_tol=terminal_tol,
+        _text("model", model),
+        **_checked(
+            alpha_deg=alpha_deg,
+            snow_depth=snow_depth,
+            r0=r0,
+            g=g,
+            density=density,
+            length=length,
+            v0=v0,
+            shape=shape,
+            swath_width=swath_width,
+            t_end=t_end,
+            x_end=x_end,
+            times=times,
+            dt=dt,
+            turns=turns,
+            rtol=rtol,
+            atol=atol,
+            mu=mu,
+            collision=collision,
+            on_hop=on_hop,
+            max_rows=max_rows,
+            max_steps=max_steps,
+            drag_coefficient=drag_coefficient,
+            air_density=air_density,
+            rolling_resistance=rolling_resistance,
+            compaction_energy=compaction_energy,
+            ledger=ledger,
+            terminal_tol=terminal_tol,
+        ),
     )
     result = Result(raw)
     _warn(result.warnings)
@@ -431,26 +566,28 @@ def turns(
     model, ``RuntimeError`` when the integration fails.
     """
     raw = _snowroll.turns(
-        model,
-        turns=turns,
-        alpha_deg=alpha_deg,
-        snow_depth=snow_depth,
-        r0=r0,
-        g=g,
-        density=density,
-        length=length,
-        v0=v0,
-        shape=shape,
-        swath_width=swath_width,
-        t_end=t_end,
-        x_end=x_end,
-        rtol=rtol,
-        atol=atol,
-        mu=mu,
-        collision=collision,
-        on_hop=on_hop,
-        max_rows=max_rows,
-        max_steps=max_steps,
+        _text("model", model),
+        **_checked(
+            turns=turns,
+            alpha_deg=alpha_deg,
+            snow_depth=snow_depth,
+            r0=r0,
+            g=g,
+            density=density,
+            length=length,
+            v0=v0,
+            shape=shape,
+            swath_width=swath_width,
+            t_end=t_end,
+            x_end=x_end,
+            rtol=rtol,
+            atol=atol,
+            mu=mu,
+            collision=collision,
+            on_hop=on_hop,
+            max_rows=max_rows,
+            max_steps=max_steps,
+        ),
     )
     result = TurnResult(raw)
     _warn(result.warnings)
@@ -471,4 +608,6 @@ def models(
     ``stall_kind`` (``"does-not-start"`` or ``"stalls-in-first-turn"``),
     ``validity`` (order in b/r kept, largest b/r0 without a warning, statement).
     """
-    return _snowroll.models(snow_depth=snow_depth, r0=r0)
+    return _snowroll.models(
+        snow_depth=_number("snow_depth", snow_depth), r0=_number("r0", r0)
+    )

@@ -115,5 +115,9 @@ def sweep(
     eq. (79) puts at 4/9 for the turn models.
 
     Returns ``{"columns": {name: ndarray or list}, "len": int,
-    "shard": (i, n), "version": str}``.
+    "shard": (i, n), "version": str}``: the numbers as numpy arrays, the text
+    columns (``model``, ``on_hop``, ``collision``, ``stop``, ``error``) as
+    lists of ``str`` or ``None``, which ``snowroll.SweepResult`` turns into
+    numpy object arrays. Library messages name keywords where the CLI's name
+    flags (``--snow-depth`` becomes ``snow_depth``).
     """
