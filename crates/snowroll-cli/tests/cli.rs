@@ -1027,8 +1027,8 @@ fn models_stall_slope_is_the_threshold_of_eq14_and_of_simulate() {
     let stall_deg = energy["stall_slope_deg"].as_f64().unwrap();
     // Eq. (14) at x = 0, v = 0: a = 0 when (2/3) g sin a = g cos a (3 b r0 + b^2)/(3 pi r0^2).
     let (b, r0) = (
-        doc["stall_snow_depth_m"].as_f64().unwrap(),
-        doc["stall_r0_m"].as_f64().unwrap(),
+        doc["snow_depth"].as_f64().unwrap(),
+        doc["r0"].as_f64().unwrap(),
     );
     let want = ((3.0 * b * r0 + b * b) / (2.0 * PI * r0 * r0))
         .atan()
@@ -1076,8 +1076,8 @@ fn models_turn_stall_slope_is_where_the_turn_model_stalls_in_its_first_turn() {
     // From rest, eq. (73) gives θ̇² = −2W/I in turn 0: the log completes the
     // turn iff tan α > max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)), ε = b/(πr0).
     let (b, r0) = (
-        doc["stall_snow_depth_m"].as_f64().unwrap(),
-        doc["stall_r0_m"].as_f64().unwrap(),
+        doc["snow_depth"].as_f64().unwrap(),
+        doc["r0"].as_f64().unwrap(),
     );
     let eps = b / (PI * r0);
     let want = (1..=1_000_000)

@@ -25,7 +25,7 @@
     var LABEL_GAP_PX = 12;     // least blank space between two distance labels, px
     var n = A.t.length;
     var alpha = A.alpha_deg * Math.PI / 180;
-    var rMax = Math.max.apply(null, A.r.concat(A.ring_r)) + (A.circular ? 0 : A.b_m);
+    var rMax = Math.max.apply(null, A.r.concat(A.ring_r)) + (A.circular ? 0 : A.snow_depth);
     var state = { frame: 0, maxFrame: 0, ticks: 0, simT: A.t[0], playing: true, hold: 0 };
     var W = 960, H = 540;
 
@@ -69,7 +69,7 @@
       var x = A.x[i], r = A.r[i], th = A.theta[i], k = A.turn[i];
       var rk = A.ring_r[Math.min(k, A.ring_r.length - 1)];
       var inTurn = th - TAU * k;
-      var b = A.b_m;
+      var b = A.snow_depth;
       // Zoom follows the log once it has grown past a quarter of its final size.
       var s = 0.26 * H / Math.max(r, rMax / 4);
       var yc = A.circular ? r : rk;
@@ -183,7 +183,7 @@
       // Read-out, smaller on narrow screens.
       var fs = W < 600 ? 11 : 14;
       var lines = [
-        A.model + ' (' + A.equation + '), slope ' + fmt(A.alpha_deg, 1) + '°, b = ' + A.b_m + ' m',
+        A.model + ' (' + A.equation + '), slope ' + fmt(A.alpha_deg, 1) + '°, b = ' + A.snow_depth + ' m',
         't = ' + fmt(A.t[i], 3) + ' s    x = ' + fmt(x, 3) + ' m',
         'v = ' + fmt(A.v[i], 3) + ' m/s    r = ' + fmt(r, 4) + ' m',
         'turn ' + k + ', ' + fmt(inTurn * 180 / Math.PI, 0) + '° into it'

@@ -46,10 +46,10 @@ struct Row {
 #[derive(Debug, Serialize)]
 struct Listing {
     snowroll_version: &'static str,
-    /// Snow depth used for `stall_slope_deg`, m.
-    stall_snow_depth_m: f64,
-    /// Initial radius used for `stall_slope_deg`, m.
-    stall_r0_m: f64,
+    /// Snow depth b used for `stall_slope_deg`, m (the default scenario).
+    snow_depth: f64,
+    /// Initial radius r0 used for `stall_slope_deg`, m (the default scenario).
+    r0: f64,
     models: Vec<Row>,
 }
 
@@ -91,8 +91,8 @@ fn listing() -> Listing {
         .collect();
     Listing {
         snowroll_version: snowroll::output::VERSION,
-        stall_snow_depth_m: b,
-        stall_r0_m: r0,
+        snow_depth: b,
+        r0,
         models,
     }
 }
@@ -192,7 +192,7 @@ fn table(listing: &Listing) -> String {
         }
         text.push_str(&format!(
             "Stall (fn. 7): with b = {} m, r0 = {} m these models {what} unless alpha exceeds:\n",
-            listing.stall_snow_depth_m, listing.stall_r0_m
+            listing.snow_depth, listing.r0
         ));
         for (id, slope) in list {
             text.push_str(&format!("  {id:<w$}  {slope:.4} degrees\n", w = widths[0]));

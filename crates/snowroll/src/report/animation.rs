@@ -222,7 +222,7 @@ impl Animation {
             "model": self.model,
             "equation": self.equation,
             "alpha_deg": self.alpha_deg,
-            "b_m": self.snow_depth,
+            "snow_depth": self.snow_depth,
             "r0": self.r0,
             "circular": self.circular,
             "shape": self.shape,

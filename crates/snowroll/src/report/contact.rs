@@ -169,9 +169,9 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
         ),
     )
     .param("model", ModelKind::Turns.id())
-    .param("b_m", lab.scenario().snow_depth())
+    .param("snow_depth", lab.scenario().snow_depth())
     .param("r0", lab.scenario().initial_radius())
-    .param("slopes_deg", "30, 50, 60, α* − 1, α* + 1, 70")
+    .param("alpha_deg", "30, 50, 60, α* − 1, α* + 1, 70")
     .param("collision", CollisionModel::Note.id())
     .param("on_hop", OnHop::Continue.id())
     .param("turns", CONTACT_TURNS)

@@ -36,9 +36,11 @@ fn anchor(place: &str) -> String {
 fn places() -> Vec<&'static str> {
     let mut places: Vec<&str> = ERRATA_MD
         .lines()
+        .filter(|l| !is_separator(l))
         .filter_map(|l| l.strip_prefix("| "))
         .filter_map(|l| l.split(" | ").next())
-        .filter(|p| *p != "Where" && !p.starts_with("---"))
+        .map(str::trim)
+        .filter(|p| *p != "Where")
         .collect();
     places.sort_by_key(|p| std::cmp::Reverse(p.len()));
     places
@@ -79,6 +81,16 @@ fn inline(text: &str) -> String {
     out
 }
 
+/// Whether `line` is a pipe table's separator row (`|---|:--:|`): only
+/// pipes, dashes, colons and spaces. Its cells are not split by ` | `, so it
+/// is recognised as a whole line.
+fn is_separator(line: &str) -> bool {
+    let line = line.trim();
+    line.starts_with('|')
+        && line.contains('-')
+        && line.chars().all(|c| matches!(c, '|' | '-' | ':' | ' '))
+}
+
 /// The cells of a pipe-table row.
 fn cells(line: &str) -> Vec<&str> {
     line.trim()
@@ -104,7 +116,6 @@ pub(super) fn errata_section(h: &mut String) {
             paragraph.clear();
         }
     };
-    let mut header_done = false;
     for line in ERRATA_MD.lines() {
         let trimmed = line.trim();
         if let Some(title) = trimmed.strip_prefix("## ") {
@@ -122,9 +133,8 @@ pub(super) fn errata_section(h: &mut String) {
                 }
                 h.push_str("</tr></thead><tbody>\n");
                 in_table = true;
-                header_done = false;
-            } else if !header_done && row.iter().all(|c| c.chars().all(|ch| ch == '-')) {
-                header_done = true;
+            } else if is_separator(trimmed) {
+                // The header/body separator: no row of its own.
             } else {
                 let _ = write!(h, "<tr id=\"{}\">", anchor(row[0]));
                 for c in &row {
@@ -181,5 +191,35 @@ mod tests {
         }
         assert!(places().len() >= 20, "the errata tables were not found");
         assert_eq!(h.matches("<table").count(), h.matches("</table>").count());
+    }
+
+    #[test]
+    fn no_row_is_a_separator_and_every_row_id_is_non_empty_and_unique() {
+        let mut h = String::new();
+        errata_section(&mut h);
+        let ids: Vec<&str> = h
+            .split("<tr id=\"")
+            .skip(1)
+            .filter_map(|s| s.split('"').next())
+            .collect();
+        assert_eq!(
+            ids.len(),
+            places().len(),
+            "one row per table row of the errata"
+        );
+        let mut seen = std::collections::HashSet::new();
+        for id in &ids {
+            assert!(id.len() > "erratum-".len(), "empty id {id:?}");
+            assert!(seen.insert(*id), "id {id} twice");
+        }
+        for cell in h.split("<td>").skip(1) {
+            let text = cell.split("</td>").next().unwrap_or_default();
+            assert!(
+                !text.is_empty() && !text.chars().all(|c| matches!(c, '-' | '|' | ':' | ' ')),
+                "a separator or empty cell in the errata: {text:?}"
+            );
+        }
+        assert!(is_separator("|---|:--:| --- |"));
+        assert!(!is_separator("| fn. 3 | a − b |"));
     }
 }

@@ -1,9 +1,17 @@
 //! The report of `snowroll paper`: claims of the note with verdicts, figures,
 //! and animations of the rolling log and snowball.
 //!
-//! [`Claim`], [`ClaimResult`] and [`Verdict`] are always available. With the
-//! feature `plot`, a [`Report`] (metadata, claim results, [`Figure`]s,
-//! [`Animation`]s, one per shape) renders to a directory with [`Report::write_to`]:
+//! [`Claim`], [`ClaimResult`] and [`Verdict`] are always available.
+#![cfg_attr(
+    feature = "plot",
+    doc = "With the feature `plot`, a [`Report`] (metadata, claim results, [`Figure`]s, \
+           [`Animation`]s, one per shape) renders to a directory with [`Report::write_to`]:"
+)]
+#![cfg_attr(
+    not(feature = "plot"),
+    doc = "With the feature `plot`, a `Report` (metadata, claim results, `Figure`s, \
+           `Animation`s, one per shape) renders to a directory with `Report::write_to`:"
+)]
 //!
 //! ```text
 //! report.html        self-contained: inline CSS, SVG, JS and data; no network
