@@ -1194,19 +1194,19 @@ fn assert_one_line_error(stderr: &str, needles: &[&str]) {
 #[test]
 fn negative_snow_depth_is_rejected_by_name_value_and_range() {
     let err = fails(&["simulate", "--model", "eq4", "--snow-depth", "-1"]);
-    assert_one_line_error(&err, &["snow depth", "-1", "b >= 0 m"]);
+    assert_one_line_error(&err, &["snow_depth", "-1", "snow_depth >= 0 m"]);
 }
 
 #[test]
 fn right_angle_slope_is_rejected() {
     let err = fails(&["simulate", "--model", "eq4", "--alpha-deg", "90"]);
-    assert_one_line_error(&err, &["slope angle", "90", "0 < alpha < 90"]);
+    assert_one_line_error(&err, &["alpha_deg", "90", "0 < alpha_deg < 90"]);
 }
 
 #[test]
 fn nan_is_rejected() {
     let err = fails(&["simulate", "--model", "eq4", "--snow-depth", "NaN"]);
-    assert_one_line_error(&err, &["snow depth", "NaN", "b >= 0 m"]);
+    assert_one_line_error(&err, &["snow_depth", "NaN", "snow_depth >= 0 m"]);
     let err = fails(&["simulate", "--model", "eq4", "--t-end", "nan"]);
     assert_one_line_error(&err, &["t_end", "NaN"]);
 }
@@ -1315,7 +1315,7 @@ fn failed_run_leaves_an_existing_output_untouched_and_no_temporary_file() {
         "--output",
         path.to_str().unwrap(),
     ]);
-    assert_one_line_error(&err, &["snow depth"]);
+    assert_one_line_error(&err, &["snow_depth"]);
     // Fails after the output is opened: by t = 1e200 s, x = g t^2/5 would
     // be 1e400 m, beyond f64; the integrator gives up on the way.
     let err = fails(&[

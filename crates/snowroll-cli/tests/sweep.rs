@@ -101,7 +101,7 @@ fn grid_errors_are_clear() {
         (vec!["sweep", "--alpha-deg", "5:60"], "start:end:count"),
         (
             vec!["sweep", "--model", "eq4", "--alpha-deg", "5:95:3"],
-            "0 < alpha < 90",
+            "0 < alpha_deg < 90",
         ),
         (
             vec!["sweep", "--model", "eq4", "--snow-depth", "0.1,,2"],
@@ -130,6 +130,49 @@ fn grid_errors_are_clear() {
         let e = fails(&args);
         assert!(e.contains(want), "{args:?}: {e}");
     }
+}
+
+/// A bad axis value is reported once, on one line, as the flag was given,
+/// with the key, the bad value and the allowed range; before a missing model.
+#[test]
+fn axis_value_errors_name_the_flag_once() {
+    for (flag, text, want) in [
+        (
+            "--alpha-deg",
+            "5:95:3",
+            "invalid alpha_deg (degrees) = 95: expected 0 < alpha_deg < 90 degrees",
+        ),
+        (
+            "--t-end",
+            "-1",
+            "invalid t_end (s) = -1: expected 0 < t_end < infinity s",
+        ),
+        ("--r0", "0,1", "invalid r0 (m) = 0: expected r0 > 0 m"),
+        (
+            "--rtol",
+            "1e-30",
+            "invalid rtol = 1e-30: expected 1e-15 <= rtol < 1",
+        ),
+        (
+            "--snow-depth",
+            "0.1,-0.1",
+            "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 m",
+        ),
+    ] {
+        for with_model in [true, false] {
+            let mut args = vec!["sweep", flag, text];
+            if with_model {
+                args.extend(["--model", "eq4"]);
+            }
+            let e = fails(&args);
+            assert_eq!(e, format!("error: {flag} {text}: {want}\n"), "{args:?}");
+        }
+    }
+    let e = fails(&["sweep", "--model", "eq4", "--snow-depth", "1:x:3"]);
+    assert_eq!(
+        e,
+        "error: --snow-depth 1:x:3: cannot read it: \"x\" is not a number\n"
+    );
 }
 
 #[test]

@@ -328,16 +328,21 @@ impl Scenario {
     /// [`Scenario::new`] without the checks of scale.
     fn new_unscaled(file: ScenarioFile) -> Result<Self, ParamError> {
         let alpha_deg = check(
-            "slope angle (degrees)",
+            "alpha_deg (degrees)",
             file.alpha_deg,
             |a| a > 0.0 && a < 90.0,
-            "0 < alpha < 90 degrees",
+            "0 < alpha_deg < 90 degrees",
         )?;
         Ok(Self {
             alpha: alpha_deg.to_radians(),
             alpha_deg,
-            b: check("snow depth (m)", file.snow_depth, |b| b >= 0.0, "b >= 0 m")?,
-            r0: check("initial radius r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?,
+            b: check(
+                "snow_depth (m)",
+                file.snow_depth,
+                |b| b >= 0.0,
+                "snow_depth >= 0 m",
+            )?,
+            r0: check("r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?,
             g: check("g (m/s^2)", file.g, |g| g > 0.0, "g > 0 m/s^2")?,
             rho: check(
                 "density (kg/m^3)",
@@ -345,25 +350,20 @@ impl Scenario {
                 |d| d > 0.0,
                 "density > 0 kg/m^3",
             )?,
-            l: check("log length (m)", file.length, |l| l > 0.0, "length > 0 m")?,
-            v0: check(
-                "initial speed v0 (m/s)",
-                file.v0,
-                |v| v >= 0.0,
-                "v0 >= 0 m/s",
-            )?,
+            l: check("length (m)", file.length, |l| l > 0.0, "length > 0 m")?,
+            v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
             swath_width: match (file.shape, file.swath_width) {
                 (_, None) => None,
                 (Shape::Sphere, Some(w)) => Some(check(
-                    "swath width (m)",
+                    "swath_width (m)",
                     w,
                     |w| w > 0.0,
                     "swath_width > 0 m",
                 )?),
                 (Shape::Cylinder, Some(w)) => {
                     return Err(ParamError::InvalidParameter {
-                        name: "swath width (m)",
+                        name: "swath_width (m)",
                         value: w,
                         expected: "no swath width for shape = cylinder (a log's swath is its \
                                    length); give --shape sphere or drop --swath-width",
@@ -513,21 +513,21 @@ mod tests {
                     alpha_deg: 90.0,
                     ..Default::default()
                 },
-                "slope",
+                "alpha_deg (degrees) = ",
             ),
             (
                 ScenarioFile {
                     alpha_deg: 0.0,
                     ..Default::default()
                 },
-                "slope",
+                "alpha_deg (degrees) = ",
             ),
             (
                 ScenarioFile {
                     snow_depth: -0.1,
                     ..Default::default()
                 },
-                "snow depth",
+                "snow_depth (m) = ",
             ),
             (
                 ScenarioFile {

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::ValueEnum;
-use snowroll::sweep::{Axis, Choices, Grid, Param, Values};
+use snowroll::sweep::{Axis, Choices, Grid, GridError, Param, Values};
 use snowroll::{CollisionModel, ModelKind, OnHop};
 
 use crate::args::SweepArgs;
@@ -34,14 +34,25 @@ fn choice_list<T: ValueEnum>(key: &str, text: &str) -> Result<Vec<T>> {
 }
 
 /// The grid of the flags over the `--grid` file.
+///
+/// An axis that does not parse or holds a value out of range is reported as
+/// it was given (`--alpha-deg 5:95:3: ...`, or `alpha_deg = 5:95:3 in
+/// FILE: ...`) followed by the library's message, which names the key, the
+/// bad value and the allowed range.
 pub fn grid(args: &SweepArgs) -> Result<Grid> {
     let mut given: BTreeMap<String, String> = match &args.grid {
         Some(path) => grid_file(path)?,
         None => BTreeMap::new(),
     };
-    for (key, value) in flag_axes(args) {
-        given.insert(key.to_string(), value.clone());
+    let flags = flag_axes(args);
+    for (key, value) in &flags {
+        given.insert(key.to_string(), (*value).clone());
     }
+    // Where an axis was given, for the messages.
+    let origin = |key: &str, text: &str| match (flags.iter().any(|(k, _)| *k == key), &args.grid) {
+        (false, Some(path)) => format!("{key} = {text} in {}", path.display()),
+        _ => format!("--{} {text}", key.replace('_', "-")),
+    };
     let collision = match given.remove("collision") {
         Some(text) => choice_list::<CollisionModel>("collision", &text)?,
         None => Choices::default().collision,
@@ -50,7 +61,19 @@ pub fn grid(args: &SweepArgs) -> Result<Grid> {
         Some(text) => choice_list::<OnHop>("on_hop", &text)?,
         None => Choices::default().on_hop,
     };
-    let models = match given.remove("model") {
+    let models = given.remove("model");
+    let mut axes = Vec::new();
+    for (key, text) in &given {
+        let param = Param::from_key(key).ok_or_else(|| anyhow!("unknown axis {key:?}"))?;
+        let values = Values::parse(param.key(), text).map_err(|e| match e {
+            GridError::Syntax { reason, .. } => {
+                anyhow!("{}: cannot read it: {reason}", origin(key, text))
+            }
+            e => e.into(),
+        })?;
+        axes.push(Axis { param, values });
+    }
+    let models = match models {
         Some(text) => text
             .split(',')
             .map(|id| id.parse::<ModelKind>())
@@ -58,15 +81,14 @@ pub fn grid(args: &SweepArgs) -> Result<Grid> {
             .context("--model")?,
         None => Vec::new(),
     };
-    let mut axes = Vec::new();
-    for (key, text) in &given {
-        let param = Param::from_key(key).ok_or_else(|| anyhow!("unknown axis {key:?}"))?;
-        axes.push(Axis {
-            param,
-            values: Values::parse(param.key(), text)?,
-        });
-    }
-    Ok(Grid::new(models, axes)?.with_choices(Choices { collision, on_hop })?)
+    let grid = Grid::new(models, axes).map_err(|e| match e {
+        GridError::Value { param, error } => {
+            let text = given.get(param.key()).map_or("", String::as_str);
+            anyhow!("{}: {error}", origin(param.key(), text))
+        }
+        e => e.into(),
+    })?;
+    Ok(grid.with_choices(Choices { collision, on_hop })?)
 }
 
 /// The axes given as flags, by snake-case key (`model` included).

@@ -116,12 +116,15 @@ pub enum GridError {
         reason: String,
     },
     /// A value outside the parameter's range.
-    #[error("{param}: {source}")]
+    ///
+    /// The message is the check's own, which names the parameter; it is not
+    /// the error's source, so that a printed chain says it once.
+    #[error("{error}")]
     Value {
         /// The axis.
         param: Param,
         /// The range check that failed.
-        source: ParamError,
+        error: ParamError,
     },
     /// The same parameter given twice.
     #[error("{param} is given twice")]
@@ -312,12 +315,12 @@ impl Grid {
     /// Checks and orders the axes.
     ///
     /// # Errors
-    /// [`GridError`]: no model, a parameter given twice, an empty axis, a
-    /// value out of its parameter's range, more than [`MAX_GRID_POINTS`].
+    /// [`GridError`], the first of: a parameter given twice, an empty axis, a
+    /// value out of its parameter's range, no model, more than
+    /// [`MAX_GRID_POINTS`].
     pub fn new(models: Vec<ModelKind>, mut axes: Vec<Axis>) -> Result<Grid, GridError> {
-        if models.is_empty() {
-            return Err(GridError::NoModel);
-        }
+        // The axes are checked first: a bad value is reported even when the
+        // model is missing too.
         axes.sort_by_key(|a| a.param);
         if let Some(w) = axes.windows(2).find(|w| w[0].param == w[1].param) {
             return Err(GridError::Duplicate {
@@ -334,11 +337,14 @@ impl Grid {
             }
             let (lo, hi) = axis.values.bounds();
             for x in [lo, hi] {
-                check_value(axis.param, x).map_err(|source| GridError::Value {
+                check_value(axis.param, x).map_err(|error| GridError::Value {
                     param: axis.param,
-                    source,
+                    error,
                 })?;
             }
+        }
+        if models.is_empty() {
+            return Err(GridError::NoModel);
         }
         let points = axes.iter().fold(models.len() as u128, |n, a| {
             n.saturating_mul(a.values.len().into())
@@ -599,9 +605,30 @@ mod tests {
     fn grid_checks_values_duplicates_and_size() {
         let m = vec![ModelKind::TorqueCm];
         let e = Grid::new(m.clone(), vec![axis(Param::AlphaDeg, "10:95:5")]).unwrap_err();
-        assert!(e.to_string().contains("0 < alpha < 90"), "{e}");
+        assert!(
+            e.to_string().contains("= 95: expected 0 < alpha_deg < 90"),
+            "{e}"
+        );
+        // The message is whole without its chain, and the chain adds nothing:
+        // a printer of the chain shows it once.
+        assert!(std::error::Error::source(&e).is_none(), "{e:?}");
         let e = Grid::new(m.clone(), vec![axis(Param::SnowDepth, "0.1,-0.1")]).unwrap_err();
-        assert!(e.to_string().starts_with("snow_depth: "), "{e}");
+        assert_eq!(
+            e.to_string(),
+            "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 m"
+        );
+        // A bad value is found before the missing model.
+        let e = Grid::new(vec![], vec![axis(Param::AlphaDeg, "5:95:3")]).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                GridError::Value {
+                    param: Param::AlphaDeg,
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
         let e = Grid::new(m.clone(), vec![axis(Param::Rtol, "1e-20")]).unwrap_err();
         assert!(e.to_string().contains("rtol"), "{e}");
         let e = Grid::new(
