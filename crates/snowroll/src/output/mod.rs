@@ -321,6 +321,40 @@ pub(crate) fn write_json_opening(
     Ok(())
 }
 
+/// The body of a streamed output, after its opening: the rows go to a CSV
+/// writer or into the JSON array.
+pub(crate) enum Body<W: Write> {
+    /// Boxed: the CSV writer carries its own buffer.
+    Csv(Box<csv::Writer<W>>),
+    /// The JSON array, one element per line.
+    Json(W),
+}
+
+impl<W: Write> Body<W> {
+    /// A CSV body whose first record is the column header `columns`.
+    pub(crate) fn csv<'c>(
+        w: W,
+        columns: impl IntoIterator<Item = &'c str>,
+    ) -> Result<Self, OutputError> {
+        let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
+        csv.write_record(columns)?;
+        Ok(Body::Csv(Box::new(csv)))
+    }
+
+    /// Writes `record` as row `row` (from 1), refused before any of it is
+    /// written if a number is not finite ([`OutputError::NonFinite`]).
+    pub(crate) fn put(&mut self, row: u64, record: &impl Serialize) -> Result<(), OutputError> {
+        match self {
+            Body::Csv(csv) => {
+                check_finite(record, Some(row))?;
+                csv.serialize(record)?;
+            }
+            Body::Json(w) => write_json_element(w, row, record)?,
+        }
+        Ok(())
+    }
+}
+
 /// Element `row` (from 1) of a streamed JSON array, on its own line;
 /// refused, before anything of it is written, if a number is not finite.
 pub(crate) fn write_json_element(

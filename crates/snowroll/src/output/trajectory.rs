@@ -17,19 +17,12 @@ use std::io::Write;
 use super::ledger::closed_form_terminal_velocity;
 use super::row::{Extra, Row, RowKind};
 use super::{
-    check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
-    write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
-    RunParams,
+    format_number, write_csv_header, write_csv_stop, write_json_array_end, write_json_end,
+    write_json_field, write_json_opening, Body, Format, JsonStop, RunParams,
 };
 use crate::error::{OutputError, SinkError};
 use crate::models::ModelKind;
 use crate::trajectory::{LedgerRow, RunEnd, Sample, SampleSink, Stop, Trajectory, TurnState};
-
-enum Body<W: Write> {
-    /// Boxed: the CSV writer carries its own buffer.
-    Csv(Box<csv::Writer<W>>),
-    Json(W),
-}
 
 /// Writes a trajectory row by row in a [`Format`]; use it as the sink of
 /// [`Model::simulate_into`](crate::Model::simulate_into), then call
@@ -97,9 +90,7 @@ impl<W: Write> TrajectoryWriter<W> {
                 } else {
                     RowKind::Plain
                 };
-                let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
-                csv.write_record(Row::columns(kind))?;
-                Body::Csv(Box::new(csv))
+                Body::csv(w, Row::columns(kind))?
             }
             Format::Json => {
                 write_json_opening(&mut w, model, params, "samples")?;
@@ -147,22 +138,9 @@ impl<W: Write> TrajectoryWriter<W> {
             (None, Some(l)) => Extra::Ledger(l),
             (None, None) => Extra::None,
         };
-        self.put(row, &Row { sample: s, extra })?;
+        self.body.put(row, &Row { sample: s, extra })?;
         self.rows += 1;
         self.last_turn = turn.copied();
-        Ok(())
-    }
-
-    /// Writes `record` as row `row` (from 1) in the body's format, refused
-    /// before any of it is written if a number is not finite.
-    fn put(&mut self, row: u64, record: &Row<'_>) -> Result<(), OutputError> {
-        match &mut self.body {
-            Body::Csv(csv) => {
-                check_finite(record, Some(row))?;
-                csv.serialize(record)?;
-            }
-            Body::Json(w) => write_json_element(w, row, record)?,
-        }
         Ok(())
     }
 

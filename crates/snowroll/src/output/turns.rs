@@ -14,18 +14,11 @@ use std::io::Write;
 use super::row::TableRow;
 use super::{
     check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
-    write_json_element, write_json_end, write_json_field, write_json_opening, Format, JsonStop,
-    RunParams,
+    write_json_end, write_json_field, write_json_opening, Body, Format, JsonStop, RunParams,
 };
 use crate::error::{OutputError, SinkError};
 use crate::models::{ModelKind, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable};
 use crate::trajectory::{LedgerRow, Stop};
-
-enum Body<W: Write> {
-    /// Boxed: the CSV writer carries its own buffer.
-    Csv(Box<csv::Writer<W>>),
-    Json(W),
-}
 
 /// Writes a turn table row by row in a [`Format`]; use it as the sink of
 /// [`TurnModel::run_table_into`](crate::TurnModel::run_table_into), then
@@ -56,9 +49,7 @@ impl<W: Write> TurnTableWriter<W> {
         let body = match format {
             Format::Csv => {
                 write_csv_header(&mut w, model, params)?;
-                let mut csv = csv::WriterBuilder::new().has_headers(false).from_writer(w);
-                csv.write_record(TableRow::columns(ledger))?;
-                Body::Csv(Box::new(csv))
+                Body::csv(w, TableRow::columns(ledger))?
             }
             Format::Json => {
                 write_json_opening(&mut w, model, params, "turns")?;
@@ -94,13 +85,7 @@ impl<W: Write> TurnTableWriter<W> {
             turn,
             ledger: ledger.as_ref(),
         };
-        match &mut self.body {
-            Body::Csv(csv) => {
-                check_finite(row, Some(k))?;
-                csv.serialize(row)?;
-            }
-            Body::Json(w) => write_json_element(w, k, row)?,
-        }
+        self.body.put(k, row)?;
         self.rows += 1;
         Ok(())
     }
