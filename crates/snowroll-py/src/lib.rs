@@ -24,8 +24,8 @@ use pyo3::types::{PyDict, PyList};
 use snowroll::integrate::Tolerances;
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::{
-    run_turns, validity_warnings, CollisionModel, Losses, ModelKind, OnHop, ParamError, RunParams,
-    Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
+    run_turns, validity_warnings, CollisionModel, LedgerRow, Losses, ModelKind, OnHop, ParamError,
+    RunParams, Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
 };
 
 /// A library message in Python's words: each CLI flag `--kebab-name` (two
@@ -328,25 +328,36 @@ fn trajectory_columns<'py>(py: Python<'py>, traj: &Trajectory) -> PyResult<Bound
     column(py, &c, "normal_n", s, |s| s.normal_n)?;
     column(py, &c, "friction_n", s, |s| s.friction_n)?;
     masked_column(py, &c, "friction_ratio", s, |s| s.friction_ratio)?;
-    let l = &traj.ledger;
-    if !l.is_empty() && l.len() == s.len() {
-        column(py, &c, "kinetic_j", l, |l| l.kinetic_j)?;
-        column(py, &c, "released_j", l, |l| l.released_j)?;
-        column(py, &c, "drag_j", l, |l| l.drag_j)?;
-        column(py, &c, "rolling_j", l, |l| l.rolling_j)?;
-        column(py, &c, "compaction_j", l, |l| l.compaction_j)?;
-        column(py, &c, "model_j", l, |l| l.model_j)?;
-        column(py, &c, "collision_j", l, |l| l.collision_j)?;
-        column(py, &c, "created_j", l, |l| l.created_j)?;
-        column(py, &c, "residual_j", l, |l| l.residual_j)?;
-    }
     let k = &traj.turn_states;
     if !k.is_empty() && k.len() == s.len() {
         column(py, &c, "turn", k, |k| k.turn)?;
         column(py, &c, "theta_rad", k, |k| k.theta_rad)?;
         column(py, &c, "omega_rad_s", k, |k| k.omega_rad_s)?;
     }
+    ledger_columns(py, &c, &traj.ledger, s.len())?;
     Ok(c)
+}
+
+/// The ledger's columns (`docs/snowball-and-losses.md` §3), when there is
+/// one row per row of the table (`rows`).
+fn ledger_columns(
+    py: Python<'_>,
+    c: &Bound<'_, PyDict>,
+    l: &[LedgerRow],
+    rows: usize,
+) -> PyResult<()> {
+    if l.is_empty() || l.len() != rows {
+        return Ok(());
+    }
+    column(py, c, "kinetic_j", l, |l| l.kinetic_j)?;
+    column(py, c, "released_j", l, |l| l.released_j)?;
+    column(py, c, "drag_j", l, |l| l.drag_j)?;
+    column(py, c, "rolling_j", l, |l| l.rolling_j)?;
+    column(py, c, "compaction_j", l, |l| l.compaction_j)?;
+    column(py, c, "model_j", l, |l| l.model_j)?;
+    column(py, c, "collision_j", l, |l| l.collision_j)?;
+    column(py, c, "created_j", l, |l| l.created_j)?;
+    column(py, c, "residual_j", l, |l| l.residual_j)
 }
 
 /// One row per turn, named as in the CLI's `snowroll turns` CSV header.
@@ -370,6 +381,7 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
     column(py, &c, "min_normal_n", r, |r| r.min_normal_n)?;
     column(py, &c, "min_normal_over_mg", r, |r| r.min_normal_over_mg)?;
     masked_column(py, &c, "max_friction_ratio", r, |r| r.max_friction_ratio)?;
+    ledger_columns(py, &c, &table.ledger, r.len())?;
     Ok(c)
 }
 
@@ -487,7 +499,9 @@ fn simulate<'py>(
     model = "turns", *, turns = None, alpha_deg = None, snow_depth = None, r0 = None,
     g = None, density = None, length = None, v0 = None, shape = None, swath_width = None,
     t_end = None, x_end = None, rtol = None, atol = None, mu = None, collision = None,
-    on_hop = None, max_rows = None, max_steps = None
+    on_hop = None, max_rows = None, max_steps = None,
+    drag_coefficient = None, air_density = None, rolling_resistance = None,
+    compaction_energy = None, ledger = false, terminal_tol = None
 ))]
 #[allow(clippy::too_many_arguments)]
 fn turns<'py>(
@@ -512,6 +526,12 @@ fn turns<'py>(
     on_hop: Option<String>,
     max_rows: Option<u64>,
     max_steps: Option<u64>,
+    drag_coefficient: Option<f64>,
+    air_density: Option<f64>,
+    rolling_resistance: Option<f64>,
+    compaction_energy: Option<f64>,
+    ledger: bool,
+    terminal_tol: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let inputs = Inputs {
         model: model.to_string(),
@@ -527,8 +547,14 @@ fn turns<'py>(
         on_hop,
         max_rows,
         max_steps,
-        losses: [None; 5],
-        ledger: false,
+        losses: [
+            drag_coefficient,
+            air_density,
+            rolling_resistance,
+            compaction_energy,
+            terminal_tol,
+        ],
+        ledger,
     };
     let kind = inputs.model()?;
     if !kind.is_turn_model() {

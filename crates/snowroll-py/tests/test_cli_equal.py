@@ -51,6 +51,13 @@ CASES = [
     ("energy", {"drag_coefficient": 0.8, "air_density": 1.1, "rolling_resistance": 0.02, "compaction_energy": 2.5}),
     ("snowless", {"drag_coefficient": 1, "terminal_tol": 1e-6, "t_end": 200}),
     ("torque-cm", {"ledger": True, "t_end": 10}),
+    # The ball's losses: drag on pi r^2, with its N and dM/dx, on both growth laws.
+    ("snowless", {"shape": "sphere", "drag_coefficient": 1, "terminal_tol": 1e-6, "t_end": 200}),
+    ("torque-cm", {"shape": "sphere", "drag_coefficient": 0.5, "rolling_resistance": 0.03, "compaction_energy": 1.5, "t_end": 20}),
+    ("energy", {"shape": "sphere", "swath_width": 0.05, "drag_coefficient": 1, "air_density": 1.0, "t_end": 10}),
+    # The turn models' ledger (collision losses; the note's created lift).
+    ("turns", {"turns": 4, "ledger": True}),
+    ("turns-exact", {"turns": 3, "collision": "pivot", "on_hop": "continue", "ledger": True}),
     # Issue 7's limits: a row limit and a step limit cut the run short.
     ("torque-cm", {"t_end": 30, "max_rows": 40}),
     ("energy", {"t_end": 30, "max_steps": 25}),
@@ -111,13 +118,17 @@ def test_json_params_equal_cli(cli):
     [("turns", {"turns": 30}), ("turns-exact", {"turns": 12, "alpha_deg": 40}), ("eq73", {"turns": 8, "collision": "charged"}),
      ("turns", {"turns": 4, "alpha_deg": 80, "on_hop": "continue"}),
      ("turns", {"turns": 10, "max_rows": 10, "max_steps": 1000000}),
-     ("turns-exact", {"turns": 3, "shape": "cylinder"})],
+     ("turns-exact", {"turns": 3, "shape": "cylinder"}),
+     # Issue 13: the loss keywords and the ledger, as for simulate().
+     ("turns", {"turns": 6, "ledger": True}),
+     ("turns-exact", {"turns": 5, "collision": "charged", "ledger": True, "air_density": 1.1, "terminal_tol": 1e-6})],
 )
 def test_turns_equals_cli(cli, model, kwargs):
     t = snowroll.turns(model, **kwargs)
     stdout, _ = run_cli(cli, "turns", "--model", model, *flags(kwargs))
     meta, cols = parse_csv(stdout)
     assert t.columns == list(cols)
+    assert ("kinetic_j" in cols) == kwargs.get("ledger", False)
     assert len(t) == kwargs["turns"]
     for name in cols:
         assert same_bits(t[name], cols[name]), name

@@ -194,3 +194,22 @@ def test_turn_models_refuse_a_sphere_with_the_cli_message(cli, model):
     assert f"error: {err.value}" in stderr, stderr
     with pytest.raises(ValueError, match="does not support shape = sphere"):
         snowroll.turns(model, shape="sphere", swath_width=0.05, turns=2)
+
+
+@pytest.mark.parametrize(
+    "kwargs,flags",
+    [
+        ({"drag_coefficient": 1.0}, ["--drag-coefficient", "1"]),
+        ({"rolling_resistance": 0.1, "ledger": True}, ["--rolling-resistance", "0.1", "--ledger"]),
+        ({"compaction_energy": 2.0}, ["--compaction-energy", "2"]),
+    ],
+)
+def test_turns_refuses_losses_with_the_cli_message(cli, kwargs, flags):
+    """turns() takes the loss keywords of simulate(); the turn models refuse
+    any loss (docs/snowball-and-losses.md §3.2), with the CLI's message."""
+    with pytest.raises(ValueError, match="energy integral") as err:
+        snowroll.turns("turns", turns=3, **kwargs)
+    message = str(err.value)
+    _, stderr = run_cli(cli, "turns", "--model", "turns", "--turns", "3", *flags, ok=False)
+    # The CLI's message is the library's, after the run it names.
+    assert stderr.startswith("error: running turns ") and stderr.rstrip().endswith(f": {message}"), stderr

@@ -465,14 +465,18 @@ def simulate(
 
     Losses (docs/snowball-and-losses.md §2; each off by default):
     ``drag_coefficient`` C_d (0), ``air_density`` kg/m^3 (1.2): drag
-    0.5 rho_a C_d (2 r l) v^2; ``rolling_resistance`` c_rr (0): a couple c_rr N r;
-    ``compaction_energy`` J per kg of snow picked up (0). ``ledger`` adds the
+    0.5 rho_a C_d A v^2 with frontal area A = 2 r l (log) or pi r^2 (ball);
+    ``rolling_resistance`` c_rr (0): a couple c_rr N r; ``compaction_energy``
+    J per kg of snow picked up (0), the force e_c dM/dx (dM/dx = rho b l for
+    the log, rho b w for the ball). The turn models take no losses
+    (``ValueError``; their per-turn extremes rest on the energy integral of a
+    turn, §2.1) but take ``ledger``. ``ledger`` adds the
     energy-ledger columns (``kinetic_j released_j drag_j rolling_j
     compaction_j model_j collision_j created_j residual_j``) without losses;
     a run with losses always has them. ``terminal_tol`` (1e-9; 0 = keep
     going): stop with ``terminal`` where |a| falls to that fraction of the
-    initial drive (the snowless log with drag; ``r.stop["v_terminal_m_s"]``
-    is then the closed-form v_t).
+    initial drive (the snowless log or ball with drag; ``r.stop["v_terminal_m_s"]``
+    is then the closed-form v_t^2 = 2 M g sin alpha/(rho_a C_d A)).
 
     Sampling: every accepted step by default; ``times`` exactly these times, s
     (ascending); ``dt`` a regular grid 0, dt, 2 dt, ... up to the stop.
@@ -544,6 +548,12 @@ def turns(
     on_hop: Optional[str] = None,
     max_rows: Optional[int] = None,
     max_steps: Optional[int] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    rolling_resistance: Optional[float] = None,
+    compaction_energy: Optional[float] = None,
+    ledger: bool = False,
+    terminal_tol: Optional[float] = None,
 ) -> TurnResult:
     """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
     one row per turn (the CLI's ``snowroll turns``).
@@ -557,6 +567,18 @@ def turns(
     take the log only: ``shape="sphere"`` raises ``ValueError`` (a ball that
     picks up a swath in one turn gains a band round its equator, not a shell;
     docs/snowball-and-losses.md §1.2).
+
+    Losses and ledger: the keywords of :func:`simulate`, same names. The turn
+    models take no losses: ``drag_coefficient``, ``rolling_resistance`` or
+    ``compaction_energy`` above 0 raise ``ValueError`` (a turn's slip, smallest
+    normal force and range of a come from its energy integral, which losses
+    break; docs/snowball-and-losses.md §3.2). ``ledger=True`` adds per turn the
+    energy ledger at the end of the turn, just before its collision:
+    ``kinetic_j released_j drag_j rolling_j compaction_j model_j collision_j
+    created_j residual_j`` (J; ``collision_j`` the kinetic energy the earlier
+    collisions removed, ``created_j`` what the note's eq. (89) created by
+    lifting the log by b for free; they sum with ``kinetic_j`` less
+    ``released_j`` to the initial energy).
 
     Returns a :class:`TurnResult`: one numpy array per column and ``summary``,
     the long-run means of a/(g sin alpha) whose value the note's
@@ -587,6 +609,12 @@ def turns(
             on_hop=on_hop,
             max_rows=max_rows,
             max_steps=max_steps,
+            drag_coefficient=drag_coefficient,
+            air_density=air_density,
+            rolling_resistance=rolling_resistance,
+            compaction_energy=compaction_energy,
+            ledger=ledger,
+            terminal_tol=terminal_tol,
         ),
     )
     result = TurnResult(raw)

@@ -51,7 +51,8 @@ def simulate(
     masked where N <= 0, where it is undefined) and for the turn models ``turn`` (uint64),
     ``theta_rad``, ``omega_rad_s``; with losses or ``ledger=True`` the ledger
     columns ``kinetic_j released_j drag_j rolling_j compaction_j model_j
-    collision_j created_j residual_j`` (J). ``max_rows`` and ``max_steps``
+    collision_j created_j residual_j`` (J; drag on 2 r l for the log, pi r^2
+    for the ball). ``max_rows`` and ``max_steps``
     bound the run (stop reasons ``row-limit``, ``step-limit``); a row count
     known beforehand above ``max_rows`` raises ValueError.
 
@@ -80,6 +81,12 @@ def turns(
     on_hop: Optional[str] = None,
     max_rows: Optional[int] = None,
     max_steps: Optional[int] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    rolling_resistance: Optional[float] = None,
+    compaction_energy: Optional[float] = None,
+    ledger: bool = False,
+    terminal_tol: Optional[float] = None,
 ) -> Dict[str, Any]:
     """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (88)
     ``turns-exact``; collisions by eq. (89) or the ``charged``/``pivot``
@@ -88,7 +95,9 @@ def turns(
     Returns the keys of :func:`simulate` (``columns`` one row per turn) plus
     ``summary``: the long-run means of a/(g sin alpha) that eqs. (77)-(79)
     estimate as 4/9. ``shape="sphere"`` raises ValueError: the turn models
-    take the log only.
+    take the log only. The loss keywords are those of :func:`simulate`; any
+    loss above 0 raises ValueError (the turn models take none), ``ledger=True``
+    adds the ledger columns at each turn end, before its collision.
     """
 
 def models(
