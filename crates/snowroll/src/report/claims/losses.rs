@@ -6,8 +6,9 @@ use crate::losses::Losses;
 use crate::models::ModelKind;
 use crate::report::notation;
 use crate::report::{Criterion, Tolerance};
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, Shape};
 use crate::trajectory::{Sampling, SimOptions, StopReason};
+use std::f64::consts::PI;
 
 /// `snowless-drag-terminal-velocity`: the measured terminal velocity
 /// against `v_t² = M g sin α/(½ ρ_a C_d A)`.
@@ -93,27 +94,44 @@ impl Draws {
     }
 }
 
-/// Kinetic energy of the log, eq. (7): `½ ρl (π r² (3/2) + b²/(4π)) v²`
-/// (`(1 + k + r′²) M v²/2` with k = ½, M = π ρ l r², r′ = b/(2πr)).
-fn log_kinetic(rho_l: f64, b: f64, r: f64, v: f64) -> f64 {
-    use std::f64::consts::PI;
-    0.5 * rho_l * (1.5 * PI * r * r + b * b / (4.0 * PI)) * v * v
+/// Kinetic energy, eq. (7) for any body with I = k M r² on the area law:
+/// `½ M (1 + k + r′²) v²` with r′ = b/(2πr) (the log: k = ½, M = π ρ l r²;
+/// the ball: k = 2/5, M = (4/3) π ρ r³, `docs/snowball-and-losses.md` §1.2).
+fn kinetic(s: &Scenario, b: f64, r: f64, v: f64) -> f64 {
+    let r_prime = b / (2.0 * PI * r);
+    let (mass, k) = body(s, r);
+    0.5 * mass * (1.0 + k + r_prime * r_prime) * v * v
 }
 
-/// Potential energy released since the start, −V of eq. (10) for the log
+/// Mass at radius r, kg, and the inertia factor k of I = k M r².
+fn body(s: &Scenario, r: f64) -> (f64, f64) {
+    match s.shape() {
+        Shape::Cylinder => (PI * s.density() * s.length() * r * r, 0.5),
+        Shape::Sphere => (4.0 / 3.0 * PI * s.density() * r.powi(3), 0.4),
+    }
+}
+
+/// Potential energy released since the start, −V of eq. (10) for the body
 /// and the snow it will collect (zero at the start, the layer's snow at
-/// −b/2; b = 0 for the snowless log): `G ρl (π r0² x + b x²/2) − C ρl π [r³ − r0³ + (b/2)(r² − r0²)]`.
-fn log_released(s: &Scenario, b: f64, x: f64, r: f64) -> f64 {
-    use std::f64::consts::PI;
+/// −b/2; b = 0 for the snowless body), §1.2:
+/// `G ∫₀ˣ M dx − C [M r − M0 r0 + (b/2)(M − M0)]`, with
+/// `∫M dx = ρl (π r0² x + b x²/2)` for the log and `8π²ρ (r⁵ − r0⁵)/(15 b)`
+/// for the ball (`M0 x` without snow).
+fn released(s: &Scenario, b: f64, x: f64, r: f64) -> f64 {
     let r0 = s.initial_radius();
-    let rho_l = s.density() * s.length();
-    s.g_along() * rho_l * (PI * r0 * r0 * x + 0.5 * b * x * x)
-        - s.g_normal() * rho_l * PI * (r.powi(3) - r0.powi(3) + 0.5 * b * (r * r - r0 * r0))
+    let (m, _) = body(s, r);
+    let (m0, _) = body(s, r0);
+    let gathered = match s.shape() {
+        _ if b == 0.0 => m0 * x,
+        Shape::Cylinder => s.density() * s.length() * (PI * r0 * r0 * x + 0.5 * b * x * x),
+        Shape::Sphere => 8.0 * PI * PI * s.density() * (r.powi(5) - r0.powi(5)) / (15.0 * b),
+    };
+    s.g_along() * gathered - s.g_normal() * (m * r - m0 * r0 + 0.5 * b * (m - m0))
 }
 
 /// fn. 5 sets the losses aside; with them the energy must still be
-/// accounted for: every circular log model on [`LEDGER_CASES`] scenarios
-/// drawn from a fixed seed (slope, depth, radius, initial speed, the three
+/// accounted for: every circular model on [`LEDGER_CASES`] scenarios drawn
+/// from a fixed seed (shape, slope, depth, radius, initial speed, the three
 /// losses), the ledger's works against the energies the check computes.
 pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
     let mut draws = Draws(0x5EED_0011);
@@ -122,8 +140,14 @@ pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
     let mut runs = 0;
     let mut samples = 0;
     for kind in ModelKind::ALL.into_iter().filter(|k| k.is_circular()) {
-        for _ in 0..LEDGER_CASES {
+        for case in 0..LEDGER_CASES {
             let r0 = 10f64.powf(draws.between(-1.5, 0.0));
+            // Every other scenario a ball (swath 2r, the area law).
+            let shape = if case % 2 == 0 {
+                Shape::Cylinder
+            } else {
+                Shape::Sphere
+            };
             let s = edited(
                 lab.scenario(),
                 Edit {
@@ -131,6 +155,7 @@ pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
                     r0: Some(r0),
                     snow_depth: Some(r0 * 10f64.powf(draws.between(-3.0, -0.7))),
                     v0: Some(draws.between(0.0, 3.0)),
+                    shape: Some(shape),
                     ..Edit::default()
                 },
             )?;
@@ -156,13 +181,12 @@ pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
             } else {
                 s.snow_depth()
             };
-            let rho_l = s.density() * s.length();
             let m0 = s.initial_mass();
-            let k0 = log_kinetic(rho_l, b, r0, s.initial_speed());
+            let k0 = kinetic(&s, b, r0, s.initial_speed());
             for (p, l) in traj.samples.iter().zip(&traj.ledger) {
                 samples += 1;
-                let kinetic = log_kinetic(rho_l, b, p.r_m, p.v_m_s);
-                let released = log_released(&s, b, p.x_m, p.r_m);
+                let kinetic = kinetic(&s, b, p.r_m, p.v_m_s);
+                let released = released(&s, b, p.x_m, p.r_m);
                 let compaction = losses.compaction_energy * (p.mass_kg - m0);
                 let terms = [kinetic, l.drag_j, l.rolling_j, compaction, l.model_j];
                 let scale = terms
@@ -193,7 +217,7 @@ pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
         ),
         verdict: holds_if(ok, &[worst]),
         evidence: format!(
-            "{} ({}); each circular model on {LEDGER_CASES} scenarios: α 10°–70°, r0 0.03–1 m, b/r0 10⁻³–0.2, v0 0–3 m/s, C_d 0–2, c_rr 0–0.1, e_c 0–3 J/kg, 1–100 s",
+            "{} ({}); each circular model on {LEDGER_CASES} scenarios, logs and balls alternately: α 10°–70°, r0 0.03–1 m, b/r0 10⁻³–0.2, v0 0–3 m/s, C_d 0–2, c_rr 0–0.1, e_c 0–3 J/kg, 1–100 s",
             notation::number(worst, 2),
             bound(&LEDGER_BALANCE, ok)
         ),

@@ -279,6 +279,8 @@ pub(super) struct Edit {
     pub v0: Option<f64>,
     /// Gravitational acceleration g, m/s².
     pub g: Option<f64>,
+    /// The body's shape (a ball takes its natural swath 2r).
+    pub shape: Option<crate::scenario::Shape>,
 }
 
 /// `s` with the parameters of `edit` changed (the one place that names the
@@ -299,6 +301,10 @@ pub(super) fn edited(s: &Scenario, edit: Edit) -> Result<Scenario, SimError> {
     }
     if let Some(v) = edit.g {
         f.g = v;
+    }
+    if let Some(v) = edit.shape {
+        f.shape = v;
+        f.swath_width = None;
     }
     Ok(Scenario::new(f)?)
 }

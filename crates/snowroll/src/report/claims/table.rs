@@ -432,7 +432,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: "energy-ledger-balances",
             paper_ref: "fn. 5; eqs. (7), (10)",
             statement: "With the losses fn. 5 sets aside (air drag, rolling resistance, compaction of the snow picked up), the energy is still accounted for: the kinetic energy, the work of each loss and the energy the model's own equation destroys (W_model) add up to the potential energy released plus the initial kinetic energy (docs/snowball-and-losses.md §3).",
-            method: "every circular model of the log on 12 scenarios each, drawn from a fixed seed with all three losses; at 17 samples of each run, K from eq. (7) and the energy released from eq. (10) computed from (x, r, v), D_comp = e_c (M − M0), the works D_drag, D_rr and W_model read from the run's ledger",
+            method: "every circular model on 12 scenarios each, logs and balls (swath 2r) alternately, drawn from a fixed seed with all three losses; at 17 samples of each run, K from eq. (7) and the energy released from eq. (10) (their ball forms, docs/snowball-and-losses.md §1.2) computed from (x, r, v), D_comp = e_c (M − M0), the works D_drag, D_rr and W_model read from the run's ledger",
             tolerances: &[LEDGER_BALANCE],
             expected: Verdict::Holds,
         },
