@@ -10,9 +10,12 @@
 #   - every figure (every REPORT_DIR/figures/*.svg) is shown as inline SVG,
 #   - both animations (the log's and the snowball's) advance,
 #   - the page references no external resource,
-#   - every in-page link resolves; each figure links to the claims it
+#   - every in-page link resolves; every claim links to a figure or data
+#     file that supports it; each figure links to the claims it
 #     supports and each is linked from a claim; the opening section has the
 #     geometry drawing and one row per model; the errata are there,
+#   - no table row is a Markdown separator, table row ids are unique, and
+#     the text outside code has no LaTeX/ASCII groups (_{ ^{ ^( _(),
 #   - at a phone's width (400 px) no figure or animation overflows and the
 #     page does not scroll sideways,
 #   - at both widths neither animation's distance labels run together.

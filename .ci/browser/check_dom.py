@@ -33,6 +33,10 @@ class Dom(html.parser.HTMLParser):
         self.model_rows = 0
         self.figure_supports = {}  # figure id -> claim ids it links to
         self.status_texts = {}
+        self.claim_supports = {}  # claim id -> figure links and data files linked from its row
+        self.latexisms = []  # text outside code with _{ ^{ ^( _(
+        self.table_rows = []  # (id or None, texts of the cells) of every table row
+        self._row = None
         self._status_id = None
         self._verdict_depth = None
         self._verdict_buf = []
@@ -45,7 +49,18 @@ class Dom(html.parser.HTMLParser):
         a = dict(attrs)
         if "id" in a:
             self.ids.add(a["id"])
-        if tag == "a" and a.get("href", "").startswith("#"):
+        href = a.get("href", "")
+        if tag == "a" and href and not href.startswith("#"):
+            row = next((x["id"] for t, x in reversed(self.stack) if t == "tr" and "id" in x), None)
+            if row and row.startswith("claim-") and href.startswith("data/") and href.endswith(".csv"):
+                self.claim_supports.setdefault(row[len("claim-"):], []).append(href)
+        if tag == "tr":
+            self._row = (a.get("id"), [])
+            self.table_rows.append(self._row)
+        if tag == "a" and href.startswith("#"):
+            row = next((x["id"] for t, x in reversed(self.stack) if t == "tr" and "id" in x), None)
+            if row and row.startswith("claim-") and href.startswith("#fig-"):
+                self.claim_supports.setdefault(row[len("claim-"):], []).append(href)
             owner = next((x["id"] for t, x in reversed(self.stack) if "id" in x), None)
             self.hrefs.append((a["href"][1:], owner))
             if owner and owner.startswith("fig-") and a["href"].startswith("#claim-"):
@@ -81,6 +96,8 @@ class Dom(html.parser.HTMLParser):
             self.stack.append((tag, a))
 
     def handle_endtag(self, tag):
+        if tag == "tr":
+            self._row = None
         if tag == "span" and self._verdict_depth is not None and len(self.stack) - 1 == self._verdict_depth:
             self.verdict_texts.append("".join(self._verdict_buf).strip())
             self._verdict_depth = None
@@ -92,6 +109,11 @@ class Dom(html.parser.HTMLParser):
                 break
 
     def handle_data(self, data):
+        if self._row is not None and self._inside(lambda t, x: t in ("td", "th")):
+            self._row[1].append(data)
+        if not self._inside(lambda t, x: t in ("code", "pre", "script", "style")):
+            for m in re.finditer(r"(_\{|\^\{|\^\(|_\()", data):
+                self.latexisms.append(data[max(0, m.start() - 20):m.end() + 20])
         if self._verdict_depth is not None:
             self._verdict_buf.append(data)
         if self._in_status:
@@ -160,6 +182,20 @@ def main():
           f"the snowball-and-losses section has its 5 results, each linked to its claim ({results})")
     check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
           "the errata section is there, with a row per erratum")
+    unlinked = sorted(c for c in claim_ids if not dom.claim_supports.get(c))
+    files = sorted({h for hs in dom.claim_supports.values() for h in hs if h.startswith("data/")})
+    missing_files = [h for h in files if not (report_dir / h).is_file()]
+    check(claim_ids and not unlinked and not missing_files,
+          f"every claim links to a figure or data file that supports it (none: {unlinked}; "
+          f"missing files: {missing_files})")
+    dashes = [r for r in dom.table_rows if r[1] and set("".join(r[1]).strip()) <= set("-|: ")]
+    row_ids = [i for i, _ in dom.table_rows if i is not None]
+    bad_ids = sorted({i for i in row_ids if not i or i.endswith("-") or row_ids.count(i) > 1})
+    check(not dashes and not bad_ids,
+          f"no table row is a Markdown separator and every row id is non-empty and unique "
+          f"(separator rows: {len(dashes)}; bad ids: {bad_ids[:5]})")
+    check(not dom.latexisms,
+          f"no LaTeX or ASCII groups (_{{ ^{{ ^( _() in the page's text outside code ({dom.latexisms[:5]})")
 
     def label_gap_check(attrs, where):
         for prefix in ("anim", "ball-anim"):

@@ -244,7 +244,7 @@ fn csv_keeps_every_point_even_those_a_log_axis_cannot_draw() {
         "approach",
         "Approach",
         Axis::log("distance x", "m").column("x_m"),
-        Axis::log("|a − a_term|", "m/s²").column("da_m_s2"),
+        Axis::log("|a − a∞|", "m/s²").column("da_m_s2"),
     )
     .with_series(Series::new("eq. (4)", pts.clone()));
     assert_eq!(chart.omitted_points(), 2);
@@ -360,6 +360,7 @@ fn write_to_produces_every_file_each_recording_version_and_parameters() {
         "figures/radius.png",
         "data/radius.csv",
         "data/animation.csv",
+        "data/claims.csv",
         "claims.json",
         "report.md",
         "report.html",
@@ -380,6 +381,7 @@ fn write_to_produces_every_file_each_recording_version_and_parameters() {
         "figures/speed.svg",
         "data/speed.csv",
         "data/animation.csv",
+        "data/claims.csv",
         "claims.json",
         "report.md",
         "report.html",
@@ -390,6 +392,24 @@ fn write_to_produces_every_file_each_recording_version_and_parameters() {
     }
     // A figure's own parameters replace the report's in its files.
     assert!(read(dir.path(), "data/radius.csv").contains("# snow_depth = 0.01"));
+    // data/claims.csv: one row per claim after the header, each claim row of
+    // the page links it.
+    let claims_csv = read(dir.path(), "data/claims.csv");
+    let mut rows = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_reader(claims_csv.as_bytes());
+    let ids: Vec<String> = rows.records().map(|r| r.unwrap()[0].to_string()).collect();
+    let want: Vec<String> = report
+        .claims
+        .iter()
+        .map(|r| r.claim.id.to_string())
+        .collect();
+    assert_eq!(ids, want);
+    let html = read(dir.path(), "report.html");
+    assert_eq!(
+        html.matches("href=\"data/claims.csv\"").count(),
+        report.claims.len()
+    );
 }
 
 #[test]

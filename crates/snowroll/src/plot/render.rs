@@ -387,25 +387,30 @@ fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
     }
 }
 
-/// A tick label: plain decimals between 1e-3 and 1e5, else `1.5e-7`.
+/// A tick label in the report's one notation: plain decimals between 0.01
+/// and 10⁴ (`0.5`, `2500`), else powers of ten (`10⁻⁴`, `2.5×10⁷`); a
+/// Unicode minus.
 pub(crate) fn tick(v: f64) -> String {
-    if v == 0.0 {
-        return "0".to_string();
+    if v == 0.0 || !v.is_finite() {
+        return crate::report::notation::fixed(v, 0);
     }
+    let sign = if v < 0.0 { "−" } else { "" };
     let a = v.abs();
-    if (1e-3..1e5).contains(&a) {
-        let s = format!("{v:.4}");
+    if (1e-2..1e4).contains(&a) {
+        let s = format!("{a:.4}");
         let s = s.trim_end_matches('0').trim_end_matches('.');
-        s.to_string()
+        return format!("{sign}{s}");
+    }
+    let s = format!("{a:.2e}");
+    let Some((m, e)) = s.split_once('e') else {
+        return s;
+    };
+    let m = m.trim_end_matches('0').trim_end_matches('.');
+    let power = format!("10{}", crate::report::notation::superscript(e));
+    if m == "1" {
+        format!("{sign}{power}")
     } else {
-        let s = format!("{v:.2e}");
-        match s.split_once('e') {
-            Some((m, e)) => {
-                let m = m.trim_end_matches('0').trim_end_matches('.');
-                format!("{m}e{e}")
-            }
-            None => s,
-        }
+        format!("{sign}{m}×{power}")
     }
 }
 
@@ -435,7 +440,13 @@ mod tests {
         assert_eq!(tick(0.0), "0");
         assert_eq!(tick(0.5), "0.5");
         assert_eq!(tick(100.0), "100");
-        assert_eq!(tick(1e-6), "1e-6");
-        assert_eq!(tick(2.5e7), "2.5e7");
+        assert_eq!(tick(1e-6), "10⁻⁶");
+        assert_eq!(tick(2.5e7), "2.5×10⁷");
+        assert_eq!(tick(1e-4), "10⁻⁴");
+        assert_eq!(tick(1e4), "10⁴");
+        assert_eq!(tick(1e5), "10⁵");
+        assert_eq!(tick(2500.0), "2500");
+        assert_eq!(tick(-0.25), "−0.25");
+        assert_eq!(tick(0.01), "0.01");
     }
 }

@@ -10,6 +10,7 @@
 use std::fmt::Write as _;
 
 use super::html::esc;
+use super::notation;
 
 /// The errata, compiled in.
 const ERRATA_MD: &str = include_str!("../../../../docs/errata.md");
@@ -68,14 +69,15 @@ pub(super) fn link_citations(escaped: &str) -> String {
     out
 }
 
-/// Inline markup of the errata: `code` spans; everything else is text.
+/// Inline markup of the errata: `code` spans; everything else is prose in
+/// the report's one notation ([`notation::prettify_html`]).
 fn inline(text: &str) -> String {
     let mut out = String::new();
     for (i, piece) in text.split('`').enumerate() {
         if i % 2 == 1 {
             let _ = write!(out, "<code>{}</code>", esc(piece));
         } else {
-            out.push_str(&esc(piece));
+            out.push_str(&notation::prettify_html(piece, esc));
         }
     }
     out

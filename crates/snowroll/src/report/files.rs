@@ -215,6 +215,49 @@ pub(super) fn claims_json(report: &Report) -> Result<String, ReportError> {
     Ok(text)
 }
 
+/// The file, under the report's `data/`, of every claim's measured numbers,
+/// verdict and evidence: the data behind a claim that no figure plots.
+pub(super) const CLAIMS_CSV: &str = "claims.csv";
+
+/// `data/claims.csv`: `#` lines with version, title and parameters, then one
+/// row per claim: `id,paper_ref,verdict,expected,as_expected,measured,evidence`.
+///
+/// # Errors
+/// [`ReportError::Csv`] if serialisation fails.
+pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
+    let m = &report.metadata;
+    let mut lines = vec![("title".to_string(), m.title.clone())];
+    lines.extend(m.params.iter().cloned());
+    let mut out = Vec::new();
+    comment_header(&mut out, &m.software, &lines)?;
+    {
+        let mut w = csv::Writer::from_writer(&mut out);
+        w.write_record([
+            "id",
+            "paper_ref",
+            "verdict",
+            "expected",
+            "as_expected",
+            "measured",
+            "evidence",
+        ])?;
+        for r in &report.claims {
+            let as_expected = r.as_expected().to_string();
+            w.write_record([
+                r.claim.id,
+                r.claim.paper_ref,
+                &r.verdict.label(),
+                &r.claim.expected.label(),
+                &as_expected,
+                &r.measured,
+                &r.evidence,
+            ])?;
+        }
+        w.flush().map_err(io_err(Path::new("<memory>")))?;
+    }
+    utf8(out)
+}
+
 /// Writes every file of the report into `dir`.
 pub(super) fn write_all(
     report: &Report,
@@ -246,6 +289,7 @@ pub(super) fn write_all(
             csv.as_bytes(),
         )?;
     }
+    put(data_dir.join(CLAIMS_CSV), claims_csv(report)?.as_bytes())?;
     put(dir.join("claims.json"), report.claims_json()?.as_bytes())?;
     put(dir.join("report.md"), report.to_markdown().as_bytes())?;
     let svgs: Vec<String> = rendered.iter().map(|r| r.svg.clone()).collect();

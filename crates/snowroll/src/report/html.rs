@@ -13,6 +13,7 @@
 use std::fmt::Write as _;
 
 use super::errata::{errata_section, link_citations};
+use super::files::CLAIMS_CSV;
 use super::intro::intro_section;
 use super::{notation, ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
 
@@ -28,9 +29,9 @@ const ERROR_TRAP: &str = "(function(){var n=0;function mark(){n+=1;document.docu
 /// `html[data-layout-overflow]` at a phone's width (empty: nothing overflows).
 const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure,.anim').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
 
-/// Prose of the report, in its one notation ([`notation::prettify`]), escaped.
+/// Prose of the report, in its one notation ([`notation::prettify_html`]), escaped.
 pub(super) fn prose(s: &str) -> String {
-    esc(&notation::prettify(s))
+    notation::prettify_html(s, esc)
 }
 
 /// Escapes text for HTML element content and attribute values.
@@ -154,28 +155,31 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
     Ok(h)
 }
 
-/// Links to the figures that support claim `id`, numbered as in the report.
+/// Links to the figures that support claim `id`, numbered as in the report,
+/// each with its data file, and to the claim's row of `data/claims.csv`.
 fn figure_links(id: &str, figures: &[Figure]) -> String {
     let links: Vec<String> = figures
         .iter()
         .enumerate()
         .filter(|(_, f)| f.supports.contains(&id))
         .map(|(i, f)| {
+            let name = esc(&f.chart.name);
             format!(
-                "<a href=\"#fig-{}\">Figure {}</a>",
-                esc(&f.chart.name),
+                "<a href=\"#fig-{name}\">Figure {}</a> (<a href=\"data/{name}.csv\">data</a>)",
                 i + 1
             )
         })
         .collect();
-    if links.is_empty() {
+    let see = if links.is_empty() {
         String::new()
     } else {
-        format!(
-            "<br><span class=\"figlinks\">See {}.</span>",
-            links.join(", ")
-        )
-    }
+        format!("See {}. ", links.join(", "))
+    };
+    format!(
+        "<br><span class=\"figlinks\">{see}Measured values: row <code>{}</code> of \
+         <a href=\"data/{CLAIMS_CSV}\">data/{CLAIMS_CSV}</a>.</span>",
+        esc(id)
+    )
 }
 
 fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {

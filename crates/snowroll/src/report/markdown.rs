@@ -3,17 +3,20 @@
 
 use std::fmt::Write as _;
 
+use super::files::CLAIMS_CSV;
 use super::{notation, Report, Tally, EXPECTATION_NOTE};
 
 /// Makes text safe inside a Markdown table cell: no pipes, no line breaks,
-/// no raw HTML; in the report's one notation ([`notation::prettify`]).
+/// no raw HTML but the `<sub>`/`<sup>` of a group with no Unicode form; in
+/// the report's one notation ([`notation::prettify_html`]).
 fn cell(s: &str) -> String {
-    notation::prettify(s)
-        .replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('|', "\\|")
-        .replace(['\n', '\r'], " ")
+    notation::prettify_html(s, |t| {
+        t.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+            .replace('|', "\\|")
+            .replace(['\n', '\r'], " ")
+    })
 }
 
 /// The Markdown report.
@@ -68,9 +71,27 @@ pub(super) fn render(report: &Report) -> String {
         if !r.as_expected() {
             let _ = write!(verdict, " (expected: {})", c.expected.label());
         }
+        let figures: Vec<String> = report
+            .figures
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| f.supports.contains(&c.id))
+            .map(|(i, f)| {
+                let name = &f.chart.name;
+                format!(
+                    "[Figure {}](figures/{name}.svg) ([data](data/{name}.csv))",
+                    i + 1
+                )
+            })
+            .collect();
+        let see = if figures.is_empty() {
+            String::new()
+        } else {
+            format!(" See {}.", figures.join(", "))
+        };
         let _ = writeln!(
             md,
-            "| `{}` | {} | {} | {} (tolerances: {}) | {} | **{}** | {} |",
+            "| `{}` | {} | {} | {} (tolerances: {}) | {} | **{}** | {}{see} Measured values: [data/{CLAIMS_CSV}](data/{CLAIMS_CSV}). |",
             cell(c.id),
             cell(c.paper_ref),
             cell(c.statement),

@@ -19,6 +19,7 @@
 //! claims.json        the claim results
 //! figures/NAME.svg   one per figure, and NAME.png
 //! data/NAME.csv      the plotted series of each figure
+//! data/claims.csv    every claim: measured values, verdict, evidence
 //! data/animation.csv the log animation's frames (data/ball-animation.csv the snowball's)
 //! ```
 //!

@@ -1,6 +1,7 @@
 //! One notation for numbers and symbols in the report: Unicode superscripts
 //! and subscripts (`10⁻¹²`, `r₀`, `s^−7/3` as `s⁻⁷ᐟ³`), no negative zero, no
-//! ASCII `^(…)` or LaTeX `_{…}`.
+//! ASCII `^(…)` or LaTeX `_{…}`; in HTML, a group with no Unicode form
+//! (`r_(K−1)`) is set in `<sub>`/`<sup>`.
 
 /// The Unicode superscript of `c`, for digits, signs and `/`, `(`, `)`.
 fn superscript_char(c: char) -> Option<char> {
@@ -147,6 +148,29 @@ fn all_in(inner: &str, map: fn(char) -> Option<char>) -> Option<String> {
 /// identifiers), and so are tokens that are part of a word (`eq32+36`,
 /// `x_m`).
 pub fn prettify(text: &str) -> String {
+    prettify_with(text, false)
+}
+
+/// Marks (private-use characters) around a group that has no Unicode
+/// super- or subscript form, such as `r_(K−1)`: [`prettify_html`] turns them
+/// into `<sub>`/`<sup>` elements after escaping.
+const SUB_OPEN: char = '\u{E000}';
+const SUB_CLOSE: char = '\u{E001}';
+const SUP_OPEN: char = '\u{E002}';
+const SUP_CLOSE: char = '\u{E003}';
+
+/// Report prose as HTML element content: [`prettify`], escaped with
+/// `escape`, and a group with no Unicode form (`r_(K−1)`, `x^{a+b}`) set
+/// in `<sub>`/`<sup>`, so that no `_{`, `^(` … is left in the page.
+pub fn prettify_html(text: &str, escape: impl Fn(&str) -> String) -> String {
+    escape(&prettify_with(text, true))
+        .replace(SUB_OPEN, "<sub>")
+        .replace(SUB_CLOSE, "</sub>")
+        .replace(SUP_OPEN, "<sup>")
+        .replace(SUP_CLOSE, "</sup>")
+}
+
+fn prettify_with(text: &str, marks: bool) -> String {
     let mut out = String::with_capacity(text.len() + 16);
     for (i, part) in text.split('`').enumerate() {
         if i > 0 {
@@ -155,13 +179,13 @@ pub fn prettify(text: &str) -> String {
         if i % 2 == 1 {
             out.push_str(part);
         } else {
-            out.push_str(&prettify_plain(part));
+            out.push_str(&prettify_plain(part, marks));
         }
     }
     out
 }
 
-fn prettify_plain(text: &str) -> String {
+fn prettify_plain(text: &str, marks: bool) -> String {
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::with_capacity(text.len() + 16);
     let mut i = 0;
@@ -169,27 +193,43 @@ fn prettify_plain(text: &str) -> String {
     while i < chars.len() {
         let c = chars[i];
         let starts_token = i == 0 || !word(chars[i - 1]);
-        // ^(…) and _{…}: the whole group in super/subscript, or untouched.
-        if (c == '^' && chars.get(i + 1) == Some(&'('))
-            || (c == '_' && chars.get(i + 1) == Some(&'{'))
-        {
-            let close = if c == '^' { ')' } else { '}' };
+        // ^(…), ^{…}, _{…}, _(…): the whole group in super/subscript; else,
+        // with `marks`, the group between marks (for <sup>/<sub>), else
+        // untouched.
+        let open = chars.get(i + 1).copied();
+        if (c == '^' || c == '_') && matches!(open, Some('(' | '{')) {
+            let close = if open == Some('(') { ')' } else { '}' };
             if let Some(len) = chars[i + 2..].iter().position(|&d| d == close) {
                 let inner: String = chars[i + 2..i + 2 + len].iter().collect();
-                let map = if c == '^' {
-                    superscript_char
+                let (map, left, right) = if c == '^' {
+                    (
+                        superscript_char as fn(char) -> Option<char>,
+                        SUP_OPEN,
+                        SUP_CLOSE,
+                    )
                 } else {
-                    subscript_char
+                    (
+                        subscript_char as fn(char) -> Option<char>,
+                        SUB_OPEN,
+                        SUB_CLOSE,
+                    )
                 };
                 if let Some(mapped) = all_in(&inner, map) {
                     out.push_str(&mapped);
                     i += len + 3;
                     continue;
                 }
+                if marks {
+                    out.push(left);
+                    out.push_str(&prettify_plain(&inner, marks));
+                    out.push(right);
+                    i += len + 3;
+                    continue;
+                }
             }
         }
         // ^−7/3, ^2, ^−p: the run of characters that have a superscript.
-        if c == '^' && chars.get(i + 1) != Some(&'(') {
+        if c == '^' && !matches!(open, Some('(' | '{')) {
             let run = chars[i + 1..]
                 .iter()
                 .take_while(|&&d| superscript_char(d).is_some())
@@ -303,6 +343,19 @@ mod tests {
             "run `--rtol 1e-10` then"
         );
         assert_eq!(prettify("3 turns, 2.5 m/s"), "3 turns, 2.5 m/s");
+    }
+
+    #[test]
+    fn html_prose_leaves_no_latex_groups() {
+        let esc = |s: &str| s.replace('<', "&lt;");
+        assert_eq!(prettify_html("(s0/s)^{30/7}", esc), "(s0/s)³⁰ᐟ⁷");
+        assert_eq!(prettify_html("r_(k+1) < m_{n−1}", esc), "rₖ₊₁ &lt; mₙ₋₁");
+        // K has no Unicode subscript: the group is set in <sub>, text escaped.
+        assert_eq!(prettify_html("r_(K−1) < r", esc), "r<sub>K−1</sub> &lt; r");
+        assert_eq!(prettify_html("e^{a<b}", esc), "e<sup>a&lt;b</sup>");
+        // Plain prettify leaves what it cannot map as it was.
+        assert_eq!(prettify("r_(K−1)"), "r_(K−1)");
+        assert_eq!(prettify_html("`x_{k}` stays", esc), "`x_{k}` stays");
     }
 
     #[test]

@@ -25,7 +25,7 @@ const T_FIRST: f64 = 1e-3;
 const N_TIMES: usize = 300;
 /// Distance of the approach figure, m (10⁷ r0 for the default r0).
 const X_FAR: f64 = 1e6;
-/// Smallest |a − a_term|/G drawn: below it the integration error (rtol
+/// Smallest |a − a∞|/G drawn: below it the integration error (rtol
 /// 1e-10 on v, accumulated over ~10³ steps) would be drawn instead of physics.
 const APPROACH_FLOOR: f64 = 1e-10;
 /// Turns shown in full in the in-turn acceleration figure and the animation.
@@ -339,7 +339,7 @@ fn model_charts(
     [accel, speed, radius]
 }
 
-/// |a − a_term|/G against x for every circular model with its own terminal
+/// |a − a∞|/G against x for every circular model with its own terminal
 /// value (one curve per equation).
 fn approach_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
     let g = lab.scenario().g_along();
@@ -347,7 +347,7 @@ fn approach_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
         "approach-to-terminal",
         "Approach to the terminal acceleration",
         Axis::log("distance x", "m").column("x_m"),
-        Axis::log("|a − a_term| / (g sin α)", "1").column("deviation_over_g_sin_alpha"),
+        Axis::log("|a − a∞| / (g sin α)", "1").column("deviation_over_g_sin_alpha"),
     )
     .with_legend(Legend::LowerLeft);
     let far = SimOptions {
@@ -370,7 +370,7 @@ fn approach_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, ReportError> {
             .filter(|&(x, d)| x > 0.0 && d > APPROACH_FLOOR)
             .collect();
         let name = format!(
-            "{}, a_term = {} G",
+            "{}, a∞ = {} G",
             group_label(&group),
             notation::fixed(a_term, 4)
         );
@@ -560,7 +560,7 @@ fn figures(
         Figure::new(accel, &format!("a/(g sin α) against time for every model from rest on the default slope. The circular models of §2 each tend to their own terminal value ({terminal_values}); the turn-by-turn models (markers: the mean over each turn) settle near {} within a turn over the last decade of the long run. {same} Curves that lie close differ in dash pattern and markers as well as colour.", notation::fixed(in_turn_mean, 4))).supports(&["circular-analyses-differ", "terminal-accelerations", "eq35-terminal-third", "loney-limit-fifth", "multi-turn-never-settles"]),
         Figure::new(speed, &format!("Speed against time. After the first seconds every model's speed grows linearly, at its terminal acceleration. {same}")).supports(&["terminal-accelerations"]),
         Figure::new(radius, "Radius against time: π r² = π r₀² + b x (eq. (8)); the turn models grow by b per full turn.").supports(&["eq70-mass-after-first-turn"]),
-        Figure::new(approach, &format!("How fast each circular model approaches its terminal acceleration: |a − a_term| against x, one curve per equation (eq. (4) stands for Loney's fn. 4, its closed form). Models with only the v² term approach as a power, ∝ r⁻ᵖ with p = 2(1 + 2cᵥ) (x{} for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a_term changes sign; curves stop at {}, the accuracy of the integration.", notation::superscript("-10/3"), notation::number(APPROACH_FLOOR, 1))).supports(&["eq36-slows-approach", "eq33-35-terminal-argument", "loney-limit-fifth"]),
+        Figure::new(approach, &format!("How fast each circular model approaches its terminal acceleration: |a − a∞| against x, one curve per equation (eq. (4) stands for Loney's fn. 4, its closed form). Models with only the v² term approach as a power, ∝ r⁻ᵖ with p = 2(1 + 2cᵥ) (x{} for eq. (4), fn. 4); the snow-lifting term of eqs. (14), (15), (21), (36) slows this to 1/r. The dips near x = 10 m are where a − a∞ changes sign; curves stop at {}, the accuracy of the integration.", notation::superscript("-10/3"), notation::number(APPROACH_FLOOR, 1))).supports(&["eq36-slows-approach", "eq33-35-terminal-argument", "loney-limit-fifth"]),
         Figure::new(in_turn, "The acceleration of the turn-by-turn model over its first turns: it starts each turn near 2G/3, dips within the turn, and the speed drops at each collision (eq. (89)). eq. (73) is the note's O(b/r) equation, exact geometry the full mass properties.").supports(&["multi-turn-never-settles", "first-turn-58-64-69", "eq89-collision", "eq73-truncates-exact"]),
         Figure::new(means, &format!("Mean acceleration over many turns, against the number of turns K: over the last decade of {} turns it is {} G within turns and {} G including the collisions, not the note's 4G/9 (eq. (79)).", paper.summary.turns, notation::fixed(in_turn_mean, 4), notation::fixed(with_collisions, 4))).supports(&["multi-turn-mean-four-ninths", "multi-turn-never-settles"]),
         Figure::new(ledger, &format!("Where the energy goes in the turn-by-turn model (eq. (73)), as shares of the energy released within the turns: the kinetic energy after each collision and what the collisions removed add up to 1 (squares). After {} turns the log keeps a share of {} as kinetic energy; the collisions took the rest. The long run is a mathematical limit, not a hill: after {} turns the log has r = {} m and has rolled x = {} m.", paper.summary.turns, notation::fixed(kinetic_share, 3), paper.summary.turns, notation::number(extent.0, 2), notation::number(extent.1, 2))).supports(&["eq88-energy-balance", "eq89-collision", "collision-potential-jump"]),

@@ -149,7 +149,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
         claim: Claim {
             id: "eq33-35-terminal-argument",
             paper_ref: "§2.4, eqs. (33)–(35)",
-            statement: "Differentiating (32) gives v̈ ≈ (b/2πr²)(bv²/(2πr³) − v̇), so a_term ≈ bv²/(2πr³); late on x ≈ a_cm t²/2 and, from (31), πr² ≈ bx.",
+            statement: "Differentiating (32) gives v̈ ≈ (b/2πr²)(bv²/(2πr³) − v̇), so a∞ ≈ bv²/(2πr³); late on x ≈ a_cm t²/2 and, from (31), πr² ≈ bx.",
             method: "along the integrated eq. (32): v̈ by central differences of a against (33); at x = 1000 km, a against (34), x against a t²/2, πr² against bx",
             tolerances: &[EQ33_DERIVATIVE, EQ34_LATE, EQ35_POSITION, EQ33_PRINTED_APART],
             expected: Verdict::HoldsAfterCorrection(ERRATUM_33_35),

@@ -265,7 +265,7 @@ pub(super) fn eq35_third(lab: &Lab) -> Result<Finding, SimError> {
 
 /// The erratum of eqs. (33)–(35).
 pub(super) const ERRATUM_33_35: &str =
-    "docs/errata.md (33), (34), after (35): bv/(πr²) and bv²/(2πr²); a_term, eq. (27)";
+    "docs/errata.md (33), (34), after (35): bv/(πr²) and bv²/(2πr²); a∞, eq. (27)";
 
 /// `eq33-35-terminal-argument`: v̈ of eq. (32) against the corrected (33).
 pub(super) const EQ33_DERIVATIVE: Criterion = Criterion {
@@ -279,11 +279,12 @@ pub(super) const EQ34_LATE: Criterion = Criterion {
     tolerance: Tolerance::Relative { value: 1e-4 },
     reason: "a − bv²/(2πr²) = 2(a − G/3) ≈ 1e-15 G and πr0²/(bx) ≈ 3e-6 there",
 };
-/// `eq33-35-terminal-argument`: x ≈ a_term t²/2 at late times.
+/// `eq33-35-terminal-argument`: x ≈ a∞ t²/2 at late times.
 pub(super) const EQ35_POSITION: Criterion = Criterion {
-    quantity: "relative |x − a_term t²/2| at x = 1000 km",
+    quantity: "relative |x − a∞ t²/2| at x = 1000 km",
     tolerance: Tolerance::Relative { value: 1e-2 },
-    reason: "x − a_term t²/2 grows like t (the speed gained above a_term t early on), ~1e-3 of x at t ≈ 1100 s",
+    reason:
+        "x − a∞ t²/2 grows like t (the speed gained above a∞ t early on), ~1e-3 of x at t ≈ 1100 s",
 };
 /// `eq33-35-terminal-argument`: the printed forms are visibly off.
 pub(super) const EQ33_PRINTED_APART: Criterion = Criterion {
@@ -297,7 +298,7 @@ pub(super) const EQ33_PRINTED_APART: Criterion = Criterion {
 
 /// Eqs. (33)–(35) and the text after (35): the time derivative of eq. (32),
 /// `v̈ = (bv/(πr²))(bv²/(2πr²) − v̇)` (corrected (33)), vanishes when
-/// `a = bv²/(2πr²)` (corrected (34)); late on x ≈ a_term t²/2 and
+/// `a = bv²/(2πr²)` (corrected (34)); late on x ≈ a∞ t²/2 and
 /// πr² ≈ bx (eq. (27)).
 pub(super) fn eq33_35_argument(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
@@ -368,7 +369,7 @@ pub(super) fn eq33_35_argument(lab: &Lab) -> Result<Finding, SimError> {
             &numbers,
         ),
         evidence: format!(
-            "differentiating (32) with ṙ = bv/(2πr) (eq. (29)) gives v̈ = (bv/πr²)(bv²/(2πr²) − v̇): v̈ = 0 at a_term = bv²/(2πr²), which with (32) is G/3; late on x ≈ a_term t²/2 and πr² ≈ bx (eq. (27), not (31)). The corrected forms are {}; the printed (33) and (34) have the wrong units",
+            "differentiating (32) with ṙ = bv/(2πr) (eq. (29)) gives v̈ = (bv/πr²)(bv²/(2πr²) − v̇): v̈ = 0 at a∞ = bv²/(2πr²), which with (32) is G/3; late on x ≈ a∞ t²/2 and πr² ≈ bx (eq. (27), not (31)). The corrected forms are {}; the printed (33) and (34) have the wrong units",
             bound(&EQ33_DERIVATIVE, corrected_ok)
         ),
     })
