@@ -581,6 +581,10 @@ pub struct SweepArgs {
     #[arg(long, value_name = "FILE.toml")]
     pub grid: Option<PathBuf>,
 
+    /// Run again the sweep whose output is FILE (a sweep CSV, or Parquet in a build with `--features parquet`): its models, axes, shard and method, read from its header; flags given here override them. Without such flags the output is the same bytes, header included
+    #[arg(long, value_name = "FILE", conflicts_with = "grid")]
+    pub config: Option<PathBuf>,
+
     /// Write to this file instead of stdout. Rows go to FILE.partial as they are computed; the finished file is renamed into place
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,

@@ -567,3 +567,118 @@ fn losses_the_model_does_not_carry_are_refused() {
         "{err}"
     );
 }
+
+/// A sweep's output read back with `--config` runs the same grid, shard and
+/// method: the same bytes, header (command line included) and rows.
+#[test]
+fn a_sweep_output_reproduces_its_sweep() {
+    // List and range axes, several models (by alias and id), an end
+    // distance, the second of three shards.
+    let sweep = [
+        "--model",
+        "eq4,energy,turns",
+        "--alpha-deg",
+        "10,25",
+        "--r0",
+        "0.1:0.3:3",
+        "--x-end",
+        "5",
+        "--on-hop",
+        "stop,continue",
+        "--shard",
+        "1/3",
+    ];
+    reproduces("sweep", &sweep, "map.csv");
+    let mut ode = sweep.to_vec();
+    ode.extend(["--method", "ode"]);
+    reproduces("sweep", &ode, "map-ode.csv");
+}
+
+#[cfg(feature = "parquet")]
+#[test]
+fn a_sweep_parquet_output_reproduces_its_sweep() {
+    let sweep = [
+        "--model",
+        "eq4,energy",
+        "--snow-depth",
+        "0:0.02:3",
+        "--t-end",
+        "2,4",
+        "--shard",
+        "0/2",
+    ];
+    reproduces("sweep", &sweep, "map.parquet");
+}
+
+/// A sweep made from a `--grid` file is read back from its output alone:
+/// the axes are in its header.
+#[test]
+fn a_sweep_from_a_grid_file_reproduces_without_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let grid = dir.path().join("axes.toml");
+    fs::write(
+        &grid,
+        "model = [\"eq4\", \"energy\"]\nalpha_deg = \"5:60:4\"\nv0 = [0, 1.5]\n",
+    )
+    .unwrap();
+    run(dir.path(), &["sweep", "--grid", "axes.toml", "-o", "a.csv"]);
+    fs::remove_file(&grid).unwrap();
+    run(dir.path(), &["sweep", "--config", "a.csv", "-o", "b.csv"]);
+    assert_eq!(
+        fs::read(dir.path().join("a.csv")).unwrap(),
+        fs::read(dir.path().join("b.csv")).unwrap()
+    );
+    // Given to --grid by mistake, a sweep output is pointed to --config.
+    let e = fails(dir.path(), &["sweep", "--grid", "a.csv"]);
+    assert!(e.contains("--config a.csv"), "{e}");
+}
+
+/// Flags given with `--config` replace the file's axes; the others stay,
+/// and the header's command line is then the run's own.
+#[test]
+fn flags_override_a_sweep_output_read_as_config() {
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &[
+            "sweep",
+            "--model",
+            "eq4",
+            "--alpha-deg",
+            "10,20",
+            "--r0",
+            "0.1,0.2",
+            "--shard",
+            "1/2",
+            "-o",
+            "a.csv",
+        ],
+    );
+    run(
+        dir.path(),
+        &[
+            "sweep",
+            "--config",
+            "a.csv",
+            "--alpha-deg",
+            "30",
+            "-o",
+            "b.csv",
+        ],
+    );
+    let b = fs::read_to_string(dir.path().join("b.csv")).unwrap();
+    assert!(
+        b.contains(
+            "# command: snowroll sweep --model torque-cm --alpha-deg 30 --r0 0.1,0.2 \
+             --collision note --on-hop stop --output b.csv --shard 1/2\n"
+        ),
+        "{b}"
+    );
+    assert!(b.contains("# alpha_deg: 30\n# r0: 0.1,0.2\n"), "{b}");
+    // The file's shard 1/2 of the new two-point grid: its second point.
+    let rows: Vec<&str> = b.lines().filter(|l| !l.starts_with('#')).skip(1).collect();
+    assert_eq!(rows.len(), 1, "{b}");
+    assert!(rows[0].starts_with("1,torque-cm,30.0,0.01,0.2,"), "{b}");
+    let e = fails(dir.path(), &["sweep", "--config", "missing.csv"]);
+    assert!(e.contains("missing.csv"), "{e}");
+}

@@ -23,7 +23,7 @@ use snowroll::output::VERSION;
 use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
 
 use super::sweep_csv::RowWriter;
-use super::sweep_grid::{flag_axes, grid};
+use super::sweep_grid::{flag_axes, grid, with_config};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
 use crate::sink::Sink;
@@ -42,6 +42,8 @@ const SYNC_EVERY: Duration = Duration::from_secs(10);
 
 /// Parses the grid, runs it (or this shard of it), writes the rows.
 pub fn run(args: &SweepArgs) -> Result<()> {
+    let (args, command) = with_config(args)?;
+    let args = &args;
     let grid = grid(args)?;
     let plot = match &args.plot {
         Some(path) => Some((super::sweep_plot::plan(args, &grid)?, path)),
@@ -52,7 +54,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         None => (0, 1),
     };
     let range = shard_range(grid.len(), shard, shards).map_err(|e| anyhow!("--shard: {e}"))?;
-    let header = header(args, &grid, shard, shards, &range);
+    let header = header(args, command.as_deref(), &grid, shard, shards, &range);
 
     let out = OutputArgs {
         format: None,
@@ -256,8 +258,16 @@ pub fn parse_shard(text: &str) -> Result<(u64, u64)> {
 }
 
 /// The `#` lines and the column names: everything a resumed run or a merge
-/// checks, plus the command line (which they do not).
-fn header(args: &SweepArgs, grid: &Grid, shard: u64, shards: u64, range: &Range<u64>) -> String {
+/// checks, plus the command line (which they do not): `recorded`, the one a
+/// `--config` file holds, when the run is that file's own; else `args`'.
+fn header(
+    args: &SweepArgs,
+    recorded: Option<&str>,
+    grid: &Grid,
+    shard: u64,
+    shards: u64,
+    range: &Range<u64>,
+) -> String {
     let mut command = String::from("snowroll sweep");
     if let Some(path) = &args.grid {
         command.push_str(&format!(" --grid {}", path.display()));
@@ -279,6 +289,9 @@ fn header(args: &SweepArgs, grid: &Grid, shard: u64, shards: u64, range: &Range<
     }
     if let Some(s) = &args.shard {
         command.push_str(&format!(" --shard {s}"));
+    }
+    if let Some(recorded) = recorded {
+        command = recorded.to_string();
     }
     let models: Vec<&str> = grid.models().iter().map(|m| m.id()).collect();
     let mut h = format!("# snowroll sweep, version {VERSION}\n{COMMAND_KEY}{command}\n");

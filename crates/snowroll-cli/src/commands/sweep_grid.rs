@@ -6,7 +6,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::ValueEnum;
-use snowroll::sweep::{Axis, Choices, Grid, GridError, Param, Values};
+use snowroll::sweep::{Axis, Choices, Grid, GridError, Method, Param, Values};
 use snowroll::{CollisionModel, ModelKind, OnHop};
 
 use crate::args::SweepArgs;
@@ -122,6 +122,9 @@ pub fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
 fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
     let shown = path.display();
     let text = fs::read_to_string(path).with_context(|| format!("reading {shown}"))?;
+    if text.starts_with("# snowroll sweep") {
+        bail!("{shown} is the output of a sweep: read it back with --config {shown}");
+    }
     let table: toml::Table = text
         .parse()
         .map_err(|e: toml::de::Error| anyhow!("{shown}: {}", e.message()))?;
@@ -160,4 +163,141 @@ fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
         }
     }
     Ok(axes)
+}
+
+/// What a sweep's output records of its run: its header's `# key: value`
+/// lines (a CSV's `#` lines, a Parquet file's `snowroll.key` metadata).
+fn recorded(path: &Path) -> Result<Vec<(String, String)>> {
+    let shown = path.display();
+    let mut head = [0u8; 4];
+    let n = fs::File::open(path)
+        .and_then(|mut f| std::io::Read::read(&mut f, &mut head))
+        .with_context(|| format!("cannot read config file {shown}"))?;
+    if &head[..n] == b"PAR1" {
+        return recorded_parquet(path);
+    }
+    let file = fs::File::open(path).with_context(|| format!("cannot read config file {shown}"))?;
+    let mut lines = Vec::new();
+    for line in std::io::BufRead::lines(std::io::BufReader::new(file)) {
+        let line = line.with_context(|| format!("reading config file {shown}"))?;
+        let Some(comment) = line.strip_prefix("# ") else {
+            break;
+        };
+        if let Some(version) = comment.strip_prefix("snowroll sweep, version ") {
+            lines.push(("version".to_string(), version.to_string()));
+        } else if let Some((k, v)) = comment.split_once(": ") {
+            lines.push((k.to_string(), v.to_string()));
+        }
+    }
+    if lines.first().map(|(k, _)| k.as_str()) != Some("version") {
+        bail!(
+            "config file {shown} is not an output of `snowroll sweep` (its first line is not \
+             `# snowroll sweep, version ...`)"
+        );
+    }
+    Ok(lines)
+}
+
+/// The `snowroll.key` metadata of a Parquet output: only its footer is read.
+#[cfg(feature = "parquet")]
+fn recorded_parquet(path: &Path) -> Result<Vec<(String, String)>> {
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    let shown = path.display();
+    let file = fs::File::open(path).with_context(|| format!("cannot read config file {shown}"))?;
+    let reader = SerializedFileReader::new(file)
+        .map_err(|e| anyhow!("config file {shown}: not a readable Parquet file: {e}"))?;
+    let lines: Vec<(String, String)> = reader
+        .metadata()
+        .file_metadata()
+        .key_value_metadata()
+        .into_iter()
+        .flatten()
+        .filter_map(|kv| {
+            let key = kv.key.strip_prefix("snowroll.")?;
+            Some((key.to_string(), kv.value.clone().unwrap_or_default()))
+        })
+        .collect();
+    if !lines.iter().any(|(k, _)| k == "version") {
+        bail!("config file {shown} is not an output of `snowroll sweep` (no snowroll.version)");
+    }
+    Ok(lines)
+}
+
+/// Without Parquet support a Parquet file cannot be read back.
+#[cfg(not(feature = "parquet"))]
+fn recorded_parquet(path: &Path) -> Result<Vec<(String, String)>> {
+    bail!(
+        "config file {} is Parquet: this snowroll was built without Parquet (rebuild it with \
+         `--features parquet`), or read back the CSV output",
+        path.display()
+    )
+}
+
+/// `args` with the sweep recorded in its `--config` file filling every
+/// setting of the grid and the run that was not given as a flag, and the
+/// recorded command line when no such flag was given (the header is then
+/// the file's own, byte for byte). Without `--config`, `args` unchanged.
+///
+/// The axes come from the header's `# key: values` lines, so a sweep made
+/// from a `--grid` file is read back without it; the shard and the method
+/// from its `# shard:` and `# command:` lines. `--method` can only be
+/// overridden to `ode` (`auto` is its default, not told apart from absent).
+pub fn with_config(args: &SweepArgs) -> Result<(SweepArgs, Option<String>)> {
+    let Some(path) = &args.config else {
+        return Ok((args.clone(), None));
+    };
+    let shown = path.display();
+    let lines = recorded(path)?;
+    let get = |key: &str| lines.iter().find(|(k, _)| k == key).map(|(_, v)| v.clone());
+    let Some(command) = get("command") else {
+        bail!("config file {shown}: its `command` line is missing");
+    };
+    let overridden = !flag_axes(args).is_empty()
+        || args.shard.is_some()
+        || args.format.is_some()
+        || args.method != Method::Auto;
+    let mut merged = args.clone();
+    let fill = |field: &mut Option<String>, key: &str| {
+        if field.is_none() {
+            *field = get(key);
+        }
+    };
+    fill(&mut merged.model, "model");
+    fill(&mut merged.collision, "collision");
+    fill(&mut merged.on_hop, "on_hop");
+    for (param, field) in [
+        (Param::AlphaDeg, &mut merged.alpha_deg),
+        (Param::SnowDepth, &mut merged.snow_depth),
+        (Param::R0, &mut merged.r0),
+        (Param::G, &mut merged.g),
+        (Param::Density, &mut merged.density),
+        (Param::Length, &mut merged.length),
+        (Param::V0, &mut merged.v0),
+        (Param::TEnd, &mut merged.t_end),
+        (Param::XEnd, &mut merged.x_end),
+        (Param::Rtol, &mut merged.rtol),
+        (Param::Atol, &mut merged.atol),
+        (Param::Mu, &mut merged.mu),
+    ] {
+        fill(field, param.key());
+    }
+    if merged.model.is_none() {
+        bail!("config file {shown}: its `model` line is missing");
+    }
+    if merged.shard.is_none() {
+        let shard = get("shard").ok_or_else(|| anyhow!("config file {shown}: no `shard` line"))?;
+        let shard = shard.split(',').next().unwrap_or("").trim().to_string();
+        if shard != "0/1" {
+            merged.shard = Some(shard);
+        }
+    }
+    let words: Vec<&str> = command.split_whitespace().collect();
+    if let Some(w) = words.windows(2).find(|w| w[0] == "--method") {
+        if merged.method == Method::Auto {
+            merged.method = Method::from_str(w[1], true)
+                .map_err(|_| anyhow!("config file {shown}: unknown --method {:?}", w[1]))?;
+        }
+    }
+    merged.config = None;
+    Ok((merged, (!overridden).then_some(command)))
 }
