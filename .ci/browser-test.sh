@@ -39,20 +39,33 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # run_chromium NAME ARGS...: one headless run with a fresh, empty profile;
-# stderr (with the page's console) goes to $work/NAME.log.
+# stderr (with the page's console) goes to $work/NAME.log. Headless Chromium
+# on a loaded machine now and then dies in its own process setup ("zygote ...
+# Connection reset") before the page is read; such a crash says nothing about
+# the report, so a run that exits non-zero is tried again, up to three times,
+# each with a fresh profile. What the page shows is checked after the run,
+# never by the exit status, so a retry cannot hide a failing check.
 run_chromium() {
     local name=$1
     shift
-    mkdir -p "$work/profile-$name"
-    timeout 120 "$chromium" \
-        --headless --no-sandbox --disable-gpu --no-first-run \
-        --disable-background-networking --disable-component-update --disable-sync \
-        --user-data-dir="$work/profile-$name" \
-        --host-resolver-rules="MAP * ~NOTFOUND" \
-        --enable-logging=stderr --v=0 \
-        --hide-scrollbars \
-        --virtual-time-budget="$budget_ms" \
-        "$@" "file://$page" 2>"$work/$name.log"
+    local attempt
+    for attempt in 1 2 3; do
+        rm -rf "$work/profile-$name"
+        mkdir -p "$work/profile-$name"
+        if timeout 120 "$chromium" \
+            --headless --no-sandbox --disable-gpu --no-first-run \
+            --disable-background-networking --disable-component-update --disable-sync \
+            --user-data-dir="$work/profile-$name" \
+            --host-resolver-rules="MAP * ~NOTFOUND" \
+            --enable-logging=stderr --v=0 \
+            --hide-scrollbars \
+            --virtual-time-budget="$budget_ms" \
+            "$@" "file://$page" 2>"$work/$name.log"; then
+            return 0
+        fi
+        echo "browser-test: chromium ($name) exited non-zero, attempt $attempt of 3" >&2
+    done
+    return 1
 }
 
 echo "browser-test: $chromium on $page"
