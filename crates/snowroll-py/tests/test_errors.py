@@ -211,5 +211,10 @@ def test_turns_refuses_losses_with_the_cli_message(cli, kwargs, flags):
         snowroll.turns("turns", turns=3, **kwargs)
     message = str(err.value)
     _, stderr = run_cli(cli, "turns", "--model", "turns", "--turns", "3", *flags, ok=False)
-    # The CLI's message is the library's, after the run it names.
-    assert stderr.startswith("error: running turns ") and stderr.rstrip().endswith(f": {message}"), stderr
+    # The CLI's message is the library's, with the flags where Python names
+    # the keywords (--drag-coefficient for drag_coefficient).
+    cli_message = message
+    for key in ("drag_coefficient", "rolling_resistance", "compaction_energy", "ledger"):
+        cli_message = cli_message.replace(key, "--" + key.replace("_", "-"))
+    assert message.startswith("model turns does not support " + next(iter(kwargs))), message
+    assert f"error: {cli_message}" in stderr, (cli_message, stderr)

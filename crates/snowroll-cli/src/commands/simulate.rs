@@ -45,12 +45,9 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         _ => "--times".to_string(),
     };
     inputs::check_row_count(&opts, opts.known_rows(), &what)?;
-    opts.validate()?;
     // Everything the model refuses, before any output (nothing reaches stdout).
     let runner = model.build();
-    runner.check(&scenario, &opts).map_err(|e| {
-        anyhow::Error::from(e).context(format!("simulating {} ({})", model.id(), model.equation()))
-    })?;
+    runner.check(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()

@@ -52,11 +52,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         opts.tolerances.atol = default_atol(model, &scenario);
     }
     inputs::check_row_count(&opts, Some(wanted as f64), &format!("--turns {wanted}"))?;
-    opts.validate()?;
     // Everything the model refuses, before any output (nothing reaches stdout).
-    model.build().check(&scenario, &opts).map_err(|e| {
-        anyhow::Error::from(e).context(format!("running {} ({})", model.id(), model.equation()))
-    })?;
+    model.build().check(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()
