@@ -353,6 +353,7 @@ fn write_to_produces_every_file_each_recording_version_and_parameters() {
     let report = small_report();
     let written = report.write_to(dir.path()).unwrap();
     let expected = [
+        "figures/geometry.svg",
         "figures/speed.svg",
         "figures/speed.png",
         "data/speed.csv",
@@ -503,6 +504,10 @@ fn markdown_has_the_claims_table_and_links_every_figure() {
         assert!(md.contains(&format!("](figures/{name}.svg)")));
         assert!(md.contains(&format!("(data/{name}.csv)")));
     }
+    // The opening has the geometry drawing and the models' assumptions, as
+    // report.html has (issue 9).
+    assert!(md.contains("![The geometry](figures/geometry.svg)"));
+    assert!(md.contains("| Model (alias) | Note | Equation of motion | Assumptions | a∞/G |"));
 }
 
 #[test]
@@ -514,6 +519,19 @@ fn two_figures_with_one_name_are_refused() {
     assert!(matches!(
         report.write_to(dir.path()),
         Err(ReportError::DuplicateFigure { name }) if name == "speed"
+    ));
+}
+
+#[test]
+fn a_figure_named_like_the_geometry_drawing_is_refused() {
+    // figures/geometry.svg holds the opening's drawing; a chart of that name
+    // would overwrite it.
+    let mut report = small_report();
+    report.figures[0].chart.name = "geometry".to_string();
+    let dir = tempfile::tempdir().unwrap();
+    assert!(matches!(
+        report.write_to(dir.path()),
+        Err(ReportError::DuplicateFigure { name }) if name == "geometry"
     ));
 }
 

@@ -183,7 +183,9 @@ impl Report {
     /// # Errors
     /// [`ReportError`] naming the first problem.
     pub fn validate(&self) -> Result<(), ReportError> {
+        // The geometry drawing is written as figures/geometry.svg beside the charts.
         let mut names: Vec<&str> = self.figures.iter().map(|f| f.chart.name.as_str()).collect();
+        names.push(super::intro::GEOMETRY_FIGURE);
         names.sort_unstable();
         if let Some(w) = names.windows(2).find(|w| w[0] == w[1]) {
             return Err(ReportError::DuplicateFigure {

@@ -275,6 +275,11 @@ pub(super) fn write_all(
         written.push(path);
         Ok(())
     };
+    // The opening's drawing, for report.md (report.html has it inline).
+    put(
+        figures_dir.join(format!("{}.svg", super::intro::GEOMETRY_FIGURE)),
+        super::intro::geometry_svg().as_bytes(),
+    )?;
     for (fig, r) in report.figures.iter().zip(rendered) {
         let name = &fig.chart.name;
         put(figures_dir.join(format!("{name}.svg")), r.svg.as_bytes())?;

@@ -151,6 +151,17 @@ pub(super) const SYMBOLS: [(&str, &str, &str); 17] = [
     ),
 ];
 
+/// The name of the geometry drawing's file in `figures/` (`report.md` links it).
+pub(super) const GEOMETRY_FIGURE: &str = "geometry";
+
+/// The geometry drawing's caption, shared by `report.html` and `report.md`.
+pub(super) const GEOMETRY_CAPTION: &str = "The slope makes the angle α with the horizontal; \
+         gravity has the component G = g sin α along it and C = g cos α into it. Snow of depth b lies ahead of \
+         the log (downhill); behind it the ground is bare. The log of radius r touches the snow surface along \
+         the contact line; the layer it has picked up in the current turn (angle θ) is wrapped on it. After a \
+         full turn (θ = 2π) the layer closes into a ring: the radius becomes r + b and the centre rises by b \
+         (dashed) — the collision of eq. (89).";
+
 /// The opening section of `report.html`.
 pub(super) fn intro_section(h: &mut String) {
     h.push_str("<section id=\"problem\">\n<h2>The problem</h2>\n");
@@ -168,13 +179,9 @@ pub(super) fn intro_section(h: &mut String) {
     );
     h.push_str("<figure id=\"geometry\" class=\"figure\">\n<div class=\"svg-wrap\">");
     h.push_str(&geometry_svg());
-    h.push_str(
-        "</div>\n<figcaption><strong>The geometry.</strong> The slope makes the angle α with the horizontal; \
-         gravity has the component G = g sin α along it and C = g cos α into it. Snow of depth b lies ahead of \
-         the log (downhill); behind it the ground is bare. The log of radius r touches the snow surface along \
-         the contact line; the layer it has picked up in the current turn (angle θ) is wrapped on it. After a \
-         full turn (θ = 2π) the layer closes into a ring: the radius becomes r + b and the centre rises by b \
-         (dashed) — the collision of eq. (89).</figcaption>\n</figure>\n",
+    let _ = writeln!(
+        h,
+        "</div>\n<figcaption><strong>The geometry.</strong> {GEOMETRY_CAPTION}</figcaption>\n</figure>"
     );
     h.push_str(
         "<h3 id=\"models\">The models</h3>\n<p>Each model is one equation of motion; the circular ones share \

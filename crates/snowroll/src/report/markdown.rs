@@ -34,19 +34,31 @@ pub(super) fn render(report: &Report) -> String {
     let _ = writeln!(
         md,
         "A log rolls without slipping down a slope of angle α covered by snow of depth b and picks up the \
-         snow it rolls over. The note: {}. The project's corrections of it: `docs/errata.md`. \
-         `report.html` draws the geometry.\n",
+         snow it rolls over. The note: {}. The project's corrections of it: `docs/errata.md`.\n",
         super::intro::NOTE_CITATION
     );
-    md.push_str("| Model (alias) | Note | Equation of motion | a∞/G |\n|---|---|---|---|\n");
+    let _ = writeln!(
+        md,
+        "![The geometry](figures/{}.svg)\n\n**The geometry.** {}\n",
+        super::intro::GEOMETRY_FIGURE,
+        super::intro::GEOMETRY_CAPTION
+    );
+    md.push_str(
+        "| Model (alias) | Note | Equation of motion | Assumptions | a∞/G |\n|---|---|---|---|---|\n",
+    );
     for kind in crate::models::ModelKind::ALL {
         let _ = writeln!(
             md,
-            "| `{}` (`{}`) | {} | {} | {} |",
+            "| `{}` (`{}`) | {} | {} | {} | {} |",
             kind.id(),
             kind.alias(),
             cell(kind.equation()),
             cell(&super::intro::equation_of_motion(kind)),
+            cell(&format!(
+                "{}; {}",
+                kind.description(),
+                kind.validity().statement
+            )),
             cell(&super::intro::terminal_text(kind)),
         );
     }
