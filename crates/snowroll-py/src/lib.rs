@@ -13,7 +13,7 @@
 //! Bad parameters raise `ValueError` with the library's message
 //! ([`ParamError`]); a failed integration raises `RuntimeError` ([`SimError`]).
 //! Where the message names a CLI flag (`--snow-depth`), the Python keyword
-//! (`snow_depth`) replaces it ([`python_message`]).
+//! (`snow_depth`) replaces it (`python_message`).
 
 mod sweep;
 
