@@ -170,8 +170,14 @@ fn stop_note(
             note.push_str("; a looser --rtol or a shorter --t-end needs fewer steps");
         }
         StopReason::RowLimit => note.push_str(&format!(
-            " ({}); raise --max-rows, or sample with --dt",
-            opts.max_rows
+            " ({}); raise --max-rows, or sample with {}",
+            opts.max_rows,
+            // A grid run can only coarsen its grid; a step-by-step run can take one.
+            if matches!(opts.sampling, Sampling::Every(_)) {
+                "a coarser --dt"
+            } else {
+                "--dt"
+            }
         )),
         _ => {}
     }
