@@ -94,16 +94,6 @@ pub(super) fn mu_min_table(lab: &Lab) -> Result<Table, ReportError> {
     })
 }
 
-/// About `n` indices of `0..len` spread evenly in log(k + 1).
-fn log_spread(len: usize, n: usize) -> Vec<usize> {
-    let mut out: Vec<usize> = (0..n)
-        .map(|i| ((len as f64).powf(i as f64 / (n - 1) as f64) - 1.0).round() as usize)
-        .filter(|&k| k < len)
-        .collect();
-    out.dedup();
-    out
-}
-
 /// The slopes of the per-turn figure, degrees: both sides of α* = arctan 2.
 fn figure_slopes() -> [f64; 6] {
     let star = 2.0_f64.atan().to_degrees();
@@ -130,11 +120,11 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
     for alpha_deg in figure_slopes() {
         let s = on_slope(lab.scenario(), alpha_deg)?;
         let table = run_turns(ModelKind::Turns, &s, &opts)?;
-        let keep = log_spread(table.rows.len(), CURVE_POINTS);
+        let keep = super::log_spread(table.rows.len() as u64, CURVE_POINTS);
         let points: Vec<(f64, f64)> = keep
             .iter()
             .map(|&k| {
-                let r = &table.rows[k];
+                let r = &table.rows[k as usize];
                 (r.turn as f64 + 1.0, r.min_normal_over_mg)
             })
             .collect();
@@ -384,7 +374,7 @@ mod tests {
 
     #[test]
     fn log_spread_keeps_the_ends_in_order() {
-        let k = log_spread(2000, 300);
+        let k = super::super::log_spread(2000, 300);
         assert_eq!(k.first(), Some(&0));
         assert_eq!(k.last(), Some(&1999));
         assert!(k.windows(2).all(|w| w[0] < w[1]));

@@ -90,18 +90,6 @@ const TERMS: [Term; 5] = [
 /// Legend entry of the sum of the shares.
 pub(super) const SUM_NAME: &str = "sum of the shares";
 
-fn log_grid(first: f64, last: f64, n: usize) -> Vec<f64> {
-    let (a, b) = (first.ln(), last.ln());
-    let mut times: Vec<f64> = (0..n)
-        .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
-        .collect();
-    // exp(ln t_end) may round above t_end, past the end of the run: pin it.
-    if let Some(t) = times.last_mut() {
-        *t = last;
-    }
-    times
-}
-
 /// The ledger of eq. (4) with drag, rolling resistance and compaction, as
 /// shares of the released energy against time (§3.3).
 ///
@@ -112,7 +100,7 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
     let kind = ModelKind::TorqueCm;
     let opts = SimOptions {
         t_end: LEDGER_T_END,
-        sampling: Sampling::Times(log_grid(LEDGER_T_FIRST, LEDGER_T_END, LEDGER_POINTS)),
+        sampling: Sampling::Times(super::log_grid(LEDGER_T_FIRST, LEDGER_T_END, LEDGER_POINTS)),
         losses: all_losses(),
         ..SimOptions::default()
     };
@@ -211,18 +199,6 @@ fn drag_only() -> Losses {
     }
 }
 
-/// The closed-form terminal velocity of the snowless body with drag
-/// (`docs/snowball-and-losses.md` §2.2), m/s: `v_t² = M G/(½ ρ_a C_d A)`,
-/// M and A of the body at r0 (A = 2 r0 l for the log, π r0² for the ball).
-pub(super) fn snowless_terminal_velocity(s: &Scenario, losses: &Losses) -> f64 {
-    let r0 = s.initial_radius();
-    let area = match s.shape() {
-        Shape::Cylinder => 2.0 * r0 * s.length(),
-        Shape::Sphere => std::f64::consts::PI * r0 * r0,
-    };
-    (s.initial_mass() * s.g_along() / (losses.drag_factor() * area)).sqrt()
-}
-
 /// Speed against time with and without drag, one figure per shape of
 /// [`SPEED_SHAPES`] (the two panels shown one after the other): the
 /// snowless body and the accreting one of eq. (4), with the closed-form
@@ -268,7 +244,7 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
         Axis::log("speed v", "m/s").column("v_m_s"),
     )
     .with_legend(Legend::UpperLeft);
-    let times = log_grid(SPEED_T_FIRST, SPEED_T_END, SPEED_POINTS);
+    let times = super::log_grid(SPEED_T_FIRST, SPEED_T_END, SPEED_POINTS);
     for kind in [ModelKind::Snowless, ACCRETING] {
         for (losses, what) in [(Losses::default(), "no losses"), (drag_only(), "drag")] {
             let opts = SimOptions {
@@ -290,7 +266,10 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
             );
         }
     }
-    let vt = snowless_terminal_velocity(&s, &drag_only());
+    // §2.2's closed form, v_t² = M G/(½ ρ_a C_d A). Drag alone on a slope
+    // always has one; were it missing, the NaN is refused with the figure's
+    // data (nothing non-finite is written), not drawn.
+    let vt = crate::losses::terminal_velocity(&s, &drag_only()).unwrap_or(f64::NAN);
     chart = chart.with_series(
         Series::new(
             VT_NAME,

@@ -71,3 +71,28 @@ pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};
 pub use files::{figure_csv, ReportError};
 #[cfg(feature = "plot")]
 pub use paper::{build_paper_report, paper_steps, Progress};
+
+/// `n ≥ 2` times from `first` to `last` (both > 0), evenly spaced in log t;
+/// the last is `last` exactly (exp(ln t) may round above it, past the end of
+/// the run).
+fn log_grid(first: f64, last: f64, n: usize) -> Vec<f64> {
+    let (a, b) = (first.ln(), last.ln());
+    let mut times: Vec<f64> = (0..n)
+        .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
+        .collect();
+    if let Some(t) = times.last_mut() {
+        *t = last;
+    }
+    times
+}
+
+/// About `n` indices of `0..len` spread evenly in log(k + 1), in order,
+/// without repeats (the first is 0).
+fn log_spread(len: u64, n: usize) -> Vec<u64> {
+    let mut out: Vec<u64> = (0..n)
+        .map(|i| ((len as f64).powf(i as f64 / (n - 1) as f64) - 1.0).round() as u64)
+        .filter(|&k| k < len)
+        .collect();
+    out.dedup();
+    out
+}

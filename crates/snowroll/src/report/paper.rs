@@ -96,15 +96,7 @@ fn parting_table(lab: &Lab) -> Result<Table, ReportError> {
 }
 
 fn log_times() -> Vec<f64> {
-    let (a, b) = (T_FIRST.ln(), T_END.ln());
-    let mut times: Vec<f64> = (0..N_TIMES)
-        .map(|i| (a + (b - a) * i as f64 / (N_TIMES - 1) as f64).exp())
-        .collect();
-    // exp(ln 100) may round above 100 s, past the end of the run: pin it.
-    if let Some(last) = times.last_mut() {
-        *last = T_END;
-    }
-    times
+    super::log_grid(T_FIRST, T_END, N_TIMES)
 }
 
 fn run(kind: ModelKind, lab: &Lab, opts: &SimOptions) -> Result<Trajectory, ReportError> {

@@ -76,16 +76,6 @@ impl TurnDigest {
     }
 }
 
-/// About `n` turn indices below `len`, spread evenly in log k.
-fn log_spread(len: u64, n: usize) -> Vec<u64> {
-    let mut out: Vec<u64> = (0..n)
-        .map(|i| ((len as f64).powf(i as f64 / (n - 1) as f64) - 1.0).round() as u64)
-        .filter(|&k| k < len)
-        .collect();
-    out.dedup();
-    out
-}
-
 /// The [`TurnSink`] that makes a [`TurnDigest`].
 #[derive(Debug, Clone)]
 pub(crate) struct DigestSink {
@@ -115,7 +105,7 @@ impl DigestSink {
             turns: 0,
             released: 0.0,
             lost: 0.0,
-            keep: log_spread(turns, LEDGER_POINTS),
+            keep: super::log_spread(turns, LEDGER_POINTS),
             next: 0,
             ledger: Vec::new(),
         }

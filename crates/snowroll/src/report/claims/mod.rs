@@ -69,6 +69,8 @@ pub struct Lab {
     turns: u64,
     long_run: OnceLock<Result<TurnDigest, SimError>>,
     long_run_exact: OnceLock<Result<TurnDigest, SimError>>,
+    /// The regime map's grid and rows (read by a claim and a figure).
+    regime_map: OnceLock<Result<regime::MapRows, SimError>>,
     coefficients: Vec<(Derivation, Coefficients)>,
     runner: Option<Box<Runner>>,
 }
@@ -203,6 +205,18 @@ impl Lab {
         })
         .as_ref()
         .map_err(Clone::clone)
+    }
+
+    /// The regime map's grid and one row per point ([`regime::map_rows`]),
+    /// computed on first use and shared by the claim and the figure.
+    ///
+    /// # Errors
+    /// [`SimError`] if the grid cannot be made (kept and returned again).
+    pub(crate) fn regime_map(&self) -> Result<&regime::MapRows, SimError> {
+        self.regime_map
+            .get_or_init(|| regime::map_rows(self))
+            .as_ref()
+            .map_err(Clone::clone)
     }
 
     /// The acceleration of `kind` at the state (radius `r`, speed `v`), m/s²:

@@ -52,9 +52,13 @@ pub(crate) fn map_depths() -> Vec<f64> {
     (2..=8).map(|k| 0.0025 * f64::from(k)).collect()
 }
 
+/// The regime map's grid and its rows, one per grid point in grid order.
+pub(crate) type MapRows = (Grid, Vec<SweepRow>);
+
 /// The grid of the map (the `turns` model, α × b, the lab's other
-/// parameters) and one row per point, run through the lab.
-pub(crate) fn map_rows(lab: &Lab) -> Result<(Grid, Vec<SweepRow>), SimError> {
+/// parameters) and one row per point, run through the lab. Read it through
+/// [`Lab::regime_map`], which runs it once.
+pub(super) fn map_rows(lab: &Lab) -> Result<MapRows, SimError> {
     let base = ScenarioFile::from(*lab.scenario());
     let list = |param, values: Vec<f64>| Axis {
         param,
@@ -114,7 +118,7 @@ fn border(
 
 /// The regime map's borders against the closed forms.
 pub(super) fn map_borders(lab: &Lab) -> Result<Finding, SimError> {
-    let (_, rows) = map_rows(lab)?;
+    let (_, rows) = lab.regime_map()?;
     let alphas = map_alphas();
     let depths = map_depths();
     let r0 = lab.scenario().initial_radius();
@@ -183,10 +187,10 @@ pub(super) fn map_borders(lab: &Lab) -> Result<Finding, SimError> {
 /// # Errors
 /// [`ReportError`] when a run fails or the map cannot be made.
 pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
-    let (grid, rows) = map_rows(lab)?;
+    let (grid, rows) = lab.regime_map()?;
     let map = RegimeMap::from_rows(
-        &grid,
-        &rows,
+        grid,
+        rows,
         Param::AlphaDeg,
         Param::SnowDepth,
         ColorBy::Outcome,
