@@ -535,7 +535,8 @@ impl TurnSystem {
         let r = self.dynamics.radius();
         let r_next = r + self.b;
         let m_next = PI * self.rho_l * r_next * r_next;
-        let k_next = 0.75 * m_next * r_next * r_next * omega_next * omega_next;
+        // The round log of the next turn rolling at r_{k+1} θ̇′, eq. (82).
+        let k_next = kinetic_energy_at_turn_start(self.rho_l, r_next, r_next * omega_next);
         let lift = m_next * self.g_normal * self.b;
         match self.collision {
             CollisionModel::Note => (v_end + lift, k_end - k_next, lift),
