@@ -492,4 +492,29 @@ fn plot_draws_a_regime_map_with_legend_axes_and_the_stall_border() {
     }
     let e = fails(&["sweep", "--model", "energy", "--plot", &svg_s]);
     assert!(e.contains("--output"), "{e}");
+
+    // A third swept setting puts two rows in every cell: refused from the
+    // grid before any row is computed, so no output is left behind.
+    let out3 = dir.path().join("three-axes.csv");
+    let out3_s = out3.to_str().unwrap();
+    let e = fails(&[
+        "sweep",
+        "--model",
+        "energy",
+        "--alpha-deg",
+        "10,20",
+        "--snow-depth",
+        "0.01,0.02",
+        "--r0",
+        "0.1,0.2",
+        "--t-end",
+        "1",
+        "--output",
+        out3_s,
+        "--plot",
+        &svg_s,
+    ]);
+    assert!(e.contains("the grid has 8 points but the"), "{e}");
+    assert!(e.contains("has 4 cells"), "{e}");
+    assert!(!out3.exists(), "a refused --plot left {out3_s}");
 }

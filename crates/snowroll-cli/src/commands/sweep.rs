@@ -144,10 +144,6 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                 .seek(SeekFrom::Start(0))
                 .with_context(|| format!("reading {shown}"))?;
             if let Some((plan, plot)) = plot {
-                partial
-                    .file
-                    .seek(SeekFrom::Start(0))
-                    .with_context(|| format!("reading {shown}"))?;
                 super::sweep_plot::draw(plan, &grid, &partial.file, plot)?;
                 partial
                     .file

@@ -3,7 +3,7 @@
 use std::io::Read;
 use std::path::Path;
 
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{anyhow, Context, Result};
 use snowroll::output::VERSION;
 use snowroll::plot::{ColorBy, Provenance, RegimeMap};
 use snowroll::sweep::{Grid, Param, SweepRow};
@@ -34,15 +34,6 @@ fn plane(args: &SweepArgs, grid: &Grid) -> Result<(Param, Param)> {
         .filter(|a| a.values.len() >= 2)
         .map(|a| a.param)
         .filter(|p| Some(*p) != x && Some(*p) != y);
-    for p in [x, y].into_iter().flatten() {
-        if !grid
-            .axes()
-            .iter()
-            .any(|a| a.param == p && a.values.len() >= 2)
-        {
-            bail!("--plot: {p} is not swept over at least two values: a map needs two such axes");
-        }
-    }
     let x = match x {
         Some(p) => p,
         None => swept.next().ok_or_else(|| {
@@ -69,6 +60,8 @@ pub struct Plan {
 /// Checks the `--plot*` flags against the grid before anything runs.
 pub fn plan(args: &SweepArgs, grid: &Grid) -> Result<Plan> {
     let (x, y) = plane(args, grid)?;
+    // Everything the map needs of the grid, before any row is computed.
+    RegimeMap::check_plane(grid, x, y).context("--plot")?;
     let color = match args.plot_color.as_deref() {
         None => ColorBy::Outcome,
         Some(key) => ColorBy::from_key(key).ok_or_else(|| {

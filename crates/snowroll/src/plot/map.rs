@@ -93,6 +93,22 @@ pub enum MapError {
         /// Index of the second row.
         second: u64,
     },
+    /// The grid has points outside the plane: other swept settings or
+    /// several models would put several rows in each cell.
+    #[error(
+        "the grid has {points} points but the {x} × {y} plane has {cells} cells: sweep only the two \
+         plotted parameters (one model, one value of every other setting)"
+    )]
+    NotAPlane {
+        /// The plotted parameters.
+        x: Param,
+        /// The plotted parameters.
+        y: Param,
+        /// Points of the grid.
+        points: u64,
+        /// Cells of the plane.
+        cells: u64,
+    },
     /// No row.
     #[error("no row to draw")]
     NoRows,
@@ -214,6 +230,40 @@ fn distinct(mut v: Vec<f64>) -> Vec<f64> {
 }
 
 impl RegimeMap {
+    /// Whether a map of `grid` over `x` × `y` can be drawn, decided from the
+    /// grid alone, so that a sweep can refuse `--plot` before it runs: two
+    /// different parameters, each swept over two or more values, and no
+    /// other swept setting or second model (one row per cell).
+    ///
+    /// # Errors
+    /// [`MapError::SameAxis`], [`MapError::NotSwept`], [`MapError::NotAPlane`].
+    pub fn check_plane(grid: &Grid, x: Param, y: Param) -> Result<(), MapError> {
+        if x == y {
+            return Err(MapError::SameAxis(x));
+        }
+        let count = |p: Param| {
+            grid.axes()
+                .iter()
+                .find(|a| a.param == p)
+                .map_or(0, |a| a.values.len())
+        };
+        let (nx, ny) = (count(x), count(y));
+        for (p, n) in [(x, nx), (y, ny)] {
+            if n < 2 {
+                return Err(MapError::NotSwept(p));
+            }
+        }
+        if grid.len() != nx.saturating_mul(ny) {
+            return Err(MapError::NotAPlane {
+                x,
+                y,
+                points: grid.len(),
+                cells: nx.saturating_mul(ny),
+            });
+        }
+        Ok(())
+    }
+
     /// The map of `rows` (from `grid`) over parameters `x` and `y`,
     /// coloured by `color`, with the closed-form borders of
     /// [`boundaries`].
