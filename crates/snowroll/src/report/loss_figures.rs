@@ -4,7 +4,7 @@
 //! trajectories and their energy ledgers.
 
 use super::{Figure, Lab, ReportError};
-use crate::losses::Losses;
+use crate::losses::{Losses, AIR_DENSITY_DEFAULT};
 use crate::models::ModelKind;
 use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
 use crate::scenario::{Scenario, ScenarioFile, Shape};
@@ -280,7 +280,7 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
     );
     let file = ScenarioFile::from(s);
     let caption = format!(
-        "Speed of the {body}{extra} against time from rest on the default slope: without losses (solid and long-dashed) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = 1.2 kg/m³; dashed and dotted), snowless and gathering snow by eq. (4) (torque about the centre). \
+        "Speed of the {body}{extra} against time from rest on the default slope: without losses (solid and long-dashed) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = {AIR_DENSITY_DEFAULT} kg/m³; dashed and dotted), snowless and gathering snow by eq. (4) (torque about the centre). \
          Without snow, drag brings the {body} to the closed-form terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) = ({} m/s)² (squares), where drag balances gravity's pull along the slope (docs/snowball-and-losses.md §2.2). \
          With snow there is no terminal velocity: the mass grows faster than the frontal area ({ratio}), so drag per unit mass fades and the speed keeps growing, more slowly than without drag (v ∝ t^(1/3) once r is past a crossover of a few metres, §2.2). \
          Log-log axes: a constant acceleration is a line of slope 1. The log and the ball are drawn in two figures on the same axes.",
