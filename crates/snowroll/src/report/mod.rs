@@ -75,6 +75,7 @@ pub use paper::{build_paper_report, paper_steps, Progress};
 /// `n ≥ 2` times from `first` to `last` (both > 0), evenly spaced in log t;
 /// the last is `last` exactly (exp(ln t) may round above it, past the end of
 /// the run).
+#[cfg(feature = "plot")]
 fn log_grid(first: f64, last: f64, n: usize) -> Vec<f64> {
     let (a, b) = (first.ln(), last.ln());
     let mut times: Vec<f64> = (0..n)
