@@ -26,9 +26,9 @@ replace_block() {
 # per family: cases, runs, clear errors, time.
 invariants=$(mktemp)
 trap 'rm -f "$invariants"' EXIT
-cargo test --quiet -p snowroll --all-features --test invariants --no-run 2>/dev/null
+cargo test --quiet -p snowroll --all-features --test main --no-run 2>/dev/null
 started=$(date +%s)
-lines=$(cargo test --quiet -p snowroll --all-features --test invariants -- --nocapture --test-threads 1 2>&1 |
+lines=$(cargo test --quiet -p snowroll --all-features --test main -- invariants:: --nocapture --test-threads 1 2>&1 |
     grep -oE '(circular|closed form|turns): .*s$')
 took=$(($(date +%s) - started))
 {
@@ -61,7 +61,7 @@ if [[ "$(grep '^cases ' "$summary" | cut -d' ' -f2)" != "$cases" ]]; then
     echo "$summary is not of a campaign of $cases cases" >&2
     exit 1
 fi
-crash=$(cargo test --quiet -p snowroll-cli --test crash_safety -- --nocapture 2>&1 |
+crash=$(cargo test --quiet -p snowroll-cli --test main -- crash_safety:: --nocapture 2>&1 |
     grep '^crash safety:' | sed 's/^crash safety: //')
 
 # `key value...` lines of the summary.

@@ -12,7 +12,8 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use snowroll::sweep::Method;
-use snowroll::{CollisionModel, Format, ModelKind, OnHop, ScenarioFile, Shape, SimOptions};
+use snowroll::{CollisionModel, ModelKind, OnHop, ScenarioFile, Shape, SimOptions};
+use snowroll_io::Format;
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.

@@ -20,7 +20,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{anyhow, bail, Context, Result};
 use serde::{Deserialize, Deserializer};
 use serde_json::{Map, Value};
-use snowroll::{CollisionModel, Format, ModelKind, OnHop, Shape};
+use snowroll::{CollisionModel, ModelKind, OnHop, Shape};
+use snowroll_io::Format;
 
 use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 

@@ -6,7 +6,7 @@ use std::fs;
 use assert_cmd::cargo::cargo_bin_cmd;
 use predicates::prelude::*;
 use serde_json::Value;
-use snowroll::report::CLAIMS;
+use snowroll_report::CLAIMS;
 
 #[test]
 fn paper_writes_the_report_with_every_claim_as_expected() {
@@ -52,7 +52,7 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
     let md = fs::read_to_string(out.join("report.md")).unwrap();
     assert!(md.contains("eq. (79)"));
     // The report says what "as expected" means, and where the turn models part ways.
-    assert!(md.contains(snowroll::report::EXPECTATION_NOTE));
+    assert!(md.contains(snowroll_report::EXPECTATION_NOTE));
     assert!(md.contains("## Where the models part ways"));
     let figures: Vec<String> = fs::read_dir(out.join("figures"))
         .unwrap()

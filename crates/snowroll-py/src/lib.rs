@@ -25,8 +25,9 @@ use snowroll::integrate::Tolerances;
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::{
     run_turns, validity_warnings, CollisionModel, LedgerRow, Losses, ModelKind, OnHop, ParamError,
-    RunParams, Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
+    Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
 };
+use snowroll_io::RunParams;
 
 /// A library message in Python's words: each CLI flag `--kebab-name` (two
 /// dashes, then a lowercase letter, then letters, digits and dashes) becomes
@@ -306,7 +307,7 @@ fn common<'py>(
     s: &Stop,
 ) -> PyResult<Bound<'py, PyDict>> {
     let out = PyDict::new(py);
-    out.set_item("version", snowroll::output::VERSION)?;
+    out.set_item("version", snowroll_io::VERSION)?;
     out.set_item("model", model.id())?;
     out.set_item("equation", model.equation())?;
     out.set_item("params", record(py, params)?)?;
@@ -627,7 +628,7 @@ fn models<'py>(
 /// The native module `snowroll._snowroll`.
 #[pymodule]
 fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add("__version__", snowroll::output::VERSION)?;
+    m.add("__version__", snowroll_io::VERSION)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(turns, m)?)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;

@@ -208,6 +208,6 @@ pub(crate) fn sweep<'py>(
     out.set_item("columns", c)?;
     out.set_item("len", grid.len())?;
     out.set_item("shard", (i, n))?;
-    out.set_item("version", snowroll::output::VERSION)?;
+    out.set_item("version", snowroll_io::VERSION)?;
     Ok(out)
 }

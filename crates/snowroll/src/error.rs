@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use thiserror::Error;
 
-use crate::output::format_number as number;
+use crate::number::format_number as number;
 
 /// A parameter outside its physical or numerical range.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -171,36 +171,4 @@ impl PartialEq for SinkError {
     fn eq(&self, other: &Self) -> bool {
         Arc::ptr_eq(&self.0, &other.0)
     }
-}
-
-impl From<OutputError> for SinkError {
-    fn from(e: OutputError) -> Self {
-        Self::new(e)
-    }
-}
-
-/// Writing results failed.
-#[derive(Debug, Error)]
-#[non_exhaustive]
-pub enum OutputError {
-    /// The underlying writer failed.
-    #[error("writing the output failed")]
-    Io(#[from] std::io::Error),
-    /// CSV serialisation failed.
-    #[error("writing CSV failed")]
-    Csv(#[from] csv::Error),
-    /// JSON serialisation failed.
-    #[error("writing JSON failed")]
-    Json(#[from] serde_json::Error),
-    /// A number about to be written is NaN or infinite; nothing of the
-    /// record was written.
-    #[error(transparent)]
-    NonFinite(#[from] crate::output::NonFinite),
-    /// A run that records the energy ledger sent row `row` without its
-    /// ledger (a bug of the model, caught before anything is written).
-    #[error("row {row} of a run that records the energy ledger came without its ledger")]
-    MissingLedger {
-        /// The row, from 1.
-        row: u64,
-    },
 }

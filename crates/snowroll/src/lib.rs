@@ -24,19 +24,20 @@
 //!   ([`ModelKind::validity`]); [`validity_warnings`] says when a scenario
 //!   leaves it (e.g. `turns` on thick snow, where `turns-exact` stalls in
 //!   its first turn while `turns` rolls on).
-//! * [`report::CLAIMS`] is the table of the note's claims with the computation
-//!   that judges each; `snowroll paper` renders it with plots. The checks type
+//! * `snowroll_report::CLAIMS` (crate `snowroll-report`) is the table of the
+//!   note's claims with the computation that judges each; `snowroll paper`
+//!   renders it with plots. The checks type
 //!   the note's equations themselves and observe the models only through
-//!   their runs, so a wrong model changes a verdict (`tests/claims.rs`).
+//!   their runs, so a wrong model changes a verdict (the report crate's tests).
 //!   The errata are `docs/errata.md`, the turn model's conventions
 //!   `docs/turn-model.md`.
 //!
 //! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
 //! one integrator ([`integrate`]): DOP853 with dense output and events.
 //! [`Model::simulate_into`] sends each sample to a [`SampleSink`] as it is
-//! computed ([`TrajectoryWriter`] writes CSV or JSON that way), and
+//! computed (`snowroll_io::TrajectoryWriter` writes CSV or JSON that way), and
 //! [`TurnModel::run_table_into`] each turn's row to a [`TurnSink`]
-//! ([`TurnTableWriter`]), so memory does not grow with the length of a run;
+//! (`snowroll_io::TurnTableWriter`), so memory does not grow with the length of a run;
 //! [`Model::simulate`] and [`run_turns`] gather the same values in memory.
 //! A run stops early, keeping what it computed, at its step budget
 //! ([`StopReason::StepLimit`]) or its row limit ([`StopReason::RowLimit`]).
@@ -111,7 +112,7 @@
 //! | fn. 10, contact forces and the hop (§1–§4 of `docs/contact-forces.md`) | [`circular_forces`], [`TurnDynamics::contact_per_mass`], [`TurnDynamics::turn_extremes`], [`StopReason::Hop`], [`OnHop`] |
 //! | slip, the smallest μ (`docs/contact-forces.md` §5) | [`SimOptions::mu`], [`StopReason::Slip`], [`TurnRow::max_friction_ratio`] |
 //! | the step of each new layer (`docs/contact-forces.md` §6) | [`CollisionModel`], [`charged_collision_speed`], [`PivotImpact`], [`StopReason::Stuck`] |
-//! | every claim of the note, with its verdict | [`report::CLAIMS`] |
+//! | every claim of the note, with its verdict | `snowroll_report::CLAIMS` |
 #![deny(
     clippy::unwrap_used,
     clippy::expect_used,
@@ -124,18 +125,15 @@ pub mod integrate;
 pub mod losses;
 pub mod model_kind;
 pub mod models;
-pub mod output;
+pub mod number;
 pub mod physics;
-#[cfg(feature = "plot")]
-pub mod plot;
 mod quadrature;
-pub mod report;
 pub mod scenario;
 pub mod sweep;
 pub mod trajectory;
 pub mod units;
 
-pub use error::{OutputError, ParamError, SimError, SinkError};
+pub use error::{ParamError, SimError, SinkError};
 pub use losses::Losses;
 pub use models::{
     as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
@@ -147,10 +145,7 @@ pub use models::{
     TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable,
     TurnVariant, Validity, ValidityWarning,
 };
-pub use output::{
-    check_finite, format_number, write_trajectory, write_turn_table, Format, NonFinite, RunParams,
-    TrajectoryWriter, TurnTableWriter,
-};
+pub use number::format_number;
 pub use scenario::{Scenario, ScenarioFile, Shape};
 pub use trajectory::{
     Collected, LedgerRow, OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop,

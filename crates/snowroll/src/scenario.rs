@@ -203,7 +203,7 @@ fn check(
 /// numbers at most 1e150 have a product at most 1e300, below the largest
 /// `f64` (1.8e308), so a scenario inside this window cannot overflow in its
 /// first steps; what a long run still pushes out of range is refused by the
-/// writers ([`crate::check_finite`]).
+/// writers (`snowroll_io::check_finite`).
 pub const MAX_MAGNITUDE: f64 = 1e150;
 
 /// The smallest non-zero magnitude of any parameter or derived quantity (SI

@@ -7,8 +7,8 @@ use std::io;
 
 use snowroll::integrate::Tolerances;
 use snowroll::{
-    Collected, ModelKind, OutputError, ParamError, Sample, SampleSink, Sampling, Scenario,
-    SimError, SimOptions, SinkError, StopReason, TurnState,
+    Collected, ModelKind, ParamError, Sample, SampleSink, Sampling, Scenario, SimError, SimOptions,
+    SinkError, StopReason, TurnState,
 };
 
 /// Every model, with options that give it a few hundred samples.
@@ -222,7 +222,10 @@ struct Failing {
 impl SampleSink for Failing {
     fn sample(&mut self, _: &Sample, _: Option<&TurnState>) -> Result<(), SinkError> {
         if self.seen == self.ok {
-            return Err(OutputError::Io(io::Error::from(io::ErrorKind::BrokenPipe)).into());
+            return Err(SinkError::new(io::Error::new(
+                io::ErrorKind::BrokenPipe,
+                "writing the output failed",
+            )));
         }
         self.seen += 1;
         Ok(())

@@ -110,7 +110,7 @@ fn count(n: f64) -> String {
 /// than the output's.
 pub fn is_non_finite(e: &snowroll::SinkError) -> bool {
     matches!(
-        e.inner().downcast_ref::<snowroll::OutputError>(),
-        Some(snowroll::OutputError::NonFinite(_))
+        e.inner().downcast_ref::<snowroll_io::OutputError>(),
+        Some(snowroll_io::OutputError::NonFinite(_))
     )
 }

@@ -90,7 +90,7 @@ fn listing() -> Listing {
         })
         .collect();
     Listing {
-        snowroll_version: snowroll::output::VERSION,
+        snowroll_version: snowroll_io::VERSION,
         snow_depth: b,
         r0,
         models,

@@ -8,8 +8,8 @@ use std::io::Write;
 
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
-use snowroll::report::{build_paper_report, paper_steps, Lab, ReportError, Tally};
 use snowroll::Scenario;
+use snowroll_report::{build_paper_report, paper_steps, Lab, ReportError, Tally};
 
 use crate::args::PaperArgs;
 use crate::console;

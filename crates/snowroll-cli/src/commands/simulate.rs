@@ -2,9 +2,10 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, tolerance_warning, validity_warnings, ModelKind, RunParams,
-    Sampling, Scenario, SimError, SimOptions, Stop, StopReason, TrajectoryWriter, TurnState,
+    default_atol, format_number, tolerance_warning, validity_warnings, ModelKind, Sampling,
+    Scenario, SimError, SimOptions, Stop, StopReason, TurnState,
 };
+use snowroll_io::{RunParams, TrajectoryWriter};
 
 use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::SimulateArgs;

@@ -19,8 +19,8 @@ use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rustix::fs::{flock, FlockOperation};
-use snowroll::output::VERSION;
 use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
+use snowroll_io::VERSION;
 
 use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid, with_config};

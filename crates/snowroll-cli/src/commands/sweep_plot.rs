@@ -4,9 +4,9 @@ use std::io::Read;
 use std::path::Path;
 
 use anyhow::{anyhow, Context, Result};
-use snowroll::output::VERSION;
-use snowroll::plot::{ColorBy, Provenance, RegimeMap};
 use snowroll::sweep::{Grid, Param, SweepRow};
+use snowroll_io::VERSION;
+use snowroll_report::plot::{ColorBy, Provenance, RegimeMap};
 
 use crate::args::{OutputArgs, SweepArgs};
 use crate::sink::Sink;

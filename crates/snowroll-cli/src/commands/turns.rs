@@ -6,9 +6,10 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, RunParams,
-    Sampling, SimError, StopReason, TurnRunEnd, TurnSummary, TurnTableWriter,
+    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, Sampling,
+    SimError, StopReason, TurnRunEnd, TurnSummary,
 };
+use snowroll_io::{RunParams, TurnTableWriter};
 
 use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::{TurnsArgs, TURNS_DEFAULT, TURNS_T_END_S};

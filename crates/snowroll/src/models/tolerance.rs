@@ -86,7 +86,7 @@ pub fn check_tolerances(
             allowed: format!(
                 "atol <= {} for this scenario, {ATOL_MAX_FRACTION:e} of the scale of the state \
                  (min(r0, sqrt(g r0)) for x, v; min(1, sqrt(g/r0)) for the turn models' theta, omega)",
-                crate::output::format_number(bound)
+                crate::number::format_number(bound)
             ),
             hint: "lower --atol",
         }),

@@ -175,14 +175,14 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
         Some(max) if kind == ModelKind::Snowless && b > max => warn(format!(
             "{} ignores the snow (snow_depth = {} m): it is the b = 0 limit of the other models",
             kind.id(),
-            crate::output::format_number(b)
+            crate::number::format_number(b)
         )),
         Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(format!(
             "{} is used beyond its range: b/r0 = {} > {max}, so the terms it neglects are not small. \
              Its range: {}. {}",
             kind.id(),
             // Four significant digits, in the form of every other number.
-            crate::output::format_number(format!("{ratio:.3e}").parse().unwrap_or(ratio)),
+            crate::number::format_number(format!("{ratio:.3e}").parse().unwrap_or(ratio)),
             validity.statement,
             match scenario.shape() {
                 Shape::Cylinder => format!("Compare {}.", ModelKind::TurnsExact.id()),

@@ -1,0 +1,441 @@
+//! The table of claims, [`CLAIMS`]: each row's tolerances are the constants
+//! its check compares with, and each expected verdict that names an erratum
+//! uses the same constant as the check.
+
+use super::app_a::{
+    app_a_moving_points, snowless_limit, APP_A_APART, APP_A_INTEGRALS, ERRATUM_APP_A,
+    SNOWLESS_LIMIT,
+};
+use super::circular::{
+    circular_agree_as_b_vanishes, circular_differ, eq5_contact_torque, lagrangian_vs_energy,
+    loney_closed_form, loney_coefficient, loney_limit, stall_threshold, DIFFER, EQ5_PRINTED_APART,
+    EQ5_TORQUE, ERRATUM_5, ERRATUM_FN4, LAGRANGE_APART, LAGRANGE_CORRECTED, LAGRANGE_DIFFERENCE,
+    LONEY_DERIVATIVE, LONEY_LIMIT, LONEY_PRINTED_APART, LONEY_SPEED, SPREAD_LINEAR, SPREAD_SMALL,
+    STALL_BISECTION, STALL_MARGIN,
+};
+use super::contact::{hop_threshold, HOP_LATE_MIN, HOP_MARGIN};
+use super::first_turn::{
+    eq47_48_angular_momentum, eq51_55_accreting_body, eq54_erratum, eq70_mass,
+    first_turn_equivalence, ACCRETING_B3, ACCRETING_ORDER, EQ47_48_APART, EQ47_48_MATCH,
+    EQ48_ORDER, EQ54_ORDER, ERRATUM_47_48, ERRATUM_54, ERRATUM_58_69, ERRATUM_70, FIRST_TURN_AGREE,
+    FIRST_TURN_APART, MASS_EXACT, MASS_FIRST_ORDER, MASS_PRINTED_APART,
+};
+use super::losses::{drag_terminal_velocity, ledger_balances, DRAG_TERMINAL, LEDGER_BALANCE};
+use super::multi_turn::{
+    collision_loss, collision_potential_jump, eq73_truncates_exact, eq78_speed, eq88_balance,
+    mean_four_ninths, never_settles, COLLISION_L, COLLISION_T, EQ88_APART, EQ88_EXACT, ERRATUM_87,
+    JUMP_ORDER, LONG_RUN, NOTE_APART, SWING, TRUNCATION_ORDER,
+};
+use super::regime::{map_borders, MAP_CELL};
+use super::slip::{slip_mu_min, MU_AT_END, MU_AT_REST};
+use super::snowball::{
+    ball_terminal_fractions, five_sevenths, tpt_letter, BALL_TERMINAL_LIMIT, FIVE_SEVENTHS,
+    TPT_CLOSED_FORM, TPT_OTHERS_APART,
+};
+use super::stall::{
+    stall_in_first_turn, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_MARGIN,
+    TURN_STALL_ORDER, TURN_START, TURN_START_EXACT,
+};
+use super::terminal::{
+    eq33_35_argument, eq35_third, eq36_slows, terminal_values, APPROACH_POWER, EQ33_DERIVATIVE,
+    EQ33_PRINTED_APART, EQ34_LATE, EQ35_LIMIT, EQ35_POSITION, ERRATUM_33_35, TERMINAL_LIMIT,
+    TERMINAL_PRINTED,
+};
+use super::ClaimCheck;
+use crate::{Claim, Verdict};
+
+/// The table of claims: each row is judged by its check.
+pub static CLAIMS: &[ClaimCheck] = &[
+    ClaimCheck {
+        claim: Claim {
+            id: "circular-analyses-differ",
+            paper_ref: "§2.1–2.3, eqs. (4), (6), (14), (21)",
+            statement: "The four analyses of the always-circular log give four different equations of motion.",
+            method: "integrate each from rest (default scenario) and compare a/(g sin α) at t = 10 s",
+            tolerances: &[DIFFER],
+            expected: Verdict::Holds,
+        },
+        check: circular_differ,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "circular-agree-as-b-vanishes",
+            paper_ref: "§2.1.3, §2.3, App. A",
+            statement: "All four agree with the snowless (2/3) g sin α as b → 0.",
+            method: "largest |a/G − 2/3| over 5 s for b = 1e-6, 1e-8, 1e-10 m; must fall like b",
+            tolerances: &[SPREAD_LINEAR, SPREAD_SMALL],
+            expected: Verdict::Holds,
+        },
+        check: circular_agree_as_b_vanishes,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "lagrangian-differs-from-energy",
+            paper_ref: "§2.3, eqs. (19)–(21)",
+            statement: "The Lagrangian equation of motion (21) differs slightly from the energy equation (14).",
+            method: "on a grid of states (r, v): the models' accelerations (first sample of a run started there) against (21) with ∂T/∂x restored and against the derived difference −(bv²/2πr²)/(1 + b²/6π²r²)",
+            tolerances: &[LAGRANGE_CORRECTED, LAGRANGE_DIFFERENCE, LAGRANGE_APART],
+            expected: Verdict::Refuted,
+        },
+        check: lagrangian_vs_energy,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq5-contact-torque",
+            paper_ref: "§2.1.2, eq. (5)",
+            statement: "The torque about the contact line equals d(3mr²/2)/dt, which gives eq. (6).",
+            method: "along the integrated eq. (6): d(3mrv/2)/dt and d(3mr²/2)/dt by central differences of the samples, against r m g sin α",
+            tolerances: &[EQ5_TORQUE, EQ5_PRINTED_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_5),
+        },
+        check: eq5_contact_torque,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "loney-solves-eq4",
+            paper_ref: "fn. 4",
+            statement: "Loney's closed form v² = 2G s/(5b) + K/s^(7/3) solves eq. (4).",
+            method: "integrate eq. (4) to x = 10 km for three scenarios and compare v(x) with fn. 4's u(x), typed here",
+            tolerances: &[LONEY_SPEED],
+            expected: Verdict::Holds,
+        },
+        check: loney_closed_form,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "loney-acceleration-coefficient",
+            paper_ref: "fn. 4",
+            statement: "The acceleration is a = (g/5) sin α − 7bK/[3 (π r0² + b x)^(10/3)].",
+            method: "compare with ½ du/dx of fn. 4's u(x) (central difference)",
+            tolerances: &[LONEY_DERIVATIVE, LONEY_PRINTED_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_FN4),
+        },
+        check: loney_coefficient,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "loney-limit-fifth",
+            paper_ref: "fn. 4",
+            statement: "Under eq. (4) the acceleration tends to (g/5) sin α.",
+            method: "fn. 4's u(x) differentiated and eq. (4) integrated, at x = 10⁷ r0",
+            tolerances: &[LONEY_LIMIT],
+            expected: Verdict::Holds,
+        },
+        check: loney_limit,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "terminal-accelerations",
+            paper_ref: "§2.4, eqs. (4), (6), (14), (15), (21), (32), (36)",
+            statement: "Each circular equation of motion has a terminal acceleration (the note gives G/5 for (4) and G/3 for (32)).",
+            method: "integrate each to x = 10⁷ r0; compare a/G with the limit (2/3)/(1 + 2c) derived here from the drag coefficient c of the printed equation (plus its derived 1/r term where there is lift), and with the note's G/5, G/3; the measured power of r in |a − a∞| against the derived one",
+            tolerances: &[TERMINAL_LIMIT, TERMINAL_PRINTED, APPROACH_POWER],
+            expected: Verdict::Holds,
+        },
+        check: terminal_values,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq35-terminal-third",
+            paper_ref: "eq. (35)",
+            statement: "Under eq. (32) the acceleration tends to g sin α / 3.",
+            method: "integrate eq. (32) to x = 1000 km",
+            tolerances: &[EQ35_LIMIT],
+            expected: Verdict::Holds,
+        },
+        check: eq35_third,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq33-35-terminal-argument",
+            paper_ref: "§2.4, eqs. (33)–(35)",
+            statement: "Differentiating (32) gives v̈ ≈ (b/2πr²)(bv²/(2πr³) − v̇), so a∞ ≈ bv²/(2πr³); late on x ≈ a_cm t²/2 and, from (31), πr² ≈ bx.",
+            method: "along the integrated eq. (32): v̈ by central differences of a against (33); at x = 1000 km, a against (34), x against a t²/2, πr² against bx",
+            tolerances: &[EQ33_DERIVATIVE, EQ34_LATE, EQ35_POSITION, EQ33_PRINTED_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_33_35),
+        },
+        check: eq33_35_argument,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq36-slows-approach",
+            paper_ref: "§2.4, term (36)",
+            statement: "A lift term −g b cos α/(π r) does not change the terminal value but slows the approach to it.",
+            method: "log-slope of |a − G/3| against r for (32) and for (32)+(36), against the derived powers",
+            tolerances: &[APPROACH_POWER],
+            expected: Verdict::Holds,
+        },
+        check: eq36_slows,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "fn7-stall-threshold",
+            paper_ref: "fn. 7, eqs. (14), (15)",
+            statement: "A log too light for the snow does not start: it must lift the snow it collects.",
+            method: "closed-form critical slope from a(0) = 0 in the printed eqs. (14), (15), against bisection on the simulated models; runs just below (must not start) and just above (must keep rolling)",
+            tolerances: &[STALL_BISECTION, STALL_MARGIN],
+            expected: Verdict::Holds,
+        },
+        check: stall_threshold,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "fn7-stall-in-first-turn",
+            paper_ref: "fn. 7, §3, eqs. (62), (73)",
+            statement: "In the setting of §3 a log that is too light for the snow starts (a(0) = 2G/3) but stalls inside its first turn.",
+            method: "bisection in α on the simulated turns and turns-exact (stall inside turn 0 or not), against the closed form max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)) typed from (62), the library's threshold (shown by `snowroll models`), and the leading-order forms in ε = b/(πr0); runs just below (must start, then stall in turn 0) and just above (must roll on)",
+            tolerances: &[
+                TURN_START,
+                TURN_START_EXACT,
+                TURN_STALL_FORMULA,
+                TURN_STALL_LIBRARY,
+                TURN_STALL_ORDER,
+                TURN_STALL_MARGIN,
+            ],
+            expected: Verdict::Holds,
+        },
+        check: stall_in_first_turn,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowless-limit",
+            paper_ref: "App. A, eqs. (95)–(130)",
+            statement: "Without snow a rolling cylinder accelerates at (2/3) g sin α, whichever way it is derived; every model tends to it as b → 0.",
+            method: "every model with snow at b = 1e-5 and 1e-6 m: a and x at t = 2 s extrapolated linearly to b = 0, against 2G/3 and G t²/3",
+            tolerances: &[SNOWLESS_LIMIT],
+            expected: Verdict::Holds,
+        },
+        check: snowless_limit,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "app-a-moving-points",
+            paper_ref: "App. A.3.2, A.4.1, A.5.2, eqs. (111), (115), (127), (128)",
+            statement: "About the moving contact line L′_P = I_cm ω = mr²v/2 (111); F_y − mg = 0 (115); about the point P of A.5.2, τ′_P = τ_P + rma and L′_P = L_cm.",
+            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; F_y from Newton's law with the simulated snowless motion",
+            tolerances: &[APP_A_INTEGRALS, APP_A_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_APP_A),
+        },
+        check: app_a_moving_points,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "first-turn-58-64-69",
+            paper_ref: "§3.1–3.3, eqs. (58), (63), (64), (68), (69)",
+            statement: "Torque (58), energy (64) and Lagrangian (69) analyses of the first turn give the same equation of motion.",
+            method: "evaluate each for θ over a turn and three speeds, (64) and (69) from V of eq. (62) differentiated numerically",
+            tolerances: &[FIRST_TURN_AGREE, FIRST_TURN_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_58_69),
+        },
+        check: first_turn_equivalence,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq47-48-angular-momentum",
+            paper_ref: "§3, eqs. (47), (48)",
+            statement: "An element moves with ẋ′ = ẋ − r′θ̇′ cos θ, and L_cm = −ρlθ̇ ∫{r0r′(1 − cos θ′) + …} ≈ −(m0r0²/2 + m0br0θ/π)θ̇.",
+            method: "ẋ′ by central differences of the element's position; the integrand of (48) against ∫ dm (x′ − x_cm) × v′ of the disk and layer; the final line against the exact L_cm for two depths",
+            tolerances: &[EQ47_48_MATCH, EQ48_ORDER, EQ47_48_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_47_48),
+        },
+        check: eq47_48_angular_momentum,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq54-cross-product",
+            paper_ref: "eq. (54)",
+            statement: "(x_cm − x_C) × m a_cm = −m0[r0² θ̈ + (b r/π)(θθ̈ − 2θ̇ sin θ − θ̇² cos θ)] to O(b).",
+            method: "compare with the cross product of (43) and (45) evaluated exactly, at two b: the residual must be O(b²)",
+            tolerances: &[EQ54_ORDER],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_54),
+        },
+        check: eq54_erratum,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq51-55-accreting-body",
+            paper_ref: "§3.1, eqs. (51)–(55)",
+            statement: "The torque analysis about the contact line, eqs. (51)–(55), gives the first-turn equation of motion to first order in b.",
+            method: "the rigorous angular-momentum balance of the accreting body and the energy equation, both from element integrals of the disk and layer, against each other (their derived O(b³) difference) and against (55) for two depths",
+            tolerances: &[ACCRETING_B3, ACCRETING_ORDER],
+            expected: Verdict::Holds,
+        },
+        check: eq51_55_accreting_body,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq70-mass-after-first-turn",
+            paper_ref: "eq. (70)",
+            statement: "After the first turn the log has mass m1 = 2πρ l r1².",
+            method: "the disk plus the layer integrated element by element, against the printed and corrected (70) and the masses turns-exact and turns report at θ = 2π",
+            tolerances: &[MASS_EXACT, MASS_FIRST_ORDER, MASS_PRINTED_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_70),
+        },
+        check: eq70_mass,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "multi-turn-never-settles",
+            paper_ref: "§3.4, eqs. (77)–(79)",
+            statement: "The acceleration of the log turn by turn never settles: it oscillates within every turn.",
+            method: "simulate both turn models for many turns (10⁵ in the report); the range of a/G within the turns of the last decade against the derived [0, 2/3]",
+            tolerances: &[SWING],
+            expected: Verdict::Holds,
+        },
+        check: never_settles,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "multi-turn-mean-four-ninths",
+            paper_ref: "eq. (79)",
+            statement: "On average the multi-turn log accelerates at 4 g sin α / 9.",
+            method: "mean of a over the turns of the last decade of a long run, within turns and including the collisions, for both turn models, against 4/9 and against the long-run means derived from eqs. (76), (89)",
+            tolerances: &[LONG_RUN, NOTE_APART],
+            expected: Verdict::Refuted,
+        },
+        check: mean_four_ninths,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq78-speed-in-turn-n",
+            paper_ref: "eq. (78)",
+            statement: "In the n-th turn v² ≈ π g n² b sin α / 3.",
+            method: "v²/(π g n² b sin α) at the start of the last turn of a long run of both turn models, against 1/3 (and 2/3) and against the derived limit",
+            tolerances: &[LONG_RUN, NOTE_APART],
+            expected: Verdict::Refuted,
+        },
+        check: eq78_speed,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq89-collision",
+            paper_ref: "eq. (89)",
+            statement: "In the collision at the end of a turn the angular momentum about the contact line is conserved.",
+            method: "for the first 200 and the last collision of both long runs: L_C = I_C ω with I_C of the disk and layer integrated element by element, before and after, from the runs' speeds",
+            tolerances: &[COLLISION_L, COLLISION_T],
+            expected: Verdict::Holds,
+        },
+        check: collision_loss,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "collision-potential-jump",
+            paper_ref: "§3.4, eqs. (70), (89)",
+            statement: "At the collision the centre of the log rises by b; neglecting the potential energy this takes costs only a relative O(b/r) per turn.",
+            method: "the rise m g b cos α from the element integrals, against the energy each turn releases, on the long run of turns; its ratio times rₖ/b against the derived C/(2πG)",
+            tolerances: &[JUMP_ORDER],
+            expected: Verdict::Holds,
+        },
+        check: collision_potential_jump,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq88-energy-balance",
+            paper_ref: "eqs. (80)–(88)",
+            statement: "Energy conservation within a turn, T_beg = T_end + V_end with V_end of (87), gives v at the end of the turn.",
+            method: "v_end from (88) against the integrated turns, exact geometry and eq. (73); (87) corrected and printed; the turn index of (80)–(88) and of (73)",
+            tolerances: &[EQ88_EXACT, EQ88_APART],
+            expected: Verdict::HoldsAfterCorrection(ERRATUM_87),
+        },
+        check: eq88_balance,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "eq73-truncates-exact",
+            paper_ref: "§3.4, eqs. (73), (76), (88)",
+            statement: "The turn equation (73) holds to first order in b/r: with exact mass properties the motion differs only at second order.",
+            method: "v at the end of turn 0 from rest of turns and turns-exact for b/r0 = 0.02 and 0.01",
+            tolerances: &[TRUNCATION_ORDER],
+            expected: Verdict::Holds,
+        },
+        check: eq73_truncates_exact,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "fn10-hop-threshold",
+            paper_ref: "fn. 10",
+            statement: "The note leaves open whether the turn-by-turn log hops (fn. 10). Answer: in late turns the smallest normal force of a turn tends to M g (cos α − ½ sin α), so the log hops iff tan α > 2 (α* = 63.435°).",
+            method: "turns and turns-exact from rest for 2000 turns at α* ± 1° with the hop event on: above, it must hop; below, it must complete every turn, and the smallest N/(M g) of its last turn (2000 samples) must match cos α − ½ sin α",
+            tolerances: &[HOP_MARGIN, HOP_LATE_MIN],
+            expected: Verdict::Holds,
+        },
+        check: hop_threshold,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "slip-mu-min",
+            paper_ref: "issue 10 (App. A, §2.4, fn. 4)",
+            statement: "The smallest coefficient of static friction that keeps a model rolling over the default run is tan α/3 for the snowless cylinder, tan α/(3 + b tan α/(π r0)) for eq. (32) and (G − a₀)/(C + b a₀/(2π r0)) for the lift models (needed at rest), and for eqs. (4), (6) the closed-form F/N at the end of the run (it grows towards (2/5) tan α and (1/2) tan α).",
+            method: "max over every step of the default run (from rest, 100 s) of |F|/N, F and N from the momentum balance; against the closed forms of `docs/contact-forces.md` §5.1–§5.2 (u = v² from fn. 4's solution at the run's final radius)",
+            tolerances: &[MU_AT_REST, MU_AT_END],
+            expected: Verdict::Holds,
+        },
+        check: slip_mu_min,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowball-five-sevenths",
+            paper_ref: "issue 11; App. A for a ball",
+            statement: "A uniform ball (I = (2/5) M r²) rolling without slipping on a bare slope accelerates at (5/7) g sin α.",
+            method: "the snowless model with shape = sphere on the default slope: a/G at every sample and x(10 s) against 5Gt²/14",
+            tolerances: &[FIVE_SEVENTHS],
+            expected: Verdict::Holds,
+        },
+        check: five_sevenths,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowball-terminal-fractions",
+            paper_ref: "issue 11; §2 for a ball (docs/snowball-and-losses.md §1.3)",
+            statement: "The always-round snowball (swath 2r) tends to a/(g sin α) = 1/6 (torque about the centre, eq. (4)'s balance), 1/7 (contact line, eq. (6)), 2/7 (energy, eqs. (14), (15), (32), (32)+(36)), 5/28 (eq. (21) as printed).",
+            method: "each circular model with shape = sphere from rest to x = 5e5 m; a/G against the derived fraction plus the derived 1/r approach of the models with the lift term",
+            tolerances: &[BALL_TERMINAL_LIMIT],
+            expected: Verdict::Holds,
+        },
+        check: ball_terminal_fractions,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "tpt-letter-closed-form",
+            paper_ref: "The Physics Teacher 57, p. 436 (2019), on S. Rubin, TPT 57 (2019); §2.1.1 (eq. (4)) for a ball",
+            statement: "A snowball rolling down a snowy incline has a closed-form motion whose acceleration starts at (5/7) g sin α and tends to (1/6) g sin α (the letter's C − 60V² = 14 r A, V = dr/dt, dr/dφ = k/2π).",
+            method: "the ball's torque-cm (swath 2r, so b = k) from rest for 100 s against v² = (G s/(3b))(1 − (s0/s)^{30/7}) and a = (G/6)(1 + (23/7)(s0/s)^{30/7}), s = π r² (docs/snowball-and-losses.md §1.4); the ball's other derivations at 100 s against the same v²",
+            tolerances: &[TPT_CLOSED_FORM, TPT_OTHERS_APART],
+            expected: Verdict::Holds,
+        },
+        check: tpt_letter,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "regime-map-borders",
+            paper_ref: "fn. 7, fn. 10",
+            statement: "Over slope × snow depth the turn-by-turn log started from rest stalls in its first turn below the fn. 7 slope, hops within K turns above tan α_K = (1 + ε c_C)/(½ − ε c_G) (ε = b/r_(K−1)) and rolls on between: the closed forms are the borders of the regime map.",
+            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms",
+            tolerances: &[MAP_CELL],
+            expected: Verdict::Holds,
+        },
+        check: map_borders,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "snowless-drag-terminal-velocity",
+            paper_ref: "fn. 5",
+            statement: "The note sets dissipation aside (fn. 5). With air drag and no snow the rolling log has a terminal velocity v_t² = M g sin α/(½ ρ_a C_d A), A = 2 r0 l (docs/snowball-and-losses.md §2.2); with snow it has none (v grows like t^(1/3)).",
+            method: "snowless with C_d = 1, ρ_a = 1.2 kg/m³ from rest until |a| ≤ 1e-10 g sin α/(1 + k) (stop `terminal`); its speed there against the closed form",
+            tolerances: &[DRAG_TERMINAL],
+            expected: Verdict::Holds,
+        },
+        check: drag_terminal_velocity,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: "energy-ledger-balances",
+            paper_ref: "fn. 5; eqs. (7), (10)",
+            statement: "With the losses fn. 5 sets aside (air drag, rolling resistance, compaction of the snow picked up), the energy is still accounted for: the kinetic energy, the work of each loss and the energy the model's own equation destroys (W_model) add up to the potential energy released plus the initial kinetic energy (docs/snowball-and-losses.md §3).",
+            method: "every circular model on 12 scenarios each, logs and balls (swath 2r) alternately, drawn from a fixed seed with all three losses; at 17 samples of each run, K from eq. (7) and the energy released from eq. (10) (their ball forms, docs/snowball-and-losses.md §1.2) computed from (x, r, v), D_comp = e_c (M − M0), the works D_drag, D_rr and W_model read from the run's ledger",
+            tolerances: &[LEDGER_BALANCE],
+            expected: Verdict::Holds,
+        },
+        check: ledger_balances,
+    },
+];

@@ -1,0 +1,329 @@
+//! `report.html`: one self-contained page. CSS, the figures' SVG, the
+//! animation's data (JSON) and its script are all inline; the page loads
+//! nothing from the network and uses the reader's own sans-serif font.
+//!
+//! Hooks for the browser test (`.ci/browser-test.sh`): `body[data-figures]`
+//! and `body[data-claims]` give the expected counts, each figure is a
+//! `figure[data-figure=NAME]`, the claims table is `#claims-table`, each
+//! animation is a `section[data-shape]` whose `#PREFIX-status` (`anim` for
+//! the log, `ball-anim` for the snowball) carries `data-frame`,
+//! `data-max-frame` and `data-ticks`, and script errors are counted in
+//! `html[data-js-errors]`.
+
+use std::fmt::Write as _;
+
+use super::errata::{errata_section, link_citations};
+use super::intro::intro_section;
+use super::markup::{esc, prose};
+use super::CLAIMS_CSV;
+use super::{ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
+
+const CSS: &str = include_str!("../assets/report.css");
+const SCRIPT: &str = include_str!("../assets/report.js");
+
+/// Counts script errors on the root element before anything else runs.
+const ERROR_TRAP: &str = "(function(){var n=0;function mark(){n+=1;document.documentElement.setAttribute('data-js-errors',String(n));}window.addEventListener('error',mark);window.addEventListener('unhandledrejection',mark);})();";
+
+/// Records, once the page has laid out, what sticks out sideways: each
+/// figure whose drawing is wider than the figure or than the window, and
+/// the page itself if it scrolls sideways. The browser test reads
+/// `html[data-layout-overflow]` at a phone's width (empty: nothing overflows).
+const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure,.anim').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
+
+/// Makes text safe inside an HTML comment.
+fn comment(s: &str) -> String {
+    s.replace("--", "- -").replace('>', "&gt;")
+}
+
+/// The page.
+pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportError> {
+    let m = &report.metadata;
+    let params_line = m
+        .params
+        .iter()
+        .map(|(k, v)| format!("{k} = {v}"))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let mut h = String::with_capacity(64 * 1024 + svgs.iter().map(String::len).sum::<usize>());
+    h.push_str("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n");
+    h.push_str("<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n");
+    let _ = writeln!(
+        h,
+        "<meta name=\"generator\" content=\"{}\">",
+        esc(&m.software)
+    );
+    let _ = writeln!(
+        h,
+        "<!-- {} | {} -->",
+        comment(&m.software),
+        comment(&params_line)
+    );
+    let _ = writeln!(h, "<title>{}</title>", esc(&m.title));
+    let _ = writeln!(h, "<script>{ERROR_TRAP}</script>");
+    let _ = writeln!(h, "<style>\n{CSS}</style>\n</head>");
+    let _ = writeln!(
+        h,
+        "<body data-figures=\"{}\" data-claims=\"{}\" data-models=\"{}\">",
+        report.figures.len(),
+        report.claims.len(),
+        snowroll::models::ModelKind::ALL.len()
+    );
+    let _ = writeln!(
+        h,
+        "<header class=\"top\"><h1>{}</h1><p class=\"sub\">{} · every number below was computed by this program</p>",
+        esc(&m.title),
+        esc(&m.software)
+    );
+    h.push_str("<nav><a href=\"#problem\">The problem</a><a href=\"#claims\">Claims</a>");
+    for (i, t) in report.tables.iter().enumerate() {
+        let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
+    }
+    if super::losses_section::applies(report) {
+        let _ = write!(
+            h,
+            "<a href=\"#{}\">{}</a>",
+            super::losses_section::SECTION_ID,
+            super::losses_section::TITLE
+        );
+    }
+    for anim in &report.animations {
+        let _ = write!(
+            h,
+            "<a href=\"#{}\">{}</a>",
+            anim.name(),
+            match anim.shape {
+                snowroll::scenario::Shape::Cylinder => "Animation",
+                snowroll::scenario::Shape::Sphere => "The snowball",
+            }
+        );
+    }
+    h.push_str(
+        "<a href=\"#figures\">Figures</a><a href=\"#errata\">Errata</a><a href=\"#parameters\">Parameters</a></nav></header>\n<main>\n",
+    );
+    intro_section(&mut h);
+    claims_section(&mut h, &report.claims, &report.figures);
+    for (i, t) in report.tables.iter().enumerate() {
+        table_section(&mut h, i, t);
+    }
+    super::losses_section::html(&mut h, report);
+    for anim in &report.animations {
+        animation_section(&mut h, anim);
+    }
+    figures_section(&mut h, report, svgs);
+    errata_section(&mut h);
+    params_section(&mut h, report);
+    h.push_str("</main>\n");
+    let _ = writeln!(
+        h,
+        "<footer>Generated by {} · self-contained page: no network, no external fonts.</footer>",
+        esc(&m.software)
+    );
+    for anim in &report.animations {
+        // `</` cannot end the script element early once escaped.
+        let json = anim.to_json()?.replace("</", "<\\/");
+        let _ = writeln!(
+            h,
+            "<script type=\"application/json\" class=\"anim-data\" id=\"{p}-data\" data-prefix=\"{p}\">{json}</script>",
+            p = anim.prefix()
+        );
+    }
+    if !report.animations.is_empty() {
+        let _ = writeln!(h, "<script>\n{SCRIPT}</script>");
+    }
+    let _ = writeln!(h, "<script>{LAYOUT_PROBE}</script>");
+    h.push_str("</body>\n</html>\n");
+    Ok(h)
+}
+
+/// Links to the figures that support claim `id`, numbered as in the report,
+/// each with its data file, and to the claim's row of `data/claims.csv`.
+fn figure_links(id: &str, figures: &[Figure]) -> String {
+    let links: Vec<String> = figures
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.supports.contains(&id))
+        .map(|(i, f)| {
+            let name = esc(&f.chart.name);
+            format!(
+                "<a href=\"#fig-{name}\">Figure {}</a> (<a href=\"data/{name}.csv\">data</a>)",
+                i + 1
+            )
+        })
+        .collect();
+    let see = if links.is_empty() {
+        String::new()
+    } else {
+        format!("See {}. ", links.join(", "))
+    };
+    format!(
+        "<br><span class=\"figlinks\">{see}Measured values: row <code>{}</code> of \
+         <a href=\"data/{CLAIMS_CSV}\">data/{CLAIMS_CSV}</a>.</span>",
+        esc(id)
+    )
+}
+
+fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
+    let tally = Tally::of(claims);
+    h.push_str("<section id=\"claims\">\n<h2>Claims of the note</h2>\n");
+    let _ = writeln!(h, "<p class=\"tally\">{}</p>", esc(&tally.sentence()));
+    let _ = writeln!(h, "<p class=\"expectation\">{}</p>", esc(EXPECTATION_NOTE));
+    h.push_str(
+        "<p class=\"legend\"><span class=\"verdict holds\">✓ holds</span> \
+         <span class=\"verdict corrected\">✎ holds after correction</span> \
+         <span class=\"verdict refuted\">✗ refuted</span> \
+         <span class=\"verdict inconclusive\">? inconclusive</span></p>\n",
+    );
+    h.push_str(
+        "<div class=\"table-wrap\"><table id=\"claims-table\" class=\"claims\">\n<thead><tr>\
+         <th scope=\"col\">Claim</th><th scope=\"col\">Statement</th><th scope=\"col\">How checked</th>\
+         <th scope=\"col\">Measured</th><th scope=\"col\">Verdict</th><th scope=\"col\">Evidence</th>\
+         </tr></thead>\n<tbody>\n",
+    );
+    for r in claims {
+        let c = r.claim;
+        let expected = if r.as_expected() {
+            String::new()
+        } else {
+            format!(
+                "<br><span class=\"unexpected\">expected: {}</span>",
+                esc(&c.expected.label())
+            )
+        };
+        let _ = writeln!(
+            h,
+            "<tr id=\"claim-{id}\" data-verdict=\"{class}\" data-as-expected=\"{ok}\">\
+             <td data-label=\"Claim\"><strong>{paper}</strong><br><code>{id}</code></td>\
+             <td data-label=\"Statement\">{statement}</td>\
+             <td data-label=\"How checked\">{method}<br><span class=\"tol\">tolerances: {tol}</span></td>\
+             <td data-label=\"Measured\">{measured}</td>\
+             <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td>\
+             <td data-label=\"Evidence\">{evidence}{figures}</td></tr>",
+            id = esc(c.id),
+            class = r.verdict.class(),
+            ok = r.as_expected(),
+            paper = esc(c.paper_ref),
+            statement = prose(c.statement),
+            method = prose(c.method),
+            tol = prose(&c.tolerances_text()),
+            measured = prose(&r.measured),
+            symbol = r.verdict.symbol(),
+            label = link_citations(&esc(&r.verdict.label())),
+            evidence = link_citations(&prose(&r.evidence)),
+            figures = figure_links(c.id, figures),
+        );
+    }
+    h.push_str("</tbody></table></div>\n</section>\n");
+}
+
+fn table_section(h: &mut String, index: usize, t: &super::Table) {
+    let _ = writeln!(
+        h,
+        "<section id=\"table-{index}\">\n<h2>{}</h2>\n<p>{}</p>",
+        esc(&t.title),
+        prose(&t.caption)
+    );
+    h.push_str("<div class=\"table-wrap\"><table class=\"parting\">\n<thead><tr>");
+    for c in &t.header {
+        let _ = write!(h, "<th scope=\"col\">{}</th>", esc(c));
+    }
+    h.push_str("</tr></thead>\n<tbody>\n");
+    for row in &t.rows {
+        h.push_str("<tr>");
+        for c in row {
+            let _ = write!(h, "<td>{}</td>", prose(c));
+        }
+        h.push_str("</tr>\n");
+    }
+    h.push_str("</tbody></table></div>\n</section>\n");
+}
+
+fn animation_section(h: &mut String, anim: &super::Animation) {
+    let n = anim.frames.len();
+    let p = anim.prefix();
+    let _ = writeln!(
+        h,
+        "<section id=\"{}\" data-shape=\"{}\">\n<h2>{}</h2>\n<p>{}</p>",
+        anim.name(),
+        anim.shape,
+        esc(&anim.title),
+        prose(&anim.caption)
+    );
+    let _ = writeln!(
+        h,
+        "<div class=\"anim\" id=\"{p}-box\"><canvas id=\"{p}-canvas\" width=\"960\" height=\"540\" role=\"img\" \
+         aria-label=\"{}\"></canvas>",
+        esc(&anim.title)
+    );
+    let _ = write!(
+        h,
+        "<div class=\"controls\"><button id=\"{p}-play\" type=\"button\" aria-pressed=\"true\">Pause</button>\
+         <label>Speed <select id=\"{p}-speed\">\
+         <option value=\"0.1\">0.1×</option><option value=\"0.25\">0.25×</option>\
+         <option value=\"0.5\">0.5×</option><option value=\"1\" selected>1×</option>\
+         <option value=\"2\">2×</option><option value=\"4\">4×</option></select></label>"
+    );
+    let _ = write!(
+        h,
+        "<label class=\"scrub\">Time <input id=\"{p}-scrub\" type=\"range\" min=\"0\" max=\"{}\" value=\"0\" step=\"1\"></label>",
+        n.saturating_sub(1)
+    );
+    let _ = writeln!(
+        h,
+        "</div>\n<output id=\"{p}-status\" class=\"anim-status\" data-frame=\"0\" data-max-frame=\"0\" data-ticks=\"0\" \
+         data-frames=\"{n}\">frame 0 / {n}</output></div>\n</section>"
+    );
+}
+
+fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
+    h.push_str("<section id=\"figures\">\n<h2>Figures</h2>\n");
+    for (i, (fig, svg)) in report.figures.iter().zip(svgs).enumerate() {
+        let name = esc(&fig.chart.name);
+        let prov = fig.provenance(&report.metadata).line();
+        let supports = if fig.supports.is_empty() {
+            String::new()
+        } else {
+            let links: Vec<String> = fig
+                .supports
+                .iter()
+                .map(|id| format!("<a href=\"#claim-{0}\"><code>{0}</code></a>", esc(id)))
+                .collect();
+            format!(
+                " <span class=\"supports\">Evidence for: {}.</span>",
+                links.join(", ")
+            )
+        };
+        let _ = writeln!(
+            h,
+            "<figure id=\"fig-{name}\" class=\"figure\" data-figure=\"{name}\">\n<div class=\"svg-wrap\">{svg}</div>\n\
+             <figcaption><strong>Figure {num}. {title}.</strong> {caption}{supports} \
+             <span class=\"files\">Files: <a href=\"figures/{name}.svg\">SVG</a>, \
+             <a href=\"figures/{name}.png\">PNG</a>, <a href=\"data/{name}.csv\">data (CSV)</a>. \
+             {prov}</span></figcaption>\n</figure>",
+            num = i + 1,
+            title = esc(&fig.chart.title),
+            caption = prose(&fig.caption),
+            prov = esc(&prov),
+        );
+    }
+    h.push_str("</section>\n");
+}
+
+fn params_section(h: &mut String, report: &Report) {
+    let m = &report.metadata;
+    h.push_str("<section id=\"parameters\">\n<h2>Parameters and version</h2>\n");
+    h.push_str("<table class=\"params\"><tbody>\n");
+    let _ = writeln!(
+        h,
+        "<tr><th scope=\"row\">program</th><td>{}</td></tr>",
+        esc(&m.software)
+    );
+    for (k, v) in &m.params {
+        let _ = writeln!(
+            h,
+            "<tr><th scope=\"row\">{}</th><td>{}</td></tr>",
+            esc(k),
+            esc(v)
+        );
+    }
+    h.push_str("</tbody></table>\n</section>\n");
+}

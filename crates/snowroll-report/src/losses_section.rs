@@ -1,0 +1,225 @@
+//! The report's section on the snowball and the losses (issue 11): the
+//! results the claims of `docs/snowball-and-losses.md` established, one
+//! paragraph each, with the verdict and the measured numbers of the claim
+//! that carries it and links to its row of the claims table, its figures
+//! and the snowball's animation. It reads the report; nothing is computed
+//! here.
+
+use std::fmt::Write as _;
+
+use super::markup::{esc, prose};
+use super::{notation, ClaimResult, Report};
+
+/// Id of the section in the page.
+pub(super) const SECTION_ID: &str = "snowball-and-losses";
+/// Its heading.
+pub(super) const TITLE: &str = "The snowball and the losses";
+
+/// One result: the claim that carries it and the sentence that says what it
+/// means.
+struct Item {
+    claim: &'static str,
+    lead: &'static str,
+}
+
+/// The results, in the order of the derivation.
+const RESULTS: [Item; 5] = [
+    Item {
+        claim: "snowball-five-sevenths",
+        lead: "A uniform ball (I = (2/5) M r²) rolling on a bare slope accelerates at (5/7) g sin α, the ball's counterpart of the log's 2/3 (App. A).",
+    },
+    Item {
+        claim: "tpt-letter-closed-form",
+        lead: "The letter in The Physics Teacher 57, p. 436 (2019), on S. Rubin's rolling snowball, gives a closed form whose acceleration starts at (5/7) g sin α and tends to (1/6) g sin α. It is the ball's torque-about-the-centre model (eq. (4)'s balance, Loney's fn. 4 for a ball) with the swath 2r: the claim is reproduced, by that model only.",
+    },
+    Item {
+        claim: "snowball-terminal-fractions",
+        lead: "Picking up the layer over its diameter (π r² = π r₀² + b x, as for the log), the always-round ball tends to a terminal fraction of g sin α set by its balance: 1/6 (torque about the centre), 1/7 (contact line), 2/7 (energy), 5/28 (eq. (21) as printed), each below the log's 1/5, 1/6, 1/3 and 2/9.",
+    },
+    Item {
+        claim: "snowless-drag-terminal-velocity",
+        lead: "fn. 5 sets dissipation aside. With air drag and no snow the log reaches the terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) of the closed form; with snow it has none, since the mass grows faster than the frontal area and the speed keeps growing.",
+    },
+    Item {
+        claim: "energy-ledger-balances",
+        lead: "With drag, rolling resistance and compaction the energy is accounted for at every sample: the kinetic energy, the work of each loss and what the model's own equation destroys (the inelastic pick-up of the torque models) add up to the potential energy released. The library's own tests check the same sum on 2700 random runs (tests/losses.rs).",
+    },
+];
+
+/// The claim result of `id`, if the report has it.
+fn result<'a>(report: &'a Report, id: &str) -> Option<&'a ClaimResult> {
+    report.claims.iter().find(|r| r.claim.id == id)
+}
+
+/// `(number, name)` of each figure of `report` that supports claim `id`,
+/// numbered as in the report.
+fn figures_of<'a>(report: &'a Report, id: &str) -> Vec<(usize, &'a str)> {
+    report
+        .figures
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f.supports.contains(&id))
+        .map(|(i, f)| (i + 1, f.chart.name.as_str()))
+        .collect()
+}
+
+/// Whether the report animates the snowball.
+fn has_ball(report: &Report) -> bool {
+    report
+        .animations
+        .iter()
+        .any(|a| a.shape == snowroll::scenario::Shape::Sphere)
+}
+
+/// Whether the report holds any of the section's claims (a report without
+/// them has no section).
+pub(super) fn applies(report: &Report) -> bool {
+    RESULTS.iter().any(|r| result(report, r.claim).is_some())
+}
+
+/// The section in the page.
+pub(super) fn html(h: &mut String, report: &Report) {
+    if !applies(report) {
+        return;
+    }
+    let _ = writeln!(
+        h,
+        "<section id=\"{SECTION_ID}\">\n<h2>{TITLE}</h2>\n<p>{}</p>",
+        prose(
+            "The note's title names a snowball but treats only the log, and fn. 5 sets the losses aside. \
+             The program adds both on the same models, integrator and outputs (docs/snowball-and-losses.md): \
+             the ball with I = (2/5) M r² in every circular model, and air drag, rolling resistance and the \
+             work of compacting the snow picked up, each with its energy in a ledger. What the claims below found:"
+        )
+    );
+    h.push_str("<ul class=\"results\">\n");
+    for r in &RESULTS {
+        let Some(found) = result(report, r.claim) else {
+            continue;
+        };
+        let mut links = vec![format!(
+            "<a href=\"#claim-{0}\">claim <code>{0}</code></a>",
+            esc(r.claim)
+        )];
+        links.extend(
+            figures_of(report, r.claim)
+                .into_iter()
+                .map(|(n, name)| format!("<a href=\"#fig-{}\">Figure {n}</a>", esc(name))),
+        );
+        if r.claim == "tpt-letter-closed-form" && has_ball(report) {
+            links.push("<a href=\"#ball-animation\">the snowball's animation</a>".to_string());
+        }
+        let _ = writeln!(
+            h,
+            "<li id=\"result-{id}\">{lead} <span class=\"verdict {class}\">{symbol} {label}</span>: {measured}. \
+             <span class=\"figlinks\">See {links}.</span></li>",
+            id = esc(r.claim),
+            lead = prose(r.lead),
+            class = found.verdict.class(),
+            symbol = found.verdict.symbol(),
+            label = esc(&found.verdict.label()),
+            measured = prose(&found.measured),
+            links = links.join(", "),
+        );
+    }
+    h.push_str("</ul>\n</section>\n");
+}
+
+/// The section in `report.md`.
+pub(super) fn markdown(md: &mut String, report: &Report) {
+    if !applies(report) {
+        return;
+    }
+    let _ = writeln!(md, "\n## {TITLE}\n");
+    for r in &RESULTS {
+        let Some(found) = result(report, r.claim) else {
+            continue;
+        };
+        let figures: Vec<String> = figures_of(report, r.claim)
+            .into_iter()
+            .map(|(n, _)| format!("Figure {n}"))
+            .collect();
+        let see = if figures.is_empty() {
+            String::new()
+        } else {
+            format!(" See {}.", figures.join(", "))
+        };
+        let _ = writeln!(
+            md,
+            "* {} **{} {}** (`{}`): {}.{see}",
+            notation::prettify(r.lead),
+            found.verdict.symbol(),
+            found.verdict.label(),
+            r.claim,
+            notation::prettify(&found.measured),
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plot::{Axis, Chart, Series};
+    use crate::{Figure, Metadata, Verdict, CLAIMS};
+
+    /// A report holding the section's claims (with made-up findings) and
+    /// one figure that supports the drag claim.
+    fn report() -> Report {
+        let mut report = Report::new(Metadata::new("t"));
+        report.claims = RESULTS
+            .iter()
+            .map(|r| ClaimResult {
+                claim: &CLAIMS
+                    .iter()
+                    .find(|c| c.claim.id == r.claim)
+                    .expect("every result names a claim of the table")
+                    .claim,
+                measured: format!("measured {}", r.claim),
+                verdict: Verdict::Holds,
+                evidence: String::new(),
+            })
+            .collect();
+        let chart = Chart::new(
+            "speed",
+            "s",
+            Axis::linear("t", "s"),
+            Axis::linear("v", "m/s"),
+        )
+        .with_series(Series::new("v", vec![(0.0, 0.0), (1.0, 1.0)]));
+        report.figures =
+            vec![Figure::new(chart, "c").supports(&["snowless-drag-terminal-velocity"])];
+        report
+    }
+
+    #[test]
+    fn each_result_links_its_claim_and_the_figures_that_support_it() {
+        let report = report();
+        let mut h = String::new();
+        html(&mut h, &report);
+        assert!(h.starts_with(&format!("<section id=\"{SECTION_ID}\">")));
+        for r in &RESULTS {
+            assert!(
+                h.contains(&format!("<li id=\"result-{}\">", r.claim)),
+                "{}",
+                r.claim
+            );
+            assert!(
+                h.contains(&format!("href=\"#claim-{}\"", r.claim)),
+                "{}",
+                r.claim
+            );
+            assert!(h.contains(&format!("measured {}", r.claim)), "{}", r.claim);
+        }
+        // Figure 1 supports the drag claim only: one link to it.
+        assert_eq!(h.matches("href=\"#fig-speed\">Figure 1</a>").count(), 1);
+        let mut md = String::new();
+        markdown(&mut md, &report);
+        assert_eq!(md.matches("\n* ").count(), RESULTS.len());
+        // Without the claims there is no section.
+        let mut empty = Report::new(Metadata::new("t"));
+        empty.figures = report.figures.clone();
+        let mut h = String::new();
+        html(&mut h, &empty);
+        assert!(h.is_empty());
+    }
+}

@@ -1,0 +1,16 @@
+//! Every integration test of `snowroll` in one binary (one link instead of
+//! one per file); each file is a module, named as before.
+
+mod circular;
+mod collision;
+mod contact;
+mod integrator;
+mod invariants;
+mod losses;
+mod sphere;
+mod streaming;
+mod sweep;
+mod sweep_regime;
+mod turn_ledger;
+mod turns;
+mod turns_reference;
