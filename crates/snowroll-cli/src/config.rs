@@ -21,7 +21,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use serde::{Deserialize, Deserializer};
 use serde_json::{Map, Value};
 use snowroll::{CollisionModel, ModelKind, OnHop, Shape};
-use snowroll_io::Format;
+use snowroll_io::{Format, RecordedSampling};
 
 use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 
@@ -122,8 +122,10 @@ pub enum Origin {
 /// read back as the output's provenance, not as config keys.
 const RECORD_ONLY: [&str; 5] = ["sampling", "warnings", "warning", "notes", "note"];
 
-/// The `sampling` text of a turn table (`snowroll turns`).
-const TURN_TABLE_SAMPLING: &str = "one row per turn";
+/// Whether a recorded `sampling` is that of a turn table (`snowroll turns`).
+fn is_turn_table(sampling: &str) -> bool {
+    sampling.parse() == Ok(RecordedSampling::PerTurn)
+}
 
 /// Reads and parses a config file for command `command` (`simulate` or
 /// `turns`). Every failure is one line naming the file; an output of the
@@ -192,7 +194,7 @@ fn from_json_output(text: &str) -> Result<(ConfigFile, Origin)> {
         keys.insert("model".into(), Value::String(id.to_string()));
     }
     let sampling = params.get("sampling").and_then(Value::as_str);
-    let origin = if sampling == Some(TURN_TABLE_SAMPLING) {
+    let origin = if sampling.is_some_and(is_turn_table) {
         Origin::Turns
     } else {
         Origin::Simulate
@@ -237,7 +239,7 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
                     .map_err(|_| anyhow!("`ledger = {value}` is not true or false"))?,
             ),
             "sampling" => {
-                if value == TURN_TABLE_SAMPLING {
+                if is_turn_table(value) {
                     origin = Origin::Turns;
                 }
                 continue;

@@ -19,9 +19,11 @@ mod error;
 mod finite;
 mod ledger;
 mod row;
+mod sampling;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
+pub use sampling::RecordedSampling;
 pub use trajectory::{write_trajectory, TrajectoryWriter};
 pub use turns::{write_turn_table, TurnTableWriter};
 
@@ -59,8 +61,8 @@ pub struct RunParams {
     pub rtol: f64,
     /// Absolute tolerance.
     pub atol: f64,
-    /// Sampling, in words.
-    pub sampling: String,
+    /// How the rows were chosen; written in words (`sampling = every 0.5 s`).
+    pub sampling: RecordedSampling,
     /// Most rows of the run ([`SimOptions::max_rows`]).
     pub max_rows: u64,
     /// Most integrator steps of the run ([`Tolerances::max_steps`](snowroll::integrate::Tolerances::max_steps)).
@@ -107,12 +109,7 @@ impl RunParams {
             turns: opts.turns,
             rtol: opts.tolerances.rtol,
             atol: opts.tolerances.atol,
-            sampling: match &opts.sampling {
-                Sampling::Steps => "every accepted step".to_string(),
-                Sampling::Times(ts) => format!("{} requested times", ts.len()),
-                Sampling::Every(dt) => format!("every {} s", format_number(*dt)),
-                Sampling::Ends => "start and end".to_string(),
-            },
+            sampling: RecordedSampling::from(&opts.sampling),
             max_rows: opts.max_rows,
             max_steps: opts.tolerances.max_steps,
             dt,
@@ -150,7 +147,7 @@ impl RunParams {
             ),
             ("rtol".into(), format!("{:e}", self.rtol)),
             ("atol".into(), format!("{:e}", self.atol)),
-            ("sampling".into(), self.sampling.clone()),
+            ("sampling".into(), self.sampling.to_string()),
             ("max_rows".into(), self.max_rows.to_string()),
             ("max_steps".into(), self.max_steps.to_string()),
             ("collision".into(), self.collision.to_string()),

@@ -572,7 +572,7 @@ fn turns<'py>(
         .detach(|| run_turns(kind, &scenario, &opts))
         .map_err(sim_error)?;
     let mut params = RunParams::new(&scenario, &opts);
-    params.sampling = "one row per turn".to_string();
+    params.sampling = snowroll_io::RecordedSampling::PerTurn;
     params.warnings = validity_warnings(kind, &scenario)
         .iter()
         .map(ToString::to_string)

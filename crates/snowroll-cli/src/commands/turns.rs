@@ -69,7 +69,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let mut sink = Sink::open(&args.output)?;
     let name = sink.name();
     let mut params = RunParams::new(&scenario, &opts);
-    params.sampling = "one row per turn".to_string();
+    params.sampling = snowroll_io::RecordedSampling::PerTurn;
     params.warnings = warnings;
     let mut writer = TurnTableWriter::new(&mut sink, format, model, &params)
         .with_context(|| format!("writing {name}"))?;
