@@ -24,8 +24,14 @@ fi
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
     "maturin==1.16.0" "pytest==8.4.2" "numpy==2.3.4"
 
-# The CLI the tests compare with, from the same sources (a no-op when built).
-cargo build --release --quiet -p snowroll-cli
+# The CLI the tests compare with, from the same sources: $SNOWROLL_CLI when
+# set (scripts/test.sh passes the one `cargo test` just built), else the
+# release build (a no-op when built).
+cli=${SNOWROLL_CLI:-}
+if [ -z "$cli" ]; then
+    cargo build --release --quiet -p snowroll-cli
+    cli=$target/release/snowroll
+fi
 
 # One wheel, built once per run and reused by every test.
 rm -f "$wheels"/snowroll-*.whl
@@ -37,4 +43,4 @@ rm -f "$wheels"/snowroll-*.whl
 # Run from the tests directory so that `import snowroll` is the installed
 # wheel, not the source tree.
 cd crates/snowroll-py/tests
-SNOWROLL_CLI="$target/release/snowroll" "$venv/bin/python" -m pytest -q -p no:cacheprovider .
+SNOWROLL_CLI="$cli" "$venv/bin/python" -m pytest -q -p no:cacheprovider .
