@@ -23,7 +23,7 @@ mod sampling;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
-pub use sampling::RecordedSampling;
+pub use sampling::{RecordedSampling, UnknownSampling};
 pub use trajectory::{write_trajectory, TrajectoryWriter};
 pub use turns::{write_turn_table, TurnTableWriter};
 
