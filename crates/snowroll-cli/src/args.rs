@@ -1,18 +1,20 @@
 //! The command line: subcommands and their flags.
 //!
-//! Every value flag of `simulate` and `turns` is an `Option`, so that a flag
-//! that was not given can fall back to the `--config` file and then to the
-//! library's defaults ([`ScenarioFile::default`], [`SimOptions::default`]);
-//! the defaults shown in `--help` are read from those same values. The flags
-//! the two share are one struct each ([`ScenarioArgs`], [`OutputArgs`]); the
-//! config file ([`crate::config::ConfigFile`]) has one key per long flag.
+//! The parameter flags of `simulate` and `turns` come from the one parameter
+//! table ([`snowroll::params`]): a flag that was not given falls back to the
+//! `--config` file and then to the library's defaults, which `--help` shows.
+//! The flags the two share are one struct each ([`ScenarioArgs`],
+//! [`OutputArgs`]); the config file ([`crate::config::ConfigFile`]) has one
+//! key per long flag.
 
 use std::fmt::Display;
 use std::path::PathBuf;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::builder::PossibleValuesParser;
+use clap::{Arg, ArgAction, Parser, Subcommand, ValueEnum};
+use snowroll::params::{Kind, Scope};
 use snowroll::sweep::Method;
-use snowroll::{CollisionModel, ModelKind, OnHop, ScenarioFile, Shape, SimOptions};
+use snowroll::{Given, ModelKind, Param, Value, PARAMS};
 use snowroll_io::Format;
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
@@ -116,271 +118,102 @@ fn value_name(v: impl ValueEnum) -> String {
         .map_or_else(String::new, |p| p.get_name().to_string())
 }
 
-/// A number as a person would type it: `1e-10` rather than `0.0000000001`.
-fn short(x: f64) -> String {
-    if x != 0.0 && !(1e-3..1e6).contains(&x.abs()) {
-        format!("{x:e}")
-    } else {
-        x.to_string()
-    }
-}
-
-/// Flags shared by `simulate` and `turns`: the model, the scenario and the
-/// integrator. Every one is also a key of the `--config` file.
+/// Flags shared by `simulate` and `turns`: the model, then every
+/// [`Scope::Shared`] parameter of the table. Every one is also a key of the
+/// `--config` file.
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 pub struct ScenarioArgs {
     /// Model id or equation alias, e.g. torque-cm or eq4 (`snowroll models` describes them)
     #[arg(long, value_name = "ID", ignore_case = true)]
     pub model: Option<ModelKind>,
 
-    #[arg(
-        long,
-        value_name = "DEG",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Slope angle alpha, in degrees (0 < alpha < 90)",
-            ScenarioFile::default().alpha_deg
-        )
-    )]
-    pub alpha_deg: Option<f64>,
+    /// The scenario, the integrator, the losses: one flag per parameter.
+    #[command(flatten)]
+    pub params: ParamArgs,
+}
 
-    #[arg(
-        long,
-        value_name = "M",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Snow depth b normal to the slope, in m (b >= 0; 0 = no snow)",
-            ScenarioFile::default().snow_depth
-        )
-    )]
-    pub snow_depth: Option<f64>,
+impl ScenarioArgs {
+    /// Whether `--atol` was given (else each model takes its own default,
+    /// scaled to the run: [`snowroll::default_atol`]).
+    pub fn atol_given(&self) -> bool {
+        Param::of_key("atol").is_some_and(|p| self.params.given.get(p).is_some())
+    }
+}
 
-    #[arg(
-        long,
-        value_name = "M",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Initial radius r0 of the log, in m (r0 > 0)",
-            ScenarioFile::default().r0
-        )
-    )]
-    pub r0: Option<f64>,
+/// One flag per [`Scope::Shared`] parameter of [`PARAMS`], built from the
+/// table (name, unit placeholder, help with its default, kind): the flags
+/// given are in [`ParamArgs::given`], the others take their defaults later.
+/// clap's derive cannot loop over a table, so `clap::Args` is implemented
+/// here with clap's builder.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ParamArgs {
+    /// The values of the flags given on the command line.
+    pub given: Given,
+}
 
-    #[arg(
-        long,
-        value_name = "M/S^2",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Gravitational acceleration g, in m/s^2 (g > 0)",
-            ScenarioFile::default().g
-        )
-    )]
-    pub g: Option<f64>,
+/// The shared parameters, in table order.
+fn shared() -> impl Iterator<Item = &'static Param> {
+    PARAMS.iter().filter(|p| p.scope == Scope::Shared)
+}
 
-    #[arg(
-        long,
-        value_name = "KG/M^3",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Density rho of log and snow, in kg/m^3 (rho > 0)",
-            ScenarioFile::default().density
-        )
-    )]
-    pub density: Option<f64>,
+/// The flag of parameter `p`.
+fn param_arg(p: &'static Param) -> Arg {
+    let arg = Arg::new(p.key)
+        .long(p.flag())
+        .help(p.help_with_default())
+        .required(false);
+    match p.kind {
+        Kind::Flag => arg.action(ArgAction::SetTrue),
+        Kind::Count | Kind::OptionalCount => arg
+            .value_name(p.value_name)
+            .action(ArgAction::Set)
+            .value_parser(clap::value_parser!(u64)),
+        Kind::Choice(c) => arg
+            .value_name(p.value_name)
+            .action(ArgAction::Set)
+            .ignore_case(true)
+            .value_parser(PossibleValuesParser::new(c.possible_values())),
+        Kind::Real | Kind::OptionalReal | Kind::Reals | Kind::Text => arg
+            .value_name(p.value_name)
+            .action(ArgAction::Set)
+            .allow_negative_numbers(true)
+            .value_parser(clap::value_parser!(f64)),
+    }
+}
 
-    #[arg(
-        long,
-        value_name = "M",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Length l of the log, in m (l > 0)",
-            ScenarioFile::default().length
-        )
-    )]
-    pub length: Option<f64>,
+impl clap::Args for ParamArgs {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        cmd.args(shared().map(param_arg))
+    }
 
-    #[arg(
-        long,
-        value_name = "M/S",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Initial speed v0 down the slope, in m/s (v0 >= 0)",
-            ScenarioFile::default().v0
-        )
-    )]
-    pub v0: Option<f64>,
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
 
-    /// The body: cylinder (the note's log) or sphere (a snowball, I = 2/5 M r^2; the turn
-    /// models take the cylinder only) [default: cylinder]
-    #[arg(long, value_name = "SHAPE", ignore_case = true)]
-    pub shape: Option<Shape>,
+impl clap::FromArgMatches for ParamArgs {
+    fn from_arg_matches(m: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        let mut me = Self::default();
+        me.update_from_arg_matches(m)?;
+        Ok(me)
+    }
 
-    #[arg(
-        long,
-        value_name = "M",
-        allow_negative_numbers = true,
-        help = "Width w of the swath of snow a sphere picks up, in m (w > 0; sphere only) \
-                [default: none = the ball's diameter 2r, which grows with it, so that \
-                pi r^2 = pi r0^2 + b x as for the log]"
-    )]
-    pub swath_width: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "S",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Stop at this time, in s (t_end > 0)",
-            SimOptions::default().t_end
-        )
-    )]
-    pub t_end: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "M",
-        allow_negative_numbers = true,
-        help = "Also stop when the log has rolled this distance, in m (x_end > 0) [default: none]"
-    )]
-    pub x_end: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "R",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Relative tolerance of the integrator (1e-15 <= rtol < 1)",
-            short(SimOptions::default().tolerances.rtol)
-        )
-    )]
-    pub rtol: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "A",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Absolute tolerance of the integrator, in the units of x (m) and v (m/s) (atol >= 1e-30)",
-            short(SimOptions::default().tolerances.atol)
-        )
-    )]
-    pub atol: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "MU",
-        allow_negative_numbers = true,
-        help = "Coefficient of static friction mu, dimensionless (mu > 0): stop with `slip` where \
-                the friction rolling needs reaches mu times the normal force \
-                [default: none, no slip check]"
-    )]
-    pub mu: Option<f64>,
-
-    #[arg(
-        long,
-        value_enum,
-        value_name = "MODEL",
-        help = with_default(
-            "How a turn model climbs the step of each new layer: note (eq. (89)), charged \
-             (eq. (89) plus the potential energy of the jump), pivot (about the new layer's edge; \
-             may stop with `stuck`)",
-            value_name(CollisionModel::default())
-        )
-    )]
-    pub collision: Option<CollisionModel>,
-
-    #[arg(
-        long,
-        value_enum,
-        value_name = "ACTION",
-        help = with_default(
-            "What to do where the normal force reaches zero: stop (reason `hop`; past it the \
-             log flies and no rolling model applies) or continue as if contact were kept",
-            value_name(OnHop::default())
-        )
-    )]
-    pub on_hop: Option<OnHop>,
-
-    #[arg(
-        long,
-        value_name = "N",
-        help = with_default(
-            "Most rows one run writes, N >= 1: a run known to need more (--dt: t_end/dt + 1, --times: their count, turns: the turn count) is refused before it starts; one sampled at every step, or on a --dt grid that --turns or --x-end may end before t_end, stops there, its rows kept (stop reason row-limit)",
-            snowroll::DEFAULT_MAX_ROWS
-        )
-    )]
-    pub max_rows: Option<u64>,
-
-    #[arg(
-        long,
-        value_name = "N",
-        help = with_default(
-            "Most integrator steps (accepted, rejected, and events) of one run, N >= 1: the run stops there, its rows kept (stop reason step-limit)",
-            snowroll::integrate::Tolerances::default().max_steps
-        )
-    )]
-    pub max_steps: Option<u64>,
-
-    #[arg(
-        long,
-        value_name = "CD",
-        allow_negative_numbers = true,
-        help = "Air drag coefficient C_d, dimensionless (0 <= C_d <= 100): drag 0.5 rho_a C_d A v^2 \
-                with frontal area A = 2 r l for the log, pi r^2 for the ball \
-                (docs/snowball-and-losses.md §2) [default: 0, no drag]"
-    )]
-    pub drag_coefficient: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "RHO_A",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Air density rho_a for the drag, kg/m^3 (> 0)",
-            snowroll::losses::AIR_DENSITY_DEFAULT
-        )
-    )]
-    pub air_density: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "C_RR",
-        allow_negative_numbers = true,
-        help = "Rolling-resistance coefficient c_rr, dimensionless (0 <= c_rr < 10): a couple \
-                c_rr N r, i.e. a force c_rr times the normal force N [default: 0, none]"
-    )]
-    pub rolling_resistance: Option<f64>,
-
-    #[arg(
-        long,
-        value_name = "E_C",
-        allow_negative_numbers = true,
-        help = "Work of compacting the snow picked up, J per kg of snow (>= 0) \
-                [default: 0, none]"
-    )]
-    pub compaction_energy: Option<f64>,
-
-    #[arg(
-        long,
-        help = "Write the energy ledger columns (kinetic, released, each loss, model, collision, \
-                created, residual, J) even without losses; a run with losses always writes them. \
-                The turn models take no losses but keep the ledger (their collisions' losses; \
-                `snowroll turns`: at each turn end, before its collision) [default: off]"
-    )]
-    pub ledger: bool,
-
-    #[arg(
-        long,
-        value_name = "TOL",
-        allow_negative_numbers = true,
-        help = with_default(
-            "Stop with `terminal` where |a| falls to TOL times the initial drive \
-             (g sin a - c_rr g cos a)/(1 + k): only the snowless log or ball with drag has a \
-             terminal velocity; 0 = keep going (0 <= TOL < 1)",
-            short(snowroll::losses::TERMINAL_TOL_DEFAULT)
-        )
-    )]
-    pub terminal_tol: Option<f64>,
+    fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
+        for p in shared() {
+            let value = match p.kind {
+                Kind::Flag => m.get_flag(p.key).then_some(Value::Flag(true)),
+                Kind::Count | Kind::OptionalCount => {
+                    m.get_one::<u64>(p.key).map(|n| Value::Count(*n))
+                }
+                Kind::Choice(_) => m.get_one::<String>(p.key).map(|w| Value::Word(w.clone())),
+                _ => m.get_one::<f64>(p.key).map(|x| Value::Real(*x)),
+            };
+            if let Some(v) = value {
+                self.given.insert(p, v);
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Where and how results are written, and the `--config` file; shared by
@@ -495,7 +328,7 @@ fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind
     )),
     mut_arg("t_end", |a| a.help(with_default(
         "Stop at this time, in s (t_end > 0); long enough by default that --turns ends the run",
-        short(TURNS_T_END_S)
+        snowroll::params::short(TURNS_T_END_S)
     ))),
 )]
 pub struct TurnsArgs {

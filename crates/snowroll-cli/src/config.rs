@@ -18,92 +18,207 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
-use serde::{Deserialize, Deserializer};
-use serde_json::{Map, Value};
-use snowroll::{CollisionModel, ModelKind, OnHop, Shape};
-use snowroll_io::{Format, RecordedSampling};
+use std::sync::OnceLock;
 
-use crate::args::{OutputArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
+use serde::de::{DeserializeSeed, Error as _, MapAccess, Visitor};
+use serde::{Deserialize, Deserializer};
+use serde_json::Map;
+use snowroll::params::{Kind, Scope};
+use snowroll::{Given, ModelKind, Param, RecordedSampling, Settings, Value, PARAMS};
+use snowroll_io::Format;
+
+use crate::args::{OutputArgs, ParamArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 
 /// The keys of a config file: every long flag of `simulate` and `turns`
 /// except `--config` itself, in snake_case; the flag's own spelling and the
-/// parameter names of earlier outputs are aliases.
-#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
+/// parameter names of earlier outputs are aliases. The parameters are those
+/// of the table ([`snowroll::params`]); `model`, `format` and `output` are
+/// the command's own.
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct ConfigFile {
-    #[serde(default, deserialize_with = "model_any_case")]
     model: Option<ModelKind>,
-    #[serde(alias = "alpha-deg", alias = "slope_deg")]
-    alpha_deg: Option<f64>,
-    #[serde(alias = "snow-depth", alias = "snow_depth_m")]
-    snow_depth: Option<f64>,
-    #[serde(alias = "r0_m")]
-    r0: Option<f64>,
-    #[serde(alias = "g_m_s2")]
-    g: Option<f64>,
-    #[serde(alias = "density_kg_m3")]
-    density: Option<f64>,
-    #[serde(alias = "length_m")]
-    length: Option<f64>,
-    #[serde(alias = "v0_m_s")]
-    v0: Option<f64>,
-    #[serde(default, deserialize_with = "shape_any_case")]
-    shape: Option<Shape>,
-    #[serde(alias = "swath-width")]
-    swath_width: Option<f64>,
-    #[serde(alias = "t-end", alias = "t_end_s")]
-    t_end: Option<f64>,
-    #[serde(alias = "x-end", alias = "x_end_m")]
-    x_end: Option<f64>,
-    times: Option<Vec<f64>>,
-    dt: Option<f64>,
-    turns: Option<u64>,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    mu: Option<f64>,
-    collision: Option<CollisionModel>,
-    #[serde(alias = "on-hop")]
-    on_hop: Option<OnHop>,
-    max_rows: Option<u64>,
-    max_steps: Option<u64>,
-    #[serde(alias = "drag-coefficient")]
-    drag_coefficient: Option<f64>,
-    #[serde(alias = "air-density")]
-    air_density: Option<f64>,
-    #[serde(alias = "rolling-resistance")]
-    rolling_resistance: Option<f64>,
-    #[serde(alias = "compaction-energy")]
-    compaction_energy: Option<f64>,
-    ledger: Option<bool>,
-    #[serde(alias = "terminal-tol")]
-    terminal_tol: Option<f64>,
-    #[serde(default, deserialize_with = "format_any_case")]
+    /// Every parameter of the table that the file sets.
+    given: Given,
     format: Option<Format>,
     output: Option<PathBuf>,
 }
 
-/// A model id or alias in any case, as `--model` accepts it
-/// ([`ModelKind`]'s `FromStr`).
-fn model_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<ModelKind>, D::Error> {
-    let name = String::deserialize(d)?;
-    name.parse().map(Some).map_err(serde::de::Error::custom)
+/// Every key a config file may have, with its aliases (for the message
+/// naming an unknown key). Built once; the strings live as long as the
+/// program, as serde's message wants.
+fn known_keys() -> &'static [&'static str] {
+    static KEYS: OnceLock<Vec<&'static str>> = OnceLock::new();
+    KEYS.get_or_init(|| {
+        let mut keys = vec!["model"];
+        for p in PARAMS.iter().filter(|p| p.settable()) {
+            keys.extend(
+                p.names()
+                    .into_iter()
+                    .map(|n| &*Box::leak(n.into_boxed_str())),
+            );
+        }
+        keys.extend(["format", "output"]);
+        keys
+    })
 }
 
-/// `cylinder` or `sphere`, in any case, as `--shape` accepts it.
-fn shape_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Shape>, D::Error> {
-    let name = String::deserialize(d)?;
-    name.parse().map(Some).map_err(serde::de::Error::custom)
+impl<'de> Deserialize<'de> for ConfigFile {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_map(ConfigVisitor)
+    }
+}
+
+/// A key of a config file.
+enum Key {
+    Model,
+    Format,
+    Output,
+    Param(&'static Param),
+}
+
+/// Reads a key and names an unknown one while the reader is on it, so
+/// that the message gives the key's own line and column.
+struct KeySeed;
+
+impl<'de> DeserializeSeed<'de> for KeySeed {
+    type Value = Key;
+
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Key, D::Error> {
+        let key = String::deserialize(d)?;
+        Ok(match key.as_str() {
+            "model" => Key::Model,
+            "format" => Key::Format,
+            "output" => Key::Output,
+            k => Key::Param(
+                Param::find(k)
+                    .filter(|p| p.settable())
+                    .ok_or_else(|| D::Error::unknown_field(k, known_keys()))?,
+            ),
+        })
+    }
+}
+
+/// Reads the value of a parameter as its kind, and refuses a word outside
+/// a choice while the reader is on it (the message gives its place).
+struct ValueSeed(&'static Param);
+
+impl<'de> DeserializeSeed<'de> for ValueSeed {
+    type Value = Value;
+
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Value, D::Error> {
+        let value = match self.0.kind {
+            Kind::Real | Kind::OptionalReal => Value::Real(f64::deserialize(d)?),
+            Kind::Count | Kind::OptionalCount => Value::Count(u64::deserialize(d)?),
+            Kind::Flag => Value::Flag(bool::deserialize(d)?),
+            Kind::Choice(_) | Kind::Text => Value::Word(String::deserialize(d)?),
+            Kind::Reals => Value::Reals(Vec::deserialize(d)?),
+        };
+        self.0
+            .set(&mut Settings::default(), value.clone())
+            .map_err(D::Error::custom)?;
+        Ok(value)
+    }
+}
+
+/// Reads a config file's keys one by one, each value as its parameter's kind.
+struct ConfigVisitor;
+
+impl<'de> Visitor<'de> for ConfigVisitor {
+    type Value = ConfigFile;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a table of settings, one key per long flag")
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<ConfigFile, A::Error> {
+        let mut file = ConfigFile::default();
+        while let Some(key) = map.next_key_seed(KeySeed)? {
+            match key {
+                Key::Model if file.model.is_some() => {
+                    return Err(A::Error::duplicate_field("model"))
+                }
+                Key::Model => file.model = Some(map.next_value::<AnyCase<ModelKind>>()?.0),
+                Key::Format => file.format = Some(map.next_value::<AnyCase<Format>>()?.0),
+                Key::Output => file.output = Some(map.next_value()?),
+                Key::Param(p) if file.given.get(p).is_some() => {
+                    return Err(A::Error::duplicate_field(p.key))
+                }
+                Key::Param(p) => {
+                    let value = map.next_value_seed(ValueSeed(p))?;
+                    file.given.insert(p, value);
+                }
+            }
+        }
+        Ok(file)
+    }
+}
+
+/// A model id or alias, or an output format, in any case, as the command
+/// line takes them.
+struct AnyCase<T>(T);
+
+impl<'de> Deserialize<'de> for AnyCase<ModelKind> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        name.parse().map(AnyCase).map_err(D::Error::custom)
+    }
+}
+
+impl<'de> Deserialize<'de> for AnyCase<Format> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        format_any_case(&name)
+            .map(AnyCase)
+            .map_err(D::Error::custom)
+    }
+}
+
+impl ConfigFile {
+    /// The value the file gives parameter `key` (a key of the table).
+    fn value(&self, key: &str) -> Option<&Value> {
+        Param::of_key(key).and_then(|p| self.given.get(p))
+    }
+
+    /// The sampling times of `simulate`, s, when the file sets them.
+    fn times(&self) -> Option<Vec<f64>> {
+        match self.value("times") {
+            Some(Value::Reals(ts)) => Some(ts.clone()),
+            _ => None,
+        }
+    }
+
+    /// The grid spacing of `simulate`, s, when the file sets it.
+    fn dt(&self) -> Option<f64> {
+        match self.value("dt") {
+            Some(Value::Real(dt)) => Some(*dt),
+            _ => None,
+        }
+    }
+
+    /// The turn count, when the file sets it.
+    fn turns(&self) -> Option<u64> {
+        match self.value("turns") {
+            Some(Value::Count(n)) => Some(*n),
+            _ => None,
+        }
+    }
+
+    /// The parameters the file sets that are flags of both commands.
+    fn shared(&self) -> Given {
+        let mut given = Given::new();
+        for (p, v) in self.given.iter().filter(|(p, _)| p.scope == Scope::Shared) {
+            given.insert(p, v.clone());
+        }
+        given
+    }
 }
 
 /// `csv` or `json`, in any case, as `--format` accepts it.
-fn format_any_case<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Format>, D::Error> {
-    let name = String::deserialize(d)?;
+fn format_any_case(name: &str) -> Result<Format, String> {
     match name.to_ascii_lowercase().as_str() {
-        "csv" => Ok(Some(Format::Csv)),
-        "json" => Ok(Some(Format::Json)),
-        _ => Err(serde::de::Error::custom(format!(
-            "unknown format `{name}`, expected `csv` or `json`"
-        ))),
+        "csv" => Ok(Format::Csv),
+        "json" => Ok(Format::Json),
+        _ => Err(format!("unknown format `{name}`, expected `csv` or `json`")),
     }
 }
 
@@ -158,7 +273,7 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
     } else {
         (from_toml(&text, path)?, Origin::Toml)
     };
-    if file.times.is_some() && file.dt.is_some() {
+    if file.times().is_some() && file.dt().is_some() {
         bail!(
             "config file {}: `times` and `dt` conflict, give one of them",
             path.display()
@@ -185,6 +300,7 @@ fn from_toml(text: &str, path: &Path) -> Result<ConfigFile> {
 
 /// The settings of a JSON output of snowroll (`simulate` or `turns`).
 fn from_json_output(text: &str) -> Result<(ConfigFile, Origin)> {
+    use serde_json::Value;
     let doc: Value = serde_json::from_str(text).map_err(|e| anyhow!("not valid JSON: {e}"))?;
     let Some(params) = doc.get("params").and_then(Value::as_object) else {
         bail!("a JSON config file must be an output of snowroll (with `params` and `model`)");
@@ -230,14 +346,9 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             continue; // a sentence (the turn table's summary), not a setting
         }
         let value = match key {
-            "model" | "collision" | "on_hop" | "shape" => {
-                Value::String(value.split_whitespace().next().unwrap_or("").into())
+            "model" => {
+                serde_json::Value::String(value.split_whitespace().next().unwrap_or("").into())
             }
-            "ledger" => Value::Bool(
-                value
-                    .parse::<bool>()
-                    .map_err(|_| anyhow!("`ledger = {value}` is not true or false"))?,
-            ),
             "sampling" => {
                 if is_turn_table(value) {
                     origin = Origin::Turns;
@@ -246,18 +357,12 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             }
             k if RECORD_ONLY.contains(&k) || k == "stop" => continue,
             _ if value == "none" => continue,
-            "turns" | "max_rows" | "max_steps" => Value::from(
-                value
-                    .parse::<u64>()
-                    .map_err(|_| anyhow!("`{key} = {value}` is not a whole number"))?,
-            ),
-            "times" => Value::Array(
-                value
-                    .split(',')
-                    .map(|t| number(key, t.trim()))
-                    .collect::<Result<_>>()?,
-            ),
-            _ => number(key, value)?,
+            // A key of the table, read as its kind; any other key goes on as
+            // a number, for the config reader to name as unknown.
+            k => match Param::of_key(k) {
+                Some(p) => serde_json::to_value(p.parse_text(value).map_err(|e| anyhow!(e))?)?,
+                None => number(key, value)?,
+            },
         };
         keys.insert(key.to_string(), value);
     }
@@ -266,18 +371,19 @@ fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             "a CSV config file must be an output of snowroll (its `# model = ...` line is missing)"
         );
     }
-    keys.insert("format".into(), Value::String("csv".into()));
-    let file = serde_json::from_value(Value::Object(keys)).map_err(|e| anyhow!("{e}"))?;
+    keys.insert("format".into(), serde_json::Value::String("csv".into()));
+    let file =
+        serde_json::from_value(serde_json::Value::Object(keys)).map_err(|e| anyhow!("{e}"))?;
     Ok((file, origin))
 }
 
 /// A number of a CSV header line, as JSON.
-fn number(key: &str, value: &str) -> Result<Value> {
+fn number(key: &str, value: &str) -> Result<serde_json::Value> {
     let x: f64 = value
         .parse()
         .map_err(|_| anyhow!("`{key} = {value}` is not a number"))?;
     serde_json::Number::from_f64(x)
-        .map(Value::Number)
+        .map(serde_json::Value::Number)
         .ok_or_else(|| anyhow!("`{key} = {value}` is not a finite number"))
 }
 
@@ -302,60 +408,11 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
 impl ScenarioArgs {
     /// These flags, with every one that was not given taken from `file`.
     fn over(self, file: &ConfigFile) -> ScenarioArgs {
-        // Destructured so that a new flag cannot be forgotten here.
-        let ScenarioArgs {
-            model,
-            alpha_deg,
-            snow_depth,
-            r0,
-            g,
-            density,
-            length,
-            v0,
-            shape,
-            swath_width,
-            t_end,
-            x_end,
-            rtol,
-            atol,
-            mu,
-            collision,
-            on_hop,
-            max_rows,
-            max_steps,
-            drag_coefficient,
-            air_density,
-            rolling_resistance,
-            compaction_energy,
-            ledger,
-            terminal_tol,
-        } = self;
         ScenarioArgs {
-            model: model.or(file.model),
-            alpha_deg: alpha_deg.or(file.alpha_deg),
-            snow_depth: snow_depth.or(file.snow_depth),
-            r0: r0.or(file.r0),
-            g: g.or(file.g),
-            density: density.or(file.density),
-            length: length.or(file.length),
-            v0: v0.or(file.v0),
-            shape: shape.or(file.shape),
-            swath_width: swath_width.or(file.swath_width),
-            t_end: t_end.or(file.t_end),
-            x_end: x_end.or(file.x_end),
-            rtol: rtol.or(file.rtol),
-            atol: atol.or(file.atol),
-            mu: mu.or(file.mu),
-            collision: collision.or(file.collision),
-            on_hop: on_hop.or(file.on_hop),
-            max_rows: max_rows.or(file.max_rows),
-            max_steps: max_steps.or(file.max_steps),
-            drag_coefficient: drag_coefficient.or(file.drag_coefficient),
-            air_density: air_density.or(file.air_density),
-            rolling_resistance: rolling_resistance.or(file.rolling_resistance),
-            compaction_energy: compaction_energy.or(file.compaction_energy),
-            ledger: ledger || file.ledger.unwrap_or(false),
-            terminal_tol: terminal_tol.or(file.terminal_tol),
+            model: self.model.or(file.model),
+            params: ParamArgs {
+                given: self.params.given.or(&file.shared()),
+            },
         }
     }
 }
@@ -393,13 +450,13 @@ impl SimulateArgs {
         let (times, dt) = if sampling_on_command_line {
             (times, dt)
         } else {
-            (file.times.clone(), file.dt)
+            (file.times(), file.dt())
         };
         SimulateArgs {
             scenario: scenario.over(&file),
             times,
             dt,
-            turns: turns.or(file.turns),
+            turns: turns.or(file.turns()),
             output: output.over(&file),
         }
     }
@@ -418,7 +475,10 @@ impl TurnsArgs {
             turns,
             output,
         } = self;
-        for (key, set) in [("times", file.times.is_some()), ("dt", file.dt.is_some())] {
+        for (key, set) in [
+            ("times", file.times().is_some()),
+            ("dt", file.dt().is_some()),
+        ] {
             if set {
                 bail!(
                     "config file {}: `{key}` is a key of `snowroll simulate` only; \
@@ -429,7 +489,7 @@ impl TurnsArgs {
         }
         Ok(TurnsArgs {
             scenario: scenario.over(&file),
-            turns: turns.or(file.turns),
+            turns: turns.or(file.turns()),
             output: output.over(&file),
         })
     }
@@ -441,11 +501,22 @@ mod tests {
     use crate::args::Args;
     use clap::CommandFactory;
 
+    /// `Given` with each `(key, value)`.
+    fn given(values: &[(&str, Value)]) -> Given {
+        let mut g = Given::new();
+        for (k, v) in values {
+            g.insert(Param::of_key(k).unwrap(), v.clone());
+        }
+        g
+    }
+
     #[test]
     fn file_fills_only_missing_flags() {
         let flags = SimulateArgs {
             scenario: ScenarioArgs {
-                alpha_deg: Some(40.0),
+                params: ParamArgs {
+                    given: given(&[("alpha_deg", Value::Real(40.0))]),
+                },
                 ..Default::default()
             },
             dt: Some(0.5),
@@ -453,17 +524,28 @@ mod tests {
         };
         let file = ConfigFile {
             model: Some(ModelKind::Energy),
-            alpha_deg: Some(25.0),
-            snow_depth: Some(0.02),
-            times: Some(vec![1.0, 2.0]),
-            turns: Some(7),
+            given: given(&[
+                ("alpha_deg", Value::Real(25.0)),
+                ("snow_depth", Value::Real(0.02)),
+                ("times", Value::Reals(vec![1.0, 2.0])),
+                ("turns", Value::Count(7)),
+            ]),
             format: Some(Format::Json),
             ..Default::default()
         };
         let merged = flags.over(file);
         assert_eq!(merged.scenario.model, Some(ModelKind::Energy));
-        assert_eq!(merged.scenario.alpha_deg, Some(40.0));
-        assert_eq!(merged.scenario.snow_depth, Some(0.02));
+        let p = &merged.scenario.params.given;
+        assert_eq!(
+            p.get(Param::of_key("alpha_deg").unwrap()),
+            Some(&Value::Real(40.0))
+        );
+        assert_eq!(
+            p.get(Param::of_key("snow_depth").unwrap()),
+            Some(&Value::Real(0.02))
+        );
+        // The sampling and the turn count are not shared flags.
+        assert_eq!(p.get(Param::of_key("times").unwrap()), None);
         assert_eq!(merged.turns, Some(7));
         assert_eq!(merged.output.format, Some(Format::Json));
         // The command line's sampling replaces the file's.
@@ -480,20 +562,45 @@ mod tests {
         };
         let file = ConfigFile {
             model: Some(ModelKind::TurnsExact),
-            r0: Some(0.2),
-            turns: Some(50),
+            given: given(&[("r0", Value::Real(0.2)), ("turns", Value::Count(50))]),
             ..Default::default()
         };
         let merged = flags.clone().over(file, path).unwrap();
         assert_eq!(merged.scenario.model, Some(ModelKind::TurnsExact));
-        assert_eq!(merged.scenario.r0, Some(0.2));
+        let r0 = Param::of_key("r0").unwrap();
+        assert_eq!(
+            merged.scenario.params.given.get(r0),
+            Some(&Value::Real(0.2))
+        );
         assert_eq!(merged.turns, Some(5));
         let file = ConfigFile {
-            dt: Some(0.1),
+            given: given(&[("dt", Value::Real(0.1))]),
             ..Default::default()
         };
         let err = flags.over(file, path).unwrap_err().to_string();
         assert!(err.contains("run.toml") && err.contains("`dt`"), "{err}");
+    }
+
+    /// Every spelling of a key reads, each value as its kind; a word outside
+    /// a choice and a key given twice are refused.
+    #[test]
+    fn keys_read_in_every_spelling_and_kind() {
+        let file: ConfigFile = toml::from_str(
+            "alpha-deg = 25\nsnow_depth_m = 0.02\nmax_rows = 10\nledger = true\n\
+             collision = \"PIVOT\"\ntimes = [1.0, 2]\nshape = \"Sphere\"\n",
+        )
+        .unwrap();
+        let v = |k: &str| file.given.get(Param::of_key(k).unwrap()).cloned();
+        assert_eq!(v("alpha_deg"), Some(Value::Real(25.0)));
+        assert_eq!(v("snow_depth"), Some(Value::Real(0.02)));
+        assert_eq!(v("max_rows"), Some(Value::Count(10)));
+        assert_eq!(v("ledger"), Some(Value::Flag(true)));
+        assert_eq!(v("collision"), Some(Value::Word("PIVOT".into())));
+        assert_eq!(v("times"), Some(Value::Reals(vec![1.0, 2.0])));
+        let e = toml::from_str::<ConfigFile>("collision = \"bounce\"").unwrap_err();
+        assert!(e.message().contains("unknown collision"), "{e}");
+        let e = toml::from_str::<ConfigFile>("alpha_deg = 1\nslope_deg = 2").unwrap_err();
+        assert!(e.message().contains("duplicate field `alpha_deg`"), "{e}");
     }
 
     #[test]

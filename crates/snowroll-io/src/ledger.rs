@@ -11,10 +11,10 @@ use snowroll::scenario::Scenario;
 /// The closed-form terminal velocity of the run, m/s, where one exists:
 /// the snowless log with drag (§2.2); `None` for every other run.
 pub(crate) fn closed_form_terminal_velocity(model: ModelKind, params: &RunParams) -> Option<f64> {
-    let losses = params.losses?;
+    let losses = params.losses()?;
     if model != ModelKind::Snowless {
         return None;
     }
-    let scenario = Scenario::new(params.scenario).ok()?;
+    let scenario = Scenario::new(params.settings.scenario).ok()?;
     terminal_velocity(&scenario, &losses)
 }

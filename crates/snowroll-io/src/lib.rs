@@ -13,17 +13,17 @@ pub use error::OutputError;
 use snowroll::format_number;
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile};
-use snowroll::trajectory::{Sampling, SimOptions, Stop, StopReason};
+use snowroll::trajectory::{SimOptions, Stop, StopReason};
+use snowroll::{Losses, Settings};
 
 mod error;
 mod finite;
 mod ledger;
 mod row;
-mod sampling;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
-pub use sampling::{RecordedSampling, UnknownSampling};
+pub use snowroll::params::{RecordedSampling, UnknownSampling};
 pub use trajectory::{write_trajectory, TrajectoryWriter};
 pub use turns::{write_turn_table, TurnTableWriter};
 
@@ -42,142 +42,76 @@ pub enum Format {
     Json,
 }
 
-/// Every parameter of a run, as recorded in outputs, in the one parameter
-/// vocabulary of [`ScenarioFile`] (the command line's long flags in
-/// snake_case). A config file may be an output of snowroll: reading these
-/// keys back reproduces the run.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// Every parameter of a run, as recorded in outputs: the settings, in the
+/// order and form of the one parameter table ([`snowroll::params`]), then
+/// the run's validity warnings. A config file may be an output of snowroll:
+/// reading these keys back reproduces the run.
+#[derive(Debug, Clone, PartialEq)]
 pub struct RunParams {
-    /// The scenario.
-    #[serde(flatten)]
-    pub scenario: ScenarioFile,
-    /// End time, s.
-    pub t_end: f64,
-    /// End distance, m.
-    pub x_end: Option<f64>,
-    /// Number of turns (turn models).
-    pub turns: Option<u64>,
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
-    /// How the rows were chosen; written in words (`sampling = every 0.5 s`).
-    pub sampling: RecordedSampling,
-    /// Most rows of the run ([`SimOptions::max_rows`]).
-    pub max_rows: u64,
-    /// Most integrator steps of the run ([`Tolerances::max_steps`](snowroll::integrate::Tolerances::max_steps)).
-    pub max_steps: u64,
-    /// The spacing of a regular sampling grid, s (`--dt`), when one was asked for.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub dt: Option<f64>,
-    /// The requested sample times, s (`--times`), when they were given.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub times: Option<Vec<f64>>,
-    /// Coefficient of static friction of the slip check; none = no check.
-    pub mu: Option<f64>,
-    /// How the turn models climb each new layer.
-    pub collision: snowroll::models::CollisionModel,
-    /// What the run does where the normal force reaches zero.
-    pub on_hop: snowroll::trajectory::OnHop,
-    /// The losses, the ledger and the terminal stop, when any differs from
-    /// its default (outputs of lossless runs are unchanged).
-    #[serde(flatten)]
-    pub losses: Option<snowroll::losses::Losses>,
+    /// The run's settings (scenario and options).
+    pub settings: Settings,
     /// Validity warnings of the run ([`snowroll::validity_warnings`]); empty when in range.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
     /// Requests the run could not honour (times after an early stop, turns
     /// short of those asked for), one sentence each; empty when none. Known
     /// only once the run ended, so the writers put them at the end, after the
     /// stop, not among the parameters.
-    #[serde(skip)]
     pub notes: Vec<String>,
 }
 
 impl RunParams {
     /// Collects the parameters of a run.
     pub fn new(scenario: &Scenario, opts: &SimOptions) -> Self {
-        let (dt, times) = match &opts.sampling {
-            Sampling::Every(dt) => (Some(*dt), None),
-            Sampling::Times(ts) => (None, Some(ts.clone())),
-            Sampling::Steps | Sampling::Ends => (None, None),
-        };
         Self {
-            scenario: ScenarioFile::from(*scenario),
-            t_end: opts.t_end,
-            x_end: opts.x_end,
-            turns: opts.turns,
-            rtol: opts.tolerances.rtol,
-            atol: opts.tolerances.atol,
-            sampling: RecordedSampling::from(&opts.sampling),
-            max_rows: opts.max_rows,
-            max_steps: opts.tolerances.max_steps,
-            dt,
-            times,
-            mu: opts.mu,
-            collision: opts.collision,
-            on_hop: opts.on_hop,
-            losses: (opts.losses != snowroll::losses::Losses::default()).then_some(opts.losses),
+            settings: Settings {
+                scenario: ScenarioFile::from(*scenario),
+                options: opts.clone(),
+                per_turn: false,
+            },
             warnings: Vec::new(),
             notes: Vec::new(),
         }
     }
 
-    /// `key = value` lines, in a fixed order, keys as in [`ScenarioFile`].
-    /// Numbers are written in Rust's shortest form that reads back to the
-    /// same `f64`, so a CSV header reproduces the run exactly.
+    /// The parameters of a turn table (`snowroll turns`): one row per turn,
+    /// so recorded.
+    pub fn per_turn(mut self) -> Self {
+        self.settings.per_turn = true;
+        self
+    }
+
+    /// The losses, when any setting of theirs differs from its default
+    /// (outputs record them only then).
+    pub fn losses(&self) -> Option<Losses> {
+        let l = self.settings.options.losses;
+        (l != Losses::default()).then_some(l)
+    }
+
+    /// `key = value` lines, in the table's CSV order
+    /// ([`Settings::csv_lines`]), then one `warning` line per warning.
     fn lines(&self) -> Vec<(String, String)> {
-        let opt = |v: Option<f64>| v.map_or("none".to_string(), format_number);
-        let n = format_number;
-        let s = &self.scenario;
-        let mut lines: Vec<(String, String)> = vec![
-            ("alpha_deg".into(), n(s.alpha_deg)),
-            ("snow_depth".into(), n(s.snow_depth)),
-            ("r0".into(), n(s.r0)),
-            ("g".into(), n(s.g)),
-            ("density".into(), n(s.density)),
-            ("length".into(), n(s.length)),
-            ("v0".into(), n(s.v0)),
-            ("shape".into(), s.shape.to_string()),
-            ("t_end".into(), n(self.t_end)),
-            ("x_end".into(), opt(self.x_end)),
-            (
-                "turns".into(),
-                self.turns.map_or("none".to_string(), |n| n.to_string()),
-            ),
-            ("rtol".into(), format!("{:e}", self.rtol)),
-            ("atol".into(), format!("{:e}", self.atol)),
-            ("sampling".into(), self.sampling.to_string()),
-            ("max_rows".into(), self.max_rows.to_string()),
-            ("max_steps".into(), self.max_steps.to_string()),
-            ("collision".into(), self.collision.to_string()),
-            ("on_hop".into(), self.on_hop.to_string()),
-        ];
-        if let Some(w) = s.swath_width {
-            lines.push(("swath_width".into(), n(w)));
-        }
-        if let Some(mu) = self.mu {
-            lines.push(("mu".into(), n(mu)));
-        }
-        if let Some(l) = &self.losses {
-            lines.extend([
-                ("drag_coefficient".into(), n(l.drag_coefficient)),
-                ("air_density".into(), n(l.air_density)),
-                ("rolling_resistance".into(), n(l.rolling_resistance)),
-                ("compaction_energy".into(), n(l.compaction_energy)),
-                ("ledger".into(), l.ledger.to_string()),
-                ("terminal_tol".into(), format!("{:e}", l.terminal_tol)),
-            ]);
-        }
-        if let Some(dt) = self.dt {
-            lines.push(("dt".into(), n(dt)));
-        }
-        if let Some(times) = &self.times {
-            let list: Vec<String> = times.iter().map(|t| n(*t)).collect();
-            lines.push(("times".into(), list.join(",")));
-        }
+        let mut lines: Vec<(String, String)> = self
+            .settings
+            .csv_lines()
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect();
         lines.extend(self.warnings.iter().map(|w| ("warning".into(), w.clone())));
         lines
+    }
+}
+
+impl Serialize for RunParams {
+    /// The table's JSON entries ([`Settings::json_entries`]), then
+    /// `warnings` when there are any.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = serializer.serialize_map(None)?;
+        self.settings.serialize_record(&mut map)?;
+        if !self.warnings.is_empty() {
+            map.serialize_entry("warnings", &self.warnings)?;
+        }
+        map.end()
     }
 }
 

@@ -70,7 +70,7 @@ impl<W: Write> TrajectoryWriter<W> {
         params: &RunParams,
     ) -> Result<Self, OutputError> {
         let turns = !model.is_circular();
-        let ledger = params.losses.is_some_and(|l| l.records_ledger());
+        let ledger = params.losses().is_some_and(|l| l.records_ledger());
         let v_terminal = closed_form_terminal_velocity(model, params);
         let body = match format {
             Format::Csv => {

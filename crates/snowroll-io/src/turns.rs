@@ -46,7 +46,7 @@ impl<W: Write> TurnTableWriter<W> {
         model: ModelKind,
         params: &RunParams,
     ) -> Result<Self, OutputError> {
-        let ledger = params.losses.is_some_and(|l| l.records_ledger());
+        let ledger = params.losses().is_some_and(|l| l.records_ledger());
         let body = match format {
             Format::Csv => {
                 write_csv_header(&mut w, model, params)?;

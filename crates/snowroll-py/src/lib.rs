@@ -18,14 +18,15 @@
 mod sweep;
 
 use numpy::IntoPyArray;
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use snowroll::integrate::Tolerances;
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
+use snowroll::params::{Kind, Scope};
 use snowroll::{
-    run_turns, validity_warnings, CollisionModel, LedgerRow, Losses, ModelKind, OnHop, ParamError,
-    Sampling, Scenario, ScenarioFile, SimError, SimOptions, Stop, Trajectory, TurnTable,
+    run_turns, validity_warnings, Given, LedgerRow, ModelKind, Param, ParamError, Sampling,
+    Scenario, ScenarioFile, Settings, SimError, SimOptions, Stop, Trajectory, TurnTable, Value,
+    PARAMS,
 };
 use snowroll_io::RunParams;
 
@@ -80,127 +81,90 @@ fn sim_error(e: SimError) -> PyErr {
     }
 }
 
-/// The parameters shared by `simulate` and `turns`; `None` takes the
-/// library's default (the CLI's default for the same flag).
-struct Inputs {
-    model: String,
-    scenario: [Option<f64>; 7],
-    /// `cylinder` or `sphere`; `None` = cylinder.
-    shape: Option<String>,
-    /// Swath width of a sphere, m; `None` = its diameter.
-    swath_width: Option<f64>,
-    t_end: Option<f64>,
-    x_end: Option<f64>,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    mu: Option<f64>,
-    collision: Option<String>,
-    on_hop: Option<String>,
-    /// Most rows; `None` = [`snowroll::DEFAULT_MAX_ROWS`].
-    max_rows: Option<u64>,
-    /// Most integrator steps; `None` = [`Tolerances::default`]'s.
-    max_steps: Option<u64>,
-    /// `drag_coefficient, air_density, rolling_resistance, compaction_energy, terminal_tol`.
-    losses: [Option<f64>; 5],
-    ledger: bool,
-}
-
-impl Inputs {
-    fn model(&self) -> PyResult<ModelKind> {
-        self.model.parse().map_err(value_error)
-    }
-
-    /// The losses, each `None` from `d` (the CLI's `inputs::options`).
-    fn losses_or(&self, d: &Losses) -> Losses {
-        let [drag_coefficient, air_density, rolling_resistance, compaction_energy, terminal_tol] =
-            self.losses;
-        Losses {
-            drag_coefficient: drag_coefficient.unwrap_or(d.drag_coefficient),
-            air_density: air_density.unwrap_or(d.air_density),
-            rolling_resistance: rolling_resistance.unwrap_or(d.rolling_resistance),
-            compaction_energy: compaction_energy.unwrap_or(d.compaction_energy),
-            ledger: self.ledger,
-            terminal_tol: terminal_tol.unwrap_or(d.terminal_tol),
+/// The keywords of a call, read against the parameter table: each one a
+/// parameter of `scopes`, its value converted to the parameter's kind;
+/// `None` leaves the default. `function` names the call in the message for
+/// an unknown keyword, as Python itself would.
+fn given(function: &str, scopes: &[Scope], kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Given> {
+    let mut given = Given::new();
+    let Some(kwargs) = kwargs else {
+        return Ok(given);
+    };
+    for (k, v) in kwargs.iter() {
+        let key: String = k.extract()?;
+        let Some(p) = Param::of_key(&key).filter(|p| scopes.contains(&p.scope)) else {
+            return Err(PyTypeError::new_err(format!(
+                "{function}() got an unexpected keyword argument '{key}'"
+            )));
+        };
+        if v.is_none() {
+            continue;
         }
-    }
-
-    /// The validated scenario, defaults from [`ScenarioFile::default`].
-    fn scenario(&self) -> PyResult<Scenario> {
-        let d = ScenarioFile::default();
-        let [alpha_deg, snow_depth, r0, g, density, length, v0] = self.scenario;
-        Scenario::new(ScenarioFile {
-            alpha_deg: alpha_deg.unwrap_or(d.alpha_deg),
-            snow_depth: snow_depth.unwrap_or(d.snow_depth),
-            r0: r0.unwrap_or(d.r0),
-            g: g.unwrap_or(d.g),
-            density: density.unwrap_or(d.density),
-            length: length.unwrap_or(d.length),
-            v0: v0.unwrap_or(d.v0),
-            shape: match &self.shape {
-                None => d.shape,
-                Some(name) => name.parse().map_err(value_error)?,
-            },
-            swath_width: self.swath_width.or(d.swath_width),
-        })
-        .map_err(value_error)
-    }
-
-    /// The validated options, built as the CLI's `inputs::options` builds them.
-    fn options(
-        &self,
-        t_end_default: f64,
-        sampling: Sampling,
-        turns: Option<u64>,
-    ) -> PyResult<SimOptions> {
-        let d = SimOptions::default();
-        let collision = match &self.collision {
-            None => d.collision,
-            Some(name) => collision(name)?,
+        let value = match p.kind {
+            Kind::Real | Kind::OptionalReal => Value::Real(v.extract()?),
+            Kind::Count | Kind::OptionalCount => Value::Count(v.extract()?),
+            Kind::Flag => Value::Flag(v.extract()?),
+            Kind::Choice(_) | Kind::Text => Value::Word(v.extract()?),
+            Kind::Reals => Value::Reals(v.extract()?),
         };
-        let on_hop = match &self.on_hop {
-            None => d.on_hop,
-            Some(name) => on_hop(name)?,
-        };
-        let opts = SimOptions {
-            t_end: self.t_end.unwrap_or(t_end_default),
-            x_end: self.x_end.or(d.x_end),
-            turns,
-            tolerances: Tolerances {
-                rtol: self.rtol.unwrap_or(d.tolerances.rtol),
-                atol: self.atol.unwrap_or(d.tolerances.atol),
-                max_steps: self.max_steps.unwrap_or(d.tolerances.max_steps),
-                ..d.tolerances
-            },
-            sampling,
-            max_rows: self.max_rows.unwrap_or(d.max_rows),
-            mu: self.mu,
-            collision,
-            on_hop,
-            losses: self.losses_or(&d.losses),
-        };
-        opts.validate().map_err(value_error)?;
-        Ok(opts)
+        given.insert(p, value);
     }
+    Ok(given)
 }
 
-/// The collision variant named `name` (`note`, `charged`, `pivot`).
-fn collision(name: &str) -> PyResult<CollisionModel> {
-    serde_json::from_value(serde_json::Value::String(name.to_string())).map_err(|_| {
-        PyValueError::new_err(format!(
-            "unknown collision {name:?}: expected one of note, charged, pivot"
-        ))
-    })
+/// The table's parameter `key`.
+fn param(key: &str) -> PyResult<&'static Param> {
+    Param::of_key(key)
+        .ok_or_else(|| PyRuntimeError::new_err(format!("no parameter {key} in the table")))
 }
 
-/// What a run does where N reaches 0, named `name` (`stop`, `continue`).
-fn on_hop(name: &str) -> PyResult<OnHop> {
-    serde_json::from_value(serde_json::Value::String(name.to_string())).map_err(|_| {
-        let ids: Vec<&str> = OnHop::ALL.iter().map(|h| h.id()).collect();
-        PyValueError::new_err(format!(
-            "unknown on_hop {name:?}: expected one of {}",
-            ids.join(", ")
-        ))
-    })
+/// The validated scenario and options of `given` over `base`.
+fn inputs(given: &Given, base: Settings) -> PyResult<(Scenario, SimOptions)> {
+    let settings = given.apply(base).map_err(value_error)?;
+    let scenario = Scenario::new(settings.scenario).map_err(value_error)?;
+    settings.options.validate().map_err(value_error)?;
+    Ok((scenario, settings.options))
+}
+
+/// The parameter table, one dict per parameter: `key`, `kind`, `choices`,
+/// `unit`, `range`, `help`, `default` (the value, `None` when off),
+/// `default_text` (as `--help` shows it), `scope`, `applies`, `aliases`.
+/// The Python layer builds its keyword checks, signatures, docstrings and
+/// stub from it.
+fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    let list = PyList::empty(py);
+    for p in PARAMS.iter() {
+        let d = PyDict::new(py);
+        d.set_item("key", p.key)?;
+        let (kind, choices) = match p.kind {
+            Kind::Real => ("real", None),
+            Kind::OptionalReal => ("optional_real", None),
+            Kind::Count => ("count", None),
+            Kind::OptionalCount => ("optional_count", None),
+            Kind::Flag => ("flag", None),
+            Kind::Choice(c) => ("choice", Some(c.ids())),
+            Kind::Reals => ("reals", None),
+            Kind::Text => ("text", None),
+        };
+        d.set_item("kind", kind)?;
+        d.set_item("choices", choices)?;
+        d.set_item("unit", p.unit)?;
+        d.set_item("range", p.range)?;
+        d.set_item("help", p.help)?;
+        d.set_item("default", record(py, &p.default_value())?)?;
+        d.set_item("default_text", p.default_text())?;
+        let scope = match p.scope {
+            Scope::Shared => "shared",
+            Scope::Sampling => "sampling",
+            Scope::Turns => "turns",
+            Scope::Record => "record",
+        };
+        d.set_item("scope", scope)?;
+        d.set_item("applies", p.applies.to_string())?;
+        d.set_item("aliases", p.aliases.to_vec())?;
+        list.append(d)?;
+    }
+    Ok(list)
 }
 
 /// `value` (a serde record) as Python objects: numbers, strings, lists,
@@ -388,90 +352,36 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
 
 /// Runs one model for one scenario (`snowroll simulate`); returns a dict
 /// with `columns`, `stop`, `params`, `version`, `model`, `equation`,
-/// `warnings`. The Python layer wraps it in `snowroll.Result`.
+/// `warnings`. The keywords are the parameter table's (`PARAMS`); the
+/// Python layer wraps the dict in `snowroll.Result`.
 #[pyfunction]
-#[pyo3(signature = (
-    model = "torque-cm", *, alpha_deg = None, snow_depth = None, r0 = None, g = None,
-    density = None, length = None, v0 = None, shape = None, swath_width = None, t_end = None,
-    x_end = None, times = None, dt = None, turns = None, rtol = None, atol = None, mu = None,
-    collision = None, on_hop = None, max_rows = None, max_steps = None,
-    drag_coefficient = None, air_density = None, rolling_resistance = None,
-    compaction_energy = None, ledger = false, terminal_tol = None
-))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (model = "torque-cm", **params))]
 fn simulate<'py>(
     py: Python<'py>,
     model: &str,
-    alpha_deg: Option<f64>,
-    snow_depth: Option<f64>,
-    r0: Option<f64>,
-    g: Option<f64>,
-    density: Option<f64>,
-    length: Option<f64>,
-    v0: Option<f64>,
-    shape: Option<String>,
-    swath_width: Option<f64>,
-    t_end: Option<f64>,
-    x_end: Option<f64>,
-    times: Option<Vec<f64>>,
-    dt: Option<f64>,
-    turns: Option<u64>,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    mu: Option<f64>,
-    collision: Option<String>,
-    on_hop: Option<String>,
-    max_rows: Option<u64>,
-    max_steps: Option<u64>,
-    drag_coefficient: Option<f64>,
-    air_density: Option<f64>,
-    rolling_resistance: Option<f64>,
-    compaction_energy: Option<f64>,
-    ledger: bool,
-    terminal_tol: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let inputs = Inputs {
-        model: model.to_string(),
-        scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
-        shape,
-        swath_width,
-        t_end,
-        x_end,
-        rtol,
-        atol,
-        mu,
-        collision,
-        on_hop,
-        max_rows,
-        max_steps,
-        losses: [
-            drag_coefficient,
-            air_density,
-            rolling_resistance,
-            compaction_energy,
-            terminal_tol,
-        ],
-        ledger,
-    };
-    let kind = inputs.model()?;
+    let scopes = [Scope::Shared, Scope::Sampling, Scope::Turns];
+    let mut given = given("simulate", &scopes, params)?;
+    let kind: ModelKind = model.parse().map_err(value_error)?;
+    let turns = given.take(param("turns")?);
     if turns.is_some() && !kind.is_turn_model() {
         return Err(PyValueError::new_err(format!(
             "turns applies only to the turn models turns, turns-exact, not to {}",
             kind.id()
         )));
     }
-    let sampling = match (times, dt) {
-        (Some(ts), None) => Sampling::Times(ts),
-        (None, Some(dt)) => Sampling::Every(dt),
-        (None, None) => SimOptions::default().sampling,
-        (Some(_), Some(_)) => {
-            return Err(PyValueError::new_err(
-                "`times` and `dt` conflict, give one of them",
-            ))
-        }
-    };
-    let scenario = inputs.scenario()?;
-    let opts = inputs.options(SimOptions::default().t_end, sampling, turns)?;
+    let (times, dt) = (given.get(param("times")?), given.get(param("dt")?));
+    if times.is_some() && dt.is_some() {
+        return Err(PyValueError::new_err(
+            "`times` and `dt` conflict, give one of them",
+        ));
+    }
+    let mut base = Settings::default();
+    if let Some(Value::Count(n)) = turns {
+        base.options.turns = Some(n);
+    }
+    let (scenario, opts) = inputs(&given, base)?;
     let traj = py
         .detach(|| kind.build().simulate(&scenario, &opts))
         .map_err(sim_error)?;
@@ -496,83 +406,34 @@ fn simulate<'py>(
 /// dict with `columns` (one row per turn), `summary`, `stop`, `params`,
 /// `version`, `model`, `equation`, `warnings`.
 #[pyfunction]
-#[pyo3(signature = (
-    model = "turns", *, turns = None, alpha_deg = None, snow_depth = None, r0 = None,
-    g = None, density = None, length = None, v0 = None, shape = None, swath_width = None,
-    t_end = None, x_end = None, rtol = None, atol = None, mu = None, collision = None,
-    on_hop = None, max_rows = None, max_steps = None,
-    drag_coefficient = None, air_density = None, rolling_resistance = None,
-    compaction_energy = None, ledger = false, terminal_tol = None
-))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (model = "turns", **params))]
 fn turns<'py>(
     py: Python<'py>,
     model: &str,
-    turns: Option<u64>,
-    alpha_deg: Option<f64>,
-    snow_depth: Option<f64>,
-    r0: Option<f64>,
-    g: Option<f64>,
-    density: Option<f64>,
-    length: Option<f64>,
-    v0: Option<f64>,
-    shape: Option<String>,
-    swath_width: Option<f64>,
-    t_end: Option<f64>,
-    x_end: Option<f64>,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    mu: Option<f64>,
-    collision: Option<String>,
-    on_hop: Option<String>,
-    max_rows: Option<u64>,
-    max_steps: Option<u64>,
-    drag_coefficient: Option<f64>,
-    air_density: Option<f64>,
-    rolling_resistance: Option<f64>,
-    compaction_energy: Option<f64>,
-    ledger: bool,
-    terminal_tol: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let inputs = Inputs {
-        model: model.to_string(),
-        scenario: [alpha_deg, snow_depth, r0, g, density, length, v0],
-        shape,
-        swath_width,
-        t_end,
-        x_end,
-        rtol,
-        atol,
-        mu,
-        collision,
-        on_hop,
-        max_rows,
-        max_steps,
-        losses: [
-            drag_coefficient,
-            air_density,
-            rolling_resistance,
-            compaction_energy,
-            terminal_tol,
-        ],
-        ledger,
-    };
-    let kind = inputs.model()?;
+    let mut given = given("turns", &[Scope::Shared, Scope::Turns], params)?;
+    let kind: ModelKind = model.parse().map_err(value_error)?;
     if !kind.is_turn_model() {
         return Err(PyValueError::new_err(format!(
             "turns() needs a turn model, one of turns, turns-exact (aliases eq73, eq88), not {}",
             kind.id()
         )));
     }
-    let scenario = inputs.scenario()?;
-    let wanted = turns.unwrap_or(TURNS_DEFAULT);
+    let wanted = match given.take(param("turns")?) {
+        Some(Value::Count(n)) => n,
+        _ => TURNS_DEFAULT,
+    };
     // Only the turn ends are recorded, as by the CLI.
-    let opts = inputs.options(TURNS_T_END_S, Sampling::Ends, Some(wanted))?;
+    let mut base = Settings::default();
+    base.options.t_end = TURNS_T_END_S;
+    base.options.sampling = Sampling::Ends;
+    base.options.turns = Some(wanted);
+    let (scenario, opts) = inputs(&given, base)?;
     let table = py
         .detach(|| run_turns(kind, &scenario, &opts))
         .map_err(sim_error)?;
-    let mut params = RunParams::new(&scenario, &opts);
-    params.sampling = snowroll_io::RecordedSampling::PerTurn;
+    let mut params = RunParams::new(&scenario, &opts).per_turn();
     params.warnings = validity_warnings(kind, &scenario)
         .iter()
         .map(ToString::to_string)
@@ -629,6 +490,7 @@ fn models<'py>(
 #[pymodule]
 fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", snowroll_io::VERSION)?;
+    m.add("PARAMS", param_table(m.py())?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(turns, m)?)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;

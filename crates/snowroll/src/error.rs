@@ -104,6 +104,24 @@ pub enum ParamError {
         /// What is wrong with them.
         reason: &'static str,
     },
+    /// A value of the wrong kind for its parameter (a word for a number).
+    #[error("{key}: expected {expected}")]
+    WrongKind {
+        /// The parameter's key.
+        key: &'static str,
+        /// The kind it takes, in words.
+        expected: &'static str,
+    },
+    /// A word outside a parameter's closed set (`--collision`, `--on-hop`).
+    #[error("unknown {key} {given:?}: expected one of {expected}")]
+    UnknownChoice {
+        /// The parameter's key.
+        key: &'static str,
+        /// What was asked for.
+        given: String,
+        /// The words it takes.
+        expected: String,
+    },
 }
 
 /// A simulation that could not be carried out.

@@ -126,6 +126,7 @@ pub mod losses;
 pub mod model_kind;
 pub mod models;
 pub mod number;
+pub mod params;
 pub mod physics;
 mod quadrature;
 pub mod scenario;
@@ -146,6 +147,7 @@ pub use models::{
     TurnVariant, Validity, ValidityWarning,
 };
 pub use number::format_number;
+pub use params::{Given, Param, RecordedSampling, Settings, Value, PARAMS};
 pub use scenario::{Scenario, ScenarioFile, Shape};
 pub use trajectory::{
     Collected, LedgerRow, OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop,

@@ -2,8 +2,7 @@
 //! the library's inputs: the model, the [`Scenario`] and the [`SimOptions`].
 
 use anyhow::{anyhow, Result};
-use snowroll::integrate::Tolerances;
-use snowroll::{Losses, ModelKind, ParamError, Sampling, Scenario, ScenarioFile, SimOptions};
+use snowroll::{ModelKind, ParamError, Sampling, Scenario, Settings, SimOptions};
 
 use crate::args::ScenarioArgs;
 
@@ -30,56 +29,31 @@ pub fn model(a: &ScenarioArgs, choices: &[ModelKind]) -> Result<ModelKind> {
     })
 }
 
-/// The scenario: each parameter from the arguments, else the library default.
-pub fn scenario(a: &ScenarioArgs) -> Result<Scenario, ParamError> {
-    let d = ScenarioFile::default();
-    Scenario::new(ScenarioFile {
-        alpha_deg: a.alpha_deg.unwrap_or(d.alpha_deg),
-        snow_depth: a.snow_depth.unwrap_or(d.snow_depth),
-        r0: a.r0.unwrap_or(d.r0),
-        g: a.g.unwrap_or(d.g),
-        density: a.density.unwrap_or(d.density),
-        length: a.length.unwrap_or(d.length),
-        v0: a.v0.unwrap_or(d.v0),
-        shape: a.shape.unwrap_or(d.shape),
-        swath_width: a.swath_width.or(d.swath_width),
-    })
+/// The settings: each parameter given in `a`, else from `base` (the
+/// library's defaults with the command's own end time, sampling and turns).
+fn settings(a: &ScenarioArgs, base: Settings) -> Result<Settings, ParamError> {
+    a.params.given.apply(base)
 }
 
-/// The run options: end time, end distance and tolerances from the
-/// arguments, else `t_end_default` and the library defaults; `sampling` and
-/// `turns` as given. Not yet validated.
+/// The scenario: each parameter from the arguments, else the library default.
+pub fn scenario(a: &ScenarioArgs) -> Result<Scenario, ParamError> {
+    Scenario::new(settings(a, Settings::default())?.scenario)
+}
+
+/// The run options: each parameter from the arguments, else the library
+/// default, the end time `t_end_default`; `sampling` and `turns` as given.
+/// Not yet validated.
 pub fn options(
     a: &ScenarioArgs,
     t_end_default: f64,
     sampling: Sampling,
     turns: Option<u64>,
-) -> SimOptions {
-    let d = SimOptions::default();
-    SimOptions {
-        t_end: a.t_end.unwrap_or(t_end_default),
-        x_end: a.x_end.or(d.x_end),
-        turns,
-        tolerances: Tolerances {
-            rtol: a.rtol.unwrap_or(d.tolerances.rtol),
-            atol: a.atol.unwrap_or(d.tolerances.atol),
-            max_steps: a.max_steps.unwrap_or(d.tolerances.max_steps),
-            ..d.tolerances
-        },
-        sampling,
-        max_rows: a.max_rows.unwrap_or(d.max_rows),
-        mu: a.mu,
-        collision: a.collision.unwrap_or(d.collision),
-        on_hop: a.on_hop.unwrap_or(d.on_hop),
-        losses: Losses {
-            drag_coefficient: a.drag_coefficient.unwrap_or(d.losses.drag_coefficient),
-            air_density: a.air_density.unwrap_or(d.losses.air_density),
-            rolling_resistance: a.rolling_resistance.unwrap_or(d.losses.rolling_resistance),
-            compaction_energy: a.compaction_energy.unwrap_or(d.losses.compaction_energy),
-            ledger: a.ledger,
-            terminal_tol: a.terminal_tol.unwrap_or(d.losses.terminal_tol),
-        },
-    }
+) -> Result<SimOptions, ParamError> {
+    let mut base = Settings::default();
+    base.options.t_end = t_end_default;
+    base.options.sampling = sampling;
+    base.options.turns = turns;
+    Ok(settings(a, base)?.options)
 }
 
 /// Refuses, before the run, a run whose row count is known and above

@@ -32,7 +32,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     }
     let scenario = inputs::scenario(&args.scenario)?;
     let mut opts = options(&args)?;
-    if args.scenario.atol.is_none() {
+    if !args.scenario.atol_given() {
         opts.tolerances.atol = default_atol(model, &scenario);
     }
     // The grid spacing first: the row count needs dt > 0.
@@ -111,7 +111,7 @@ fn options(a: &SimulateArgs) -> Result<SimOptions> {
         SimOptions::default().t_end,
         sampling,
         a.turns,
-    ))
+    )?)
 }
 
 /// How many requested times were not written because the run stopped

@@ -48,8 +48,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let scenario = inputs::scenario(&args.scenario)?;
     let wanted = args.turns.unwrap_or(TURNS_DEFAULT);
     // Only the turn ends are recorded, whatever the sampling.
-    let mut opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted));
-    if args.scenario.atol.is_none() {
+    let mut opts = inputs::options(&args.scenario, TURNS_T_END_S, Sampling::Ends, Some(wanted))?;
+    if !args.scenario.atol_given() {
         opts.tolerances.atol = default_atol(model, &scenario);
     }
     inputs::check_row_count(&opts, Some(wanted as f64), &format!("--turns {wanted}"))?;
@@ -69,7 +69,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let mut sink = Sink::open(&args.output)?;
     let name = sink.name();
     let mut params = RunParams::new(&scenario, &opts);
-    params.sampling = snowroll_io::RecordedSampling::PerTurn;
+    params.settings.per_turn = true;
     params.warnings = warnings;
     let mut writer = TurnTableWriter::new(&mut sink, format, model, &params)
         .with_context(|| format!("writing {name}"))?;

@@ -3,10 +3,9 @@
 Every model of K. T. McDonald's note, computed by the Rust library ``snowroll``
 (the same code as the ``snowroll`` command line, so a run here equals the CLI's
 run with the same parameters to the last bit). Keyword names are the
-project's one parameter vocabulary: the CLI's long flags in snake_case
-(``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``, ``length``, ``v0``,
-``t_end``, ``x_end``, ``times``, ``dt``, ``turns``, ``rtol``, ``atol``, ``mu``,
-``collision``, ``on_hop``). Units are SI, angles in degrees.
+project's one parameter table, :data:`PARAMS` (the CLI's long flags in
+snake_case: ``alpha_deg``, ``snow_depth``, ``r0``, ...), with each one's unit,
+range and default. Units are SI, angles in degrees.
 
 >>> import snowroll
 >>> r = snowroll.simulate("torque-cm", alpha_deg=30, snow_depth=0.01, t_end=10)
@@ -25,6 +24,7 @@ calling these functions run in parallel.
 
 from __future__ import annotations
 
+import inspect as _inspect
 import numbers as _numbers
 import warnings as _warnings
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple
@@ -362,34 +362,84 @@ def _flag(name: str, value: Any) -> bool:
     raise TypeError(f"{name}: expected True or False, got {type(value).__name__}")
 
 
-# How each keyword of simulate() and turns() is checked before the native
-# module sees it; a keyword not listed here is passed on as it is.
-_CHECKS = {
-    **dict.fromkeys(
-        (
-            "alpha_deg", "snow_depth", "r0", "g", "density", "length", "v0", "swath_width",
-            "t_end", "x_end", "dt", "rtol", "atol", "mu", "drag_coefficient", "air_density",
-            "rolling_resistance", "compaction_energy", "terminal_tol",
-        ),
-        _number,
-    ),
-    "turns": _count,
-    "max_rows": _count,
-    "max_steps": _count,
-    "times": _numbers_list,
-    "shape": _text,
-    "collision": _text,
-    "on_hop": _text,
-    "ledger": _flag,
+# The parameter table of the library (`snowroll::params`), one dict per
+# parameter: the keywords of simulate() and turns(), their checks, their
+# signatures and the parameter sections of their docstrings all come from it.
+PARAMS: List[Dict[str, Any]] = _snowroll.PARAMS
+_PARAM = {p["key"]: p for p in PARAMS}
+
+# How a keyword of each kind is checked before the native module sees it.
+_CHECK_OF_KIND = {
+    "real": _number,
+    "optional_real": _number,
+    "count": _count,
+    "optional_count": _count,
+    "flag": _flag,
+    "choice": _text,
+    "reals": _numbers_list,
+    "text": _text,
 }
 
+# The Python type of a keyword of each kind, for signatures and the stub.
+_TYPE_OF_KIND = {
+    "real": "Optional[float]",
+    "optional_real": "Optional[float]",
+    "count": "Optional[int]",
+    "optional_count": "Optional[int]",
+    "flag": "bool",
+    "choice": "Optional[str]",
+    "reals": "Optional[Sequence[float]]",
+    "text": "Optional[str]",
+}
 
-def _checked(**kwargs: Any) -> Dict[str, Any]:
-    """The keywords, each checked and converted by :data:`_CHECKS`: a wrong
-    type raises ``TypeError`` and an out-of-range count ``ValueError``, both
-    naming the keyword (the native module would raise ``TypeError`` or
-    ``OverflowError`` without it)."""
-    return {k: _CHECKS[k](k, v) if k in _CHECKS else v for k, v in kwargs.items()}
+# The table's scopes each function takes.
+_SCOPES = {"simulate": ("shared", "sampling", "turns"), "turns": ("turns", "shared")}
+
+
+def _keywords(function: str) -> List[Dict[str, Any]]:
+    """The table's parameters that ``function`` takes, in its keyword order:
+    for turns() the turn count first, as its main setting."""
+    scopes = _SCOPES[function]
+    return sorted(
+        (p for p in PARAMS if p["scope"] in scopes),
+        key=lambda p: scopes.index(p["scope"]) if function == "turns" else 0,
+    )
+
+
+def _checked(function: str, params: Mapping[str, Any]) -> Dict[str, Any]:
+    """The keywords of ``function``, each checked and converted by its kind:
+    an unknown keyword or a wrong type raises ``TypeError`` and an
+    out-of-range count ``ValueError``, each naming the keyword (the native
+    module would raise ``TypeError`` or ``OverflowError`` without it)."""
+    allowed = _SCOPES[function]
+    out = {}
+    for k, v in params.items():
+        p = _PARAM.get(k)
+        if p is None or p["scope"] not in allowed:
+            raise TypeError(f"{function}() got an unexpected keyword argument {k!r}")
+        out[k] = _CHECK_OF_KIND[p["kind"]](k, v)
+    return out
+
+
+def _param_doc(function: str) -> str:
+    """The docstring section listing the keywords of ``function`` from the
+    table: name, unit, help line with its range, default."""
+    lines = ["", "    Keywords (from the parameter table ``snowroll.PARAMS``; ``None`` = the default):", ""]
+    for p in _keywords(function):
+        unit = f" [{p['unit']}]" if p["unit"] else ""
+        applies = "" if p["applies"] == "all" else f"; {p['applies']} only"
+        lines.append(f"    ``{p['key']}``{unit}: {p['help']} (default {p['default_text']}{applies}).")
+    return "\n".join(lines) + "\n"
+
+
+def _signature(function: str, model_default: str) -> _inspect.Signature:
+    """The signature of ``function``: the model, then its keywords from the table."""
+    P = _inspect.Parameter
+    params = [P("model", P.POSITIONAL_OR_KEYWORD, default=model_default, annotation=str)]
+    for p in _keywords(function):
+        default = False if p["kind"] == "flag" else None
+        params.append(P(p["key"], P.KEYWORD_ONLY, default=default, annotation=_TYPE_OF_KIND[p["kind"]]))
+    return _inspect.Signature(params)
 
 
 def _warn(messages: Sequence[str]) -> None:
@@ -397,37 +447,7 @@ def _warn(messages: Sequence[str]) -> None:
         _warnings.warn(m, RuntimeWarning, stacklevel=3)
 
 
-def simulate(
-    model: str = "torque-cm",
-    *,
-    alpha_deg: Optional[float] = None,
-    snow_depth: Optional[float] = None,
-    r0: Optional[float] = None,
-    g: Optional[float] = None,
-    density: Optional[float] = None,
-    length: Optional[float] = None,
-    v0: Optional[float] = None,
-    shape: Optional[str] = None,
-    swath_width: Optional[float] = None,
-    t_end: Optional[float] = None,
-    x_end: Optional[float] = None,
-    times: Optional[Sequence[float]] = None,
-    dt: Optional[float] = None,
-    turns: Optional[int] = None,
-    rtol: Optional[float] = None,
-    atol: Optional[float] = None,
-    mu: Optional[float] = None,
-    collision: Optional[str] = None,
-    on_hop: Optional[str] = None,
-    max_rows: Optional[int] = None,
-    max_steps: Optional[int] = None,
-    drag_coefficient: Optional[float] = None,
-    air_density: Optional[float] = None,
-    rolling_resistance: Optional[float] = None,
-    compaction_energy: Optional[float] = None,
-    ledger: bool = False,
-    terminal_tol: Optional[float] = None,
-) -> Result:
+def simulate(model: str = "torque-cm", **params: Any) -> Result:
     """Integrate one model for one scenario (the CLI's ``snowroll simulate``).
 
     ``model``: an id or equation alias from :func:`models` (case-insensitive):
@@ -437,49 +457,16 @@ def simulate(
     ``"quasi-circular-lift"`` (eq32+36), ``"loney"`` (fn4, closed form),
     ``"turns"`` (eq73: eqs. (73), (76), (89)), ``"turns-exact"`` (eq88).
 
-    Scenario (``None`` = the default): ``alpha_deg`` slope angle, degrees,
-    0 < alpha < 90 (30); ``snow_depth`` b, m, >= 0 (0.01); ``r0`` initial radius,
-    m (0.1); ``g``, m/s^2 (9.81); ``density``, kg/m^3 (400); ``length``, m (1);
-    ``v0`` initial speed, m/s (0). The radius grows as r(x) = sqrt(r0^2 + b x / pi),
-    eq. (8). ``shape`` ``"cylinder"`` (the log, default) or ``"sphere"`` (a
-    snowball, I = 2/5 M r^2; circular models only); ``swath_width`` the width
-    of snow a sphere picks up, m (none = its diameter 2r, which keeps eq. (8)).
-
-    Run: ``t_end`` end time, s (100); ``x_end`` end distance, m (none);
-    ``turns`` number of full turns (turn models only; none); ``rtol`` (1e-10),
-    ``atol`` (1e-12) integrator tolerances; ``mu`` coefficient of static
-    friction: stop with ``slip`` where |F| reaches mu N (none); ``collision``
-    how a turn model climbs each new layer: ``"note"`` (eq. (89), default),
-    ``"charged"``, ``"pivot"``; ``on_hop`` what happens where the normal
-    force N reaches 0: ``"stop"`` (default: stop with ``hop``) or
-    ``"continue"`` (go on as if contact were kept, past the model's validity).
-
-    Limits: ``max_rows`` most rows, >= 1 (1e8): a run whose row count is
-    known beforehand (``dt``: t_end/dt + 1, ``times``: their count, the turn
-    models: the turn count) and above it raises ``ValueError`` before it
-    starts; a run sampled at every step, or on a ``dt`` grid that ``turns``
-    or ``x_end`` may end before t_end, stops there with reason
-    ``row-limit``, its rows kept. ``max_steps`` most integrator steps
-    (accepted, rejected and events), >= 1 (1e8): the run stops there with
-    reason ``step-limit``, its rows kept.
-
-    Losses (docs/snowball-and-losses.md §2; each off by default):
-    ``drag_coefficient`` C_d (0), ``air_density`` kg/m^3 (1.2): drag
-    0.5 rho_a C_d A v^2 with frontal area A = 2 r l (log) or pi r^2 (ball);
-    ``rolling_resistance`` c_rr (0): a couple c_rr N r; ``compaction_energy``
-    J per kg of snow picked up (0), the force e_c dM/dx (dM/dx = rho b l for
-    the log, rho b w for the ball). The turn models take no losses
-    (``ValueError``; their per-turn extremes rest on the energy integral of a
-    turn, §2.1) but take ``ledger``. ``ledger`` adds the
-    energy-ledger columns (``kinetic_j released_j drag_j rolling_j
-    compaction_j model_j collision_j created_j residual_j``) without losses;
-    a run with losses always has them. ``terminal_tol`` (1e-9; 0 = keep
-    going): stop with ``terminal`` where |a| falls to that fraction of the
-    initial drive (the snowless log or ball with drag; ``r.stop["v_terminal_m_s"]``
-    is then the closed-form v_t^2 = 2 M g sin alpha/(rho_a C_d A)).
-
-    Sampling: every accepted step by default; ``times`` exactly these times, s
-    (ascending); ``dt`` a regular grid 0, dt, 2 dt, ... up to the stop.
+    The radius grows as r(x) = sqrt(r0^2 + b x / pi), eq. (8). The turn
+    models take no losses (``ValueError``; their per-turn extremes rest on
+    the energy integral of a turn, §2.1) but take ``ledger``, which adds the
+    energy-ledger columns; a run with losses always has them. Rows: every
+    accepted step by default, else ``times`` or a ``dt`` grid. A run whose
+    row count is known beforehand and above ``max_rows`` raises
+    ``ValueError`` before it starts; one that reaches ``max_rows`` or
+    ``max_steps`` stops there (``row-limit``, ``step-limit``), its rows kept.
+    With drag on the snowless log, ``r.stop["v_terminal_m_s"]`` is the
+    closed-form v_t^2 = 2 M g sin alpha/(rho_a C_d A).
 
     Returns a :class:`Result`: columns as numpy arrays (``r.v_m_s`` or
     ``r["v_m_s"]``), ``r.stop``, ``r.params``, ``r.version``, ``r.to_pandas()``.
@@ -489,72 +476,13 @@ def simulate(
     Raises ``ValueError`` for bad parameters (the library's message) and
     ``RuntimeError`` when the integration fails.
     """
-    raw = _snowroll.simulate(
-        _text("model", model),
-        **_checked(
-            alpha_deg=alpha_deg,
-            snow_depth=snow_depth,
-            r0=r0,
-            g=g,
-            density=density,
-            length=length,
-            v0=v0,
-            shape=shape,
-            swath_width=swath_width,
-            t_end=t_end,
-            x_end=x_end,
-            times=times,
-            dt=dt,
-            turns=turns,
-            rtol=rtol,
-            atol=atol,
-            mu=mu,
-            collision=collision,
-            on_hop=on_hop,
-            max_rows=max_rows,
-            max_steps=max_steps,
-            drag_coefficient=drag_coefficient,
-            air_density=air_density,
-            rolling_resistance=rolling_resistance,
-            compaction_energy=compaction_energy,
-            ledger=ledger,
-            terminal_tol=terminal_tol,
-        ),
-    )
+    raw = _snowroll.simulate(_text("model", model), **_checked("simulate", params))
     result = Result(raw)
     _warn(result.warnings)
     return result
 
 
-def turns(
-    model: str = "turns",
-    *,
-    turns: Optional[int] = None,
-    alpha_deg: Optional[float] = None,
-    snow_depth: Optional[float] = None,
-    r0: Optional[float] = None,
-    g: Optional[float] = None,
-    density: Optional[float] = None,
-    length: Optional[float] = None,
-    v0: Optional[float] = None,
-    shape: Optional[str] = None,
-    swath_width: Optional[float] = None,
-    t_end: Optional[float] = None,
-    x_end: Optional[float] = None,
-    rtol: Optional[float] = None,
-    atol: Optional[float] = None,
-    mu: Optional[float] = None,
-    collision: Optional[str] = None,
-    on_hop: Optional[str] = None,
-    max_rows: Optional[int] = None,
-    max_steps: Optional[int] = None,
-    drag_coefficient: Optional[float] = None,
-    air_density: Optional[float] = None,
-    rolling_resistance: Optional[float] = None,
-    compaction_energy: Optional[float] = None,
-    ledger: bool = False,
-    terminal_tol: Optional[float] = None,
-) -> TurnResult:
+def turns(model: str = "turns", **params: Any) -> TurnResult:
     """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
     one row per turn (the CLI's ``snowroll turns``).
 
@@ -569,16 +497,13 @@ def turns(
     docs/snowball-and-losses.md §1.2).
 
     Losses and ledger: the keywords of :func:`simulate`, same names. The turn
-    models take no losses: ``drag_coefficient``, ``rolling_resistance`` or
-    ``compaction_energy`` above 0 raise ``ValueError`` (a turn's slip, smallest
-    normal force and range of a come from its energy integral, which losses
-    break; docs/snowball-and-losses.md §3.2). ``ledger=True`` adds per turn the
-    energy ledger at the end of the turn, just before its collision:
-    ``kinetic_j released_j drag_j rolling_j compaction_j model_j collision_j
-    created_j residual_j`` (J; ``collision_j`` the kinetic energy the earlier
-    collisions removed, ``created_j`` what the note's eq. (89) created by
-    lifting the log by b for free; they sum with ``kinetic_j`` less
-    ``released_j`` to the initial energy).
+    models take no losses: a loss above 0 raises ``ValueError`` (a turn's
+    slip, smallest normal force and range of a come from its energy
+    integral, which losses break; docs/snowball-and-losses.md §3.2).
+    ``ledger=True`` adds per turn the energy ledger at the end of the turn,
+    just before its collision (``collision_j`` the kinetic energy the
+    earlier collisions removed, ``created_j`` what the note's eq. (89)
+    created by lifting the log by b for free).
 
     Returns a :class:`TurnResult`: one numpy array per column and ``summary``,
     the long-run means of a/(g sin alpha) whose value the note's
@@ -587,39 +512,15 @@ def turns(
     Raises ``ValueError`` for bad parameters or a model that is not a turn
     model, ``RuntimeError`` when the integration fails.
     """
-    raw = _snowroll.turns(
-        _text("model", model),
-        **_checked(
-            turns=turns,
-            alpha_deg=alpha_deg,
-            snow_depth=snow_depth,
-            r0=r0,
-            g=g,
-            density=density,
-            length=length,
-            v0=v0,
-            shape=shape,
-            swath_width=swath_width,
-            t_end=t_end,
-            x_end=x_end,
-            rtol=rtol,
-            atol=atol,
-            mu=mu,
-            collision=collision,
-            on_hop=on_hop,
-            max_rows=max_rows,
-            max_steps=max_steps,
-            drag_coefficient=drag_coefficient,
-            air_density=air_density,
-            rolling_resistance=rolling_resistance,
-            compaction_energy=compaction_energy,
-            ledger=ledger,
-            terminal_tol=terminal_tol,
-        ),
-    )
+    raw = _snowroll.turns(_text("model", model), **_checked("turns", params))
     result = TurnResult(raw)
     _warn(result.warnings)
     return result
+
+
+for _f, _model in ((simulate, "torque-cm"), (turns, "turns")):
+    _f.__doc__ = (_f.__doc__ or "") + _param_doc(_f.__name__)
+    _f.__signature__ = _signature(_f.__name__, _model)  # type: ignore[attr-defined]
 
 
 def models(

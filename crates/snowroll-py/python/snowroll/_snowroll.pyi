@@ -1,13 +1,20 @@
 """Type stubs of the native module ``snowroll._snowroll`` (Rust, PyO3).
 
-Use the functions of the package ``snowroll`` instead: they wrap the dicts
-returned here in ``snowroll.Result`` and ``snowroll.TurnResult``. Every
-keyword left ``None`` takes the library's default, the same as the CLI's.
+Written by ``python -m snowroll._stubgen`` from the parameter table; do not
+edit. Use the functions of the package ``snowroll`` instead: they wrap the
+dicts returned here in ``snowroll.Result`` and ``snowroll.TurnResult``.
+Every keyword left ``None`` takes the library's default, the same as the
+CLI's.
 """
 
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 __version__: str
+
+#: The parameter table: one dict per parameter (``key``, ``kind``,
+#: ``choices``, ``unit``, ``range``, ``help``, ``default``, ``default_text``,
+#: ``scope``, ``applies``, ``aliases``).
+PARAMS: List[Dict[str, Any]]
 
 def simulate(
     model: str = "torque-cm",
@@ -23,16 +30,16 @@ def simulate(
     swath_width: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
-    times: Optional[Sequence[float]] = None,
-    dt: Optional[float] = None,
     turns: Optional[int] = None,
     rtol: Optional[float] = None,
     atol: Optional[float] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
+    dt: Optional[float] = None,
+    times: Optional[Sequence[float]] = None,
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
-    max_rows: Optional[int] = None,
-    max_steps: Optional[int] = None,
     drag_coefficient: Optional[float] = None,
     air_density: Optional[float] = None,
     rolling_resistance: Optional[float] = None,
@@ -48,13 +55,10 @@ def simulate(
     "version": str, "model": str, "equation": str, "warnings": [str]}``;
     columns ``t_s x_m v_m_s a_m_s2 r_m mass_kg normal_n friction_n
     friction_ratio`` (float64; ``friction_ratio`` a ``numpy.ma.MaskedArray``
-    masked where N <= 0, where it is undefined) and for the turn models ``turn`` (uint64),
-    ``theta_rad``, ``omega_rad_s``; with losses or ``ledger=True`` the ledger
-    columns ``kinetic_j released_j drag_j rolling_j compaction_j model_j
-    collision_j created_j residual_j`` (J; drag on 2 r l for the log, pi r^2
-    for the ball). ``max_rows`` and ``max_steps``
-    bound the run (stop reasons ``row-limit``, ``step-limit``); a row count
-    known beforehand above ``max_rows`` raises ValueError.
+    masked where N <= 0, where it is undefined), for the turn models ``turn``
+    (uint64), ``theta_rad``, ``omega_rad_s``, and with losses or a ledger the
+    ledger columns ``kinetic_j released_j drag_j rolling_j compaction_j
+    model_j collision_j created_j residual_j`` (J).
 
     Raises ValueError (bad parameters) or RuntimeError (failed integration).
     """
@@ -76,11 +80,11 @@ def turns(
     x_end: Optional[float] = None,
     rtol: Optional[float] = None,
     atol: Optional[float] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
     mu: Optional[float] = None,
     collision: Optional[str] = None,
     on_hop: Optional[str] = None,
-    max_rows: Optional[int] = None,
-    max_steps: Optional[int] = None,
     drag_coefficient: Optional[float] = None,
     air_density: Optional[float] = None,
     rolling_resistance: Optional[float] = None,
@@ -94,10 +98,8 @@ def turns(
 
     Returns the keys of :func:`simulate` (``columns`` one row per turn) plus
     ``summary``: the long-run means of a/(g sin alpha) that eqs. (77)-(79)
-    estimate as 4/9. ``shape="sphere"`` raises ValueError: the turn models
-    take the log only. The loss keywords are those of :func:`simulate`; any
-    loss above 0 raises ValueError (the turn models take none), ``ledger=True``
-    adds the ledger columns at each turn end, before its collision.
+    estimate as 4/9. The log only; no losses (ValueError), a ledger at each
+    turn end, before its collision.
     """
 
 def models(
@@ -119,14 +121,11 @@ def sweep(
     ``charged``, ``pivot``) and ``on_hop`` (``stop``, ``continue``), each a
     list of ids or ``"a,b"``, one summary row each, in grid order; shard
     ``(i, n)`` only. The circular models take the closed form of their speed
-    (``method="auto"``) or the ODE (``"ode"``). ``a_over_g_sin_alpha`` is the
-    end acceleration over g sin alpha, whose long-run value the note's
-    eq. (79) puts at 4/9 for the turn models.
+    (``method="auto"``) or the ODE (``"ode"``).
 
     Returns ``{"columns": {name: ndarray or list}, "len": int,
     "shard": (i, n), "version": str}``: the numbers as numpy arrays, the text
     columns (``model``, ``on_hop``, ``collision``, ``stop``, ``error``) as
-    lists of ``str`` or ``None``, which ``snowroll.SweepResult`` turns into
-    numpy object arrays. Library messages name keywords where the CLI's name
-    flags (``--snow-depth`` becomes ``snow_depth``).
+    lists of ``str`` or ``None``. Library messages name keywords where the
+    CLI's name flags (``--snow-depth`` becomes ``snow_depth``).
     """

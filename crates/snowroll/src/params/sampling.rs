@@ -4,8 +4,9 @@
 use std::fmt;
 use std::str::FromStr;
 
+use crate::number::format_number;
+use crate::trajectory::Sampling;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
-use snowroll::{format_number, Sampling};
 
 /// The `sampling` an output records. Written as words; a config file read
 /// back tells a turn table ([`RecordedSampling::PerTurn`]) from a trajectory

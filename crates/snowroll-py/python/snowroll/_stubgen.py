@@ -1,0 +1,112 @@
+"""The type stub of the native module, ``_snowroll.pyi``, written from the
+parameter table: the keywords of ``simulate`` and ``turns`` are the table's,
+so the stub cannot be edited by hand without going stale.
+``tests/test_stub.py`` fails when the committed stub differs from what this
+writes. To write it again after a change of the table:
+
+    python -m snowroll._stubgen > crates/snowroll-py/python/snowroll/_snowroll.pyi
+"""
+
+from __future__ import annotations
+
+from typing import List
+
+from . import _TYPE_OF_KIND, _keywords
+
+_HEAD = '''"""Type stubs of the native module ``snowroll._snowroll`` (Rust, PyO3).
+
+Written by ``python -m snowroll._stubgen`` from the parameter table; do not
+edit. Use the functions of the package ``snowroll`` instead: they wrap the
+dicts returned here in ``snowroll.Result`` and ``snowroll.TurnResult``.
+Every keyword left ``None`` takes the library's default, the same as the
+CLI's.
+"""
+
+from typing import Any, Dict, List, Optional, Sequence, Tuple
+
+__version__: str
+
+#: The parameter table: one dict per parameter (``key``, ``kind``,
+#: ``choices``, ``unit``, ``range``, ``help``, ``default``, ``default_text``,
+#: ``scope``, ``applies``, ``aliases``).
+PARAMS: List[Dict[str, Any]]
+'''
+
+_SIMULATE_DOC = '''    """Integrate one model (e.g. eq. (4) ``torque-cm``, eq. (14) ``energy``,
+    eq. (32) ``quasi-circular``, eqs. (73), (76) ``turns``) for one scenario,
+    the radius growing as r(x) = sqrt(r0^2 + b x / pi), eq. (8).
+
+    Returns ``{"columns": {name: ndarray}, "stop": dict, "params": dict,
+    "version": str, "model": str, "equation": str, "warnings": [str]}``;
+    columns ``t_s x_m v_m_s a_m_s2 r_m mass_kg normal_n friction_n
+    friction_ratio`` (float64; ``friction_ratio`` a ``numpy.ma.MaskedArray``
+    masked where N <= 0, where it is undefined), for the turn models ``turn``
+    (uint64), ``theta_rad``, ``omega_rad_s``, and with losses or a ledger the
+    ledger columns ``kinetic_j released_j drag_j rolling_j compaction_j
+    model_j collision_j created_j residual_j`` (J).
+
+    Raises ValueError (bad parameters) or RuntimeError (failed integration).
+    """
+'''
+
+_TURNS_DOC = '''    """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (88)
+    ``turns-exact``; collisions by eq. (89) or the ``charged``/``pivot``
+    variants) for ``turns`` turns (default 100, ``t_end`` default 1e9 s).
+
+    Returns the keys of :func:`simulate` (``columns`` one row per turn) plus
+    ``summary``: the long-run means of a/(g sin alpha) that eqs. (77)-(79)
+    estimate as 4/9. The log only; no losses (ValueError), a ledger at each
+    turn end, before its collision.
+    """
+'''
+
+_TAIL = '''
+def models(
+    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
+) -> List[Dict[str, Any]]:
+    """Every model: ``id``, ``alias``, ``equation``, ``description``,
+    ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
+    and ``stall_kind`` (fn. 7) for ``snow_depth`` and ``r0``, ``validity``."""
+
+def sweep(
+    grid: Dict[str, Any],
+    *,
+    shard: Optional[Tuple[int, int]] = None,
+    method: str = "auto",
+) -> Dict[str, Any]:
+    """Every model of ``grid["model"]`` at every point of the other axes
+    (``alpha_deg`` ... ``atol``, ``mu``; a number, a sequence, or ``"a,b,c"`` /
+    ``"start:end:count"``) and of the settings ``collision`` (``note``,
+    ``charged``, ``pivot``) and ``on_hop`` (``stop``, ``continue``), each a
+    list of ids or ``"a,b"``, one summary row each, in grid order; shard
+    ``(i, n)`` only. The circular models take the closed form of their speed
+    (``method="auto"``) or the ODE (``"ode"``).
+
+    Returns ``{"columns": {name: ndarray or list}, "len": int,
+    "shard": (i, n), "version": str}``: the numbers as numpy arrays, the text
+    columns (``model``, ``on_hop``, ``collision``, ``stop``, ``error``) as
+    lists of ``str`` or ``None``. Library messages name keywords where the
+    CLI's name flags (``--snow-depth`` becomes ``snow_depth``).
+    """
+'''
+
+
+def _function(name: str, model_default: str, doc: str) -> List[str]:
+    lines = [f"def {name}(", f'    model: str = "{model_default}",', "    *,"]
+    for p in _keywords(name):
+        default = "False" if p["kind"] == "flag" else "None"
+        lines.append(f"    {p['key']}: {_TYPE_OF_KIND[p['kind']]} = {default},")
+    lines.append(") -> Dict[str, Any]:")
+    return lines + [doc.rstrip("\n"), ""]
+
+
+def stub() -> str:
+    """The text of ``_snowroll.pyi``."""
+    lines = [_HEAD]
+    lines += _function("simulate", "torque-cm", _SIMULATE_DOC)
+    lines += _function("turns", "turns", _TURNS_DOC)
+    return "\n".join(lines) + _TAIL
+
+
+if __name__ == "__main__":
+    print(stub(), end="")

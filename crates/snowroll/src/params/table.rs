@@ -1,0 +1,435 @@
+//! The table itself: one row per parameter, in the order outputs record
+//! them (JSON `params`; a CSV header sorts them by [`Section`] first) and
+//! `--help` lists them.
+
+use super::{
+    Applies, Choice, Group, Kind, Param, Presence, RecordedSampling, Scope, Section, Value,
+    WrongKind,
+};
+use crate::scenario::Shape;
+use crate::trajectory::{CollisionModel, OnHop, Sampling};
+
+/// The row every field of which is the most common choice: a real number
+/// of the scenario, set everywhere, recorded always at the head.
+const BASE: Param = Param {
+    key: "",
+    aliases: &[],
+    unit: "",
+    value_name: "X",
+    kind: Kind::Real,
+    scope: Scope::Shared,
+    group: Group::Scenario,
+    applies: Applies::All,
+    range: "",
+    help: "",
+    default_note: None,
+    json: Presence::Always,
+    csv: (Section::Head, Presence::Always),
+    exponent: false,
+    get: |_| Value::None,
+    set: |_, _| Err(WrongKind),
+};
+
+/// A run parameter (of [`crate::SimOptions`]).
+const RUN: Param = Param {
+    group: Group::Run,
+    ..BASE
+};
+
+/// A loss parameter: recorded, after the optional ones, only with losses.
+const LOSS: Param = Param {
+    group: Group::Losses,
+    applies: Applies::CircularModels,
+    json: Presence::WithLosses,
+    csv: (Section::Extra, Presence::WithLosses),
+    ..BASE
+};
+
+/// The variant of `all` whose id is `id` (ids are checked before a setter
+/// runs: [`Param::set`]).
+fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Result<T, WrongKind> {
+    all.iter()
+        .copied()
+        .find(|t| name(*t) == id)
+        .ok_or(WrongKind)
+}
+
+/// Every parameter. See [`Param`] for the meaning of each field.
+pub static PARAMS: [Param; 28] = [
+    Param {
+        key: "alpha_deg",
+        aliases: &["slope_deg"],
+        unit: "deg",
+        value_name: "DEG",
+        range: "0 < alpha_deg < 90",
+        help: "Slope angle alpha, in degrees (0 < alpha < 90)",
+        get: |s| Value::Real(s.scenario.alpha_deg),
+        set: |s, v| v.real().map(|x| s.scenario.alpha_deg = x),
+        ..BASE
+    },
+    Param {
+        key: "snow_depth",
+        aliases: &["snow_depth_m"],
+        unit: "m",
+        value_name: "M",
+        range: "snow_depth >= 0",
+        help: "Snow depth b normal to the slope, in m (b >= 0; 0 = no snow)",
+        get: |s| Value::Real(s.scenario.snow_depth),
+        set: |s, v| v.real().map(|x| s.scenario.snow_depth = x),
+        ..BASE
+    },
+    Param {
+        key: "r0",
+        aliases: &["r0_m"],
+        unit: "m",
+        value_name: "M",
+        range: "r0 > 0",
+        help: "Initial radius r0 of the log, in m (r0 > 0)",
+        get: |s| Value::Real(s.scenario.r0),
+        set: |s, v| v.real().map(|x| s.scenario.r0 = x),
+        ..BASE
+    },
+    Param {
+        key: "g",
+        aliases: &["g_m_s2"],
+        unit: "m/s^2",
+        value_name: "M/S^2",
+        range: "g > 0",
+        help: "Gravitational acceleration g, in m/s^2 (g > 0)",
+        get: |s| Value::Real(s.scenario.g),
+        set: |s, v| v.real().map(|x| s.scenario.g = x),
+        ..BASE
+    },
+    Param {
+        key: "density",
+        aliases: &["density_kg_m3"],
+        unit: "kg/m^3",
+        value_name: "KG/M^3",
+        range: "density > 0",
+        help: "Density rho of log and snow, in kg/m^3 (rho > 0)",
+        get: |s| Value::Real(s.scenario.density),
+        set: |s, v| v.real().map(|x| s.scenario.density = x),
+        ..BASE
+    },
+    Param {
+        key: "length",
+        aliases: &["length_m"],
+        unit: "m",
+        value_name: "M",
+        range: "length > 0",
+        help: "Length l of the log, in m (l > 0)",
+        get: |s| Value::Real(s.scenario.length),
+        set: |s, v| v.real().map(|x| s.scenario.length = x),
+        ..BASE
+    },
+    Param {
+        key: "v0",
+        aliases: &["v0_m_s"],
+        unit: "m/s",
+        value_name: "M/S",
+        range: "v0 >= 0",
+        help: "Initial speed v0 down the slope, in m/s (v0 >= 0)",
+        get: |s| Value::Real(s.scenario.v0),
+        set: |s, v| v.real().map(|x| s.scenario.v0 = x),
+        ..BASE
+    },
+    Param {
+        key: "shape",
+        value_name: "SHAPE",
+        kind: Kind::Choice(Choice::Shape),
+        range: "cylinder or sphere",
+        help: "The body: cylinder (the note's log) or sphere (a snowball, I = 2/5 M r^2; the turn \
+               models take the cylinder only)",
+        get: |s| Value::Word(s.scenario.shape.id().into()),
+        set: |s, v| pick(&Shape::ALL, &v.word()?, Shape::id).map(|x| s.scenario.shape = x),
+        ..BASE
+    },
+    Param {
+        key: "swath_width",
+        unit: "m",
+        value_name: "M",
+        kind: Kind::OptionalReal,
+        applies: Applies::Sphere,
+        range: "swath_width > 0",
+        help: "Width w of the swath of snow a sphere picks up, in m (w > 0; sphere only)",
+        default_note: Some(
+            "none = the ball's diameter 2r, which grows with it, so that pi r^2 = pi r0^2 + b x \
+             as for the log",
+        ),
+        json: Presence::WhenSet,
+        csv: (Section::Extra, Presence::WhenSet),
+        get: |s| Value::of_option(s.scenario.swath_width),
+        set: |s, v| v.optional_real().map(|x| s.scenario.swath_width = x),
+        ..BASE
+    },
+    Param {
+        key: "t_end",
+        aliases: &["t_end_s"],
+        unit: "s",
+        value_name: "S",
+        range: "t_end > 0",
+        help: "Stop at this time, in s (t_end > 0)",
+        get: |s| Value::Real(s.options.t_end),
+        set: |s, v| v.real().map(|x| s.options.t_end = x),
+        ..RUN
+    },
+    Param {
+        key: "x_end",
+        aliases: &["x_end_m"],
+        unit: "m",
+        value_name: "M",
+        kind: Kind::OptionalReal,
+        range: "x_end > 0",
+        help: "Also stop when the log has rolled this distance, in m (x_end > 0)",
+        default_note: Some("none"),
+        get: |s| Value::of_option(s.options.x_end),
+        set: |s, v| v.optional_real().map(|x| s.options.x_end = x),
+        ..RUN
+    },
+    Param {
+        key: "turns",
+        value_name: "N",
+        kind: Kind::OptionalCount,
+        scope: Scope::Turns,
+        applies: Applies::TurnModels,
+        range: "turns >= 1",
+        help: "Full turns to run, N >= 1 (turn models only)",
+        get: |s| s.options.turns.map_or(Value::None, Value::Count),
+        set: |s, v| {
+            s.options.turns = match v {
+                Value::None => None,
+                v => Some(v.count()?),
+            };
+            Ok(())
+        },
+        ..RUN
+    },
+    Param {
+        key: "rtol",
+        value_name: "R",
+        range: "1e-15 <= rtol < 1",
+        help: "Relative tolerance of the integrator (1e-15 <= rtol < 1)",
+        exponent: true,
+        get: |s| Value::Real(s.options.tolerances.rtol),
+        set: |s, v| v.real().map(|x| s.options.tolerances.rtol = x),
+        ..RUN
+    },
+    Param {
+        key: "atol",
+        value_name: "A",
+        unit: "m, m/s",
+        range: "atol >= 1e-30",
+        help: "Absolute tolerance of the integrator, in the units of x (m) and v (m/s) \
+               (atol >= 1e-30)",
+        exponent: true,
+        get: |s| Value::Real(s.options.tolerances.atol),
+        set: |s, v| v.real().map(|x| s.options.tolerances.atol = x),
+        ..RUN
+    },
+    Param {
+        key: "sampling",
+        kind: Kind::Text,
+        scope: Scope::Record,
+        help: "How the rows were chosen, in words (`every 0.5 s`, `one row per turn`)",
+        get: |s| {
+            let r = if s.per_turn {
+                RecordedSampling::PerTurn
+            } else {
+                RecordedSampling::from(&s.options.sampling)
+            };
+            Value::Word(r.to_string())
+        },
+        set: |_, _| Err(WrongKind),
+        ..RUN
+    },
+    Param {
+        key: "max_rows",
+        value_name: "N",
+        kind: Kind::Count,
+        range: "max_rows >= 1",
+        help: "Most rows one run writes, N >= 1: a run known to need more (--dt: t_end/dt + 1, \
+               --times: their count, turns: the turn count) is refused before it starts; one \
+               sampled at every step, or on a --dt grid that --turns or --x-end may end before \
+               t_end, stops there, its rows kept (stop reason row-limit)",
+        get: |s| Value::Count(s.options.max_rows),
+        set: |s, v| v.count().map(|x| s.options.max_rows = x),
+        ..RUN
+    },
+    Param {
+        key: "max_steps",
+        value_name: "N",
+        kind: Kind::Count,
+        range: "max_steps >= 1",
+        help: "Most integrator steps (accepted, rejected, and events) of one run, N >= 1: the \
+               run stops there, its rows kept (stop reason step-limit)",
+        get: |s| Value::Count(s.options.tolerances.max_steps),
+        set: |s, v| v.count().map(|x| s.options.tolerances.max_steps = x),
+        ..RUN
+    },
+    Param {
+        key: "dt",
+        unit: "s",
+        value_name: "S",
+        kind: Kind::OptionalReal,
+        scope: Scope::Sampling,
+        range: "dt > 0",
+        help: "Write a regular grid 0, dt, 2 dt, ... up to the stop, in s (dt > 0)",
+        default_note: Some("every accepted step"),
+        json: Presence::WhenSet,
+        csv: (Section::Tail, Presence::WhenSet),
+        get: |s| match s.options.sampling {
+            Sampling::Every(dt) => Value::Real(dt),
+            _ => Value::None,
+        },
+        set: |s, v| {
+            match v.optional_real()? {
+                Some(dt) => s.options.sampling = Sampling::Every(dt),
+                None if matches!(s.options.sampling, Sampling::Every(_)) => {
+                    s.options.sampling = Sampling::Steps;
+                }
+                None => {}
+            }
+            Ok(())
+        },
+        ..RUN
+    },
+    Param {
+        key: "times",
+        unit: "s",
+        value_name: "T1,T2,...",
+        kind: Kind::Reals,
+        scope: Scope::Sampling,
+        range: "ascending, each <= t_end",
+        help: "Write exactly these times, in s, strictly ascending, each <= t_end",
+        default_note: Some("every accepted step"),
+        json: Presence::WhenSet,
+        csv: (Section::Tail, Presence::WhenSet),
+        get: |s| match &s.options.sampling {
+            Sampling::Times(ts) => Value::Reals(ts.clone()),
+            _ => Value::None,
+        },
+        set: |s, v| {
+            match v {
+                Value::Reals(ts) => s.options.sampling = Sampling::Times(ts),
+                Value::None if matches!(s.options.sampling, Sampling::Times(_)) => {
+                    s.options.sampling = Sampling::Steps;
+                }
+                Value::None => {}
+                _ => return Err(WrongKind),
+            }
+            Ok(())
+        },
+        ..RUN
+    },
+    Param {
+        key: "mu",
+        value_name: "MU",
+        kind: Kind::OptionalReal,
+        range: "mu > 0",
+        help: "Coefficient of static friction mu, dimensionless (mu > 0): stop with `slip` where \
+               the friction rolling needs reaches mu times the normal force",
+        default_note: Some("none, no slip check"),
+        csv: (Section::Extra, Presence::WhenSet),
+        get: |s| Value::of_option(s.options.mu),
+        set: |s, v| v.optional_real().map(|x| s.options.mu = x),
+        ..RUN
+    },
+    Param {
+        key: "collision",
+        value_name: "MODEL",
+        kind: Kind::Choice(Choice::Collision),
+        applies: Applies::TurnModels,
+        range: "note, charged or pivot",
+        help: "How a turn model climbs the step of each new layer: note (eq. (89)), charged \
+               (eq. (89) plus the potential energy of the jump), pivot (about the new layer's \
+               edge; may stop with `stuck`)",
+        get: |s| Value::Word(s.options.collision.id().into()),
+        set: |s, v| {
+            pick(&CollisionModel::ALL, &v.word()?, CollisionModel::id)
+                .map(|x| s.options.collision = x)
+        },
+        ..RUN
+    },
+    Param {
+        key: "on_hop",
+        value_name: "ACTION",
+        kind: Kind::Choice(Choice::OnHop),
+        range: "stop or continue",
+        help: "What to do where the normal force reaches zero: stop (reason `hop`; past it the \
+               log flies and no rolling model applies) or continue as if contact were kept",
+        get: |s| Value::Word(s.options.on_hop.id().into()),
+        set: |s, v| pick(&OnHop::ALL, &v.word()?, OnHop::id).map(|x| s.options.on_hop = x),
+        ..RUN
+    },
+    Param {
+        key: "drag_coefficient",
+        value_name: "CD",
+        range: "0 <= drag_coefficient <= 100",
+        help: "Air drag coefficient C_d, dimensionless (0 <= C_d <= 100): drag 0.5 rho_a C_d A \
+               v^2 with frontal area A = 2 r l for the log, pi r^2 for the ball \
+               (docs/snowball-and-losses.md §2)",
+        default_note: Some("0, no drag"),
+        get: |s| Value::Real(s.options.losses.drag_coefficient),
+        set: |s, v| v.real().map(|x| s.options.losses.drag_coefficient = x),
+        ..LOSS
+    },
+    Param {
+        key: "air_density",
+        unit: "kg/m^3",
+        value_name: "RHO_A",
+        range: "0 < air_density <= 1e4",
+        help: "Air density rho_a for the drag, kg/m^3 (> 0)",
+        get: |s| Value::Real(s.options.losses.air_density),
+        set: |s, v| v.real().map(|x| s.options.losses.air_density = x),
+        ..LOSS
+    },
+    Param {
+        key: "rolling_resistance",
+        value_name: "C_RR",
+        range: "0 <= rolling_resistance < 10",
+        help: "Rolling-resistance coefficient c_rr, dimensionless (0 <= c_rr < 10): a couple \
+               c_rr N r, i.e. a force c_rr times the normal force N",
+        default_note: Some("0, none"),
+        get: |s| Value::Real(s.options.losses.rolling_resistance),
+        set: |s, v| v.real().map(|x| s.options.losses.rolling_resistance = x),
+        ..LOSS
+    },
+    Param {
+        key: "compaction_energy",
+        unit: "J/kg",
+        value_name: "E_C",
+        range: "0 <= compaction_energy <= 1e12",
+        help: "Work of compacting the snow picked up, J per kg of snow (>= 0)",
+        default_note: Some("0, none"),
+        get: |s| Value::Real(s.options.losses.compaction_energy),
+        set: |s, v| v.real().map(|x| s.options.losses.compaction_energy = x),
+        ..LOSS
+    },
+    Param {
+        key: "ledger",
+        kind: Kind::Flag,
+        applies: Applies::All,
+        range: "true or false",
+        help: "Write the energy ledger columns (kinetic, released, each loss, model, collision, \
+               created, residual, J) even without losses; a run with losses always writes them. \
+               The turn models take no losses but keep the ledger (their collisions' losses; \
+               `snowroll turns`: at each turn end, before its collision)",
+        default_note: Some("off"),
+        get: |s| Value::Flag(s.options.losses.ledger),
+        set: |s, v| v.flag().map(|x| s.options.losses.ledger = x),
+        ..LOSS
+    },
+    Param {
+        key: "terminal_tol",
+        value_name: "TOL",
+        applies: Applies::All,
+        range: "0 <= terminal_tol < 1",
+        help: "Stop with `terminal` where |a| falls to TOL times the initial drive \
+               (g sin a - c_rr g cos a)/(1 + k): only the snowless log or ball with drag has a \
+               terminal velocity; 0 = keep going (0 <= TOL < 1)",
+        exponent: true,
+        get: |s| Value::Real(s.options.losses.terminal_tol),
+        set: |s, v| v.real().map(|x| s.options.losses.terminal_tol = x),
+        ..LOSS
+    },
+];
