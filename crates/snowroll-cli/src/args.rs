@@ -355,48 +355,9 @@ pub struct SweepArgs {
     /// Models, by id or equation alias: ID[,ID...] (`snowroll models` lists them)
     #[arg(long, value_name = "IDS")]
     pub model: Option<String>,
-    /// Slope angle alpha, in degrees (0 < alpha < 90): value, list or start:end:count [default: 30]
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
-    pub alpha_deg: Option<String>,
-    /// Snow depth b, in m (b >= 0) [default: 0.01]
-    #[arg(long, value_name = "M", allow_hyphen_values = true)]
-    pub snow_depth: Option<String>,
-    /// Initial radius r0, in m (r0 > 0) [default: 0.1]
-    #[arg(long, value_name = "M", allow_hyphen_values = true)]
-    pub r0: Option<String>,
-    /// Gravitational acceleration g, in m/s^2 (g > 0) [default: 9.81]
-    #[arg(long, value_name = "M/S^2", allow_hyphen_values = true)]
-    pub g: Option<String>,
-    /// Density rho, in kg/m^3 (rho > 0) [default: 400]
-    #[arg(long, value_name = "KG/M^3", allow_hyphen_values = true)]
-    pub density: Option<String>,
-    /// Length l of the log, in m (l > 0) [default: 1]
-    #[arg(long, value_name = "M", allow_hyphen_values = true)]
-    pub length: Option<String>,
-    /// Initial speed v0, in m/s (v0 >= 0) [default: 0]
-    #[arg(long, value_name = "M/S", allow_hyphen_values = true)]
-    pub v0: Option<String>,
-    /// End time, in s (t_end > 0) [default: 100]
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
-    pub t_end: Option<String>,
-    /// End distance, in m (x_end > 0) [default: none]
-    #[arg(long, value_name = "M", allow_hyphen_values = true)]
-    pub x_end: Option<String>,
-    /// Relative tolerance (1e-15 <= rtol < 1) [default: 1e-10]
-    #[arg(long, value_name = "R", allow_hyphen_values = true)]
-    pub rtol: Option<String>,
-    /// Absolute tolerance, in m and m/s (atol >= 1e-30) [default: 1e-12]
-    #[arg(long, value_name = "A", allow_hyphen_values = true)]
-    pub atol: Option<String>,
-    /// Coefficient of static friction mu (dimensionless, mu > 0): a run stops with `slip` where |F| reaches mu N [default: none, no slip check]
-    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
-    pub mu: Option<String>,
-    /// What a run does where the normal force reaches 0: stop (stop reason `hop`) or continue; a list sweeps both, e.g. stop,continue [default: stop]
-    #[arg(long, value_name = "WHAT[,WHAT]")]
-    pub on_hop: Option<String>,
-    /// Collision law of the turn models at each new layer: note (eq. (89)), charged or pivot; a list sweeps them [default: note]
-    #[arg(long, value_name = "LAW[,LAW...]")]
-    pub collision: Option<String>,
+    /// One flag per sweep axis of the parameter table.
+    #[command(flatten)]
+    pub axes: AxisArgs,
 
     /// Also draw a regime map of the rows as SVG: cells over two swept parameters coloured by outcome (never starts / stalls in turn k / rolls on / hops / slips / stuck) or by --plot-color, with the closed-form stall, hop and slip borders drawn over them. Needs --output FILE
     #[arg(long, value_name = "FILE.svg", requires = "output")]
@@ -446,6 +407,94 @@ pub struct SweepArgs {
     /// Rows computed and written at a time (tests and tuning; the result does not depend on it)
     #[arg(long, value_name = "N", hide = true, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     pub chunk_rows: Option<u64>,
+}
+
+/// One flag per parameter of the table that a sweep varies
+/// ([`Param::sweep`]), each taking a value, a list `a,b,c` or a range
+/// `start:end:count` (numbers), or a list of words; kept as typed, read by
+/// the grid (`commands/sweep_grid.rs`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct AxisArgs {
+    /// The axes given, in table order, as typed.
+    pub given: Vec<(&'static Param, String)>,
+}
+
+/// The sweep axes, in table order.
+pub fn sweep_axes() -> impl Iterator<Item = &'static Param> {
+    PARAMS.iter().filter(|p| p.sweep)
+}
+
+/// The flag of sweep axis `p`.
+fn axis_arg(p: &'static Param) -> Arg {
+    let (value_name, what) = match p.kind {
+        Kind::Choice(_) => (
+            format!("{}[,{}...]", p.value_name, p.value_name),
+            "a word, or a list a,b of them",
+        ),
+        _ => (
+            p.value_name.to_string(),
+            "value, list a,b,c or range start:end:count",
+        ),
+    };
+    Arg::new(p.key)
+        .long(p.flag())
+        .value_name(value_name)
+        .allow_hyphen_values(true)
+        .action(ArgAction::Set)
+        .help(format!(
+            "{}: {what} [default: {}]",
+            p.help,
+            p.default_text()
+        ))
+}
+
+impl clap::Args for AxisArgs {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        cmd.args(sweep_axes().map(axis_arg))
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+impl clap::FromArgMatches for AxisArgs {
+    fn from_arg_matches(m: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        let mut me = Self::default();
+        me.update_from_arg_matches(m)?;
+        Ok(me)
+    }
+
+    fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
+        for p in sweep_axes() {
+            if let Some(text) = m.get_one::<String>(p.key) {
+                self.given.retain(|(q, _)| q.key != p.key);
+                self.given.push((p, text.clone()));
+            }
+        }
+        let order = |p: &Param| PARAMS.iter().position(|q| q.key == p.key);
+        self.given.sort_by_key(|(p, _)| order(p));
+        Ok(())
+    }
+}
+
+impl AxisArgs {
+    /// The text given for axis `key`, if any.
+    pub fn get(&self, key: &str) -> Option<&String> {
+        self.given
+            .iter()
+            .find(|(p, _)| p.key == key)
+            .map(|(_, t)| t)
+    }
+
+    /// Gives axis `p` the text `text` unless it already has one.
+    pub fn fill(&mut self, p: &'static Param, text: Option<String>) {
+        if let (None, Some(text)) = (self.get(p.key), text) {
+            self.given.push((p, text));
+            let order = |p: &Param| PARAMS.iter().position(|q| q.key == p.key);
+            self.given.sort_by_key(|(p, _)| order(p));
+        }
+    }
 }
 
 /// Output formats of `snowroll sweep`.

@@ -105,6 +105,31 @@ pub(crate) fn sweep<'py>(
             )))
         }
     };
+    let grid = parse_grid(grid)?;
+    let (i, n) = shard.unwrap_or((0, 1));
+    let range = shard_range(grid.len(), i, n).map_err(|e| value_error_text(&e))?;
+    let rows = py
+        .detach(|| {
+            let mut rows: Vec<SweepRow> = Vec::new();
+            run_chunks(&grid, range, DEFAULT_CHUNK, method, |chunk| {
+                rows.extend_from_slice(chunk);
+                Ok::<(), ParamError>(())
+            })
+            .map(|()| rows)
+        })
+        .map_err(value_error)?;
+    let c = columns(py, &rows)?;
+    let out = PyDict::new(py);
+    out.set_item("columns", c)?;
+    out.set_item("len", grid.len())?;
+    out.set_item("shard", (i, n))?;
+    out.set_item("version", snowroll_io::VERSION)?;
+    Ok(out)
+}
+
+/// The grid of a Python grid dict: `model`, the numeric axes and the two
+/// lists of words (`collision`, `on_hop`).
+fn parse_grid(grid: &Bound<'_, PyDict>) -> PyResult<Grid> {
     let mut models = Vec::new();
     let mut axes = Vec::new();
     let mut choices = Choices::default();
@@ -137,7 +162,7 @@ pub(crate) fn sweep<'py>(
             values: axis_values(param.key(), &value)?,
         });
     }
-    let grid = Grid::new(models, axes)
+    Grid::new(models, axes)
         .and_then(|g| g.with_choices(choices))
         .map_err(|e| match e {
             // The CLI's wording names its flag; a Python caller writes a grid key.
@@ -146,38 +171,23 @@ pub(crate) fn sweep<'py>(
                  (snowroll.models() lists them)",
             ),
             other => value_error_text(&other.to_string()),
-        })?;
-    let (i, n) = shard.unwrap_or((0, 1));
-    let range = shard_range(grid.len(), i, n).map_err(|e| value_error_text(&e))?;
-    let rows = py
-        .detach(|| {
-            let mut rows: Vec<SweepRow> = Vec::new();
-            run_chunks(&grid, range, DEFAULT_CHUNK, method, |chunk| {
-                rows.extend_from_slice(chunk);
-                Ok::<(), ParamError>(())
-            })
-            .map(|()| rows)
         })
-        .map_err(value_error)?;
+}
+
+/// The rows as columns named as the CLI's CSV header, in its order: numbers
+/// as numpy arrays, text as lists of `str` or `None`.
+fn columns<'py>(py: Python<'py>, rows: &[SweepRow]) -> PyResult<Bound<'py, PyDict>> {
     let c = PyDict::new(py);
     let opt = |x: Option<f64>| x.unwrap_or(f64::NAN);
-    column(py, &c, "index", &rows, |r| r.index)?;
+    column(py, &c, "index", rows, |r| r.index)?;
     c.set_item(
         "model",
         rows.iter().map(|r| r.model.id()).collect::<Vec<_>>(),
     )?;
-    column(py, &c, "alpha_deg", &rows, |r| r.alpha_deg)?;
-    column(py, &c, "snow_depth", &rows, |r| r.snow_depth)?;
-    column(py, &c, "r0", &rows, |r| r.r0)?;
-    column(py, &c, "g", &rows, |r| r.g)?;
-    column(py, &c, "density", &rows, |r| r.density)?;
-    column(py, &c, "length", &rows, |r| r.length)?;
-    column(py, &c, "v0", &rows, |r| r.v0)?;
-    column(py, &c, "t_end", &rows, |r| r.t_end)?;
-    column(py, &c, "x_end", &rows, |r| opt(r.x_end))?;
-    column(py, &c, "rtol", &rows, |r| r.rtol)?;
-    column(py, &c, "atol", &rows, |r| r.atol)?;
-    column(py, &c, "mu", &rows, |r| opt(r.mu))?;
+    // The numeric axes, in grid order (NaN where x_end or mu is not set).
+    for p in Param::ALL {
+        column(py, &c, p.key(), rows, |r| r.param(p))?;
+    }
     c.set_item(
         "on_hop",
         rows.iter().map(|r| r.on_hop.id()).collect::<Vec<_>>(),
@@ -191,23 +201,18 @@ pub(crate) fn sweep<'py>(
         .map(|r| r.stop.map(|s| record(py, &s)).transpose())
         .collect::<PyResult<Vec<_>>>()?;
     c.set_item("stop", stops)?;
-    column(py, &c, "t_s", &rows, |r| opt(r.t_s))?;
-    column(py, &c, "x_m", &rows, |r| opt(r.x_m))?;
-    column(py, &c, "v_m_s", &rows, |r| opt(r.v_m_s))?;
-    column(py, &c, "a_over_g_sin_alpha", &rows, |r| {
+    column(py, &c, "t_s", rows, |r| opt(r.t_s))?;
+    column(py, &c, "x_m", rows, |r| opt(r.x_m))?;
+    column(py, &c, "v_m_s", rows, |r| opt(r.v_m_s))?;
+    column(py, &c, "a_over_g_sin_alpha", rows, |r| {
         opt(r.a_over_g_sin_alpha)
     })?;
-    column(py, &c, "turns", &rows, |r| {
+    column(py, &c, "turns", rows, |r| {
         r.turns.map_or(f64::NAN, |k| k as f64)
     })?;
     c.set_item(
         "error",
         rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
     )?;
-    let out = PyDict::new(py);
-    out.set_item("columns", c)?;
-    out.set_item("len", grid.len())?;
-    out.set_item("shard", (i, n))?;
-    out.set_item("version", snowroll_io::VERSION)?;
-    Ok(out)
+    Ok(c)
 }

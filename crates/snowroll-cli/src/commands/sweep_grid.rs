@@ -9,10 +9,13 @@ use clap::ValueEnum;
 use snowroll::sweep::{Axis, Choices, Grid, GridError, Method, Param, Values};
 use snowroll::{CollisionModel, ModelKind, OnHop};
 
-use crate::args::SweepArgs;
+use crate::args::{sweep_axes, SweepArgs};
 
-/// Keys that are not numeric axes: the models and the two settings.
-const CHOICE_KEYS: [&str; 3] = ["model", "collision", "on_hop"];
+/// Whether `key` is a key of a sweep's grid: `model` or a sweep axis of
+/// the parameter table.
+fn is_grid_key(key: &str) -> bool {
+    key == "model" || sweep_axes().any(|p| p.key == key)
+}
 
 /// The values of a list setting (`stop,continue`) by their kebab-case ids.
 fn choice_list<T: ValueEnum>(key: &str, text: &str) -> Result<Vec<T>> {
@@ -93,26 +96,10 @@ pub fn grid(args: &SweepArgs) -> Result<Grid> {
 
 /// The axes given as flags, by snake-case key (`model` included).
 pub fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
-    let flags: [(&'static str, &Option<String>); 15] = [
-        ("model", &a.model),
-        (Param::AlphaDeg.key(), &a.alpha_deg),
-        (Param::SnowDepth.key(), &a.snow_depth),
-        (Param::R0.key(), &a.r0),
-        (Param::G.key(), &a.g),
-        (Param::Density.key(), &a.density),
-        (Param::Length.key(), &a.length),
-        (Param::V0.key(), &a.v0),
-        (Param::TEnd.key(), &a.t_end),
-        (Param::XEnd.key(), &a.x_end),
-        (Param::Rtol.key(), &a.rtol),
-        (Param::Atol.key(), &a.atol),
-        (Param::Mu.key(), &a.mu),
-        ("collision", &a.collision),
-        ("on_hop", &a.on_hop),
-    ];
-    flags
+    let model = a.model.as_ref().map(|m| ("model", m));
+    model
         .into_iter()
-        .filter_map(|(k, v)| v.as_ref().map(|v| (k, v)))
+        .chain(a.axes.given.iter().map(|(p, text)| (p.key, text)))
         .collect()
 }
 
@@ -131,10 +118,9 @@ fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
     let mut axes = BTreeMap::new();
     for (key, value) in table {
         let snake = key.replace('-', "_");
-        if !CHOICE_KEYS.contains(&snake.as_str()) && Param::from_key(&snake).is_none() {
-            let known: Vec<&str> = CHOICE_KEYS
-                .into_iter()
-                .chain(Param::ALL.iter().map(|p| p.key()))
+        if !is_grid_key(&snake) {
+            let known: Vec<&str> = std::iter::once("model")
+                .chain(sweep_axes().map(|p| p.key))
                 .collect();
             bail!(
                 "{shown}: unknown key {key:?}; expected one of {}",
@@ -263,23 +249,8 @@ pub fn with_config(args: &SweepArgs) -> Result<(SweepArgs, Option<String>)> {
         }
     };
     fill(&mut merged.model, "model");
-    fill(&mut merged.collision, "collision");
-    fill(&mut merged.on_hop, "on_hop");
-    for (param, field) in [
-        (Param::AlphaDeg, &mut merged.alpha_deg),
-        (Param::SnowDepth, &mut merged.snow_depth),
-        (Param::R0, &mut merged.r0),
-        (Param::G, &mut merged.g),
-        (Param::Density, &mut merged.density),
-        (Param::Length, &mut merged.length),
-        (Param::V0, &mut merged.v0),
-        (Param::TEnd, &mut merged.t_end),
-        (Param::XEnd, &mut merged.x_end),
-        (Param::Rtol, &mut merged.rtol),
-        (Param::Atol, &mut merged.atol),
-        (Param::Mu, &mut merged.mu),
-    ] {
-        fill(field, param.key());
+    for p in sweep_axes() {
+        merged.axes.fill(p, get(p.key));
     }
     if merged.model.is_none() {
         bail!("config file {shown}: its `model` line is missing");

@@ -202,6 +202,9 @@ pub struct Param {
     pub csv: (Section, Presence),
     /// Written in exponent form in a CSV header (`1e-10`), for tolerances.
     pub exponent: bool,
+    /// An axis of `snowroll sweep`: a value, a list or a range of numbers,
+    /// or a list of words; a column of its rows ([`crate::sweep::SweepRow`]).
+    pub sweep: bool,
     get: fn(&Settings) -> Value,
     set: fn(&mut Settings, Value) -> Result<(), WrongKind>,
 }

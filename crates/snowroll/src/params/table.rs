@@ -26,6 +26,7 @@ const BASE: Param = Param {
     json: Presence::Always,
     csv: (Section::Head, Presence::Always),
     exponent: false,
+    sweep: false,
     get: |_| Value::None,
     set: |_, _| Err(WrongKind),
 };
@@ -58,6 +59,7 @@ fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Resul
 pub static PARAMS: [Param; 28] = [
     Param {
         key: "alpha_deg",
+        sweep: true,
         aliases: &["slope_deg"],
         unit: "deg",
         value_name: "DEG",
@@ -69,6 +71,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "snow_depth",
+        sweep: true,
         aliases: &["snow_depth_m"],
         unit: "m",
         value_name: "M",
@@ -80,6 +83,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "r0",
+        sweep: true,
         aliases: &["r0_m"],
         unit: "m",
         value_name: "M",
@@ -91,6 +95,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "g",
+        sweep: true,
         aliases: &["g_m_s2"],
         unit: "m/s^2",
         value_name: "M/S^2",
@@ -102,6 +107,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "density",
+        sweep: true,
         aliases: &["density_kg_m3"],
         unit: "kg/m^3",
         value_name: "KG/M^3",
@@ -113,6 +119,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "length",
+        sweep: true,
         aliases: &["length_m"],
         unit: "m",
         value_name: "M",
@@ -124,6 +131,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "v0",
+        sweep: true,
         aliases: &["v0_m_s"],
         unit: "m/s",
         value_name: "M/S",
@@ -164,6 +172,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "t_end",
+        sweep: true,
         aliases: &["t_end_s"],
         unit: "s",
         value_name: "S",
@@ -175,6 +184,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "x_end",
+        sweep: true,
         aliases: &["x_end_m"],
         unit: "m",
         value_name: "M",
@@ -206,6 +216,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "rtol",
+        sweep: true,
         value_name: "R",
         range: "1e-15 <= rtol < 1",
         help: "Relative tolerance of the integrator (1e-15 <= rtol < 1)",
@@ -216,6 +227,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "atol",
+        sweep: true,
         value_name: "A",
         unit: "m, m/s",
         range: "atol >= 1e-30",
@@ -323,6 +335,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "mu",
+        sweep: true,
         value_name: "MU",
         kind: Kind::OptionalReal,
         range: "mu > 0",
@@ -336,6 +349,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "collision",
+        sweep: true,
         value_name: "MODEL",
         kind: Kind::Choice(Choice::Collision),
         applies: Applies::TurnModels,
@@ -352,6 +366,7 @@ pub static PARAMS: [Param; 28] = [
     },
     Param {
         key: "on_hop",
+        sweep: true,
         value_name: "ACTION",
         kind: Kind::Choice(Choice::OnHop),
         range: "stop or continue",

@@ -547,6 +547,35 @@ fn check_value(param: Param, x: f64) -> Result<(), ParamError> {
 mod tests {
     use super::*;
 
+    /// The axes are the table's numeric sweep parameters, in its order, and
+    /// each sets the field that the table's parameter of the same key reads.
+    #[test]
+    fn axes_are_the_table_s_numeric_sweep_parameters() {
+        use crate::params::{Kind, Settings, Value, PARAMS};
+        let numeric = |p: &&crate::params::Param| matches!(p.kind, Kind::Real | Kind::OptionalReal);
+        let table: Vec<&str> = PARAMS
+            .iter()
+            .filter(|p| p.sweep)
+            .filter(numeric)
+            .map(|p| p.key)
+            .collect();
+        let axes: Vec<&str> = Param::ALL.iter().map(|p| p.key()).collect();
+        assert_eq!(axes, table);
+        for p in Param::ALL {
+            let mut s = Settings::default();
+            set(&mut s.scenario, &mut s.options, p, 0.375);
+            let spec = crate::params::Param::of_key(p.key()).unwrap();
+            assert_eq!(spec.get(&s), Value::Real(0.375), "{}", p.key());
+        }
+        // The words a sweep lists: the table's choice parameters.
+        let choices: Vec<&str> = PARAMS
+            .iter()
+            .filter(|p| p.sweep && matches!(p.kind, Kind::Choice(_)))
+            .map(|p| p.key)
+            .collect();
+        assert_eq!(choices, ["collision", "on_hop"]);
+    }
+
     #[test]
     fn parses_lists_and_ranges() {
         assert_eq!(
