@@ -16,21 +16,23 @@
 //! [`ScenarioFile::default`] and [`SimOptions::default`]: the table reads
 //! them ([`Param::default_value`]) rather than repeating them.
 
+mod given;
+mod record;
 mod sampling;
 mod table;
+mod value;
 
 use std::fmt;
-
-use serde::ser::{SerializeMap, Serializer};
-use serde::Serialize;
 
 use crate::error::ParamError;
 use crate::number::format_number;
 use crate::scenario::{ScenarioFile, Shape};
 use crate::trajectory::{CollisionModel, OnHop, SimOptions};
 
+pub use given::Given;
 pub use sampling::{RecordedSampling, UnknownSampling};
 pub use table::PARAMS;
+pub use value::{Value, WrongKind};
 
 /// The kind of value a parameter takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -218,81 +220,6 @@ impl fmt::Debug for Param {
 impl PartialEq for Param {
     fn eq(&self, other: &Self) -> bool {
         self.key == other.key
-    }
-}
-
-/// A value whose variant is not the parameter's [`Kind`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct WrongKind;
-
-/// A value of a parameter.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Value {
-    /// Not set: the feature is off (`x_end`, `mu`, the swath).
-    None,
-    /// A real number.
-    Real(f64),
-    /// A whole number.
-    Count(u64),
-    /// On or off.
-    Flag(bool),
-    /// A word: a choice's id, or recorded text.
-    Word(String),
-    /// A list of real numbers.
-    Reals(Vec<f64>),
-}
-
-impl Value {
-    fn real(self) -> Result<f64, WrongKind> {
-        match self {
-            Value::Real(x) => Ok(x),
-            _ => Err(WrongKind),
-        }
-    }
-
-    fn optional_real(self) -> Result<Option<f64>, WrongKind> {
-        match self {
-            Value::None => Ok(None),
-            other => other.real().map(Some),
-        }
-    }
-
-    fn count(self) -> Result<u64, WrongKind> {
-        match self {
-            Value::Count(n) => Ok(n),
-            _ => Err(WrongKind),
-        }
-    }
-
-    fn flag(self) -> Result<bool, WrongKind> {
-        match self {
-            Value::Flag(b) => Ok(b),
-            _ => Err(WrongKind),
-        }
-    }
-
-    fn word(self) -> Result<String, WrongKind> {
-        match self {
-            Value::Word(w) => Ok(w),
-            _ => Err(WrongKind),
-        }
-    }
-
-    fn of_option(x: Option<f64>) -> Value {
-        x.map_or(Value::None, Value::Real)
-    }
-}
-
-impl Serialize for Value {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match self {
-            Value::None => s.serialize_none(),
-            Value::Real(x) => s.serialize_f64(*x),
-            Value::Count(n) => s.serialize_u64(*n),
-            Value::Flag(b) => s.serialize_bool(*b),
-            Value::Word(w) => s.serialize_str(w),
-            Value::Reals(xs) => xs.serialize(s),
-        }
     }
 }
 
@@ -485,131 +412,6 @@ pub fn short(x: f64) -> String {
         format!("{x:e}")
     } else {
         x.to_string()
-    }
-}
-
-/// Values given for some parameters (on a command line, in a config file,
-/// as Python keywords); the others keep their defaults. In table order,
-/// each parameter at most once.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Given {
-    values: Vec<(&'static Param, Value)>,
-}
-
-impl Given {
-    /// No value given.
-    pub fn new() -> Self {
-        Self::default()
-    }
-
-    /// Gives `value` to `param`, replacing an earlier value.
-    pub fn insert(&mut self, param: &'static Param, value: Value) {
-        match self.values.iter_mut().find(|(p, _)| p.key == param.key) {
-            Some(slot) => slot.1 = value,
-            None => {
-                self.values.push((param, value));
-                let order = |p: &Param| PARAMS.iter().position(|q| q.key == p.key);
-                self.values.sort_by_key(|(p, _)| order(p));
-            }
-        }
-    }
-
-    /// The value given to `param`, if any.
-    pub fn get(&self, param: &Param) -> Option<&Value> {
-        self.values
-            .iter()
-            .find(|(p, _)| p.key == param.key)
-            .map(|(_, v)| v)
-    }
-
-    /// Removes and returns the value given to `param`.
-    pub fn take(&mut self, param: &Param) -> Option<Value> {
-        let i = self.values.iter().position(|(p, _)| p.key == param.key)?;
-        Some(self.values.remove(i).1)
-    }
-
-    /// Whether nothing is given.
-    pub fn is_empty(&self) -> bool {
-        self.values.is_empty()
-    }
-
-    /// The given values, in table order.
-    pub fn iter(&self) -> impl Iterator<Item = (&'static Param, &Value)> {
-        self.values.iter().map(|(p, v)| (*p, v))
-    }
-
-    /// These values, with every parameter not given here taken from `other`.
-    pub fn or(mut self, other: &Given) -> Given {
-        for (p, v) in other.iter() {
-            if self.get(p).is_none() {
-                self.insert(p, v.clone());
-            }
-        }
-        self
-    }
-
-    /// `base` with these values set.
-    ///
-    /// # Errors
-    /// The first value that is not of its parameter's kind or choices.
-    pub fn apply(&self, mut base: Settings) -> Result<Settings, ParamError> {
-        for (p, v) in self.iter() {
-            p.set(&mut base, v.clone())?;
-        }
-        Ok(base)
-    }
-}
-
-impl Settings {
-    /// Whether any loss setting differs from its default.
-    fn losses_differ(&self) -> bool {
-        self.options.losses != crate::Losses::default()
-    }
-
-    fn present(&self, presence: Presence, value: &Value) -> bool {
-        match presence {
-            Presence::Always => true,
-            Presence::WhenSet => *value != Value::None,
-            Presence::WithLosses => self.losses_differ(),
-        }
-    }
-
-    /// The `key = value` lines of a CSV output's header, in section order,
-    /// then table order: numbers in their shortest exact form, so that the
-    /// header read back reproduces the run bit for bit.
-    pub fn csv_lines(&self) -> Vec<(&'static str, String)> {
-        let mut params: Vec<&Param> = PARAMS.iter().collect();
-        params.sort_by_key(|p| p.csv.0); // stable: table order within a section
-        params
-            .into_iter()
-            .filter_map(|p| {
-                let v = p.get(self);
-                self.present(p.csv.1, &v).then(|| (p.key, p.text(&v)))
-            })
-            .collect()
-    }
-
-    /// The parameters of a JSON output's `params`, in table order, as
-    /// [`Settings::serialize_record`] writes them.
-    pub fn json_entries(&self) -> Vec<(&'static str, Value)> {
-        PARAMS
-            .iter()
-            .filter_map(|p| {
-                let v = p.get(self);
-                self.present(p.json, &v).then_some((p.key, v))
-            })
-            .collect()
-    }
-
-    /// Writes [`Settings::json_entries`] into the map `map`.
-    ///
-    /// # Errors
-    /// The serializer's.
-    pub fn serialize_record<M: SerializeMap>(&self, map: &mut M) -> Result<(), M::Error> {
-        for (k, v) in self.json_entries() {
-            map.serialize_entry(k, &v)?;
-        }
-        Ok(())
     }
 }
 
