@@ -9,7 +9,7 @@ use std::io::Write;
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use snowroll::Scenario;
-use snowroll_report::{build_paper_report, paper_steps, Lab, ReportError, Tally};
+use snowroll_report::{build_paper_report, paper_steps, ClaimResult, Lab, ReportError, Tally};
 
 use crate::args::PaperArgs;
 use crate::console;
@@ -20,15 +20,7 @@ pub fn run(args: &PaperArgs) -> Result<()> {
     // Check --out before the long computation, so that a bad path fails at once.
     let staged = StagedDir::open(&args.out)?;
     let lab = Lab::new(Scenario::default(), args.turns);
-    let bar = if args.quiet || !console::stderr_is_terminal() {
-        ProgressBar::hidden()
-    } else {
-        ProgressBar::new(paper_steps() as u64)
-    };
-    bar.set_style(
-        ProgressStyle::with_template("{bar:32} {pos}/{len} {elapsed:>4} {msg}")
-            .context("progress bar template")?,
-    );
+    let bar = progress_bar(args.quiet)?;
     let report = build_paper_report(&lab, &mut |p| {
         bar.set_position(p.done as u64);
         bar.set_message(p.label.to_string());
@@ -47,16 +39,49 @@ pub fn run(args: &PaperArgs) -> Result<()> {
         .with_context(|| format!("writing the report to {}", args.out.display()))?;
     staged.commit()?;
     bar.finish_and_clear();
+    let tally = print_claims(&report.claims)?;
+    writeln!(
+        console::Stdout,
+        "Report: {} ({} files in {})",
+        args.out.join("report.html").display(),
+        written.len(),
+        args.out.display()
+    )?;
+    if args.strict && tally.unexpected > 0 {
+        bail!(
+            "--strict: {} verdict(s) differ from the claims table's expectation: {}",
+            tally.unexpected,
+            unexpected(&report.claims)
+        );
+    }
+    Ok(())
+}
 
+/// The progress bar on stderr: hidden with `--quiet` or off a terminal.
+fn progress_bar(quiet: bool) -> Result<ProgressBar> {
+    let bar = if quiet || !console::stderr_is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(paper_steps() as u64)
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{bar:32} {pos}/{len} {elapsed:>4} {msg}")
+            .context("progress bar template")?,
+    );
+    Ok(bar)
+}
+
+/// Prints one line per claim (symbol, id, verdict, reference to the note)
+/// and the tally, which it returns.
+fn print_claims(claims: &[ClaimResult]) -> Result<Tally> {
     let mut out = console::Stdout;
-    let id_width = report
-        .claims
+    let id_width = claims
         .iter()
         .map(|c| c.claim.id.chars().count())
         .max()
         .unwrap_or(0);
-    writeln!(out, "Claims of the note ({} checked):", report.claims.len())?;
-    for c in &report.claims {
+    writeln!(out, "Claims of the note ({} checked):", claims.len())?;
+    for c in claims {
         let flag = if c.as_expected() {
             ""
         } else {
@@ -71,33 +96,22 @@ pub fn run(args: &PaperArgs) -> Result<()> {
             c.claim.paper_ref,
         )?;
     }
-    let tally = Tally::of(&report.claims);
+    let tally = Tally::of(claims);
     writeln!(out, "{}", tally.sentence())?;
-    let html = args.out.join("report.html");
-    writeln!(
-        out,
-        "Report: {} ({} files in {})",
-        html.display(),
-        written.len(),
-        args.out.display()
-    )?;
-    if args.strict && tally.unexpected > 0 {
-        let ids: Vec<String> = report
-            .claims
-            .iter()
-            .filter(|c| !c.as_expected())
-            .map(|c| {
-                format!(
-                    "{} ({}, expected {})",
-                    c.claim.id, c.verdict, c.claim.expected
-                )
-            })
-            .collect();
-        bail!(
-            "--strict: {} verdict(s) differ from the claims table's expectation: {}",
-            tally.unexpected,
-            ids.join("; ")
-        );
-    }
-    Ok(())
+    Ok(tally)
+}
+
+/// The claims whose verdict is not the expected one, with both verdicts.
+fn unexpected(claims: &[ClaimResult]) -> String {
+    claims
+        .iter()
+        .filter(|c| !c.as_expected())
+        .map(|c| {
+            format!(
+                "{} ({}, expected {})",
+                c.claim.id, c.verdict, c.claim.expected
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
 }
