@@ -268,19 +268,23 @@ impl RollingDisk {
 struct Deviations {
     /// |L′_P| about the moving contact, kg m²/s.
     l_111: f64,
-    /// Relative deviations of (111) corrected and as printed.
+    /// Relative deviation of the corrected (111), I_cm ω = mrv/2.
     dev_111: f64,
+    /// Relative deviation of the printed (111), mr²v/2.
     dev_111p: f64,
-    /// Relative deviations of (115) corrected and as printed.
+    /// Relative deviation of the corrected (115), F_y = mg cos α.
     dev_115: f64,
+    /// Relative deviation of the printed (115), F_y = mg.
     dev_115p: f64,
-    /// Relative deviations of (127) and (128) about the geometric point.
+    /// Relative deviation of (127) about the geometric point.
     dev_127: f64,
+    /// Relative deviation of (128) about the geometric point.
     dev_128: f64,
     /// How far the material point at the top is from (127), (128).
     material_off: f64,
-    /// a solved from τ′ = dL′/dt, m/s², and its deviation from the simulated a.
+    /// a solved from τ′ = dL′/dt, m/s².
     a_solved: f64,
+    /// Relative deviation of that a from the simulated a.
     dev_solved: f64,
 }
 

@@ -174,8 +174,11 @@ fn draw_case(
 /// The largest imbalance of the ledger found so far, where, and over how
 /// many samples.
 struct Imbalance {
+    /// The largest imbalance, relative to the largest term.
     worst: f64,
+    /// Where it was found: model and time, or a ledger of the wrong length.
     worst_at: String,
+    /// Samples checked.
     samples: usize,
 }
 

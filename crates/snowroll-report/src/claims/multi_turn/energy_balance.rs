@@ -33,8 +33,11 @@ pub(in crate::claims) const EQ88_APART: Criterion = Criterion {
 /// How (80)–(88) are read.
 #[derive(Clone, Copy, PartialEq)]
 enum Reading {
+    /// (87) corrected, turn k starting at r_k.
     Corrected,
+    /// (87) as printed.
     Printed87,
+    /// (87) corrected, with the turn index of (73).
     Index73,
 }
 
