@@ -12,6 +12,7 @@ use super::{corrected_if, edited, holds_if, pass, Edit, Finding, Lab};
 use crate::{Criterion, Tolerance};
 use snowroll::error::SimError;
 use snowroll::models::ModelKind;
+use snowroll::scenario::Scenario;
 use snowroll::trajectory::{Sampling, SimOptions};
 
 /// `snowless-limit`: the extrapolated b → 0 values.
@@ -110,6 +111,225 @@ pub(super) const APP_A_APART: Criterion = Criterion {
 /// Kinematics of a point P: position, velocity and acceleration (x, y).
 type Point = ((f64, f64), (f64, f64), (f64, f64));
 
+/// The snowless model's acceleration a at t = 0.5 s and the centre's
+/// normal acceleration there, by second difference of its height over
+/// ±1 ms (NaN where the run gives no such samples).
+fn snowless_motion(lab: &Lab, s: &Scenario) -> Result<(f64, f64), SimError> {
+    let sim = lab.run(
+        ModelKind::Snowless,
+        s,
+        &SimOptions {
+            t_end: 1.0,
+            sampling: Sampling::Times(vec![0.499, 0.5, 0.501]),
+            ..SimOptions::default()
+        },
+    )?;
+    let a = sim.samples.get(1).map_or(f64::NAN, |p| p.a_m_s2);
+    let y_dd = match sim.samples.as_slice() {
+        [p0, p1, p2] => (p2.r_m - 2.0 * p1.r_m + p0.r_m) / (1e-3 * 1e-3),
+        _ => f64::NAN,
+    };
+    Ok((a, y_dd))
+}
+
+/// A disk of radius r rolling at speed v with acceleration a, and the
+/// contact force that Newton's law gives it: the velocity and acceleration
+/// of its elements, and its angular momenta and torques about points,
+/// integrated element by element.
+#[derive(Debug, Clone, Copy)]
+struct RollingDisk {
+    /// The disk's mass elements.
+    body: [Sector; 1],
+    /// Radius r, m.
+    r: f64,
+    /// Speed v, m/s.
+    v: f64,
+    /// Acceleration a, m/s².
+    a: f64,
+    /// Mass m, kg.
+    m: f64,
+    /// Centre of mass, m.
+    centre: (f64, f64),
+    /// Angular velocity ω (z counter-clockwise), rad/s.
+    omega: f64,
+    /// Angular acceleration, rad/s².
+    alpha_z: f64,
+    /// Gravity on the slope's axes, m/s².
+    g: (f64, f64),
+    /// Contact force, N.
+    force: (f64, f64),
+}
+
+impl RollingDisk {
+    /// The disk of radius `r` (ρl `rho_l`) at speed `v` and acceleration
+    /// `a`, its centre accelerating at `y_dd` normal to the slope, under
+    /// gravity `(g_x, g_y)`.
+    fn new(r: f64, rho_l: f64, v: f64, a: f64, y_dd: f64, (g_x, g_y): (f64, f64)) -> Self {
+        let body = [Sector::full((0.0, r), (0.0, r), rho_l)];
+        let mp = mass_properties(&body, (0.0, 0.0));
+        let m = mp.mass;
+        // Contact force from Newton's law with the centre's measured normal
+        // acceleration: F = m a_cm − m g.
+        let (f_x, f_y) = (m * a - m * g_x, m * (y_dd - g_y));
+        Self {
+            body,
+            r,
+            v,
+            a,
+            m,
+            centre: mp.centre,
+            omega: -v / r,
+            alpha_z: -a / r,
+            g: (g_x, g_y),
+            force: (f_x, f_y),
+        }
+    }
+
+    /// Velocity of the element at (x, y).
+    fn vel(&self, x: f64, y: f64) -> (f64, f64) {
+        let (cx, cy) = self.centre;
+        (self.v - self.omega * (y - cy), self.omega * (x - cx))
+    }
+
+    /// Acceleration of the element at (x, y).
+    fn acc(&self, x: f64, y: f64) -> (f64, f64) {
+        let Self {
+            a, omega, alpha_z, ..
+        } = *self;
+        let (cx, cy) = self.centre;
+        let (dx, dy) = (x - cx, y - cy);
+        (
+            a - alpha_z * dy - omega * omega * dx,
+            alpha_z * dx - omega * omega * dy,
+        )
+    }
+
+    /// L′_P = ∫ dm (x − x_P) × (u − v_P), eq. (106).
+    fn l_prime(&self, (p, vp, _): Point) -> f64 {
+        integrate(&self.body, |x, y, _, _| {
+            let (ux, uy) = self.vel(x, y);
+            (x - p.0) * (uy - vp.1) - (y - p.1) * (ux - vp.0)
+        })
+    }
+
+    /// τ_P: the torque of gravity and the contact force about `p`.
+    fn tau_lab(&self, p: (f64, f64)) -> f64 {
+        let Self { m, .. } = *self;
+        let (cx, cy) = self.centre;
+        let (g_x, g_y) = self.g;
+        let (f_x, f_y) = self.force;
+        let gravity = (cx - p.0) * (m * g_y) - (cy - p.1) * (m * g_x);
+        let contact = (0.0 - p.0) * f_y - (0.0 - p.1) * f_x;
+        gravity + contact
+    }
+
+    /// τ′_P = τ_P + (x_cm − x_P) × (−m a_P), eq. (105).
+    fn tau_prime(&self, (p, _, ap): Point) -> f64 {
+        let Self { m, .. } = *self;
+        let (cx, cy) = self.centre;
+        self.tau_lab(p) + (cx - p.0) * (-m * ap.1) - (cy - p.1) * (-m * ap.0)
+    }
+
+    /// L_cm: the velocities relative to the centre's (v, 0).
+    fn l_cm(&self) -> f64 {
+        let (cx, cy) = self.centre;
+        integrate(&self.body, |x, y, _, _| {
+            let (ux, uy) = self.vel(x, y);
+            (x - cx) * uy - (y - cy) * (ux - self.v)
+        })
+    }
+
+    /// a solved from the accelerated-frame equation τ′ = dL′/dt about the
+    /// geometric point `top` moving with the centre: L′ = L_cm = I_cm ω, so
+    /// dL′/dt = −I_cm a/r; τ′ is linear in a.
+    fn solved_a(&self, top: (f64, f64)) -> f64 {
+        let Self { r, m, .. } = *self;
+        let (cx, cy) = self.centre;
+        let (g_x, g_y) = self.g;
+        let (_, f_y) = self.force;
+        let i_cm = integrate(&self.body, |x, y, _, _| (x - cx).powi(2) + (y - cy).powi(2));
+        // τ′ about the geometric point for a trial a: gravity at the centre, the
+        // contact force F_x = m a − m g_x at the contact line, and the fictitious
+        // force −m a_P, a_P = (a, 0), at the centre.
+        let tau_geometric = |a_try: f64| {
+            let f_x = m * a_try - m * g_x;
+            let gravity = (cx - top.0) * (m * g_y) - (cy - top.1) * (m * g_x);
+            let contact = (0.0 - top.0) * f_y - (0.0 - top.1) * f_x;
+            let fictitious = -(cy - top.1) * (-m * a_try);
+            gravity + contact + fictitious
+        };
+        let residual = |a_try: f64| tau_geometric(a_try) + i_cm * a_try / r;
+        -residual(0.0) / (residual(1.0) - residual(0.0))
+    }
+}
+
+/// The disk's integrals against the note's forms of App. A.
+#[derive(Debug, Clone, Copy)]
+struct Deviations {
+    /// |L′_P| about the moving contact, kg m²/s.
+    l_111: f64,
+    /// Relative deviation of the corrected (111), I_cm ω = mrv/2.
+    dev_111: f64,
+    /// Relative deviation of the printed (111), mr²v/2.
+    dev_111p: f64,
+    /// Relative deviation of the corrected (115), F_y = mg cos α.
+    dev_115: f64,
+    /// Relative deviation of the printed (115), F_y = mg.
+    dev_115p: f64,
+    /// Relative deviation of (127) about the geometric point.
+    dev_127: f64,
+    /// Relative deviation of (128) about the geometric point.
+    dev_128: f64,
+    /// How far the material point at the top is from (127), (128).
+    material_off: f64,
+    /// a solved from τ′ = dL′/dt, m/s².
+    a_solved: f64,
+    /// Relative deviation of that a from the simulated a.
+    dev_solved: f64,
+}
+
+/// Compares the disk's integrals with (111), (115), (127), (128) and the
+/// simulated a, for gravity g on a slope of angle `alpha`.
+fn deviations(disk: &RollingDisk, g: f64, alpha: f64) -> Deviations {
+    let RollingDisk { r, v, a, m, .. } = *disk;
+    let (_, f_y) = disk.force;
+    // (111): P on the contact line, moving with the log.
+    let contact: Point = ((0.0, 0.0), (v, 0.0), (a, 0.0));
+    let l_111 = disk.l_prime(contact).abs();
+    let dev_111 = APP_A_INTEGRALS.deviation(m * r * v / 2.0, l_111);
+    let dev_111p = ((m * r * r * v / 2.0) - l_111).abs() / l_111;
+    // (115): the normal force.
+    let dev_115 = APP_A_INTEGRALS.deviation(m * g * alpha.cos(), f_y);
+    let dev_115p = (m * g - f_y).abs() / f_y;
+    // A.5.2: the geometric point (x, 2r) moving with the centre, against
+    // the material point at the top of the log.
+    let geometric: Point = ((0.0, 2.0 * r), (v, 0.0), (a, 0.0));
+    let top = (0.0, 2.0 * r);
+    let material: Point = (top, disk.vel(top.0, top.1), disk.acc(top.0, top.1));
+    let l_cm = disk.l_cm();
+    // (127): τ′ = τ_P − r m a on our axes (the note's sign is the opposite); (128): L′ = L_cm.
+    let printed_127 = disk.tau_lab(top) - r * m * a;
+    let dev_127 = APP_A_INTEGRALS.deviation(disk.tau_prime(geometric), printed_127);
+    let dev_128 = APP_A_INTEGRALS.deviation(disk.l_prime(geometric), l_cm);
+    let material_off = ((disk.tau_prime(material) - printed_127) / printed_127)
+        .abs()
+        .max(((disk.l_prime(material) - l_cm) / l_cm).abs());
+    let a_solved = disk.solved_a(top);
+    let dev_solved = APP_A_INTEGRALS.deviation(a_solved, a);
+    Deviations {
+        l_111,
+        dev_111,
+        dev_111p,
+        dev_115,
+        dev_115p,
+        dev_127,
+        dev_128,
+        material_off,
+        a_solved,
+        dev_solved,
+    }
+}
+
 /// App. A.3.2, A.4.1 and A.5.2 element by element, for a disk of radius r
 /// rolling at speed v with acceleration a (x down the slope, y normal to
 /// it, z counter-clockwise; rolling forward turns the disk clockwise).
@@ -127,94 +347,22 @@ pub(super) fn app_a_moving_points(lab: &Lab) -> Result<Finding, SimError> {
     // Gravity resolved on the slope's axes, here and nowhere else.
     let (g_x, g_y) = (g * alpha.sin(), -g * alpha.cos());
     // The simulated snowless acceleration and the centre's height over time.
-    let sim = lab.run(
-        ModelKind::Snowless,
-        &s,
-        &SimOptions {
-            t_end: 1.0,
-            sampling: Sampling::Times(vec![0.499, 0.5, 0.501]),
-            ..SimOptions::default()
-        },
-    )?;
-    let a = sim.samples.get(1).map_or(f64::NAN, |p| p.a_m_s2);
-    let y_dd = match sim.samples.as_slice() {
-        [p0, p1, p2] => (p2.r_m - 2.0 * p1.r_m + p0.r_m) / (1e-3 * 1e-3),
-        _ => f64::NAN,
-    };
+    let (a, y_dd) = snowless_motion(lab, &s)?;
     let v = 1.0;
-    let body = [Sector::full((0.0, r), (0.0, r), rho_l)];
-    let mp = mass_properties(&body, (0.0, 0.0));
-    let m = mp.mass;
-    let (cx, cy) = mp.centre;
-    let omega = -v / r;
-    let alpha_z = -a / r;
-    // Velocity and acceleration of the element at (x, y) of the rolling disk.
-    let vel = |x: f64, y: f64| (v - omega * (y - cy), omega * (x - cx));
-    let acc = |x: f64, y: f64| {
-        let (dx, dy) = (x - cx, y - cy);
-        (
-            a - alpha_z * dy - omega * omega * dx,
-            alpha_z * dx - omega * omega * dy,
-        )
-    };
-    // L′_P = ∫ dm (x − x_P) × (u − v_P) (eq. (106)) and τ′_P = τ_P + (x_cm − x_P) × (−m a_P) (eq. (105)).
-    let l_prime = |(p, vp, _): Point| {
-        integrate(&body, |x, y, _, _| {
-            let (ux, uy) = vel(x, y);
-            (x - p.0) * (uy - vp.1) - (y - p.1) * (ux - vp.0)
-        })
-    };
-    // Contact force from Newton's law with the centre's measured normal
-    // acceleration: F = m a_cm − m g.
-    let (f_x, f_y) = (m * a - m * g_x, m * (y_dd - g_y));
-    let tau_lab = |p: (f64, f64)| {
-        let gravity = (cx - p.0) * (m * g_y) - (cy - p.1) * (m * g_x);
-        let contact = (0.0 - p.0) * f_y - (0.0 - p.1) * f_x;
-        gravity + contact
-    };
-    let tau_prime =
-        |(p, _, ap): Point| tau_lab(p) + (cx - p.0) * (-m * ap.1) - (cy - p.1) * (-m * ap.0);
-    // L_cm: the velocities relative to the centre's (v, 0).
-    let l_cm = integrate(&body, |x, y, _, _| {
-        let (ux, uy) = vel(x, y);
-        (x - cx) * uy - (y - cy) * (ux - v)
-    });
-    // (111): P on the contact line, moving with the log.
-    let contact: Point = ((0.0, 0.0), (v, 0.0), (a, 0.0));
-    let l_111 = l_prime(contact).abs();
-    let dev_111 = APP_A_INTEGRALS.deviation(m * r * v / 2.0, l_111);
-    let dev_111p = ((m * r * r * v / 2.0) - l_111).abs() / l_111;
-    // (115): the normal force.
-    let dev_115 = APP_A_INTEGRALS.deviation(m * g * alpha.cos(), f_y);
-    let dev_115p = (m * g - f_y).abs() / f_y;
-    // A.5.2: the geometric point (x, 2r) moving with the centre, against
-    // the material point at the top of the log.
-    let geometric: Point = ((0.0, 2.0 * r), (v, 0.0), (a, 0.0));
-    let top = (0.0, 2.0 * r);
-    let material: Point = (top, vel(top.0, top.1), acc(top.0, top.1));
-    // (127): τ′ = τ_P − r m a on our axes (the note's sign is the opposite); (128): L′ = L_cm.
-    let printed_127 = tau_lab(top) - r * m * a;
-    let dev_127 = APP_A_INTEGRALS.deviation(tau_prime(geometric), printed_127);
-    let dev_128 = APP_A_INTEGRALS.deviation(l_prime(geometric), l_cm);
-    let material_off = ((tau_prime(material) - printed_127) / printed_127)
-        .abs()
-        .max(((l_prime(material) - l_cm) / l_cm).abs());
-    // The accelerated-frame equation τ′ = dL′/dt about the geometric point,
-    // solved for a: L′ = L_cm = I_cm ω, so dL′/dt = −I_cm a/r; τ′ is linear in a.
-    let i_cm = integrate(&body, |x, y, _, _| (x - cx).powi(2) + (y - cy).powi(2));
-    // τ′ about the geometric point for a trial a: gravity at the centre, the
-    // contact force F_x = m a − m g_x at the contact line, and the fictitious
-    // force −m a_P, a_P = (a, 0), at the centre.
-    let tau_geometric = |a_try: f64| {
-        let f_x = m * a_try - m * g_x;
-        let gravity = (cx - top.0) * (m * g_y) - (cy - top.1) * (m * g_x);
-        let contact = (0.0 - top.0) * f_y - (0.0 - top.1) * f_x;
-        let fictitious = -(cy - top.1) * (-m * a_try);
-        gravity + contact + fictitious
-    };
-    let residual = |a_try: f64| tau_geometric(a_try) + i_cm * a_try / r;
-    let a_solved = -residual(0.0) / (residual(1.0) - residual(0.0));
-    let dev_solved = APP_A_INTEGRALS.deviation(a_solved, a);
+    let disk = RollingDisk::new(r, rho_l, v, a, y_dd, (g_x, g_y));
+    let (m, (_, f_y)) = (disk.m, disk.force);
+    let Deviations {
+        l_111,
+        dev_111,
+        dev_111p,
+        dev_115,
+        dev_115p,
+        dev_127,
+        dev_128,
+        material_off,
+        a_solved,
+        dev_solved,
+    } = deviations(&disk, g, alpha);
     let corrected = [dev_111, dev_115, dev_127, dev_128, dev_solved];
     let corrected_ok = corrected
         .iter()

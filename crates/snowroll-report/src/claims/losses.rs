@@ -7,7 +7,7 @@ use snowroll::error::SimError;
 use snowroll::losses::Losses;
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, Shape};
-use snowroll::trajectory::{Sampling, SimOptions, StopReason};
+use snowroll::trajectory::{Sampling, SimOptions, StopReason, Trajectory};
 use std::f64::consts::PI;
 
 /// `snowless-drag-terminal-velocity`: the measured terminal velocity
@@ -129,86 +129,131 @@ fn released(s: &Scenario, b: f64, x: f64, r: f64) -> f64 {
     s.g_along() * gathered - s.g_normal() * (m * r - m0 * r0 + 0.5 * b * (m - m0))
 }
 
+/// Scenario `case` of `energy-ledger-balances`, drawn from `draws`: the
+/// scenario, its drawn r0, its losses and the run's options.
+fn draw_case(
+    lab: &Lab,
+    draws: &mut Draws,
+    case: u64,
+) -> Result<(Scenario, f64, Losses, SimOptions), SimError> {
+    let r0 = 10f64.powf(draws.between(-1.5, 0.0));
+    // Every other scenario a ball (swath 2r, the area law).
+    let shape = if case.is_multiple_of(2) {
+        Shape::Cylinder
+    } else {
+        Shape::Sphere
+    };
+    let s = edited(
+        lab.scenario(),
+        Edit {
+            alpha_deg: Some(draws.between(10.0, 70.0)),
+            r0: Some(r0),
+            snow_depth: Some(r0 * 10f64.powf(draws.between(-3.0, -0.7))),
+            v0: Some(draws.between(0.0, 3.0)),
+            shape: Some(shape),
+            ..Edit::default()
+        },
+    )?;
+    let losses = Losses {
+        drag_coefficient: draws.between(0.0, 2.0),
+        rolling_resistance: draws.between(0.0, 0.1),
+        compaction_energy: draws.between(0.0, 3.0),
+        terminal_tol: 0.0,
+        ..Losses::default()
+    };
+    let t_end = 10f64.powf(draws.between(0.0, 2.0));
+    let opts = SimOptions {
+        t_end,
+        sampling: Sampling::Every(t_end / 16.0),
+        losses,
+        ..SimOptions::default()
+    };
+    Ok((s, r0, losses, opts))
+}
+
+/// The largest imbalance of the ledger found so far, where, and over how
+/// many samples.
+struct Imbalance {
+    /// The largest imbalance, relative to the largest term.
+    worst: f64,
+    /// Where it was found: model and time, or a ledger of the wrong length.
+    worst_at: String,
+    /// Samples checked.
+    samples: usize,
+}
+
+impl Imbalance {
+    /// Checks every sample of the run `traj` of `kind` on `s` (initial radius
+    /// `r0`, `losses`): the ledger's works against the energies recomputed
+    /// here, keeping the largest imbalance (a NaN one wins).
+    fn check_run(
+        &mut self,
+        kind: ModelKind,
+        s: &Scenario,
+        r0: f64,
+        losses: &Losses,
+        traj: &Trajectory,
+    ) {
+        // The snowless model picks up nothing: b = 0 in its energies.
+        let b = if kind == ModelKind::Snowless {
+            0.0
+        } else {
+            s.snow_depth()
+        };
+        let m0 = s.initial_mass();
+        let k0 = kinetic(s, b, r0, s.initial_speed());
+        for (p, l) in traj.samples.iter().zip(&traj.ledger) {
+            self.samples += 1;
+            let kinetic = kinetic(s, b, p.r_m, p.v_m_s);
+            let released = released(s, b, p.x_m, p.r_m);
+            let compaction = losses.compaction_energy * (p.mass_kg - m0);
+            let terms = [kinetic, l.drag_j, l.rolling_j, compaction, l.model_j];
+            let scale = terms
+                .iter()
+                .chain([released, k0].iter())
+                .fold(f64::MIN_POSITIVE, |m, t| m.max(t.abs()));
+            let dev = (terms.iter().sum::<f64>() - released - k0).abs() / scale;
+            if dev.is_nan() || dev > self.worst {
+                self.worst = dev;
+                self.worst_at = format!("{kind} at t = {:.3} s", p.t_s);
+            }
+        }
+        if traj.ledger.len() != traj.samples.len() {
+            self.worst = f64::INFINITY;
+            self.worst_at = format!(
+                "{kind}: {} ledger rows for {} samples",
+                traj.ledger.len(),
+                traj.samples.len()
+            );
+        }
+    }
+}
+
 /// fn. 5 sets the losses aside; with them the energy must still be
 /// accounted for: every circular model on [`LEDGER_CASES`] scenarios drawn
 /// from a fixed seed (shape, slope, depth, radius, initial speed, the three
 /// losses), the ledger's works against the energies the check computes.
 pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
     let mut draws = Draws(0x5EED_0011);
-    let mut worst: f64 = 0.0;
-    let mut worst_at = String::new();
+    let mut imbalance = Imbalance {
+        worst: 0.0,
+        worst_at: String::new(),
+        samples: 0,
+    };
     let mut runs = 0;
-    let mut samples = 0;
     for kind in ModelKind::ALL.into_iter().filter(|k| k.is_circular()) {
         for case in 0..LEDGER_CASES {
-            let r0 = 10f64.powf(draws.between(-1.5, 0.0));
-            // Every other scenario a ball (swath 2r, the area law).
-            let shape = if case % 2 == 0 {
-                Shape::Cylinder
-            } else {
-                Shape::Sphere
-            };
-            let s = edited(
-                lab.scenario(),
-                Edit {
-                    alpha_deg: Some(draws.between(10.0, 70.0)),
-                    r0: Some(r0),
-                    snow_depth: Some(r0 * 10f64.powf(draws.between(-3.0, -0.7))),
-                    v0: Some(draws.between(0.0, 3.0)),
-                    shape: Some(shape),
-                    ..Edit::default()
-                },
-            )?;
-            let losses = Losses {
-                drag_coefficient: draws.between(0.0, 2.0),
-                rolling_resistance: draws.between(0.0, 0.1),
-                compaction_energy: draws.between(0.0, 3.0),
-                terminal_tol: 0.0,
-                ..Losses::default()
-            };
-            let t_end = 10f64.powf(draws.between(0.0, 2.0));
-            let opts = SimOptions {
-                t_end,
-                sampling: Sampling::Every(t_end / 16.0),
-                losses,
-                ..SimOptions::default()
-            };
+            let (s, r0, losses, opts) = draw_case(lab, &mut draws, case)?;
             let traj = lab.run(kind, &s, &opts)?;
             runs += 1;
-            // The snowless model picks up nothing: b = 0 in its energies.
-            let b = if kind == ModelKind::Snowless {
-                0.0
-            } else {
-                s.snow_depth()
-            };
-            let m0 = s.initial_mass();
-            let k0 = kinetic(&s, b, r0, s.initial_speed());
-            for (p, l) in traj.samples.iter().zip(&traj.ledger) {
-                samples += 1;
-                let kinetic = kinetic(&s, b, p.r_m, p.v_m_s);
-                let released = released(&s, b, p.x_m, p.r_m);
-                let compaction = losses.compaction_energy * (p.mass_kg - m0);
-                let terms = [kinetic, l.drag_j, l.rolling_j, compaction, l.model_j];
-                let scale = terms
-                    .iter()
-                    .chain([released, k0].iter())
-                    .fold(f64::MIN_POSITIVE, |m, t| m.max(t.abs()));
-                let dev = (terms.iter().sum::<f64>() - released - k0).abs() / scale;
-                if dev.is_nan() || dev > worst {
-                    worst = dev;
-                    worst_at = format!("{kind} at t = {:.3} s", p.t_s);
-                }
-            }
-            if traj.ledger.len() != traj.samples.len() {
-                worst = f64::INFINITY;
-                worst_at = format!(
-                    "{kind}: {} ledger rows for {} samples",
-                    traj.ledger.len(),
-                    traj.samples.len()
-                );
-            }
+            imbalance.check_run(kind, &s, r0, &losses, &traj);
         }
     }
+    let Imbalance {
+        worst,
+        worst_at,
+        samples,
+    } = imbalance;
     let ok = LEDGER_BALANCE.accepts_deviation(worst);
     Ok(Finding {
         measured: format!(

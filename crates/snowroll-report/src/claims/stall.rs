@@ -116,6 +116,21 @@ fn leading_forms(eps: f64) -> (f64, f64) {
     )
 }
 
+/// The relative errors of the leading and the first-corrected forms
+/// against the closed form at ε, and how much each error shrinks from ε/10
+/// to ε/100 (tenfold for an O(ε) error, a hundredfold for an O(ε²) one).
+fn leading_form_errors(eps: f64) -> ((f64, f64), (f64, f64)) {
+    let err = |e: f64| {
+        let (l, c) = leading_forms(e);
+        let exact = closed_form_tan(e);
+        ((l / exact - 1.0).abs(), (c / exact - 1.0).abs())
+    };
+    let (e1, e2) = err(eps);
+    let (d1, d2) = err(eps / 10.0);
+    let (f1, f2) = err(eps / 100.0);
+    ((e1, e2), (d1 / f1, d2 / f2))
+}
+
 /// Whether `kind` started from rest at `deg` degrees stalls inside its
 /// first turn (and the run that says so).
 fn stalls_in_first_turn(
@@ -204,15 +219,7 @@ pub(super) fn stall_in_first_turn(lab: &Lab) -> Result<Finding, SimError> {
         ));
     }
     // The orders of the leading forms, on the closed form at ε and ε/10.
-    let err = |e: f64| {
-        let (l, c) = leading_forms(e);
-        let exact = closed_form_tan(e);
-        ((l / exact - 1.0).abs(), (c / exact - 1.0).abs())
-    };
-    let (e1, e2) = err(eps);
-    let (d1, d2) = err(eps / 10.0);
-    let (f1, f2) = err(eps / 100.0);
-    let (ratio_lead, ratio_corr) = (d1 / f1, d2 / f2);
+    let ((e1, e2), (ratio_lead, ratio_corr)) = leading_form_errors(eps);
     let orders_ok =
         TURN_STALL_ORDER.accepts(ratio_lead, 10.0) && TURN_STALL_ORDER.accepts(ratio_corr, 100.0);
     ok &= orders_ok;
