@@ -199,8 +199,7 @@ fn hop_outcome(stop: &snowroll::trajectory::Stop, turns: u64) -> String {
 /// [`ReportError`] when a run fails.
 pub(super) fn collision_table(lab: &Lab) -> Result<Table, ReportError> {
     let s = lab.scenario();
-    let (g, b, r0) = (s.gravity(), s.snow_depth(), s.initial_radius());
-    let (gs, gc) = (s.g_along(), s.g_normal());
+    let (gs, b) = (s.g_along(), s.snow_depth());
     let k = CONTACT_TURNS as f64;
     // §4.2: v² at the start of turn K ≈ A K² + B K, A = πGb/2.
     let a_coef = PI * gs * b / 2.0;
@@ -221,15 +220,7 @@ pub(super) fn collision_table(lab: &Lab) -> Result<Table, ReportError> {
             .last()
             .map_or(f64::NAN, |r| r.v_after_m_s * r.v_after_m_s);
         let ratio = v2 / (a_coef * k * k);
-        let closed = match collision {
-            CollisionModel::Note => {
-                Some(1.0 + (PI * gs * r0 - (14.0 * PI * gs + 24.0 * gc) * b / 39.0) / (a_coef * k))
-            }
-            CollisionModel::Charged => {
-                Some(1.0 + (PI * gs * r0 - (14.0 * PI * gs + 36.0 * gc) * b / 39.0) / (a_coef * k))
-            }
-            CollisionModel::Pivot => None,
-        };
+        let closed = closed_form_ratio(collision, s, a_coef, k);
         let last = long.summary.overall();
         // With pivot the impact happens inside the turn, at θ_c (§6.3), so
         // a "mean within the turn" would include it: not the §6.4 quantity.
@@ -245,11 +236,6 @@ pub(super) fn collision_table(lab: &Lab) -> Result<Table, ReportError> {
             )?;
             Ok(hop_outcome(&t.stop, CONTACT_TURNS))
         };
-        let condition = match collision {
-            CollisionModel::Note => "in a turn, late turns: tan α > 2 (α* = 63.435°); within K turns tan α > tan α_K (§4.3)",
-            CollisionModel::Charged => "as note (c_C = 3/2 + 12/(13π) in α_K, §4.3)",
-            CollisionModel::Pivot => "at the edge of the new layer once v₊² > g r cos α (§6.3): on every slope after a few turns",
-        };
         rows.push(vec![
             collision.id().to_string(),
             format!("{ratio:.7}"),
@@ -259,10 +245,42 @@ pub(super) fn collision_table(lab: &Lab) -> Result<Table, ReportError> {
             hop(&from_rest)?,
             hop(&below)?,
             hop(&above)?,
-            condition.to_string(),
+            hop_condition(collision).to_string(),
         ]);
     }
-    Ok(Table {
+    Ok(collision_table_of(s, star, rows))
+}
+
+/// §4.2: the closed form 1 + B/(A K) of v²(K)/(A K²) for `collision` after
+/// K = `k` turns, with A = `a_coef` = πGb/2; `None` for pivot, which has none.
+fn closed_form_ratio(collision: CollisionModel, s: &Scenario, a_coef: f64, k: f64) -> Option<f64> {
+    let (b, r0) = (s.snow_depth(), s.initial_radius());
+    let (gs, gc) = (s.g_along(), s.g_normal());
+    match collision {
+        CollisionModel::Note => {
+            Some(1.0 + (PI * gs * r0 - (14.0 * PI * gs + 24.0 * gc) * b / 39.0) / (a_coef * k))
+        }
+        CollisionModel::Charged => {
+            Some(1.0 + (PI * gs * r0 - (14.0 * PI * gs + 36.0 * gc) * b / 39.0) / (a_coef * k))
+        }
+        CollisionModel::Pivot => None,
+    }
+}
+
+/// The closed-form hop condition of `collision` (§4.3, §6.3), for the table.
+fn hop_condition(collision: CollisionModel) -> &'static str {
+    match collision {
+        CollisionModel::Note => "in a turn, late turns: tan α > 2 (α* = 63.435°); within K turns tan α > tan α_K (§4.3)",
+        CollisionModel::Charged => "as note (c_C = 3/2 + 12/(13π) in α_K, §4.3)",
+        CollisionModel::Pivot => "at the edge of the new layer once v₊² > g r cos α (§6.3): on every slope after a few turns",
+    }
+}
+
+/// The collision table around its `rows`: title, the caption with the
+/// scenario's numbers, and the header; `star` is α* = arctan 2, deg.
+fn collision_table_of(s: &Scenario, star: f64, rows: Vec<Vec<String>>) -> Table {
+    let (g, b, r0) = (s.gravity(), s.snow_depth(), s.initial_radius());
+    Table {
         title: "How the step of each new layer changes the long run and the hop".to_string(),
         caption: format!(
             "The turn model (eq. (73)) from rest with each --collision variant (docs/contact-forces.md §6): note is eq. (89); charged also pays the potential energy m g b cos α of the jump; pivot lets the log pivot over the edge of the new layer. \
@@ -284,7 +302,7 @@ pub(super) fn collision_table(lab: &Lab) -> Result<Table, ReportError> {
             "hop condition (closed form)".to_string(),
         ],
         rows,
-    })
+    }
 }
 
 #[cfg(test)]

@@ -253,6 +253,19 @@ pub(super) fn geometry_svg() -> String {
          role=\"img\" aria-label=\"Geometry: a log of radius r on a slope of angle alpha with snow of depth b\" \
          font-family=\"DejaVu Sans, sans-serif\" font-size=\"14\">"
     );
+    snow_and_ground(&mut s, &at, b);
+    layer_of_this_turn(&mut s, &at, r, b);
+    log_and_radius(&mut s, &at, origin, r, b);
+    depth_and_layer_labels(&mut s, &at, r, b);
+    direction_of_motion(&mut s, &at, b);
+    slope_angle(&mut s, &at, alpha, b);
+    s.push_str("</svg>");
+    s
+}
+
+/// The snow ahead of the log (depth `b`, px) and the ground under it; `at`
+/// places a point of the slope's frame on the page.
+fn snow_and_ground(s: &mut String, at: &impl Fn(f64, f64) -> (f64, f64), b: f64) {
     // Snow ahead of the log: -b < w < 0, from the contact line downhill.
     s.push_str(&polygon(
         &[at(0.0, 0.0), at(320.0, 0.0), at(320.0, -b), at(0.0, -b)],
@@ -265,6 +278,11 @@ pub(super) fn geometry_svg() -> String {
         "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#5b4a3a\" stroke-width=\"3\"/>",
         g0.0, g0.1, g1.0, g1.1
     );
+}
+
+/// The layer picked up in the current turn around the log of radius `r`
+/// (snow depth `b`, px).
+fn layer_of_this_turn(s: &mut String, at: &impl Fn(f64, f64) -> (f64, f64), r: f64, b: f64) {
     // The layer picked up in the current turn: the annular sector r < r' < r + b
     // over θ' in [0, θ] measured back from the contact line; its element
     // (r', θ') sits at (−r' sin θ', r − r' cos θ') from the contact line.
@@ -281,6 +299,17 @@ pub(super) fn geometry_svg() -> String {
         at(-r * t.sin(), r - r * t.cos())
     }));
     s.push_str(&polygon(&ring, "fill=\"#b9d7ee\" stroke=\"#4f7fa6\""));
+}
+
+/// The log of radius `r` and its outline after a full turn (radius `r + b`),
+/// the radius to the contact line at `origin` (page px) and the contact line.
+fn log_and_radius(
+    s: &mut String,
+    at: &impl Fn(f64, f64) -> (f64, f64),
+    origin: (f64, f64),
+    r: f64,
+    b: f64,
+) {
     // The log.
     let centre = at(0.0, r);
     let _ = write!(
@@ -316,6 +345,11 @@ pub(super) fn geometry_svg() -> String {
         "<text x=\"{:.1}\" y=\"{:.1}\" fill=\"#c0392b\">contact line</text>",
         cl.0, cl.1
     );
+}
+
+/// The depth `b` marked at the far end of the snow, and the labels of the
+/// snow, of this turn's layer and of the radius after a full turn (px).
+fn depth_and_layer_labels(s: &mut String, at: &impl Fn(f64, f64) -> (f64, f64), r: f64, b: f64) {
     // Depth b, at the far end of the snow.
     let (b0, b1) = (at(300.0, 0.0), at(300.0, -b));
     let _ = write!(
@@ -340,6 +374,11 @@ pub(super) fn geometry_svg() -> String {
         "<text x=\"{:.1}\" y=\"{:.1}\" fill=\"#1f5f99\">after θ = 2π: radius r + b</text>",
         nl.0, nl.1
     );
+}
+
+/// The arrow of the direction of motion and of G, along the slope, drawn
+/// 60 px beneath the ground line (which lies `b` px below the snow's surface).
+fn direction_of_motion(s: &mut String, at: &impl Fn(f64, f64) -> (f64, f64), b: f64) {
     // Direction of motion and of G, along the slope.
     let (d0, d1) = (at(-270.0, -b - 60.0), at(-170.0, -b - 60.0));
     let _ = write!(
@@ -355,6 +394,11 @@ pub(super) fn geometry_svg() -> String {
         d1.0 + 6.0,
         d1.1 + 4.0
     );
+}
+
+/// The horizontal and the slope angle `alpha` (rad) at the uphill end of the
+/// ground line (`b` px below the snow's surface).
+fn slope_angle(s: &mut String, at: &impl Fn(f64, f64) -> (f64, f64), alpha: f64, b: f64) {
     // The horizontal and the angle α where the ground line meets it.
     let corner = at(-330.0, -b);
     let _ = write!(
@@ -377,8 +421,6 @@ pub(super) fn geometry_svg() -> String {
         corner.0 + arc_r + 6.0,
         corner.1 + 18.0
     );
-    s.push_str("</svg>");
-    s
 }
 
 #[cfg(test)]

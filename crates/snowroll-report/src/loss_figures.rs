@@ -114,33 +114,7 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         .filter(|(_, l)| l.released_j > 0.0)
         .map(|(p, l)| (p.t_s, l))
         .collect();
-    let share = |f: &dyn Fn(&LedgerRow) -> f64| -> Vec<(f64, f64)> {
-        rows.iter()
-            .map(|(t, l)| (*t, f(l) / l.released_j))
-            .collect()
-    };
-    let mut chart = Chart::new(
-        "losses-ledger-shares",
-        "Where the released energy goes: the log of eq. (4) with all three losses",
-        Axis::log("time t", "s").column("t_s"),
-        Axis::linear("share of the potential energy released", "1").column("share"),
-    )
-    .with_legend(Legend::UpperLeft);
-    for term in &TERMS {
-        let mut series = Series::new(term.name, share(&term.of)).style(term.style);
-        if let Some(m) = term.marker {
-            series = series.marker(m);
-        }
-        chart = chart.with_series(series);
-    }
-    chart = chart.with_series(
-        Series::new(
-            SUM_NAME,
-            share(&|l| TERMS.iter().map(|term| (term.of)(l)).sum()),
-        )
-        .style(Style::Markers)
-        .marker(Marker::Circle),
-    );
+    let chart = ledger_chart(&rows);
     let at = |t_wanted: f64| rows.iter().find(|(t, _)| *t >= t_wanted).map(|(_, l)| **l);
     let pct = |l: Option<LedgerRow>, f: fn(&LedgerRow) -> f64| {
         l.map_or(f64::NAN, |l| 100.0 * f(&l) / l.released_j)
@@ -175,6 +149,39 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         .param("compaction_energy", COMPACTION_ENERGY)
         .param("rtol", format!("{:e}", opts.tolerances.rtol))
         .supports(&["energy-ledger-balances"]))
+}
+
+/// The chart of the ledger figure: each term of [`TERMS`] and their sum as
+/// shares of the released energy, against time; `rows` are (t in s, ledger).
+fn ledger_chart(rows: &[(f64, &LedgerRow)]) -> Chart {
+    let share = |f: &dyn Fn(&LedgerRow) -> f64| -> Vec<(f64, f64)> {
+        rows.iter()
+            .map(|(t, l)| (*t, f(l) / l.released_j))
+            .collect()
+    };
+    let mut chart = Chart::new(
+        "losses-ledger-shares",
+        "Where the released energy goes: the log of eq. (4) with all three losses",
+        Axis::log("time t", "s").column("t_s"),
+        Axis::linear("share of the potential energy released", "1").column("share"),
+    )
+    .with_legend(Legend::UpperLeft);
+    for term in &TERMS {
+        let mut series = Series::new(term.name, share(&term.of)).style(term.style);
+        if let Some(m) = term.marker {
+            series = series.marker(m);
+        }
+        chart = chart.with_series(series);
+    }
+    chart = chart.with_series(
+        Series::new(
+            SUM_NAME,
+            share(&|l| TERMS.iter().map(|term| (term.of)(l)).sum()),
+        )
+        .style(Style::Markers)
+        .marker(Marker::Circle),
+    );
+    chart
 }
 
 /// End of the speed figure's runs, s (as the other figures against time).
@@ -245,27 +252,7 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
     )
     .with_legend(Legend::UpperLeft);
     let times = super::log_grid(SPEED_T_FIRST, SPEED_T_END, SPEED_POINTS);
-    for kind in [ModelKind::Snowless, ACCRETING] {
-        for (losses, what) in [(Losses::default(), "no losses"), (drag_only(), "drag")] {
-            let opts = SimOptions {
-                t_end: SPEED_T_END,
-                sampling: Sampling::Times(times.clone()),
-                losses,
-                ..SimOptions::default()
-            };
-            let traj = lab.run(kind, &s, &opts)?;
-            let style = match (kind == ModelKind::Snowless, losses.any()) {
-                (true, false) => Style::Line,
-                (true, true) => Style::Dashed,
-                (false, false) => Style::LongDashed,
-                (false, true) => Style::Dotted,
-            };
-            let label = format!("{} ({}), {what}", kind.id(), kind.equation());
-            chart = chart.with_series(
-                Series::from_samples(&label, &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style),
-            );
-        }
-    }
+    chart = with_speed_runs(chart, lab, &s, &times)?;
     // §2.2's closed form, v_t² = M G/(½ ρ_a C_d A). Drag alone on a slope
     // always has one; were it missing, the NaN is refused with the figure's
     // data (nothing non-finite is written), not drawn.
@@ -297,6 +284,41 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
             format!("{:e}", SimOptions::default().tolerances.rtol),
         )
         .supports(&["snowless-drag-terminal-velocity"]))
+}
+
+/// `chart` with the speed of the snowless and of the accreting model on `s`,
+/// each without losses and with drag, at `times` (s).
+///
+/// # Errors
+/// [`ReportError`] when a run fails.
+fn with_speed_runs(
+    mut chart: Chart,
+    lab: &Lab,
+    s: &Scenario,
+    times: &[f64],
+) -> Result<Chart, ReportError> {
+    for kind in [ModelKind::Snowless, ACCRETING] {
+        for (losses, what) in [(Losses::default(), "no losses"), (drag_only(), "drag")] {
+            let opts = SimOptions {
+                t_end: SPEED_T_END,
+                sampling: Sampling::Times(times.to_vec()),
+                losses,
+                ..SimOptions::default()
+            };
+            let traj = lab.run(kind, s, &opts)?;
+            let style = match (kind == ModelKind::Snowless, losses.any()) {
+                (true, false) => Style::Line,
+                (true, true) => Style::Dashed,
+                (false, false) => Style::LongDashed,
+                (false, true) => Style::Dotted,
+            };
+            let label = format!("{} ({}), {what}", kind.id(), kind.equation());
+            chart = chart.with_series(
+                Series::from_samples(&label, &traj.samples, |p| p.t_s, |p| p.v_m_s).style(style),
+            );
+        }
+    }
+    Ok(chart)
 }
 
 /// Legend entry of the closed-form terminal velocity.

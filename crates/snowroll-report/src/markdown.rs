@@ -30,6 +30,19 @@ pub(super) fn render(report: &Report) -> String {
         m.software
     );
 
+    problem_section(&mut md);
+    claims_section(&mut md, report);
+    tables_section(&mut md, report);
+    super::losses_section::markdown(&mut md, report);
+    animations_section(&mut md, report);
+    figures_section(&mut md, report);
+    parameters_section(&mut md, report);
+    md
+}
+
+/// "The problem": the note cited, the geometry figure, the table of models
+/// and the table of symbols.
+fn problem_section(md: &mut String) {
     md.push_str("## The problem\n\n");
     let _ = writeln!(
         md,
@@ -67,7 +80,11 @@ pub(super) fn render(report: &Report) -> String {
         let _ = writeln!(md, "| {} | {} | {} |", cell(sym), cell(meaning), cell(unit));
     }
     md.push('\n');
+}
 
+/// "Claims of the note": the tally and one row per claim, linking the
+/// figures that support it.
+fn claims_section(md: &mut String, report: &Report) {
     md.push_str("## Claims of the note\n\n");
     let _ = writeln!(
         md,
@@ -114,7 +131,10 @@ pub(super) fn render(report: &Report) -> String {
             cell(&r.evidence),
         );
     }
+}
 
+/// One section per table of the report: title, caption, header and rows.
+fn tables_section(md: &mut String, report: &Report) {
     for t in &report.tables {
         let _ = writeln!(
             md,
@@ -140,9 +160,10 @@ pub(super) fn render(report: &Report) -> String {
             );
         }
     }
+}
 
-    super::losses_section::markdown(&mut md, report);
-
+/// One section per animation: its caption and where its frames are.
+fn animations_section(md: &mut String, report: &Report) {
     for anim in &report.animations {
         let _ = writeln!(md, "\n## {}\n", anim.title);
         let _ = writeln!(
@@ -153,7 +174,12 @@ pub(super) fn render(report: &Report) -> String {
             name = anim.name()
         );
     }
+}
 
+/// "Figures": each figure linked as `figures/NAME.svg`, with its caption,
+/// files and provenance.
+fn figures_section(md: &mut String, report: &Report) {
+    let m = &report.metadata;
     md.push_str("\n## Figures\n");
     for (i, f) in report.figures.iter().enumerate() {
         let name = &f.chart.name;
@@ -167,11 +193,14 @@ pub(super) fn render(report: &Report) -> String {
             f.provenance(m).line()
         );
     }
+}
 
+/// "Parameters and version": the program and every parameter.
+fn parameters_section(md: &mut String, report: &Report) {
+    let m = &report.metadata;
     md.push_str("\n## Parameters and version\n\n| parameter | value |\n|---|---|\n");
     let _ = writeln!(md, "| program | {} |", cell(&m.software));
     for (k, v) in &m.params {
         let _ = writeln!(md, "| {} | {} |", cell(k), cell(v));
     }
-    md
 }

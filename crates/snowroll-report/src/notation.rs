@@ -185,114 +185,150 @@ fn prettify_with(text: &str, marks: bool) -> String {
     out
 }
 
+/// `text` (outside code spans) in the report's notation: groups and runs
+/// after `^` or `_` in super/subscript, numbers at the start of a token in
+/// scientific form or with a Unicode minus; the rest as it is.
 fn prettify_plain(text: &str, marks: bool) -> String {
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::with_capacity(text.len() + 16);
     let mut i = 0;
-    let word = |c: char| c.is_alphanumeric() || c == '_' || c == '.';
     while i < chars.len() {
-        let c = chars[i];
-        let starts_token = i == 0 || !word(chars[i - 1]);
-        // ^(…), ^{…}, _{…}, _(…): the whole group in super/subscript; else,
-        // with `marks`, the group between marks (for <sup>/<sub>), else
-        // untouched.
-        let open = chars.get(i + 1).copied();
-        if (c == '^' || c == '_') && matches!(open, Some('(' | '{')) {
-            let close = if open == Some('(') { ')' } else { '}' };
-            if let Some(len) = chars[i + 2..].iter().position(|&d| d == close) {
-                let inner: String = chars[i + 2..i + 2 + len].iter().collect();
-                let (map, left, right) = if c == '^' {
-                    (
-                        superscript_char as fn(char) -> Option<char>,
-                        SUP_OPEN,
-                        SUP_CLOSE,
-                    )
-                } else {
-                    (
-                        subscript_char as fn(char) -> Option<char>,
-                        SUB_OPEN,
-                        SUB_CLOSE,
-                    )
-                };
-                if let Some(mapped) = all_in(&inner, map) {
-                    out.push_str(&mapped);
-                    i += len + 3;
-                    continue;
-                }
-                if marks {
-                    out.push(left);
-                    out.push_str(&prettify_plain(&inner, marks));
-                    out.push(right);
-                    i += len + 3;
-                    continue;
-                }
-            }
+        let found = group_at(&chars, i, marks)
+            .or_else(|| superscript_run_at(&chars, i))
+            .or_else(|| number_at(&chars, i));
+        if let Some((pretty, next)) = found {
+            out.push_str(&pretty);
+            i = next;
+            continue;
         }
-        // ^−7/3, ^2, ^−p: the run of characters that have a superscript.
-        if c == '^' && !matches!(open, Some('(' | '{')) {
-            let run = chars[i + 1..]
-                .iter()
-                .take_while(|&&d| superscript_char(d).is_some())
-                .count();
-            if run > 0 {
-                let inner: String = chars[i + 1..i + 1 + run].iter().collect();
-                out.push_str(&superscript(&inner));
-                i += run + 1;
-                continue;
-            }
-        }
-        // A number at the start of a token: scientific form or negative zero.
-        let minus = c == '-' || c == '−';
-        let digit_at = if minus { i + 1 } else { i };
-        if starts_token && chars.get(digit_at).is_some_and(char::is_ascii_digit) {
-            let mut j = digit_at;
-            while j < chars.len() && (chars[j].is_ascii_digit() || chars[j] == '.') {
-                j += 1;
-            }
-            let mantissa: String = chars[digit_at..j].iter().collect();
-            let mut end = j;
-            let mut exponent = None;
-            if chars.get(j) == Some(&'e') {
-                let mut k = j + 1;
-                if matches!(chars.get(k), Some('-' | '+')) {
-                    k += 1;
-                }
-                let digits_start = k;
-                while k < chars.len() && chars[k].is_ascii_digit() {
-                    k += 1;
-                }
-                if k > digits_start && !chars.get(k).is_some_and(|&d| word(d)) {
-                    let e: String = chars[j + 1..k].iter().collect();
-                    exponent = e.trim_start_matches('+').parse::<i32>().ok();
-                    end = k;
-                }
-            }
-            let followed_by_word = chars
-                .get(end)
-                .is_some_and(|&d| d.is_alphabetic() || d == '_');
-            let is_zero = mantissa.chars().all(|d| d == '0' || d == '.');
-            if !followed_by_word && !mantissa.ends_with('.') {
-                let sign = if minus && !is_zero { "−" } else { "" };
-                match exponent {
-                    Some(e) => {
-                        let m = mantissa.as_str();
-                        let power = format!("10{}", superscript(&e.to_string()));
-                        if m == "1" {
-                            out.push_str(&format!("{sign}{power}"));
-                        } else {
-                            out.push_str(&format!("{sign}{m}×{power}"));
-                        }
-                    }
-                    None => out.push_str(&format!("{sign}{mantissa}")),
-                }
-                i = end;
-                continue;
-            }
-        }
-        out.push(c);
+        out.push(chars[i]);
         i += 1;
     }
     out
+}
+
+/// A character of a word: a number or a name with its subscripts.
+fn is_word(c: char) -> bool {
+    c.is_alphanumeric() || c == '_' || c == '.'
+}
+
+/// ^(…), ^{…}, _{…}, _(…) at `i`: the whole group in super/subscript; else,
+/// with `marks`, the group between marks (for <sup>/<sub>); else `None`
+/// (untouched). With the text, the index just past the group.
+fn group_at(chars: &[char], i: usize, marks: bool) -> Option<(String, usize)> {
+    let c = chars[i];
+    let open = chars.get(i + 1).copied();
+    if !((c == '^' || c == '_') && matches!(open, Some('(' | '{'))) {
+        return None;
+    }
+    let close = if open == Some('(') { ')' } else { '}' };
+    let len = chars[i + 2..].iter().position(|&d| d == close)?;
+    let inner: String = chars[i + 2..i + 2 + len].iter().collect();
+    let (map, left, right) = if c == '^' {
+        (
+            superscript_char as fn(char) -> Option<char>,
+            SUP_OPEN,
+            SUP_CLOSE,
+        )
+    } else {
+        (
+            subscript_char as fn(char) -> Option<char>,
+            SUB_OPEN,
+            SUB_CLOSE,
+        )
+    };
+    if let Some(mapped) = all_in(&inner, map) {
+        return Some((mapped, i + len + 3));
+    }
+    if marks {
+        let mut out = String::new();
+        out.push(left);
+        out.push_str(&prettify_plain(&inner, marks));
+        out.push(right);
+        return Some((out, i + len + 3));
+    }
+    None
+}
+
+/// ^−7/3, ^2, ^−p at `i`: the run of characters that have a superscript, in
+/// superscript, and the index just past it; `None` when no such run follows.
+fn superscript_run_at(chars: &[char], i: usize) -> Option<(String, usize)> {
+    let open = chars.get(i + 1).copied();
+    if chars[i] != '^' || matches!(open, Some('(' | '{')) {
+        return None;
+    }
+    let run = chars[i + 1..]
+        .iter()
+        .take_while(|&&d| superscript_char(d).is_some())
+        .count();
+    if run == 0 {
+        return None;
+    }
+    let inner: String = chars[i + 1..i + 1 + run].iter().collect();
+    Some((superscript(&inner), i + run + 1))
+}
+
+/// A number at the start of a token at `i`, in scientific form (`2.5×10⁷`)
+/// or with a Unicode minus (none for negative zero), and the index just past
+/// it; `None` when no number starts there, or one runs into a word or ends
+/// in a point.
+fn number_at(chars: &[char], i: usize) -> Option<(String, usize)> {
+    let c = chars[i];
+    let starts_token = i == 0 || !is_word(chars[i - 1]);
+    let minus = c == '-' || c == '−';
+    let digit_at = if minus { i + 1 } else { i };
+    if !(starts_token && chars.get(digit_at).is_some_and(char::is_ascii_digit)) {
+        return None;
+    }
+    let mut j = digit_at;
+    while j < chars.len() && (chars[j].is_ascii_digit() || chars[j] == '.') {
+        j += 1;
+    }
+    let mantissa: String = chars[digit_at..j].iter().collect();
+    let (exponent, end) = exponent_at(chars, j);
+    let followed_by_word = chars
+        .get(end)
+        .is_some_and(|&d| d.is_alphabetic() || d == '_');
+    let is_zero = mantissa.chars().all(|d| d == '0' || d == '.');
+    if followed_by_word || mantissa.ends_with('.') {
+        return None;
+    }
+    let sign = if minus && !is_zero { "−" } else { "" };
+    let pretty = match exponent {
+        Some(e) => {
+            let m = mantissa.as_str();
+            let power = format!("10{}", superscript(&e.to_string()));
+            if m == "1" {
+                format!("{sign}{power}")
+            } else {
+                format!("{sign}{m}×{power}")
+            }
+        }
+        None => format!("{sign}{mantissa}"),
+    };
+    Some((pretty, end))
+}
+
+/// The exponent `e±N` of a number whose mantissa ends at `j`, if one follows
+/// and ends the word, and the index just past the number.
+fn exponent_at(chars: &[char], j: usize) -> (Option<i32>, usize) {
+    if chars.get(j) != Some(&'e') {
+        return (None, j);
+    }
+    let mut k = j + 1;
+    if matches!(chars.get(k), Some('-' | '+')) {
+        k += 1;
+    }
+    let digits_start = k;
+    while k < chars.len() && chars[k].is_ascii_digit() {
+        k += 1;
+    }
+    if k > digits_start && !chars.get(k).is_some_and(|&d| is_word(d)) {
+        let e: String = chars[j + 1..k].iter().collect();
+        (e.trim_start_matches('+').parse::<i32>().ok(), k)
+    } else {
+        (None, j)
+    }
 }
 
 #[cfg(test)]

@@ -7,7 +7,9 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{Axis, Chart, Legend, Marker, PlotError, Provenance, Scale, Style, MARKS_ON_A_LINE};
+use super::{
+    Axis, Chart, Legend, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE,
+};
 
 /// The embedded font (DejaVu Sans, Bitstream Vera licence, see
 /// `assets/fonts/DejaVuSans-LICENSE.txt`).
@@ -192,6 +194,8 @@ impl Chart {
         }
     }
 
+    /// Draws the axes, every series with its legend key, and the legend box
+    /// on `area` over the ranges `xr` × `yr`, every length times `scale`.
     fn draw_in<'a, DB, XR, YR>(
         &self,
         area: &'a DrawingArea<DB, Shift>,
@@ -228,96 +232,132 @@ impl Chart {
             .light_line_style(RGBColor(242, 242, 242))
             .draw()
             .map_err(|e| self.backend(e))?;
+        for (i, s) in self.series.iter().enumerate() {
+            self.draw_series(&mut chart, i, s, scale)?;
+        }
+        self.draw_legend_box(&mut chart, scale)
+    }
+
+    /// Draws series `s`, the `i`-th of the chart (which sets its colour and
+    /// where its marks fall), on `chart`: its marks, its line, and its key in
+    /// the legend, every length times `scale`.
+    fn draw_series<'a, DB, CT>(
+        &self,
+        chart: &mut ChartContext<'a, DB, CT>,
+        i: usize,
+        s: &Series,
+        scale: f64,
+    ) -> Result<(), PlotError>
+    where
+        DB: DrawingBackend + 'a,
+        CT: CoordTranslate<From = (f64, f64)>,
+    {
+        let px = |v: f64| (v * scale).round() as u32;
         let width = px(2.0);
         let key = px(36.0) as i32;
         let dot = px(4.0);
-        for (i, s) in self.series.iter().enumerate() {
-            let colour = PALETTE[i % PALETTE.len()];
-            let style = ShapeStyle::from(colour).stroke_width(width);
-            let pts: Vec<(f64, f64)> = s
-                .points
-                .iter()
-                .copied()
-                .filter(|&p| self.drawable(p))
-                .collect();
-            let marker = s.marker.unwrap_or_default();
-            // Marks along a line: evenly over the points, shifted by series
-            // so that the marks of coinciding curves do not fall together.
-            let marks: Vec<(f64, f64)> = match (s.style, s.marker) {
-                (Style::Markers, _) => pts.clone(),
-                (_, Some(_)) if !pts.is_empty() => {
-                    let n = pts.len();
-                    let shift = (i as f64 * 0.37).fract();
-                    (0..MARKS_ON_A_LINE.min(n))
-                        .map(|j| {
-                            let f = (j as f64 + shift) / MARKS_ON_A_LINE.min(n) as f64;
-                            pts[((f * n as f64) as usize).min(n - 1)]
-                        })
-                        .collect()
-                }
-                _ => Vec::new(),
-            };
-            let filled = style.filled();
-            let d = dot as i32;
-            match marker {
-                Marker::Circle => {
-                    chart.draw_series(marks.into_iter().map(|p| Circle::new(p, dot, filled)))
-                }
-                Marker::Triangle => chart.draw_series(
-                    marks
-                        .into_iter()
-                        .map(|p| TriangleMarker::new(p, dot + dot / 2, filled)),
-                ),
-                Marker::Square => chart.draw_series(
-                    marks
-                        .into_iter()
-                        .map(|p| EmptyElement::at(p) + Rectangle::new([(-d, -d), (d, d)], filled)),
-                ),
+        let colour = PALETTE[i % PALETTE.len()];
+        let style = ShapeStyle::from(colour).stroke_width(width);
+        let pts: Vec<(f64, f64)> = s
+            .points
+            .iter()
+            .copied()
+            .filter(|&p| self.drawable(p))
+            .collect();
+        let marker = s.marker.unwrap_or_default();
+        let marks = marks_of(s, i, &pts);
+        let filled = style.filled();
+        self.draw_marks(chart, marks, marker, filled, dot)?;
+        let drawn = match s.style.dash_pattern() {
+            // Markers only: the marks above are the series.
+            _ if s.style == Style::Markers => {
+                chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())
             }
-            .map_err(|e| self.backend(e))?;
-            let drawn = match s.style.dash_pattern() {
-                // Markers only: the marks above are the series.
-                _ if s.style == Style::Markers => {
-                    chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())
-                }
-                None => chart.draw_series(LineSeries::new(pts, style)),
-                Some((on, off)) => {
-                    chart.draw_series(DashedLineSeries::new(pts, px(on), px(off), style))
-                }
+            None => chart.draw_series(LineSeries::new(pts, style)),
+            Some((on, off)) => {
+                chart.draw_series(DashedLineSeries::new(pts, px(on), px(off), style))
             }
-            .map_err(|e| self.backend(e))?;
-            // The legend key repeats the line's pattern and marker. One
-            // element shape serves every style (a legend closure returns one
-            // type): four line pieces and a marker, unused parts transparent.
-            let hidden = ShapeStyle::from(TRANSPARENT);
-            let pieces = key_pieces(s.style, key);
-            let line = if s.style == Style::Markers {
-                hidden
-            } else {
-                style
-            };
-            let shown = s.style == Style::Markers || s.marker.is_some();
-            let (c, t, q) = match (shown, marker) {
-                (false, _) => (hidden, hidden, hidden),
-                (true, Marker::Circle) => (filled, hidden, hidden),
-                (true, Marker::Triangle) => (hidden, filled, hidden),
-                (true, Marker::Square) => (hidden, hidden, filled),
-            };
-            drawn.label(&s.name).legend(move |(x, y)| {
-                let half = key / 2;
-                let d = dot as i32;
-                let piece =
-                    |k: usize| PathElement::new(vec![(pieces[k].0, 0), (pieces[k].1, 0)], line);
-                EmptyElement::at((x, y))
-                    + piece(0)
-                    + piece(1)
-                    + piece(2)
-                    + piece(3)
-                    + Circle::new((half, 0), dot, c)
-                    + TriangleMarker::new((half, 0), dot + dot / 2, t)
-                    + Rectangle::new([(half - d, -d), (half + d, d)], q)
-            });
         }
+        .map_err(|e| self.backend(e))?;
+        // The legend key repeats the line's pattern and marker. One
+        // element shape serves every style (a legend closure returns one
+        // type): four line pieces and a marker, unused parts transparent.
+        let hidden = ShapeStyle::from(TRANSPARENT);
+        let pieces = key_pieces(s.style, key);
+        let line = if s.style == Style::Markers {
+            hidden
+        } else {
+            style
+        };
+        let shown = s.style == Style::Markers || s.marker.is_some();
+        let (c, t, q) = match (shown, marker) {
+            (false, _) => (hidden, hidden, hidden),
+            (true, Marker::Circle) => (filled, hidden, hidden),
+            (true, Marker::Triangle) => (hidden, filled, hidden),
+            (true, Marker::Square) => (hidden, hidden, filled),
+        };
+        drawn.label(&s.name).legend(move |(x, y)| {
+            let half = key / 2;
+            let d = dot as i32;
+            let piece = |k: usize| PathElement::new(vec![(pieces[k].0, 0), (pieces[k].1, 0)], line);
+            EmptyElement::at((x, y))
+                + piece(0)
+                + piece(1)
+                + piece(2)
+                + piece(3)
+                + Circle::new((half, 0), dot, c)
+                + TriangleMarker::new((half, 0), dot + dot / 2, t)
+                + Rectangle::new([(half - d, -d), (half + d, d)], q)
+        });
+        Ok(())
+    }
+
+    /// Draws `marker`s of radius `dot` px in style `filled` at `marks`.
+    fn draw_marks<DB, CT>(
+        &self,
+        chart: &mut ChartContext<'_, DB, CT>,
+        marks: Vec<(f64, f64)>,
+        marker: Marker,
+        filled: ShapeStyle,
+        dot: u32,
+    ) -> Result<(), PlotError>
+    where
+        DB: DrawingBackend,
+        CT: CoordTranslate<From = (f64, f64)>,
+    {
+        let d = dot as i32;
+        match marker {
+            Marker::Circle => {
+                chart.draw_series(marks.into_iter().map(|p| Circle::new(p, dot, filled)))
+            }
+            Marker::Triangle => chart.draw_series(
+                marks
+                    .into_iter()
+                    .map(|p| TriangleMarker::new(p, dot + dot / 2, filled)),
+            ),
+            Marker::Square => chart.draw_series(
+                marks
+                    .into_iter()
+                    .map(|p| EmptyElement::at(p) + Rectangle::new([(-d, -d), (d, d)], filled)),
+            ),
+        }
+        .map_err(|e| self.backend(e))?;
+        Ok(())
+    }
+
+    /// Draws the box of legend entries in the corner the chart asks for,
+    /// every length times `scale`.
+    fn draw_legend_box<'a, DB, CT>(
+        &self,
+        chart: &mut ChartContext<'a, DB, CT>,
+        scale: f64,
+    ) -> Result<(), PlotError>
+    where
+        DB: DrawingBackend + 'a,
+        CT: CoordTranslate,
+    {
+        let px = |v: f64| (v * scale).round() as u32;
+        let font = |size: f64| (FAMILY, px(size)).into_font();
         chart
             .configure_series_labels()
             .position(match self.legend {
@@ -334,6 +374,27 @@ impl Chart {
             .draw()
             .map_err(|e| self.backend(e))?;
         Ok(())
+    }
+}
+
+/// The points of series `s` (the `i`-th, drawn at `pts`) that carry a
+/// marker: every point of a markers-only series; along a line with a marker,
+/// [`MARKS_ON_A_LINE`] spread evenly over the points, shifted by series so
+/// that the marks of coinciding curves do not fall together; else none.
+fn marks_of(s: &Series, i: usize, pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    match (s.style, s.marker) {
+        (Style::Markers, _) => pts.to_vec(),
+        (_, Some(_)) if !pts.is_empty() => {
+            let n = pts.len();
+            let shift = (i as f64 * 0.37).fract();
+            (0..MARKS_ON_A_LINE.min(n))
+                .map(|j| {
+                    let f = (j as f64 + shift) / MARKS_ON_A_LINE.min(n) as f64;
+                    pts[((f * n as f64) as usize).min(n - 1)]
+                })
+                .collect()
+        }
+        _ => Vec::new(),
     }
 }
 
