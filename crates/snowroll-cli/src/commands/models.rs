@@ -110,75 +110,79 @@ pub fn run(args: &ModelsArgs) -> Result<()> {
         .context("writing to stdout")
 }
 
-/// An aligned text table, then the stall notes.
+/// The table's column headers.
+const HEADER: [&str; 7] = [
+    "id",
+    "alias",
+    "equation",
+    "a_inf / (g sin alpha)",
+    "shapes",
+    "ball a_inf",
+    "description",
+];
+
+/// An aligned text table, then the stall and validity notes.
 fn table(listing: &Listing) -> String {
-    let header = [
-        "id",
-        "alias",
-        "equation",
-        "a_inf / (g sin alpha)",
-        "shapes",
-        "ball a_inf",
-        "description",
-    ];
-    let fraction = |exact: &Option<String>, f: Option<f64>| match (exact, f) {
-        (Some(exact), Some(f)) => format!("{exact} = {f:.4}"),
-        (None, Some(f)) => format!("{f:.4}"),
-        (_, None) => "none".to_string(),
-    };
-    let rows: Vec<[String; 7]> = listing
-        .models
-        .iter()
-        .map(|m| {
-            [
-                m.id.to_string(),
-                m.alias.to_string(),
-                m.equation.to_string(),
-                fraction(&m.terminal_fraction_exact, m.terminal_fraction),
-                m.shapes.join(","),
-                fraction(
-                    &m.sphere_terminal_fraction_exact,
-                    m.sphere_terminal_fraction,
-                ),
-                m.description.to_string(),
-            ]
-        })
-        .collect();
-    let mut widths = header.map(|h| h.chars().count());
+    let rows: Vec<[String; 7]> = listing.models.iter().map(row).collect();
+    let mut widths = HEADER.map(|h| h.chars().count());
     for row in &rows {
         for (w, cell) in widths.iter_mut().zip(row) {
             *w = (*w).max(cell.chars().count());
         }
     }
-    let line = |cells: [&str; 7]| {
-        let mut s = String::new();
-        for (i, (cell, w)) in cells.iter().zip(widths).enumerate() {
-            if i + 1 == cells.len() {
-                s.push_str(cell);
-            } else {
-                s.push_str(&format!("{cell:<w$}  "));
-            }
-        }
-        s.push('\n');
-        s
-    };
-    let mut text = line(header);
+    let mut text = aligned(HEADER, &widths);
     for row in &rows {
-        text.push_str(&line(row.each_ref().map(String::as_str)));
+        text.push_str(&aligned(row.each_ref().map(String::as_str), &widths));
     }
     text.push_str(
         "\na_inf: late-time acceleration with snow (b > 0), from the model's coefficients; \
          ball a_inf: the same for --shape sphere (swath 2r, docs/snowball-and-losses.md §1.3). \
          The turn models take the log only.\n",
     );
-    let stalls = |kind: StallKind| -> Vec<(&str, f64)> {
-        listing
-            .models
-            .iter()
-            .filter(|m| m.stall_kind == Some(kind))
-            .filter_map(|m| m.stall_slope_deg.map(|s| (m.id, s)))
-            .collect()
+    text.push_str(&stall_notes(listing, widths[0]));
+    text.push_str(&validity_notes(listing, widths[0]));
+    text
+}
+
+/// One model's cells.
+fn row(m: &Row) -> [String; 7] {
+    let fraction = |exact: &Option<String>, f: Option<f64>| match (exact, f) {
+        (Some(exact), Some(f)) => format!("{exact} = {f:.4}"),
+        (None, Some(f)) => format!("{f:.4}"),
+        (_, None) => "none".to_string(),
     };
+    [
+        m.id.to_string(),
+        m.alias.to_string(),
+        m.equation.to_string(),
+        fraction(&m.terminal_fraction_exact, m.terminal_fraction),
+        m.shapes.join(","),
+        fraction(
+            &m.sphere_terminal_fraction_exact,
+            m.sphere_terminal_fraction,
+        ),
+        m.description.to_string(),
+    ]
+}
+
+/// One line of the table: each cell padded to its column's width but the
+/// last.
+fn aligned(cells: [&str; 7], widths: &[usize; 7]) -> String {
+    let mut s = String::new();
+    for (i, (cell, w)) in cells.iter().zip(widths).enumerate() {
+        if i + 1 == cells.len() {
+            s.push_str(cell);
+        } else {
+            s.push_str(&format!("{cell:<w$}  "));
+        }
+    }
+    s.push('\n');
+    s
+}
+
+/// The stall slopes of fn. 7, by kind of stall, ids padded to `width`.
+fn stall_notes(listing: &Listing, width: usize) -> String {
+    let mut text = String::new();
     for (kind, what) in [
         (StallKind::DoesNotStart, "do not start from rest"),
         (
@@ -186,7 +190,12 @@ fn table(listing: &Listing) -> String {
             "start from rest (a = 2G/3) but stall inside their first turn",
         ),
     ] {
-        let list = stalls(kind);
+        let list: Vec<(&str, f64)> = listing
+            .models
+            .iter()
+            .filter(|m| m.stall_kind == Some(kind))
+            .filter_map(|m| m.stall_slope_deg.map(|s| (m.id, s)))
+            .collect();
         if list.is_empty() {
             continue;
         }
@@ -195,10 +204,16 @@ fn table(listing: &Listing) -> String {
             listing.snow_depth, listing.r0
         ));
         for (id, slope) in list {
-            text.push_str(&format!("  {id:<w$}  {slope:.4} degrees\n", w = widths[0]));
+            text.push_str(&format!("  {id:<width$}  {slope:.4} degrees\n"));
         }
     }
-    text.push_str("Validity (order in b/r kept; largest b/r0 used without a warning on stderr):\n");
+    text
+}
+
+/// Each model's range of validity, ids padded to `width`.
+fn validity_notes(listing: &Listing, width: usize) -> String {
+    let mut text = "Validity (order in b/r kept; largest b/r0 used without a warning on stderr):\n"
+        .to_string();
     for m in &listing.models {
         let order = match m.validity.order_in_b_over_r {
             Some(0) => "b = 0".to_string(),
@@ -210,10 +225,8 @@ fn table(listing: &Listing) -> String {
             .max_b_over_r0
             .map_or_else(|| "any".to_string(), |x| x.to_string());
         text.push_str(&format!(
-            "  {:<w$}  {order:<15}  b/r0 <= {max:<4}  {}\n",
-            m.id,
-            m.validity.statement,
-            w = widths[0]
+            "  {:<width$}  {order:<15}  b/r0 <= {max:<4}  {}\n",
+            m.id, m.validity.statement,
         ));
     }
     text

@@ -22,33 +22,8 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         }
         None => flags,
     };
-    let model = inputs::model(&args.scenario, &ModelKind::ALL)?;
-    if args.turns.is_some() && !model.is_turn_model() {
-        bail!(
-            "--turns (config key `turns`) applies only to the turn models {}, not to {}",
-            id_list(&turn_models()),
-            model.id()
-        );
-    }
-    let scenario = inputs::scenario(&args.scenario)?;
-    let mut opts = options(&args)?;
-    if !args.scenario.atol_given() {
-        opts.tolerances.atol = default_atol(model, &scenario);
-    }
-    // The grid spacing first: the row count needs dt > 0.
-    opts.sampling.validate()?;
-    let what = match (&opts.sampling, args.dt) {
-        (Sampling::Every(_), Some(dt)) => format!(
-            "--dt {} up to t_end = {} s",
-            format_number(dt),
-            format_number(opts.t_end)
-        ),
-        _ => "--times".to_string(),
-    };
-    inputs::check_row_count(&opts, opts.known_rows(), &what)?;
-    // Everything the model refuses, before any output (nothing reaches stdout).
+    let (model, scenario, opts) = prepare(&args)?;
     let runner = model.build();
-    runner.check(&scenario, &opts)?;
     let format = args.output.format.unwrap_or_default();
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()
@@ -95,6 +70,38 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         report!("note: {note}");
     }
     Ok(())
+}
+
+/// The model, the scenario and the options of the run, each checked:
+/// everything the model refuses is refused here, before any output (nothing
+/// reaches stdout).
+fn prepare(args: &SimulateArgs) -> Result<(ModelKind, Scenario, SimOptions)> {
+    let model = inputs::model(&args.scenario, &ModelKind::ALL)?;
+    if args.turns.is_some() && !model.is_turn_model() {
+        bail!(
+            "--turns (config key `turns`) applies only to the turn models {}, not to {}",
+            id_list(&turn_models()),
+            model.id()
+        );
+    }
+    let scenario = inputs::scenario(&args.scenario)?;
+    let mut opts = options(args)?;
+    if !args.scenario.atol_given() {
+        opts.tolerances.atol = default_atol(model, &scenario);
+    }
+    // The grid spacing first: the row count needs dt > 0.
+    opts.sampling.validate()?;
+    let what = match (&opts.sampling, args.dt) {
+        (Sampling::Every(_), Some(dt)) => format!(
+            "--dt {} up to t_end = {} s",
+            format_number(dt),
+            format_number(opts.t_end)
+        ),
+        _ => "--times".to_string(),
+    };
+    inputs::check_row_count(&opts, opts.known_rows(), &what)?;
+    model.build().check(&scenario, &opts)?;
+    Ok((model, scenario, opts))
 }
 
 /// The run options: each from the arguments, else the library default.

@@ -61,12 +61,23 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         output: args.output.clone(),
         config: None,
     };
-    let mut sink = Sink::open(&out)?;
-    let name = sink.name();
+    let sink = Sink::open(&out)?;
     let partial_path = match &sink {
         Sink::Replace { target, .. } => Some(with_suffix(target, PARTIAL_SUFFIX)),
         _ => None,
     };
+    let format = format_of(args, partial_path.is_some())?;
+    let bar = progress(range.end - range.start, args.quiet);
+    match partial_path {
+        None => to_stream(args, &grid, range, &header, sink, &bar),
+        Some(path) => to_partial(args, &grid, range, &header, sink, &bar, &path, format, plot),
+    }
+}
+
+/// The output format: `--format`, else Parquet for a FILE ending in
+/// `.parquet`, else CSV; refused when Parquet is asked of a build without
+/// it or of a stream (`to_file`: the output is a regular file).
+fn format_of(args: &SweepArgs, to_file: bool) -> Result<SweepFormat> {
     let format = args.format.unwrap_or_else(|| {
         let parquet = args
             .output
@@ -86,74 +97,100 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                  (cargo install --path crates/snowroll-cli --features parquet), or write CSV"
             );
         }
-        if partial_path.is_none() {
+        if !to_file {
             bail!("Parquet output needs --output FILE (a regular file)");
         }
     }
-    let bar = progress(range.end - range.start, args.quiet);
-    let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
-    match partial_path {
-        None => {
-            if args.resume {
-                bail!("--resume needs --output FILE (a regular file)");
-            }
-            if args.plot.is_some() {
-                bail!(
-                    "--plot needs --output FILE (a regular file): the map is drawn from its rows"
-                );
-            }
-            sink.write_all(header.as_bytes())
-                .with_context(|| format!("writing {name}"))?;
-            write_rows(&grid, range, chunk, args.method, &mut sink, &bar, || Ok(()))
-                .with_context(|| format!("writing {name}"))?;
-            bar.finish_and_clear();
-            sink.commit().with_context(|| format!("writing {name}"))?;
-        }
-        Some(path) => {
-            let mut partial = Partial::open(&path, &header, args.resume)?;
-            let done = partial.rows_done(&range)?;
-            bar.inc(done);
-            let shown = path.display().to_string();
-            let mut last_sync = Instant::now();
-            let file = &mut partial.file;
-            let sync_file = file
-                .try_clone()
-                .with_context(|| format!("writing {shown}"))?;
-            let mut writer = io::BufWriter::new(file);
-            write_rows(
-                &grid,
-                range.start + done..range.end,
-                chunk,
-                args.method,
-                &mut writer,
-                &bar,
-                || {
-                    if last_sync.elapsed() >= SYNC_EVERY {
-                        sync_file.sync_data()?;
-                        last_sync = Instant::now();
-                    }
-                    Ok(())
-                },
-            )
-            .with_context(|| format!("writing {shown}"))?;
-            writer.flush().with_context(|| format!("writing {shown}"))?;
-            drop(writer);
-            bar.finish_and_clear();
-            partial
-                .file
-                .seek(SeekFrom::Start(0))
-                .with_context(|| format!("reading {shown}"))?;
-            if let Some((plan, plot)) = plot {
-                super::sweep_plot::draw(plan, &grid, &partial.file, plot)?;
-                partial
-                    .file
-                    .seek(SeekFrom::Start(0))
-                    .with_context(|| format!("reading {shown}"))?;
-            }
-            finish(format, &mut partial, sink).with_context(|| format!("writing {name}"))?;
-            fs::remove_file(&path).with_context(|| format!("removing {shown}"))?;
-        }
+    Ok(format)
+}
+
+/// Writes the sweep straight to a stream (stdout, a device, a FIFO): no
+/// partial file, so no resume and no map.
+fn to_stream(
+    args: &SweepArgs,
+    grid: &Grid,
+    range: Range<u64>,
+    header: &str,
+    mut sink: Sink,
+    bar: &ProgressBar,
+) -> Result<()> {
+    let name = sink.name();
+    if args.resume {
+        bail!("--resume needs --output FILE (a regular file)");
     }
+    if args.plot.is_some() {
+        bail!("--plot needs --output FILE (a regular file): the map is drawn from its rows");
+    }
+    let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
+    sink.write_all(header.as_bytes())
+        .with_context(|| format!("writing {name}"))?;
+    write_rows(grid, range, chunk, args.method, &mut sink, bar, || Ok(()))
+        .with_context(|| format!("writing {name}"))?;
+    bar.finish_and_clear();
+    sink.commit().with_context(|| format!("writing {name}"))?;
+    Ok(())
+}
+
+/// Writes the sweep's rows to `path` (FILE.partial) as they are computed,
+/// synced every [`SYNC_EVERY`]; resumes from the rows already there with
+/// `--resume`; then draws the map and writes the finished file through
+/// `sink`, and removes the partial file.
+#[allow(clippy::too_many_arguments)]
+fn to_partial(
+    args: &SweepArgs,
+    grid: &Grid,
+    range: Range<u64>,
+    header: &str,
+    sink: Sink,
+    bar: &ProgressBar,
+    path: &Path,
+    format: SweepFormat,
+    plot: Option<(super::sweep_plot::Plan, &PathBuf)>,
+) -> Result<()> {
+    let name = sink.name();
+    let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
+    let mut partial = Partial::open(path, header, args.resume)?;
+    let done = partial.rows_done(&range)?;
+    bar.inc(done);
+    let shown = path.display().to_string();
+    let mut last_sync = Instant::now();
+    let file = &mut partial.file;
+    let sync_file = file
+        .try_clone()
+        .with_context(|| format!("writing {shown}"))?;
+    let mut writer = io::BufWriter::new(file);
+    write_rows(
+        grid,
+        range.start + done..range.end,
+        chunk,
+        args.method,
+        &mut writer,
+        bar,
+        || {
+            if last_sync.elapsed() >= SYNC_EVERY {
+                sync_file.sync_data()?;
+                last_sync = Instant::now();
+            }
+            Ok(())
+        },
+    )
+    .with_context(|| format!("writing {shown}"))?;
+    writer.flush().with_context(|| format!("writing {shown}"))?;
+    drop(writer);
+    bar.finish_and_clear();
+    partial
+        .file
+        .seek(SeekFrom::Start(0))
+        .with_context(|| format!("reading {shown}"))?;
+    if let Some((plan, plot)) = plot {
+        super::sweep_plot::draw(plan, grid, &partial.file, plot)?;
+        partial
+            .file
+            .seek(SeekFrom::Start(0))
+            .with_context(|| format!("reading {shown}"))?;
+    }
+    finish(format, &mut partial, sink).with_context(|| format!("writing {name}"))?;
+    fs::remove_file(path).with_context(|| format!("removing {shown}"))?;
     Ok(())
 }
 

@@ -5,7 +5,7 @@
 //! Everything that names parameters reads this table instead of spelling
 //! them: the command line's flags (`snowroll-cli`, `args.rs`), the keys of a
 //! config file and of an output read back as one, the `params` of every
-//! output (`snowroll-io`'s `RunParams`, through [`Settings::record`]), the
+//! output (`snowroll-io`'s `RunParams`, through [`Settings::csv_lines`] and [`Settings::json_entries`]), the
 //! Python keywords, their checks and the `.pyi` stub (`snowroll-py`). Adding
 //! a parameter is one row of the table plus the physics that uses it
 //! (`docs/architecture.md`).
