@@ -1,16 +1,18 @@
-//! The DOP853 step loop: stages, Hairer's error norm and controller, dense
-//! output, and event handling.
+//! The DOP853 step loop: stages, Hairer's error norm, dense output, and
+//! event handling. The step-size control is in `control.rs`.
 
 // The stage loops index several tableau rows and the stage array with the
 // same counters, as the method is written on paper; iterator chains would
 // hide that correspondence.
 #![allow(clippy::needless_range_loop)]
 
+use super::control::{initial_step, StepControl};
 use super::dense::{DenseStep, Polynomial, DENSE_TERMS};
 use super::events::{crossings, scan_step_ends};
 use super::tableau::{A, B, C, D, E3, E5};
 use super::{
-    EventAction, EventRecord, Observer, OdeSystem, Outcome, Termination, Tolerances, MAX_EVENTS,
+    EventAction, EventRecord, Observer, OdeSystem, Outcome, Stats, Termination, Tolerances,
+    MAX_EVENTS,
 };
 use crate::error::{ParamError, SimError};
 
@@ -18,25 +20,6 @@ use crate::error::{ParamError, SimError};
 const STAGES: usize = 12;
 /// Stages including the three extra ones of the dense output.
 const STAGES_DENSE: usize = 16;
-
-// Hairer's DOP853 controller constants (his defaults).
-/// Safety factor on the predicted step.
-const SAFETY: f64 = 0.9;
-/// The step may shrink at most by 1/FAC1 ... (largest 1/fac = 1/0.333).
-const FAC_MIN: f64 = 0.333;
-/// ... and grow at most by FAC_MAX per step.
-const FAC_MAX: f64 = 6.0;
-
-/// Step and evaluation counts of one integration.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Accepted steps.
-    pub accepted: u64,
-    /// Rejected steps.
-    pub rejected: u64,
-    /// Evaluations of the right-hand side.
-    pub evaluations: u64,
-}
 
 /// `Σ_j w[j] k[j]` over the non-zero weights, component by component.
 ///
@@ -54,13 +37,6 @@ fn weighted_sum<const N: usize>(w: &[f64], k: &[[f64; N]; STAGES_DENSE]) -> [f64
         }
     }
     acc
-}
-
-/// `err^(1/8)`, the controller's power of the error (Hairer's `FAC11`; the
-/// exponent is 1/(q + 1) for the error estimator of order q = 7),
-/// as three square roots: exact to rounding and far cheaper than `powf`.
-fn eighth_root(err: f64) -> f64 {
-    err.sqrt().sqrt().sqrt()
 }
 
 struct Integrator<'s, S, const N: usize> {
@@ -186,50 +162,18 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         }
     }
 
-    /// Hairer's initial step guess (DOP853's `HINIT`) for an 8th-order
-    /// method, forward in time: `h` such that `h^8 max(‖f‖, ‖f'‖) = 0.01`
-    /// in the scaled norm, at most 100 times the explicit-Euler guess.
+    /// Hairer's initial step guess at `(t, y)` ([`initial_step`]), with
+    /// its one evaluation of the right-hand side counted.
     fn initial_step(&mut self, t: f64, y: &[f64; N]) -> f64 {
-        let f0 = self.k[0];
-        let (mut dnf, mut dny) = (0.0, 0.0);
-        for n in 0..self.controlled {
-            let sk = self.tol.atol + self.tol.rtol * y[n].abs();
-            dnf += (f0[n] / sk).powi(2);
-            dny += (y[n] / sk).powi(2);
-        }
-        let mut h = if dnf <= 1e-10 || dny <= 1e-10 || !dnf.is_finite() {
-            1e-6
-        } else {
-            (dny / dnf).sqrt() * 0.01
-        };
-        h = h.min(self.tol.max_step);
-        let mut y1 = *y;
-        for n in 0..N {
-            y1[n] += h * f0[n];
-        }
-        let mut f1 = [0.0; N];
-        self.system.rhs(t + h, &y1, &mut f1);
+        let h = initial_step(
+            &*self.system,
+            &self.tol,
+            self.controlled,
+            (t, y),
+            &self.k[0],
+        );
         self.stats.evaluations += 1;
-        let mut der2 = 0.0;
-        for n in 0..self.controlled {
-            let sk = self.tol.atol + self.tol.rtol * y[n].abs();
-            der2 += ((f1[n] - f0[n]) / sk).powi(2);
-        }
-        let der2 = der2.sqrt() / h;
-        let der12 = der2.abs().max(dnf.sqrt());
-        let h1 = if der12 <= 1e-15 {
-            (h * 1e-3).max(1e-6)
-        } else {
-            (0.01 / der12).powf(1.0 / 8.0)
-        };
-        let guess = (100.0 * h).min(h1).min(self.tol.max_step);
-        // Hairer's formulae overflow when f or y dwarf the tolerances (e.g.
-        // g = 1e300): fall back to a small step and let the controller grow it.
-        if guess.is_finite() && guess > 0.0 {
-            guess
-        } else {
-            1e-6_f64.min(self.tol.max_step)
-        }
+        h
     }
 }
 
@@ -322,52 +266,6 @@ where
         return Ok(it.outcome(t0, y0, Termination::EndTime));
     }
     it.run(t0, y0, t_end, observer)
-}
-
-/// Hairer's step-size controller: the step to try next, shrunk after a
-/// rejection and grown (boundedly) after an acceptance.
-struct StepControl {
-    /// The step to try next.
-    h: f64,
-    /// Whether the last trial was rejected (the next accepted step then may
-    /// not grow).
-    last_rejected: bool,
-}
-
-impl StepControl {
-    /// Whether the trial step with error norm `err` is accepted. If so,
-    /// returns `err^(1/8)` for [`StepControl::grow`]; if not, shrinks the
-    /// step: by 10 when the error is not finite (a stage left the domain of
-    /// `f`, e.g. overflow), else by `min(1/FAC_MIN, err^(1/8)/SAFETY)`.
-    fn judge(&mut self, err: f64) -> Option<f64> {
-        if !err.is_finite() {
-            self.h *= 0.1;
-            self.last_rejected = true;
-            return None;
-        }
-        let fac11 = eighth_root(err);
-        if err > 1.0 {
-            self.h /= (1.0 / FAC_MIN).min(fac11 / SAFETY);
-            self.last_rejected = true;
-            return None;
-        }
-        Some(fac11)
-    }
-
-    /// The step after an accepted one with `err^(1/8) = fac11`: `h SAFETY /
-    /// err^(1/8)`, its ratio to `h` within `[FAC_MIN, FAC_MAX]`, at most
-    /// `max_step`, and not larger than `h` right after a rejection.
-    /// (Hairer's Lund stabilisation exponent beta is 0 for DOP853, so the
-    /// previous error does not enter.)
-    fn grow(&mut self, fac11: f64, max_step: f64) {
-        let fac = (fac11 / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
-        let mut h_new = (self.h / fac).min(max_step);
-        if self.last_rejected {
-            h_new = h_new.min(self.h);
-        }
-        self.last_rejected = false;
-        self.h = h_new;
-    }
 }
 
 /// Why an accepted step did not simply carry the integration to its end.

@@ -12,8 +12,8 @@
 //! filter, allocates state on the heap and builds slowly. So the stepper is
 //! written once, generic over `const N: usize` with `[f64; N]` state (no heap
 //! in the step loop), with the tableau as data (`tableau.rs`), Hairer's error
-//! norm and step-size controller, and Illinois root finding on the dense
-//! output (`events.rs`).
+//! norm and step-size controller (`control.rs`), and Illinois root finding
+//! on the dense output (`events.rs`).
 //!
 //! # Use
 //! A model implements [`OdeSystem`]; [`integrate`] runs it from `(t0, y0)`
@@ -44,13 +44,14 @@
 //! # Ok::<(), snowroll::SimError>(())
 //! ```
 
+mod control;
 mod dense;
 mod dop853;
 mod events;
 mod tableau;
 
 pub use dense::DenseStep;
-pub use dop853::{integrate, Stats};
+pub use dop853::integrate;
 
 /// Most event functions one system may have (they live in fixed buffers,
 /// so the step loop does not allocate).
@@ -287,6 +288,17 @@ pub enum Termination {
     StepLimit,
     /// The observer asked it to stop ([`Observer::stop_requested`]).
     Stopped,
+}
+
+/// Step and evaluation counts of one integration.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Accepted steps.
+    pub accepted: u64,
+    /// Rejected steps.
+    pub rejected: u64,
+    /// Evaluations of the right-hand side.
+    pub evaluations: u64,
 }
 
 /// The end of an integration: final time and state, why it ended, and cost.

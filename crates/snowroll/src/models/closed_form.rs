@@ -298,32 +298,7 @@ impl Model for LoneyModel {
         let cf = DragOnlyClosedForm::new(scenario, eq4.drag);
         let forces_at =
             |x: f64| circular_forces(&eq4, scenario, x, cf.speed(x), cf.acceleration(x));
-        // Where the run ends: t_end, or x_end if that comes first, or the
-        // first hop or slip before either.
-        let distance_first = opts.x_end.filter(|&x_end| cf.time_at(x_end) <= opts.t_end);
-        let x_limit = match distance_first {
-            Some(x_end) => x_end,
-            None => cf.position_after(0.0, 0.0, opts.t_end)?,
-        };
-        let (t_stop, x_known, reason) = match first_contact_event(&cf, opts, x_limit, forces_at) {
-            Some((x, reason)) => (cf.time_at(x), Some(x), reason),
-            None => match distance_first {
-                Some(x_end) => (cf.time_at(x_end), Some(x_end), StopReason::Distance),
-                None => (opts.t_end, None, StopReason::EndTime),
-            },
-        };
-        // The sample times, generated one at a time (a grid is never held whole).
-        let times: Box<dyn Iterator<Item = f64> + '_> = match &opts.sampling {
-            Sampling::Times(ts) => Box::new(ts.iter().copied().take_while(move |&t| t <= t_stop)),
-            Sampling::Every(dt) => {
-                let dt = *dt;
-                Box::new((0..).map_while(move |i| Sampling::grid_time(dt, i, t_stop)))
-            }
-            Sampling::Steps => Box::new(
-                (0..=DEFAULT_SAMPLES).map(move |i| t_stop * i as f64 / DEFAULT_SAMPLES as f64),
-            ),
-            Sampling::Ends => Box::new([0.0, t_stop].into_iter()),
-        };
+        let end = planned_end(&cf, opts, forces_at)?;
         let r0 = scenario.initial_radius();
         let b = scenario.snow_depth();
         let sample = |t: f64, x: f64| {
@@ -341,44 +316,113 @@ impl Model for LoneyModel {
                 friction_ratio: forces.friction_ratio(),
             }
         };
-        let (mut x_a, mut t_a) = (0.0, 0.0);
-        let mut row_limit = false;
-        for (rows, t) in (0u64..).zip(times) {
-            if rows >= opts.max_rows {
-                row_limit = true;
-                break;
-            }
-            let x = match x_known {
-                Some(x) if t >= t_stop => x,
-                _ => cf.position_after(x_a, t_a, t)?,
-            };
-            sink.sample(&sample(t, x), None).map_err(SimError::Sink)?;
-            (x_a, t_a) = (x, t);
-        }
-        let stop = if row_limit {
-            Stop {
-                reason: StopReason::RowLimit,
-                t_s: t_a,
-                x_m: x_a,
-                v_m_s: cf.speed(x_a),
-                turn: None,
-            }
-        } else {
-            let x_stop = match x_known {
-                Some(x) => x,
-                None => cf.position_after(x_a, t_a, t_stop)?,
-            };
-            Stop {
-                reason,
-                t_s: t_stop,
-                x_m: x_stop,
-                v_m_s: cf.speed(x_stop),
-                turn: None,
-            }
-        };
+        let times = sample_times(&opts.sampling, end.t);
+        let stop = send_samples(&cf, &end, times, opts.max_rows, sample, sink)?;
         Ok(RunEnd {
             stop,
             stats: Default::default(),
         })
     }
+}
+
+/// Where a run of the closed form ends, known before any sample is sent.
+#[derive(Debug, Clone, Copy)]
+struct PlannedEnd {
+    /// Time of the stop, s.
+    t: Seconds,
+    /// Position of the stop when it is known in advance (x_end, a hop or a
+    /// slip); `None` for a run that ends at `t_end`.
+    x: Option<Meters>,
+    /// Why the run ends there.
+    reason: StopReason,
+}
+
+/// Where the run of `cf` ends: at `t_end`, or at `x_end` if that comes
+/// first, or at the first hop or slip before either ([`first_contact_event`]
+/// with the contact forces `forces_at`).
+///
+/// # Errors
+/// [`SimError::Inversion`] if the position at `t_end` cannot be found.
+fn planned_end(
+    cf: &DragOnlyClosedForm,
+    opts: &SimOptions,
+    forces_at: impl Fn(f64) -> ContactForces,
+) -> Result<PlannedEnd, SimError> {
+    let distance_first = opts.x_end.filter(|&x_end| cf.time_at(x_end) <= opts.t_end);
+    let x_limit = match distance_first {
+        Some(x_end) => x_end,
+        None => cf.position_after(0.0, 0.0, opts.t_end)?,
+    };
+    let (t, x, reason) = match first_contact_event(cf, opts, x_limit, forces_at) {
+        Some((x, reason)) => (cf.time_at(x), Some(x), reason),
+        None => match distance_first {
+            Some(x_end) => (cf.time_at(x_end), Some(x_end), StopReason::Distance),
+            None => (opts.t_end, None, StopReason::EndTime),
+        },
+    };
+    Ok(PlannedEnd { t, x, reason })
+}
+
+/// The sample times of `sampling` on a run that stops at `t_stop`,
+/// generated one at a time (a grid is never held whole): [`DEFAULT_SAMPLES`]
+/// even steps when every "step" is asked for.
+fn sample_times(sampling: &Sampling, t_stop: Seconds) -> Box<dyn Iterator<Item = f64> + '_> {
+    match sampling {
+        Sampling::Times(ts) => Box::new(ts.iter().copied().take_while(move |&t| t <= t_stop)),
+        Sampling::Every(dt) => {
+            let dt = *dt;
+            Box::new((0..).map_while(move |i| Sampling::grid_time(dt, i, t_stop)))
+        }
+        Sampling::Steps => {
+            Box::new((0..=DEFAULT_SAMPLES).map(move |i| t_stop * i as f64 / DEFAULT_SAMPLES as f64))
+        }
+        Sampling::Ends => Box::new([0.0, t_stop].into_iter()),
+    }
+}
+
+/// Sends the sample `sample(t, x)` of each time of `times` to `sink`, each
+/// position found from the previous sample's by [`DragOnlyClosedForm::position_after`]
+/// (or known: the planned stop's), and returns where the run stopped: at
+/// `end`, or at the last sample sent once `max_rows` have been.
+///
+/// # Errors
+/// [`SimError::Sink`] when the sink fails, [`SimError::Inversion`] when a
+/// position cannot be found.
+fn send_samples(
+    cf: &DragOnlyClosedForm,
+    end: &PlannedEnd,
+    times: impl Iterator<Item = f64>,
+    max_rows: u64,
+    sample: impl Fn(f64, f64) -> Sample,
+    sink: &mut dyn SampleSink,
+) -> Result<Stop, SimError> {
+    let (mut x_a, mut t_a) = (0.0, 0.0);
+    for (rows, t) in (0u64..).zip(times) {
+        if rows >= max_rows {
+            return Ok(Stop {
+                reason: StopReason::RowLimit,
+                t_s: t_a,
+                x_m: x_a,
+                v_m_s: cf.speed(x_a),
+                turn: None,
+            });
+        }
+        let x = match end.x {
+            Some(x) if t >= end.t => x,
+            _ => cf.position_after(x_a, t_a, t)?,
+        };
+        sink.sample(&sample(t, x), None).map_err(SimError::Sink)?;
+        (x_a, t_a) = (x, t);
+    }
+    let x_stop = match end.x {
+        Some(x) => x,
+        None => cf.position_after(x_a, t_a, end.t)?,
+    };
+    Ok(Stop {
+        reason: end.reason,
+        t_s: end.t,
+        x_m: x_stop,
+        v_m_s: cf.speed(x_stop),
+        turn: None,
+    })
 }

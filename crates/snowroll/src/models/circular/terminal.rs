@@ -1,0 +1,57 @@
+//! What the common form says without integrating it: the late-time
+//! acceleration (eq. (35), fn. 4, App. A), how fast a run approaches it, and
+//! the slope below which a log at rest does not start (fn. 7).
+
+use std::f64::consts::PI;
+
+use super::Coefficients;
+use crate::units::Radians;
+
+impl Coefficients {
+    /// Late-time acceleration over g sin α for b > 0: with `π r² ≈ b x` and
+    /// `v² ≈ 2 a x` the drag term tends to `2 c_v a`, the lift and b² terms
+    /// vanish like 1/r, so `a∞ = (2G/3)/(1 + 2 c_v)`: G/5 for eq. (4)
+    /// (fn. 4), G/6 for eq. (6), G/3 for eqs. (14), (15), (32) (eq. (35)),
+    /// 2G/9 for eq. (21) as printed; 2/3 throughout for the snowless
+    /// model (App. A, eq. (95)). Always `Some` for the circular models.
+    ///
+    /// For the ball on the area law 2/3 becomes 5/7: 1/6 (`torque-cm`), 1/7
+    /// (`torque-contact`), 2/7 (the energy family), 5/28 (eq. (21) printed),
+    /// `docs/snowball-and-losses.md` §1.3.
+    pub fn terminal_fraction(&self) -> Option<f64> {
+        let (num, den) = self.shape.push_ratio();
+        if self.accretes {
+            Some((num / den) / (1.0 + 2.0 * self.drag))
+        } else {
+            Some(num / den)
+        }
+    }
+
+    /// Leading approach to the terminal value. With lift (λ₁ ≠ 0),
+    /// `a − a∞ ≈ −λ₁ g b cos α /((1 + 4c_v) π r)` (from the particular
+    /// solution `v² = A s + B s^{1/2}`, s = πr²); without it, the exact
+    /// solution `v² = A s + K s^{−2c_v}` gives `a − a∞ ∝ s^{−(1 + 2c_v)} ∝ r^{−2(1 + 2c_v)}`.
+    /// Returns the power p of `|a − a∞| ∝ r^{−p}`.
+    pub fn approach_power_in_r(&self) -> Option<f64> {
+        if !self.accretes {
+            None
+        } else if self.lift != 0.0 {
+            Some(1.0)
+        } else {
+            Some(2.0 * (1.0 + 2.0 * self.drag))
+        }
+    }
+
+    /// The initial acceleration with v = 0 is not positive below this slope
+    /// (fn. 7: the snow must be lifted). From the common form at x = 0, v = 0:
+    /// `tan α* = 3(λ₁ b r0 + λ₂ b²/3)/(2π r0²)` (for the ball 7/5 in place
+    /// of 3/2). `None` when the model has no lift term (it always starts).
+    pub fn stall_slope(&self, b: f64, r0: f64) -> Option<Radians> {
+        if !self.accretes || (self.lift == 0.0 && self.lift_b2 == 0.0) {
+            return None;
+        }
+        let (num, den) = self.shape.push_ratio();
+        let tan = den * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (num * PI * r0 * r0);
+        Some(tan.atan())
+    }
+}
