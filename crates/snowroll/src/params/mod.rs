@@ -3,12 +3,13 @@
 //! help line, the bodies and models it applies to, and how outputs record it.
 //!
 //! Everything that names parameters reads this table instead of spelling
-//! them: the command line's flags (`snowroll-cli`, `args.rs`), the keys of a
-//! config file and of an output read back as one, the `params` of every
-//! output (`snowroll-io`'s `RunParams`, through [`Settings::csv_lines`] and [`Settings::json_entries`]), the
-//! Python keywords, their checks and the `.pyi` stub (`snowroll-py`). Adding
-//! a parameter is one row of the table plus the physics that uses it
-//! (`docs/architecture.md`).
+//! them: the command line's flags (`snowroll-cli`, `args/table.rs`), the
+//! keys of a config file and of an output read back as one, the `params` of
+//! every output (`snowroll-io`'s `RunParams`, through
+//! [`Settings::csv_lines`] and [`Settings::json_entries`]), the axes of a
+//! sweep, the Python keywords, their checks, signatures, docstrings and the
+//! `.pyi` stub (`snowroll-py`). Adding a parameter is one row of the table
+//! plus the physics that uses it (`docs/architecture.md`).
 //!
 //! A parameter's value is a [`Value`]; a set of given values is a [`Given`],
 //! applied over the defaults ([`Settings::default`]) to make the library's

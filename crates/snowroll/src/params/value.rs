@@ -3,7 +3,7 @@
 use serde::ser::Serializer;
 use serde::Serialize;
 
-/// A value whose variant is not the parameter's [`Kind`].
+/// A value whose variant is not the parameter's [`Kind`](super::Kind).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct WrongKind;
 
