@@ -47,9 +47,11 @@ use std::f64::consts::PI;
 use crate::models::Coefficients;
 use crate::quadrature::kronrod;
 use crate::scenario::Scenario;
-use crate::trajectory::StopReason;
 
+mod end;
 mod series;
+
+pub use end::{circular_end, FastEnd};
 
 /// Largest whole n = 2c_v handled with the inertia term k ≠ 0 (eq. (21)
 /// as printed has n = 2): the polynomial of (F1) has degree 2n + 1.
@@ -187,42 +189,7 @@ impl SpeedSquared {
                 n,
             }
         } else {
-            let whole = n.round();
-            if (n - whole).abs() > 1e-12 || !(1.0..=MAX_POLY_N as f64).contains(&whole) {
-                return None;
-            }
-            let n = whole as i32;
-            // (P s0 τ² − L √s0 τ − M)(s0 τ² + k)^{n−1} · 2 s0 τ.
-            let mut c = [0.0; POLY_LEN];
-            c[0] = -big_m;
-            c[1] = -big_l * s0.sqrt();
-            c[2] = push * s0;
-            let mut degree = 2;
-            for _ in 1..n {
-                for j in (0..=degree + 2).rev() {
-                    let keep = if j <= degree { k * c[j] } else { 0.0 };
-                    let raised = if j >= 2 { s0 * c[j - 2] } else { 0.0 };
-                    c[j] = keep + raised;
-                }
-                degree += 2;
-            }
-            for j in (0..=degree).rev() {
-                c[j + 1] = 2.0 * s0 * c[j];
-            }
-            c[0] = 0.0;
-            degree += 1;
-            let mut suffix = [0.0; POLY_LEN];
-            let mut sum = 0.0;
-            for j in (0..=degree).rev() {
-                sum += c[j] / (j as f64 + 1.0);
-                suffix[j] = sum;
-            }
-            Form::Poly {
-                suffix,
-                f0: u0 * (s0 + k).powi(n),
-                k,
-                n,
-            }
+            poly_form(push, big_l, big_m, s0, k, n, u0)?
         };
         Some(SpeedSquared {
             form,
@@ -359,6 +326,48 @@ impl SpeedSquared {
     }
 }
 
+/// The form of (F1) for k ≠ 0 and a whole n up to [`MAX_POLY_N`]: with
+/// σ = s0 τ² its integrand is the polynomial `(P s0 τ² − L √s0 τ − M)(s0 τ²
+/// + k)^{n−1} · 2 s0 τ`, kept as the suffix sums of its coefficients over
+/// j + 1; `None` for any other n.
+fn poly_form(push: f64, big_l: f64, big_m: f64, s0: f64, k: f64, n: f64, u0: f64) -> Option<Form> {
+    let whole = n.round();
+    if (n - whole).abs() > 1e-12 || !(1.0..=MAX_POLY_N as f64).contains(&whole) {
+        return None;
+    }
+    let n = whole as i32;
+    let mut c = [0.0; POLY_LEN];
+    c[0] = -big_m;
+    c[1] = -big_l * s0.sqrt();
+    c[2] = push * s0;
+    let mut degree = 2;
+    for _ in 1..n {
+        for j in (0..=degree + 2).rev() {
+            let keep = if j <= degree { k * c[j] } else { 0.0 };
+            let raised = if j >= 2 { s0 * c[j - 2] } else { 0.0 };
+            c[j] = keep + raised;
+        }
+        degree += 2;
+    }
+    for j in (0..=degree).rev() {
+        c[j + 1] = 2.0 * s0 * c[j];
+    }
+    c[0] = 0.0;
+    degree += 1;
+    let mut suffix = [0.0; POLY_LEN];
+    let mut sum = 0.0;
+    for j in (0..=degree).rev() {
+        sum += c[j] / (j as f64 + 1.0);
+        suffix[j] = sum;
+    }
+    Some(Form::Poly {
+        suffix,
+        f0: u0 * (s0 + k).powi(n),
+        k,
+        n,
+    })
+}
+
 /// ∫ₗₒʰⁱ f by the 15-point Kronrod rule, bisected where QUADPACK's error
 /// estimate `(200 |K − G|)^{3/2}` (relative) exceeds [`QUAD_RTOL`].
 fn adaptive(f: &mut impl FnMut(f64) -> f64, lo: f64, hi: f64, budget: &mut u32) -> f64 {
@@ -371,144 +380,6 @@ fn adaptive(f: &mut impl FnMut(f64) -> f64, lo: f64, hi: f64, budget: &mut u32) 
     *budget -= 1;
     let mid = 0.5 * (lo + hi);
     adaptive(f, lo, mid, budget) + adaptive(f, mid, hi, budget)
-}
-
-/// Where a circular run ends, from the closed form.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FastEnd {
-    /// Why it ended: [`StopReason::EndTime`] or [`StopReason::Distance`].
-    pub reason: StopReason,
-    /// Time, s.
-    pub t: f64,
-    /// Distance, m.
-    pub x: f64,
-    /// Speed, m/s.
-    pub v: f64,
-}
-
-/// The end of the run of `c` in `scenario` to `t_end` or `x_end`, whichever
-/// comes first, or `None` where the fast path does not apply (see the
-/// module doc): the caller then integrates the ODE.
-pub fn circular_end(
-    c: &Coefficients,
-    scenario: &Scenario,
-    t_end: f64,
-    x_end: Option<f64>,
-    contact: ContactCheck,
-) -> Option<FastEnd> {
-    let u = SpeedSquared::new(c, scenario, contact)?;
-    if !u.never_stalls() {
-        return None;
-    }
-    // The start is not a quadrature node.
-    if !u.contact_holds(0.0, u.u0) {
-        return None;
-    }
-    let end = |reason, t: f64, x: f64| {
-        let v = u.at(x).sqrt();
-        let ok = u.contact_ok.get() && u.contact_holds(x, v * v);
-        (ok && t.is_finite() && x.is_finite() && v.is_finite()).then_some(FastEnd {
-            reason,
-            t,
-            x,
-            v,
-        })
-    };
-    if let Form::Constant = u.form {
-        // x = v0 t + P t²/2; x_end is reached at t = 2X/(v0 + √(v0² + 2PX)).
-        let (v0, p) = (u.u0.sqrt(), u.push);
-        let x_t = v0 * t_end + 0.5 * p * t_end * t_end;
-        return match x_end {
-            Some(xe) if xe <= x_t => end(
-                StopReason::Distance,
-                2.0 * xe / (v0 + (u.u0 + 2.0 * p * xe).sqrt()),
-                xe,
-            ),
-            _ => end(StopReason::EndTime, t_end, x_t),
-        };
-    }
-    let w_end = x_end.map_or(f64::INFINITY, f64::sqrt);
-    // Where the series (T2) of `series.rs` takes over from the quadrature.
-    let series = u.series();
-    let w_switch = series.map_or(f64::INFINITY, |sr| u.x_of_z(sr.z1).sqrt());
-    let w_stop = w_end.min(w_switch);
-    // From rest, t(z1) is known in closed form (T3): no quadrature at all
-    // unless the run ends before z1.
-    let from_rest = series
-        .and_then(|sr| sr.t_z1)
-        .filter(|&t1| t1 < t_end && w_end > w_switch);
-    let (mut lo, mut t_lo) = from_rest.map_or((0.0, 0.0), |t1| (w_stop, t1));
-    let mut hi = u.first_panel();
-    let mut panels = 0;
-    while lo < w_stop {
-        panels += 1;
-        if panels > MAX_PANELS {
-            return None;
-        }
-        hi = hi.min(w_stop);
-        let dt = u.time_between(lo, hi);
-        if !dt.is_finite() {
-            return None;
-        }
-        if t_lo + dt >= t_end {
-            let w = solve_time(&u, lo, t_lo, hi, dt, t_end)?;
-            return end(StopReason::EndTime, t_end, w * w);
-        }
-        t_lo += dt;
-        lo = hi;
-        hi *= 2.0;
-    }
-    let Some(sr) = series.filter(|_| w_end > w_switch) else {
-        let x = x_end?;
-        return end(StopReason::Distance, t_lo, x);
-    };
-    // t_lo = t(z1) < t_end: the rest from the series. Without quadrature
-    // nodes before z1, the contact forces are checked from the start.
-    let z_from = if from_rest.is_some() { 1.0 } else { sr.z1 };
-    let z_x_end = x_end.map(|x| 1.0 + u.b * x / u.s0);
-    if let Some(z) = z_x_end {
-        let t = t_lo + sr.time_from_z1(z);
-        if t < t_end {
-            u.contact_ok
-                .set(u.contact_ok.get() && u.contact_holds_between(z_from, z));
-            return end(StopReason::Distance, t, x_end?);
-        }
-    }
-    let z = sr.solve_time(t_lo, t_end)?;
-    let z = z_x_end.map_or(z, |ze| z.min(ze));
-    u.contact_ok
-        .set(u.contact_ok.get() && u.contact_holds_between(z_from, z));
-    end(StopReason::EndTime, t_end, u.x_of_z(z))
-}
-
-/// The w in `[lo, hi]` where t = `t_end`, given t(lo) = `t_lo` and the
-/// panel's time `dt`: Newton's method (t' = 2w/√u), kept in the bracket by
-/// bisection, integrating each step from the last point.
-fn solve_time(u: &SpeedSquared, lo: f64, t_lo: f64, hi: f64, dt: f64, t_end: f64) -> Option<f64> {
-    let (mut a, mut b) = (lo, hi);
-    // Anchor: a point where t is known.
-    let (mut wk, mut tk) = (lo, t_lo);
-    let mut w = lo + (hi - lo) * ((t_end - t_lo) / dt).clamp(0.0, 1.0);
-    for _ in 0..MAX_NEWTON {
-        let t = tk + u.time_between(wk, w);
-        (wk, tk) = (w, t);
-        let g = t - t_end;
-        if g < 0.0 {
-            a = w;
-        } else {
-            b = w;
-        }
-        let next = w - g / u.dt_dw(w);
-        if (next - w).abs() <= NEWTON_RTOL * w || b - a <= NEWTON_RTOL * b {
-            return Some(next.clamp(a, b));
-        }
-        w = if next > a && next < b {
-            next
-        } else {
-            0.5 * (a + b)
-        };
-    }
-    None
 }
 
 #[cfg(test)]

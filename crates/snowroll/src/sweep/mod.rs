@@ -15,14 +15,16 @@
 //! - Each row is a pure function of its grid point, so the rows are
 //!   bit-identical for any thread count, chunk size and shard split.
 
+mod axis;
 mod fast;
 mod grid;
 mod regime;
 mod row;
 mod run;
 
+pub use axis::{Axis, GridError, Param, Values};
 pub use fast::{circular_end, ContactCheck, FastEnd, SpeedSquared};
-pub use grid::{Axis, Choices, Grid, GridError, Param, Point, Values, MAX_GRID_POINTS};
+pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
 pub use row::SweepRow;
 pub use run::{run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL};

@@ -21,7 +21,8 @@
 use std::f64::consts::PI;
 use std::fmt;
 
-use super::grid::{Grid, Param};
+use super::axis::{Param, Values};
+use super::grid::{Grid, Point};
 use super::row::SweepRow;
 use crate::models::{CollisionModel, ModelKind};
 use crate::scenario::{Scenario, ScenarioFile};
@@ -154,6 +155,193 @@ pub fn slip_mu(model: ModelKind, s: &Scenario) -> Option<f64> {
     (a0 > 0.0 && mu.is_finite() && mu > 0.0).then_some(mu)
 }
 
+/// The smallest and largest of the values of an axis, each computed as the
+/// map places it.
+fn value_range(values: &Values) -> (f64, f64) {
+    (0..values.len())
+        .map(|k| values.get(k))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        })
+}
+
+/// The plane of a map: α on one axis, `other` on the other, which the
+/// borders sample at [`CURVE_POINTS`] values from `lo` to `hi` (evenly in
+/// its logarithm when it spans two decades or more).
+struct Plane {
+    other: Param,
+    alpha_is_x: bool,
+    lo: f64,
+    hi: f64,
+    along: Vec<f64>,
+}
+
+impl Plane {
+    /// The plane of `x` and `y`, if one is α and the other a swept axis.
+    fn of(grid: &Grid, x: Param, y: Param) -> Option<Plane> {
+        let (other, alpha_is_x) = match (x, y) {
+            (Param::AlphaDeg, p) => (p, true),
+            (p, Param::AlphaDeg) => (p, false),
+            _ => return None,
+        };
+        let other_axis = grid.axes().iter().find(|a| a.param == other)?;
+        let (lo, hi) = value_range(&other_axis.values);
+        let log = lo > 0.0 && hi / lo >= 100.0;
+        let along = (0..CURVE_POINTS)
+            .map(|i| {
+                let f = i as f64 / (CURVE_POINTS - 1) as f64;
+                if log {
+                    lo * (hi / lo).powf(f)
+                } else {
+                    lo + (hi - lo) * f
+                }
+            })
+            .collect();
+        Some(Plane {
+            other,
+            alpha_is_x,
+            lo,
+            hi,
+            along,
+        })
+    }
+
+    /// The map point of slope `alpha_deg` and value `v` of the other axis.
+    fn place(&self, alpha_deg: f64, v: f64) -> (f64, f64) {
+        if self.alpha_is_x {
+            (alpha_deg, v)
+        } else {
+            (v, alpha_deg)
+        }
+    }
+}
+
+/// One model's borders: its first grid point (`base`) with the other axis
+/// set to a value, and the label of each border.
+struct ModelBorders<'a> {
+    model: ModelKind,
+    base: Point,
+    plane: &'a Plane,
+    several: bool,
+}
+
+impl ModelBorders<'_> {
+    /// `what`, with the model's id when the map shows several models.
+    fn named(&self, what: &str) -> String {
+        if self.several {
+            format!("{what}, {}", self.model.id())
+        } else {
+            what.to_string()
+        }
+    }
+
+    /// The base scenario with the other axis at `v` (unchanged for an axis
+    /// of the run rather than of the scenario); `None` if it is invalid.
+    fn with(&self, v: f64) -> Option<Scenario> {
+        let mut f = ScenarioFile::from(self.base.scenario);
+        match self.plane.other {
+            Param::SnowDepth => f.snow_depth = v,
+            Param::R0 => f.r0 = v,
+            Param::G => f.g = v,
+            Param::Density => f.density = v,
+            Param::Length => f.length = v,
+            Param::V0 => f.v0 = v,
+            _ => {}
+        }
+        Scenario::new(f).ok()
+    }
+
+    /// fn. 7: the stall slope along the other axis.
+    fn stall(&self) -> Option<Boundary> {
+        let points: Vec<(f64, f64)> = self
+            .plane
+            .along
+            .iter()
+            .filter_map(|&v| {
+                let s = self.with(v)?;
+                let t = self
+                    .model
+                    .stall_threshold(s.snow_depth(), s.initial_radius())?;
+                Some(self.plane.place(t.slope.to_degrees(), v))
+            })
+            .collect();
+        (points.len() > 1).then(|| Boundary {
+            label: self.named("stall slope (fn. 7)"),
+            points,
+        })
+    }
+
+    /// The turn models' hop: fn. 10's late-turn slope tan α = 2, and the
+    /// hop within the turns the rows reached (§4.3).
+    fn hop(&self, rows: &[SweepRow]) -> Vec<Boundary> {
+        let (plane, model) = (self.plane, self.model);
+        let late = 2f64.atan().to_degrees();
+        let mut out = vec![Boundary {
+            label: self.named("hop, late turns: tan α = 2 (fn. 10)"),
+            points: vec![plane.place(late, plane.lo), plane.place(late, plane.hi)],
+        }];
+        // At each value of the other axis, K = the turns of the furthest run
+        // there that rolled on.
+        let mut values: Vec<f64> = rows
+            .iter()
+            .filter(|r| r.model == model)
+            .map(|r| r.param(plane.other))
+            .collect();
+        values.sort_by(f64::total_cmp);
+        values.dedup_by(|a, b| a.to_bits() == b.to_bits());
+        let early: Vec<(f64, f64)> = values
+            .iter()
+            .filter_map(|&v| {
+                let k = rows
+                    .iter()
+                    .filter(|r| r.model == model && r.param(plane.other).to_bits() == v.to_bits())
+                    .filter(|r| Outcome::of(r) == Outcome::RollsOn)
+                    .filter_map(|r| r.turns)
+                    .max()?;
+                let s = self.with(v)?;
+                let a = hop_slope_within(
+                    s.snow_depth(),
+                    s.initial_radius(),
+                    k + 1,
+                    self.base.options.collision,
+                )?;
+                Some(plane.place(a.to_degrees(), v))
+            })
+            .collect();
+        if early.len() > 1 {
+            out.push(Boundary {
+                label: self.named("hop within the turns reached (§4.3)"),
+                points: early,
+            });
+        }
+        out
+    }
+
+    /// Slip: μ as a function of α over the α axis (§5).
+    fn slip(&self, grid: &Grid) -> Option<Boundary> {
+        let alpha_axis = grid.axes().iter().find(|a| a.param == Param::AlphaDeg)?;
+        let (a_lo, a_hi) = value_range(&alpha_axis.values);
+        let points: Vec<(f64, f64)> = (0..CURVE_POINTS)
+            .filter_map(|i| {
+                let deg = a_lo + (a_hi - a_lo) * i as f64 / (CURVE_POINTS - 1) as f64;
+                let mut f = ScenarioFile::from(self.base.scenario);
+                f.alpha_deg = deg;
+                let mu = slip_mu(self.model, &Scenario::new(f).ok()?)?;
+                Some(self.plane.place(deg, mu))
+            })
+            .collect();
+        let what = if self.model.is_circular() {
+            "slip: μ = |F|/N at the start (§5)"
+        } else {
+            "slip, late turns (§5.3)"
+        };
+        (points.len() > 1).then(|| Boundary {
+            label: self.named(what),
+            points,
+        })
+    }
+}
+
 /// The closed-form borders of `grid`'s models in the plane `(x, y)` of two
 /// swept parameters, one of which must be α (otherwise none are drawn).
 /// Parameters off the plane take the values of the model's first grid point;
@@ -161,150 +349,26 @@ pub fn slip_mu(model: ModelKind, s: &Scenario) -> Option<f64> {
 /// early-turn hop angle).
 pub fn boundaries(grid: &Grid, rows: &[SweepRow], x: Param, y: Param) -> Vec<Boundary> {
     let mut out = Vec::new();
-    let (other, alpha_is_x) = match (x, y) {
-        (Param::AlphaDeg, p) => (p, true),
-        (p, Param::AlphaDeg) => (p, false),
-        _ => return out,
-    };
-    let Some(other_axis) = grid.axes().iter().find(|a| a.param == other) else {
+    let Some(plane) = Plane::of(grid, x, y) else {
         return out;
     };
-    let (lo, hi) = (0..other_axis.values.len())
-        .map(|k| other_axis.values.get(k))
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-    let log = lo > 0.0 && hi / lo >= 100.0;
-    let along: Vec<f64> = (0..CURVE_POINTS)
-        .map(|i| {
-            let f = i as f64 / (CURVE_POINTS - 1) as f64;
-            if log {
-                lo * (hi / lo).powf(f)
-            } else {
-                lo + (hi - lo) * f
-            }
-        })
-        .collect();
-    let place = |alpha_deg: f64, v: f64| {
-        if alpha_is_x {
-            (alpha_deg, v)
-        } else {
-            (v, alpha_deg)
-        }
-    };
     let per_model = grid.len() / grid.models().len().max(1) as u64;
-    let several = grid.models().len() > 1;
     for (m, &model) in grid.models().iter().enumerate() {
         let Ok(base) = grid.point(m as u64 * per_model) else {
             continue;
         };
-        let named = |what: &str| {
-            if several {
-                format!("{what}, {}", model.id())
-            } else {
-                what.to_string()
-            }
+        let borders = ModelBorders {
+            model,
+            base,
+            plane: &plane,
+            several: grid.models().len() > 1,
         };
-        let with = |v: f64| -> Option<Scenario> {
-            let mut f = ScenarioFile::from(base.scenario);
-            match other {
-                Param::SnowDepth => f.snow_depth = v,
-                Param::R0 => f.r0 = v,
-                Param::G => f.g = v,
-                Param::Density => f.density = v,
-                Param::Length => f.length = v,
-                Param::V0 => f.v0 = v,
-                _ => {}
-            }
-            Scenario::new(f).ok()
-        };
-        // fn. 7: the stall slope along the other axis.
-        let stall: Vec<(f64, f64)> = along
-            .iter()
-            .filter_map(|&v| {
-                let s = with(v)?;
-                let t = model.stall_threshold(s.snow_depth(), s.initial_radius())?;
-                Some(place(t.slope.to_degrees(), v))
-            })
-            .collect();
-        if stall.len() > 1 {
-            out.push(Boundary {
-                label: named("stall slope (fn. 7)"),
-                points: stall,
-            });
+        out.extend(borders.stall());
+        if !model.is_circular() && plane.other != Param::Mu {
+            out.extend(borders.hop(rows));
         }
-        if !model.is_circular() && other != Param::Mu {
-            // fn. 10: late turns, tan α = 2.
-            let late = 2f64.atan().to_degrees();
-            out.push(Boundary {
-                label: named("hop, late turns: tan α = 2 (fn. 10)"),
-                points: vec![place(late, lo), place(late, hi)],
-            });
-            // Within the turns the rows reached: at each value of the other
-            // axis, K = the turns of the furthest run there that rolled on.
-            let mut values: Vec<f64> = rows
-                .iter()
-                .filter(|r| r.model == model)
-                .map(|r| r.param(other))
-                .collect();
-            values.sort_by(f64::total_cmp);
-            values.dedup_by(|a, b| a.to_bits() == b.to_bits());
-            let early: Vec<(f64, f64)> = values
-                .iter()
-                .filter_map(|&v| {
-                    let k = rows
-                        .iter()
-                        .filter(|r| r.model == model && r.param(other).to_bits() == v.to_bits())
-                        .filter(|r| Outcome::of(r) == Outcome::RollsOn)
-                        .filter_map(|r| r.turns)
-                        .max()?;
-                    let s = with(v)?;
-                    let a = hop_slope_within(
-                        s.snow_depth(),
-                        s.initial_radius(),
-                        k + 1,
-                        base.options.collision,
-                    )?;
-                    Some(place(a.to_degrees(), v))
-                })
-                .collect();
-            if early.len() > 1 {
-                out.push(Boundary {
-                    label: named("hop within the turns reached (§4.3)"),
-                    points: early,
-                });
-            }
-        }
-        if other == Param::Mu {
-            // Slip: μ as a function of α.
-            let Some(alpha_axis) = grid.axes().iter().find(|a| a.param == Param::AlphaDeg) else {
-                continue;
-            };
-            let (a_lo, a_hi) = (0..alpha_axis.values.len())
-                .map(|k| alpha_axis.values.get(k))
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-                    (lo.min(v), hi.max(v))
-                });
-            let slip: Vec<(f64, f64)> = (0..CURVE_POINTS)
-                .filter_map(|i| {
-                    let deg = a_lo + (a_hi - a_lo) * i as f64 / (CURVE_POINTS - 1) as f64;
-                    let mut f = ScenarioFile::from(base.scenario);
-                    f.alpha_deg = deg;
-                    let mu = slip_mu(model, &Scenario::new(f).ok()?)?;
-                    Some(place(deg, mu))
-                })
-                .collect();
-            if slip.len() > 1 {
-                let what = if model.is_circular() {
-                    "slip: μ = |F|/N at the start (§5)"
-                } else {
-                    "slip, late turns (§5.3)"
-                };
-                out.push(Boundary {
-                    label: named(what),
-                    points: slip,
-                });
-            }
+        if plane.other == Param::Mu {
+            out.extend(borders.slip(grid));
         }
     }
     out

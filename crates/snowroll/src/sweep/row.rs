@@ -2,7 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::grid::{Param, Point};
+use super::axis::Param;
+use super::grid::Point;
 use crate::models::{CollisionModel, ModelKind};
 use crate::scenario::ScenarioFile;
 use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
