@@ -192,7 +192,9 @@ pub struct Param {
     pub group: Group,
     /// The bodies and models it applies to.
     pub applies: Applies,
-    /// The allowed values, in words (`0 < alpha_deg < 90`).
+    /// The allowed values, in words, as the library's check states them
+    /// when it refuses a value (`0 < alpha_deg < 90 degrees`; a test holds
+    /// each check's message to this text).
     pub range: &'static str,
     /// One line of help: what it is, its unit and its range.
     pub help: &'static str,
@@ -482,6 +484,39 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// Every check of the library refuses a value out of range with a
+    /// message that states the table's range: a NaN for a number, 0 for a
+    /// count (each parameter alone, the others at their defaults; the swath
+    /// on a ball, whose it is).
+    #[test]
+    fn each_check_states_the_table_s_range() {
+        use crate::scenario::Scenario;
+        for p in PARAMS.iter().filter(|p| p.settable()) {
+            let bad = match p.kind {
+                Kind::Real | Kind::OptionalReal => Value::Real(f64::NAN),
+                Kind::Count | Kind::OptionalCount => Value::Count(0),
+                _ => continue,
+            };
+            let mut s = Settings::default();
+            if p.applies == Applies::Sphere {
+                s.scenario.shape = Shape::Sphere;
+            }
+            p.set(&mut s, bad).unwrap();
+            let e = Scenario::new(s.scenario)
+                .and_then(|_| s.options.sampling.validate())
+                .and_then(|()| s.options.validate())
+                .expect_err(p.key);
+            let message = e.to_string();
+            // The check may add why after the range.
+            assert!(
+                message.contains(p.key) && message.contains(&format!("expected {}", p.range)),
+                "{}: {message:?} does not state {:?}",
+                p.key,
+                p.range
+            );
         }
     }
 
