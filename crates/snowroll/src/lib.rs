@@ -120,6 +120,7 @@
     clippy::print_stdout
 )]
 
+pub mod body;
 pub mod error;
 pub mod integrate;
 pub mod losses;

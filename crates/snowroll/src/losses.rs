@@ -19,9 +19,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::ParamError;
-use std::f64::consts::PI;
 
-use crate::scenario::{Scenario, Shape};
+use crate::scenario::Scenario;
 use crate::units::{KilogramsPerCubicMeter, Meters, MetersPerSecond};
 
 /// Air density when the caller does not say, kg/m³ (sea level, about 15 °C).
@@ -152,10 +151,7 @@ impl Losses {
 /// The frontal area A of the body at radius `r`, m² (§2.1): `2 r l` for the
 /// log, `π r²` for the ball.
 pub fn frontal_area(s: &Scenario, r: Meters) -> f64 {
-    match s.shape() {
-        Shape::Cylinder => 2.0 * r * s.length(),
-        Shape::Sphere => PI * r * r,
-    }
+    s.body().frontal_area(r)
 }
 
 /// The closed-form terminal velocity of the snowless body with drag,

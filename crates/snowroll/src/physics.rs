@@ -1,80 +1,28 @@
-//! Formulae shared by the circular models of §2: the radius law, the
-//! kinetic and potential energies of the always-circular log, and of the
-//! always-round ball (`docs/snowball-and-losses.md` §1.1–1.2).
+//! Formulae shared by the circular models of §2: the kinetic and potential
+//! energies of the always-circular log and of the always-round ball
+//! (`docs/snowball-and-losses.md` §1.1–1.2), and the body's growth law of
+//! [`Body`](crate::body::Body) for a scenario.
 
 use std::f64::consts::PI;
 
 use crate::scenario::{Scenario, Shape};
 use crate::units::{Joules, Kilograms, Meters, MetersPerSecond};
 
-/// Radius after rolling a distance `x`: `π r² = π r0² + b x` (eq. (8)) for
-/// the log and for the ball with its natural swath 2r; for a ball with a
-/// fixed swath w, `(4π/3)(r³ − r0³) = b w x` (`docs/snowball-and-losses.md` §1.1).
+pub use crate::body::Growth;
+
+/// Radius after rolling a distance `x`, m ([`Body::radius_at`](crate::body::Body::radius_at)).
 pub fn radius_at(s: &Scenario, x: Meters) -> Meters {
-    let r0 = s.initial_radius();
-    match s.swath_width() {
-        None => (r0 * r0 + s.snow_depth() * x / PI).sqrt(),
-        Some(w) => (r0 * r0 * r0 + 3.0 * s.snow_depth() * w * x / (4.0 * PI)).cbrt(),
-    }
+    s.body().radius_at(x)
 }
 
-/// Mass after rolling `x`, kg: `m = m0 + ρ b l x` (= π ρ l r², eq. (8)) for
-/// the log; `(4/3)πρ r³` for the ball, which is `m0 + ρ b w x` with a fixed
-/// swath w.
+/// Mass after rolling `x`, kg ([`Body::mass_at`](crate::body::Body::mass_at)).
 pub fn mass_at(s: &Scenario, x: Meters) -> Kilograms {
-    match (s.shape(), s.swath_width()) {
-        (Shape::Cylinder, _) => s.initial_mass() + s.density() * s.snow_depth() * s.length() * x,
-        (Shape::Sphere, Some(w)) => s.initial_mass() + s.density() * s.snow_depth() * w * x,
-        (Shape::Sphere, None) => {
-            let r = radius_at(s, x);
-            4.0 * PI * s.density() * r * r * r / 3.0
-        }
-    }
+    s.body().mass_at(x)
 }
 
-/// The body's size and its rate of growth at distance `x`
-/// (`docs/snowball-and-losses.md` §1.1), for the equations of motion and the
-/// contact forces of any shape.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Growth {
-    /// r, m.
-    pub r: Meters,
-    /// M, kg.
-    pub mass: Kilograms,
-    /// r′ = dr/dx: b/(2πr) on the area law, b w/(4πr²) for a ball with a
-    /// fixed swath w.
-    pub dr_dx: f64,
-    /// r″ = d²r/dx², 1/m: −r′²/r on the area law, −2r′²/r for a fixed swath.
-    pub d2r_dx2: f64,
-    /// λ = (dM/dx)/M = n r′/r (M ∝ rⁿ), 1/m.
-    pub lambda: f64,
-}
-
-/// [`Growth`] at distance `x`; a body that collects no snow (`accretes`
-/// false, or b = 0) keeps r0, with r′ = r″ = λ = 0.
+/// [`Growth`] at distance `x` ([`Body::growth_at`](crate::body::Body::growth_at)).
 pub fn growth_at(s: &Scenario, x: Meters, accretes: bool) -> Growth {
-    let b = s.snow_depth();
-    if !accretes || b == 0.0 {
-        return Growth {
-            r: s.initial_radius(),
-            mass: s.initial_mass(),
-            dr_dx: 0.0,
-            d2r_dx2: 0.0,
-            lambda: 0.0,
-        };
-    }
-    let r = radius_at(s, x);
-    let (dr_dx, bend) = match s.swath_width() {
-        None => (b / (2.0 * PI * r), 1.0),
-        Some(w) => (b * w / (4.0 * PI * r * r), 2.0),
-    };
-    Growth {
-        r,
-        mass: mass_at(s, x),
-        dr_dx,
-        d2r_dx2: -bend * dr_dx * dr_dx / r,
-        lambda: s.shape().mass_exponent() * dr_dx / r,
-    }
+    s.body().growth_at(x, accretes)
 }
 
 /// Kinetic energy of the round body, `T = ½ M (1 + k + r′²) v²` (eq. (7)

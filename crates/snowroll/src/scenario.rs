@@ -2,6 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::body::Body;
 use crate::error::ParamError;
 use crate::units::{
     KilogramsPerCubicMeter, Meters, MetersPerSecond, MetersPerSecondSquared, Radians,
@@ -37,89 +38,7 @@ pub struct Scenario {
     swath_width: Option<Meters>,
 }
 
-/// The body that rolls (issue 11, `docs/snowball-and-losses.md` §1): the
-/// note's log, or a ball. Both are taken as round at all times by the
-/// circular models; the turn models know only the log.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum Shape {
-    /// A uniform cylinder of length l (the note's log): I = ½ M r²,
-    /// M = πρl r², swath = l, so π r² = π r0² + b x (eq. (8)).
-    #[default]
-    Cylinder,
-    /// A uniform ball: I = (2/5) M r², M = (4/3)πρ r³, swath 2r by default
-    /// (again π r² = π r0² + b x), or a fixed width w
-    /// ((4π/3)(r³ − r0³) = b w x), `docs/snowball-and-losses.md` §1.1.
-    Sphere,
-}
-
-impl Shape {
-    /// Both shapes, the default first.
-    pub const ALL: [Shape; 2] = [Shape::Cylinder, Shape::Sphere];
-
-    /// The kebab-case name, as `--shape` takes it.
-    pub fn id(self) -> &'static str {
-        match self {
-            Shape::Cylinder => "cylinder",
-            Shape::Sphere => "sphere",
-        }
-    }
-
-    /// k = I/(M r²): ½ for the cylinder, 2/5 for the ball.
-    pub fn inertia_factor(self) -> f64 {
-        let (num, den) = self.inertia_ratio();
-        num / den
-    }
-
-    /// k as a ratio of small whole numbers, (1, 2) or (2, 5).
-    pub fn inertia_ratio(self) -> (f64, f64) {
-        match self {
-            Shape::Cylinder => (1.0, 2.0),
-            Shape::Sphere => (2.0, 5.0),
-        }
-    }
-
-    /// 1/(1 + k) as a ratio of whole numbers: (2, 3) for the cylinder
-    /// (App. A: a = 2G/3), (5, 7) for the ball (a = 5G/7). The formulae
-    /// evaluate `num * G / den`, so that the snowless accelerations are the
-    /// correctly rounded 2G/3 and 5G/7.
-    pub fn push_ratio(self) -> (f64, f64) {
-        match self {
-            Shape::Cylinder => (2.0, 3.0),
-            Shape::Sphere => (5.0, 7.0),
-        }
-    }
-
-    /// n of M ∝ rⁿ: 2 for the cylinder, 3 for the ball.
-    pub fn mass_exponent(self) -> f64 {
-        match self {
-            Shape::Cylinder => 2.0,
-            Shape::Sphere => 3.0,
-        }
-    }
-}
-
-impl std::fmt::Display for Shape {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.id())
-    }
-}
-
-impl std::str::FromStr for Shape {
-    type Err = ParamError;
-
-    /// `cylinder` or `sphere`, in any case.
-    fn from_str(s: &str) -> Result<Self, ParamError> {
-        let wanted = s.trim().to_ascii_lowercase();
-        Shape::ALL
-            .into_iter()
-            .find(|k| k.id() == wanted)
-            .ok_or_else(|| ParamError::UnknownShape {
-                given: s.to_string(),
-            })
-    }
-}
+pub use crate::body::Shape;
 
 /// The user-facing form of a [`Scenario`], in the project's one parameter
 /// vocabulary: each field is named as the command line's long flag in
@@ -312,10 +231,7 @@ impl Scenario {
             Shape::Sphere => "change --v0, --density or --r0",
         };
         check_scale(kinetic, 0.5 * one_plus_k * m0 * v0 * v0, true, hint)?;
-        let swath = match self.shape {
-            Shape::Cylinder => l,
-            Shape::Sphere => self.swath_width.unwrap_or(2.0 * r0),
-        };
+        let swath = self.body().swath(r0);
         check_scale(picked, rho * b * swath, true, picked_hint)?;
         check_scale(
             "area picked up per metre rolled b/pi relative to r0^2 (1/m)",
@@ -426,11 +342,19 @@ impl Scenario {
     /// Initial mass, kg: m0 = π ρ l r0² for the log (eq. (37)),
     /// (4/3) π ρ r0³ for the ball.
     pub fn initial_mass(&self) -> f64 {
-        match self.shape {
-            Shape::Cylinder => std::f64::consts::PI * self.rho * self.l * self.r0 * self.r0,
-            Shape::Sphere => {
-                4.0 * std::f64::consts::PI * self.rho * self.r0 * self.r0 * self.r0 / 3.0
-            }
+        self.body().initial_mass()
+    }
+
+    /// The body: its shape, size and growth law (k, M(r), r(x), swath,
+    /// frontal area).
+    pub fn body(&self) -> Body {
+        Body {
+            shape: self.shape,
+            density: self.rho,
+            length: self.l,
+            r0: self.r0,
+            snow_depth: self.b,
+            swath_width: self.swath_width,
         }
     }
 }
