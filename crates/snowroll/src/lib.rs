@@ -93,7 +93,7 @@
 //! | eq. (4) | [`Derivation::TorqueAboutCentre`] |
 //! | eq. (6) | [`Derivation::TorqueAboutContact`] |
 //! | eqs. (7), (10), (11) | [`physics::kinetic_energy`], [`physics::potential_energy`], [`physics::mechanical_energy`] |
-//! | eq. (8) | [`physics::radius_at`], [`physics::mass_at`] |
+//! | eq. (8) | [`body::Body::radius_at`], [`body::Body::mass_at`], [`body::Body::swath`] (wrapped by [`physics::radius_at`], [`physics::mass_at`]) |
 //! | eq. (14) | [`Derivation::Energy`] |
 //! | eq. (15) | [`Derivation::EnergyLinearised`] |
 //! | eq. (21) | [`Derivation::LagrangianPrinted`] |
