@@ -12,7 +12,8 @@ use arrow_schema::{DataType, Field, Schema};
 use parquet::arrow::ArrowWriter;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
-use snowroll::sweep::SweepRow;
+use snowroll::params::Kind;
+use snowroll::sweep::{Param, SweepRow};
 
 /// Rows per record batch (and per read of the CSV).
 const BATCH_ROWS: usize = 65_536;
@@ -25,22 +26,11 @@ pub fn schema() -> Schema {
         required("index", DataType::UInt64),
         required("model", DataType::Utf8),
     ];
-    for name in [
-        "alpha_deg",
-        "snow_depth",
-        "r0",
-        "g",
-        "density",
-        "length",
-        "v0",
-        "t_end",
-    ] {
-        fields.push(required(name, DataType::Float64));
+    // The numeric axes, in grid order; those a run may leave unset
+    // (optional in the parameter table: `x_end`, `mu`) nullable.
+    for p in Param::ALL {
+        fields.push(Field::new(p.key(), DataType::Float64, is_optional(p)));
     }
-    fields.push(nullable("x_end", DataType::Float64));
-    fields.push(required("rtol", DataType::Float64));
-    fields.push(required("atol", DataType::Float64));
-    fields.push(nullable("mu", DataType::Float64));
     fields.push(required("on_hop", DataType::Utf8));
     fields.push(required("collision", DataType::Utf8));
     fields.push(nullable("stop", DataType::Utf8));
@@ -50,6 +40,12 @@ pub fn schema() -> Schema {
     fields.push(nullable("turns", DataType::UInt64));
     fields.push(nullable("error", DataType::Utf8));
     Schema::new(fields)
+}
+
+/// Whether a run may leave axis `p` unset (an optional number of the
+/// parameter table: `x_end`, `mu`), so that its column is nullable.
+fn is_optional(p: Param) -> bool {
+    snowroll::Param::of_key(p.key()).is_some_and(|q| q.kind == Kind::OptionalReal)
 }
 
 /// The header's `# key: value` lines as metadata: the first line
@@ -78,31 +74,30 @@ fn name(v: &impl serde::Serialize) -> Option<String> {
 
 /// One record batch of `rows`.
 fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
-    let f = |get: fn(&SweepRow) -> f64| -> ArrayRef {
-        Arc::new(Float64Array::from(rows.iter().map(get).collect::<Vec<_>>()))
-    };
     let opt = |get: fn(&SweepRow) -> Option<f64>| -> ArrayRef {
         Arc::new(Float64Array::from(rows.iter().map(get).collect::<Vec<_>>()))
     };
-    let columns: Vec<ArrayRef> = vec![
+    let mut columns: Vec<ArrayRef> = vec![
         Arc::new(UInt64Array::from(
             rows.iter().map(|r| r.index).collect::<Vec<_>>(),
         )),
         Arc::new(StringArray::from(
             rows.iter().map(|r| r.model.id()).collect::<Vec<_>>(),
         )),
-        f(|r| r.alpha_deg),
-        f(|r| r.snow_depth),
-        f(|r| r.r0),
-        f(|r| r.g),
-        f(|r| r.density),
-        f(|r| r.length),
-        f(|r| r.v0),
-        f(|r| r.t_end),
-        opt(|r| r.x_end),
-        f(|r| r.rtol),
-        f(|r| r.atol),
-        opt(|r| r.mu),
+    ];
+    for p in Param::ALL {
+        let column: ArrayRef = if is_optional(p) {
+            Arc::new(Float64Array::from(
+                rows.iter().map(|r| r.param_value(p)).collect::<Vec<_>>(),
+            ))
+        } else {
+            Arc::new(Float64Array::from(
+                rows.iter().map(|r| r.param(p)).collect::<Vec<_>>(),
+            ))
+        };
+        columns.push(column);
+    }
+    let rest: [ArrayRef; 9] = [
         Arc::new(StringArray::from(
             rows.iter().map(|r| r.on_hop.id()).collect::<Vec<_>>(),
         )),
@@ -125,6 +120,7 @@ fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
             rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
         )),
     ];
+    columns.extend(rest);
     Ok(RecordBatch::try_new(Arc::clone(schema), columns)?)
 }
 

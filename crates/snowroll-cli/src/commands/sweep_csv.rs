@@ -11,7 +11,7 @@
 //! it. A test checks the bytes against `serialize` on rows of every kind.
 
 use serde::Serialize;
-use snowroll::sweep::SweepRow;
+use snowroll::sweep::{Param, SweepRow};
 
 /// The text of one column's last value.
 struct Last<K> {
@@ -38,6 +38,9 @@ impl<K: PartialEq + Copy> Last<K> {
     }
 }
 
+/// The numeric axes of a sweep, each a column of its rows.
+const AXES: usize = Param::ALL.len();
+
 /// A float as `csv` serialises it (`ryu`).
 fn float(bits: u64, out: &mut Vec<u8>) {
     out.extend_from_slice(ryu::Buffer::new().format(f64::from_bits(bits)).as_bytes());
@@ -59,7 +62,7 @@ fn variant<T: Serialize>(value: T, out: &mut Vec<u8>) {
 
 /// Writes [`SweepRow`]s as CSV records, remembering each column's last text.
 pub struct RowWriter {
-    floats: [Last<Option<u64>>; 16],
+    floats: [Last<Option<u64>>; AXES + 4],
     model: Last<snowroll::ModelKind>,
     on_hop: Last<snowroll::OnHop>,
     collision: Last<snowroll::CollisionModel>,
@@ -96,34 +99,26 @@ impl RowWriter {
             out.extend_from_slice(&w.into_inner().map_err(|e| e.into_error())?);
             return Ok(());
         }
-        let bits = |v: f64| Some(v.to_bits());
         let opt = |v: Option<f64>| v.map(f64::to_bits);
-        let floats = [
-            bits(row.alpha_deg),
-            bits(row.snow_depth),
-            bits(row.r0),
-            bits(row.g),
-            bits(row.density),
-            bits(row.length),
-            bits(row.v0),
-            bits(row.t_end),
-            opt(row.x_end),
-            bits(row.rtol),
-            bits(row.atol),
-            opt(row.mu),
+        // The axes' columns in grid order, then the results.
+        let mut floats = [None; AXES + 4];
+        for (slot, p) in floats.iter_mut().zip(Param::ALL) {
+            *slot = opt(row.param_value(p));
+        }
+        floats[AXES..].copy_from_slice(&[
             opt(row.t_s),
             opt(row.x_m),
             opt(row.v_m_s),
             opt(row.a_over_g_sin_alpha),
-        ];
+        ]);
         let mut field = |text: &[u8]| {
             out.extend_from_slice(text);
             out.push(b',');
         };
         field(itoa::Buffer::new().format(row.index).as_bytes());
         field(self.model.get(row.model, variant));
-        let (params, results) = floats.split_at(12);
-        let (params_text, results_text) = self.floats.split_at_mut(12);
+        let (params, results) = floats.split_at(AXES);
+        let (params_text, results_text) = self.floats.split_at_mut(AXES);
         for (&v, last) in params.iter().zip(params_text) {
             field(last.get(v, opt_float));
         }

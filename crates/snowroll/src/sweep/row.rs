@@ -156,19 +156,27 @@ impl SweepRow {
 impl SweepRow {
     /// The value of parameter `p` in this row (NaN for an unset `x_end` or `mu`).
     pub fn param(&self, p: Param) -> f64 {
+        self.param_value(p).unwrap_or(f64::NAN)
+    }
+
+    /// The value of parameter `p` in this row; `None` for an unset `x_end`
+    /// or `mu` (an empty cell). The writers of the CSV, Parquet and Python
+    /// columns go through this, axis by axis in [`Param::ALL`] order, which
+    /// is the columns' order.
+    pub fn param_value(&self, p: Param) -> Option<f64> {
         match p {
-            Param::AlphaDeg => self.alpha_deg,
-            Param::SnowDepth => self.snow_depth,
-            Param::R0 => self.r0,
-            Param::G => self.g,
-            Param::Density => self.density,
-            Param::Length => self.length,
-            Param::V0 => self.v0,
-            Param::TEnd => self.t_end,
-            Param::XEnd => self.x_end.unwrap_or(f64::NAN),
-            Param::Rtol => self.rtol,
-            Param::Atol => self.atol,
-            Param::Mu => self.mu.unwrap_or(f64::NAN),
+            Param::AlphaDeg => Some(self.alpha_deg),
+            Param::SnowDepth => Some(self.snow_depth),
+            Param::R0 => Some(self.r0),
+            Param::G => Some(self.g),
+            Param::Density => Some(self.density),
+            Param::Length => Some(self.length),
+            Param::V0 => Some(self.v0),
+            Param::TEnd => Some(self.t_end),
+            Param::XEnd => self.x_end,
+            Param::Rtol => Some(self.rtol),
+            Param::Atol => Some(self.atol),
+            Param::Mu => self.mu,
         }
     }
 
