@@ -8,7 +8,7 @@
 use std::f64::consts::PI;
 
 use super::claims::{mu_min_rows, Edit};
-use super::{Figure, Lab, ReportError, Table};
+use super::{ClaimId, Figure, Lab, ReportError, Table};
 use crate::plot::{Axis, Chart, Legend, Series, Style};
 use snowroll::models::{run_turns, CollisionModel, ModelKind};
 use snowroll::scenario::Scenario;
@@ -166,7 +166,7 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
     .param("on_hop", OnHop::Continue.id())
     .param("turns", CONTACT_TURNS)
     .param("v0", 0)
-    .supports(&["fn10-hop-threshold"]))
+    .supports(&[ClaimId::Fn10HopThreshold]))
 }
 
 /// The kebab-case id of a stop reason (as in the outputs).
