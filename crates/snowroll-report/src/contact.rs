@@ -63,10 +63,11 @@ pub(super) fn mu_min_table(lab: &Lab) -> Result<Table, ReportError> {
             "μ_min = the largest |F|/N over the default run (α = {:.2}°, from v0 = {} m/s, 100 s; \
              the turn models: the per-turn maxima of the turns completed in 100 s, from the energy integral of each turn). \
              With --mu below it the run stops with slip. Closed forms of docs/contact-forces.md §5 beside them; \
-             claim slip-mu-min checks the circular ODE models against them. \
+             claim {claim} checks the circular ODE models against them. \
              For the turn models the closed form is the late-turn limit; the early turns need more (§5.3).",
             s.slope_angle().to_degrees(),
-            s.initial_speed()
+            s.initial_speed(),
+            claim = ClaimId::SlipMuMin
         ),
         header: [
             "model",

@@ -202,7 +202,8 @@ pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
     Ok(Figure::new(
         chart,
         &format!(
-            "What the turn-by-turn log (eq. (73)) does from rest within {MAP_TURNS} turns, one marker per run: it stalls in its first turn on gentle slopes (fn. 7), hops on steep ones (fn. 10) and rolls on between. The lines are the closed forms: the first-turn stall slope and the hop slope within the turns reached, tan α_K = (1 + ε c_C)/(½ − ε c_G) (`docs/contact-forces.md` §4.3), with its late-turn limit tan α = 2. Every simulated border lies within one grid cell of its line (claim regime-map-borders)."
+            "What the turn-by-turn log (eq. (73)) does from rest within {MAP_TURNS} turns, one marker per run: it stalls in its first turn on gentle slopes (fn. 7), hops on steep ones (fn. 10) and rolls on between. The lines are the closed forms: the first-turn stall slope and the hop slope within the turns reached, tan α_K = (1 + ε c_C)/(½ − ε c_G) (`docs/contact-forces.md` §4.3), with its late-turn limit tan α = 2. Every simulated border lies within one grid cell of its line (claim {claim}).",
+            claim = ClaimId::RegimeMapBorders
         ),
     )
     .supports(&[ClaimId::RegimeMapBorders, ClaimId::Fn10HopThreshold, ClaimId::Fn7StallInFirstTurn])
