@@ -23,7 +23,7 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
     let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
     for c in CLAIMS {
         assert!(
-            stdout.contains(c.claim.id),
+            stdout.contains(c.claim.id.as_str()),
             "{} missing from the table",
             c.claim.id
         );
@@ -46,7 +46,7 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
         serde_json::from_str(&fs::read_to_string(out.join("claims.json")).unwrap()).unwrap();
     let text = claims.to_string();
     for c in CLAIMS {
-        assert!(text.contains(c.claim.id));
+        assert!(text.contains(c.claim.id.as_str()));
     }
     assert!(text.contains(env!("CARGO_PKG_VERSION")));
     let md = fs::read_to_string(out.join("report.md")).unwrap();

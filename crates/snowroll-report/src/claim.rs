@@ -13,6 +13,7 @@ use std::fmt;
 
 use serde::Serialize;
 
+use super::claim_id::ClaimId;
 use super::notation::compact;
 
 /// What the program concluded about a claim of the note.
@@ -200,8 +201,8 @@ impl fmt::Display for Criterion {
 /// A claim of the note, as a static table entry.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Claim {
-    /// Stable identifier, kebab-case (e.g. `eq35-terminal-third`).
-    pub id: &'static str,
+    /// Stable identifier; its text is kebab-case (e.g. `eq35-terminal-third`).
+    pub id: ClaimId,
     /// Where in the note: `eq. (35)`, `§2.4`, `fn. 7`.
     pub paper_ref: &'static str,
     /// What the note says, in our words.
@@ -310,7 +311,7 @@ mod tests {
     use super::*;
 
     static CLAIM: Claim = Claim {
-        id: "demo",
+        id: ClaimId::Eq35TerminalThird,
         paper_ref: "eq. (35)",
         statement: "s",
         method: "m",

@@ -8,7 +8,7 @@
 use std::f64::consts::PI;
 
 use super::claims::{mu_min_rows, Edit};
-use super::{Figure, Lab, ReportError, Table};
+use super::{ClaimId, Figure, Lab, ReportError, Table};
 use crate::plot::{Axis, Chart, Legend, Series, Style};
 use snowroll::models::{run_turns, CollisionModel, ModelKind};
 use snowroll::scenario::Scenario;
@@ -63,10 +63,11 @@ pub(super) fn mu_min_table(lab: &Lab) -> Result<Table, ReportError> {
             "μ_min = the largest |F|/N over the default run (α = {:.2}°, from v0 = {} m/s, 100 s; \
              the turn models: the per-turn maxima of the turns completed in 100 s, from the energy integral of each turn). \
              With --mu below it the run stops with slip. Closed forms of docs/contact-forces.md §5 beside them; \
-             claim slip-mu-min checks the circular ODE models against them. \
+             claim {claim} checks the circular ODE models against them. \
              For the turn models the closed form is the late-turn limit; the early turns need more (§5.3).",
             s.slope_angle().to_degrees(),
-            s.initial_speed()
+            s.initial_speed(),
+            claim = ClaimId::SlipMuMin
         ),
         header: [
             "model",
@@ -166,7 +167,7 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
     .param("on_hop", OnHop::Continue.id())
     .param("turns", CONTACT_TURNS)
     .param("v0", 0)
-    .supports(&["fn10-hop-threshold"]))
+    .supports(&[ClaimId::Fn10HopThreshold]))
 }
 
 /// The kebab-case id of a stop reason (as in the outputs).

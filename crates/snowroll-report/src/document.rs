@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use crate::plot::{Chart, Provenance};
 use snowroll_io::{RunParams, VERSION};
 
-use super::{files, html, markdown, Animation, ClaimResult, ReportError};
+use super::{files, html, markdown, Animation, ClaimId, ClaimResult, ReportError};
 
 /// Title, version and parameters of a report.
 #[derive(Debug, Clone, PartialEq)]
@@ -88,7 +88,7 @@ pub struct Figure {
     pub params: Vec<(String, String)>,
     /// Ids of the claims this figure is evidence for ([`super::CLAIMS`]); the
     /// report links each way.
-    pub supports: Vec<&'static str>,
+    pub supports: Vec<ClaimId>,
 }
 
 impl Figure {
@@ -103,7 +103,7 @@ impl Figure {
     }
 
     /// Names the claims this figure is evidence for.
-    pub fn supports(mut self, claims: &[&'static str]) -> Self {
+    pub fn supports(mut self, claims: &[ClaimId]) -> Self {
         self.supports.extend_from_slice(claims);
         self
     }

@@ -242,7 +242,7 @@ pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
         for r in &report.claims {
             let as_expected = r.as_expected().to_string();
             w.write_record([
-                r.claim.id,
+                r.claim.id.as_str(),
                 r.claim.paper_ref,
                 &r.verdict.label(),
                 &r.claim.expected.label(),

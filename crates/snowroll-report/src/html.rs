@@ -16,7 +16,7 @@ use super::errata::{errata_section, link_citations};
 use super::intro::intro_section;
 use super::markup::{esc, prose};
 use super::CLAIMS_CSV;
-use super::{ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
+use super::{ClaimId, ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
 
 const CSS: &str = include_str!("../assets/report.css");
 const SCRIPT: &str = include_str!("../assets/report.js");
@@ -160,7 +160,7 @@ fn page_end(h: &mut String, report: &Report) -> Result<(), ReportError> {
 
 /// Links to the figures that support claim `id`, numbered as in the report,
 /// each with its data file, and to the claim's row of `data/claims.csv`.
-fn figure_links(id: &str, figures: &[Figure]) -> String {
+fn figure_links(id: ClaimId, figures: &[Figure]) -> String {
     let links: Vec<String> = figures
         .iter()
         .enumerate()
@@ -181,7 +181,7 @@ fn figure_links(id: &str, figures: &[Figure]) -> String {
     format!(
         "<br><span class=\"figlinks\">{see}Measured values: row <code>{}</code> of \
          <a href=\"data/{CLAIMS_CSV}\">data/{CLAIMS_CSV}</a>.</span>",
-        esc(id)
+        esc(id.as_str())
     )
 }
 
@@ -221,7 +221,7 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
              <td data-label=\"Measured\">{measured}</td>\
              <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td>\
              <td data-label=\"Evidence\">{evidence}{figures}</td></tr>",
-            id = esc(c.id),
+            id = esc(c.id.as_str()),
             class = r.verdict.class(),
             ok = r.as_expected(),
             paper = esc(c.paper_ref),
@@ -308,7 +308,12 @@ fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
             let links: Vec<String> = fig
                 .supports
                 .iter()
-                .map(|id| format!("<a href=\"#claim-{0}\"><code>{0}</code></a>", esc(id)))
+                .map(|id| {
+                    format!(
+                        "<a href=\"#claim-{0}\"><code>{0}</code></a>",
+                        esc(id.as_str())
+                    )
+                })
                 .collect();
             format!(
                 " <span class=\"supports\">Evidence for: {}.</span>",

@@ -10,6 +10,7 @@ use std::f64::consts::PI;
 use std::fmt::Write as _;
 
 use super::markup::esc;
+use super::ClaimId;
 use snowroll::models::{as_fraction, Coefficients, ModelKind};
 
 /// The note, cited in full.
@@ -92,9 +93,11 @@ pub(super) fn terminal_text(kind: ModelKind) -> String {
             Some((p, q)) => format!("{p}/{q}"),
             None => format!("{f:.4}"),
         },
-        None => "none: a/G swings within every turn; its long-run mean tends to 1/3 within turns, \
-                 1/4 with the collisions (measured, claim multi-turn-mean-four-ninths)"
-            .to_string(),
+        None => format!(
+            "none: a/G swings within every turn; its long-run mean tends to 1/3 within turns, \
+             1/4 with the collisions (measured, claim {})",
+            ClaimId::MultiTurnMeanFourNinths
+        ),
     }
 }
 

@@ -3,7 +3,7 @@
 //! run with all three losses, as shares of it, against time. They only read
 //! trajectories and their energy ledgers.
 
-use super::{Figure, Lab, ReportError};
+use super::{ClaimId, Figure, Lab, ReportError};
 use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
 use snowroll::losses::{Losses, AIR_DENSITY_DEFAULT};
 use snowroll::models::ModelKind;
@@ -148,7 +148,7 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         .param("rolling_resistance", ROLLING_RESISTANCE)
         .param("compaction_energy", COMPACTION_ENERGY)
         .param("rtol", format!("{:e}", opts.tolerances.rtol))
-        .supports(&["energy-ledger-balances"]))
+        .supports(&[ClaimId::EnergyLedgerBalances]))
 }
 
 /// The chart of the ledger figure: each term of [`TERMS`] and their sum as
@@ -283,7 +283,7 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
             "rtol",
             format!("{:e}", SimOptions::default().tolerances.rtol),
         )
-        .supports(&["snowless-drag-terminal-velocity"]))
+        .supports(&[ClaimId::SnowlessDragTerminalVelocity]))
 }
 
 /// `chart` with the speed of the snowless and of the accreting model on `s`,

@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 
 use super::markup::{esc, prose};
-use super::{notation, ClaimResult, Report};
+use super::{notation, ClaimId, ClaimResult, Report};
 
 /// Id of the section in the page.
 pub(super) const SECTION_ID: &str = "snowball-and-losses";
@@ -18,42 +18,42 @@ pub(super) const TITLE: &str = "The snowball and the losses";
 /// One result: the claim that carries it and the sentence that says what it
 /// means.
 struct Item {
-    claim: &'static str,
+    claim: ClaimId,
     lead: &'static str,
 }
 
 /// The results, in the order of the derivation.
 const RESULTS: [Item; 5] = [
     Item {
-        claim: "snowball-five-sevenths",
+        claim: ClaimId::SnowballFiveSevenths,
         lead: "A uniform ball (I = (2/5) M r²) rolling on a bare slope accelerates at (5/7) g sin α, the ball's counterpart of the log's 2/3 (App. A).",
     },
     Item {
-        claim: "tpt-letter-closed-form",
+        claim: ClaimId::TptLetterClosedForm,
         lead: "The letter in The Physics Teacher 57, p. 436 (2019), on S. Rubin's rolling snowball, gives a closed form whose acceleration starts at (5/7) g sin α and tends to (1/6) g sin α. It is the ball's torque-about-the-centre model (eq. (4)'s balance, Loney's fn. 4 for a ball) with the swath 2r: the claim is reproduced, by that model only.",
     },
     Item {
-        claim: "snowball-terminal-fractions",
+        claim: ClaimId::SnowballTerminalFractions,
         lead: "Picking up the layer over its diameter (π r² = π r₀² + b x, as for the log), the always-round ball tends to a terminal fraction of g sin α set by its balance: 1/6 (torque about the centre), 1/7 (contact line), 2/7 (energy), 5/28 (eq. (21) as printed), each below the log's 1/5, 1/6, 1/3 and 2/9.",
     },
     Item {
-        claim: "snowless-drag-terminal-velocity",
+        claim: ClaimId::SnowlessDragTerminalVelocity,
         lead: "fn. 5 sets dissipation aside. With air drag and no snow the log reaches the terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) of the closed form; with snow it has none, since the mass grows faster than the frontal area and the speed keeps growing.",
     },
     Item {
-        claim: "energy-ledger-balances",
+        claim: ClaimId::EnergyLedgerBalances,
         lead: "With drag, rolling resistance and compaction the energy is accounted for at every sample: the kinetic energy, the work of each loss and what the model's own equation destroys (the inelastic pick-up of the torque models) add up to the potential energy released. The library's own tests check the same sum on 2700 random runs (tests/losses.rs).",
     },
 ];
 
 /// The claim result of `id`, if the report has it.
-fn result<'a>(report: &'a Report, id: &str) -> Option<&'a ClaimResult> {
+fn result(report: &Report, id: ClaimId) -> Option<&ClaimResult> {
     report.claims.iter().find(|r| r.claim.id == id)
 }
 
 /// `(number, name)` of each figure of `report` that supports claim `id`,
 /// numbered as in the report.
-fn figures_of<'a>(report: &'a Report, id: &str) -> Vec<(usize, &'a str)> {
+fn figures_of(report: &Report, id: ClaimId) -> Vec<(usize, &str)> {
     report
         .figures
         .iter()
@@ -99,21 +99,21 @@ pub(super) fn html(h: &mut String, report: &Report) {
         };
         let mut links = vec![format!(
             "<a href=\"#claim-{0}\">claim <code>{0}</code></a>",
-            esc(r.claim)
+            esc(r.claim.as_str())
         )];
         links.extend(
             figures_of(report, r.claim)
                 .into_iter()
                 .map(|(n, name)| format!("<a href=\"#fig-{}\">Figure {n}</a>", esc(name))),
         );
-        if r.claim == "tpt-letter-closed-form" && has_ball(report) {
+        if r.claim == ClaimId::TptLetterClosedForm && has_ball(report) {
             links.push("<a href=\"#ball-animation\">the snowball's animation</a>".to_string());
         }
         let _ = writeln!(
             h,
             "<li id=\"result-{id}\">{lead} <span class=\"verdict {class}\">{symbol} {label}</span>: {measured}. \
              <span class=\"figlinks\">See {links}.</span></li>",
-            id = esc(r.claim),
+            id = esc(r.claim.as_str()),
             lead = prose(r.lead),
             class = found.verdict.class(),
             symbol = found.verdict.symbol(),
@@ -187,7 +187,7 @@ mod tests {
         )
         .with_series(Series::new("v", vec![(0.0, 0.0), (1.0, 1.0)]));
         report.figures =
-            vec![Figure::new(chart, "c").supports(&["snowless-drag-terminal-velocity"])];
+            vec![Figure::new(chart, "c").supports(&[ClaimId::SnowlessDragTerminalVelocity])];
         report
     }
 

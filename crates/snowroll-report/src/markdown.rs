@@ -121,7 +121,7 @@ fn claims_section(md: &mut String, report: &Report) {
         let _ = writeln!(
             md,
             "| `{}` | {} | {} | {} (tolerances: {}) | {} | **{}** | {}{see} Measured values: [data/{CLAIMS_CSV}](data/{CLAIMS_CSV}). |",
-            cell(c.id),
+            cell(c.id.as_str()),
             cell(c.paper_ref),
             cell(c.statement),
             cell(c.method),

@@ -4,7 +4,7 @@
 //! `docs/snowball-and-losses.md` §1.3 as reference lines; and the ball's
 //! animation. It only reads trajectories.
 
-use super::{Animation, Figure, Lab, ReportError};
+use super::{Animation, ClaimId, Figure, Lab, ReportError};
 use crate::plot::{Axis, Chart, Legend, Series, Style};
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile, Shape};
@@ -112,8 +112,8 @@ pub(super) fn snowball_figure(lab: &Lab, times: &[f64]) -> Result<Figure, Report
     .param("r0", ScenarioFile::from(s).r0)
     .param("rtol", format!("{:e}", opts.tolerances.rtol))
     .supports(&[
-        "snowball-five-sevenths",
-        "snowball-terminal-fractions",
-        "tpt-letter-closed-form",
+        ClaimId::SnowballFiveSevenths,
+        ClaimId::SnowballTerminalFractions,
+        ClaimId::TptLetterClosedForm,
     ]))
 }

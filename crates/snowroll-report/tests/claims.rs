@@ -14,7 +14,7 @@ use snowroll::{
     run_turns, Coefficients, Derivation, Model, ModelKind, Scenario, ScenarioFile, SimOptions,
     TurnModel, TurnSummary, TurnTable, TurnVariant,
 };
-use snowroll_report::{ClaimCheck, Lab, Verdict, CLAIMS};
+use snowroll_report::{ClaimCheck, ClaimId, Lab, Verdict, CLAIMS};
 
 /// 10^4 turns are enough for the long-run claims' verdicts (the last-decade
 /// means are within 1e-3 G of their limits there); the report runs 10^5.
@@ -24,7 +24,7 @@ fn lab() -> Lab {
     Lab::new(Scenario::default(), TURNS)
 }
 
-fn check(id: &str) -> &'static ClaimCheck {
+fn check(id: ClaimId) -> &'static ClaimCheck {
     CLAIMS
         .iter()
         .find(|c| c.claim.id == id)
@@ -32,12 +32,12 @@ fn check(id: &str) -> &'static ClaimCheck {
 }
 
 /// The verdict of claim `id` on `lab`.
-fn verdict(lab: &Lab, id: &str) -> Verdict {
+fn verdict(lab: &Lab, id: ClaimId) -> Verdict {
     check(id).run(lab).unwrap().verdict
 }
 
 /// Asserts that a deliberately wrong lab changes the verdict of `id`.
-fn changes(id: &str, wrong: &Lab) {
+fn changes(id: ClaimId, wrong: &Lab) {
     let expected = check(id).claim.expected;
     assert_eq!(verdict(&lab(), id), expected, "{id} on the real models");
     let got = check(id).run(wrong).unwrap();
@@ -103,7 +103,7 @@ fn every_claim_reaches_its_expected_verdict() {
 
 #[test]
 fn claim_ids_are_unique_and_every_claim_cites_the_note_and_states_its_tolerances() {
-    let mut ids: Vec<&str> = CLAIMS.iter().map(|c| c.claim.id).collect();
+    let mut ids: Vec<ClaimId> = CLAIMS.iter().map(|c| c.claim.id).collect();
     ids.sort_unstable();
     let n = ids.len();
     ids.dedup();
@@ -145,12 +145,12 @@ fn fn7_stall_threshold_notices_a_wrong_lift_coefficient() {
         Derivation::Energy,
         perturbed(Derivation::Energy, |c| c.lift *= 1.02),
     );
-    changes("fn7-stall-threshold", &wrong);
+    changes(ClaimId::Fn7StallThreshold, &wrong);
     let wrong = lab().with_coefficients(
         Derivation::EnergyLinearised,
         perturbed(Derivation::EnergyLinearised, |c| c.lift *= 0.98),
     );
-    changes("fn7-stall-threshold", &wrong);
+    changes(ClaimId::Fn7StallThreshold, &wrong);
 }
 
 #[test]
@@ -163,7 +163,7 @@ fn fn7_stall_in_first_turn_notices_a_turn_model_with_too_much_snow() {
             TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
         })
     });
-    changes("fn7-stall-in-first-turn", &wrong);
+    changes(ClaimId::Fn7StallInFirstTurn, &wrong);
 }
 
 #[test]
@@ -178,7 +178,7 @@ fn fn10_hop_threshold_notices_a_turn_model_that_never_leaves_the_snow() {
             TurnModel::new(TurnVariant::Paper).simulate(s, &opts)
         })
     });
-    changes("fn10-hop-threshold", &wrong);
+    changes(ClaimId::Fn10HopThreshold, &wrong);
 }
 
 #[test]
@@ -190,21 +190,21 @@ fn slip_mu_min_notices_a_model_that_needs_the_wrong_friction() {
         Derivation::TorqueAboutCentre,
         Derivation::TorqueAboutContact.coefficients(),
     );
-    changes("slip-mu-min", &wrong);
+    changes(ClaimId::SlipMuMin, &wrong);
     // eq. (32) with the momentum drag of eq. (4): the same F/N at rest, but
     // F/N now grows along the run, so the largest is no longer at rest.
     let wrong = lab().with_coefficients(
         Derivation::QuasiCircular,
         perturbed(Derivation::QuasiCircular, |c| c.drag = 7.0 / 6.0),
     );
-    changes("slip-mu-min", &wrong);
+    changes(ClaimId::SlipMuMin, &wrong);
     // eq. (14) lifting 1 % more snow at rest: a₀, hence F/N at rest, moves
     // by ~1e-4 relative, far outside the 1e-12 of a state known exactly.
     let wrong = lab().with_coefficients(
         Derivation::Energy,
         perturbed(Derivation::Energy, |c| c.lift *= 1.01),
     );
-    changes("slip-mu-min", &wrong);
+    changes(ClaimId::SlipMuMin, &wrong);
 }
 
 #[test]
@@ -213,13 +213,13 @@ fn terminal_accelerations_notice_a_wrong_drag_or_lift_coefficient() {
         Derivation::TorqueAboutContact,
         perturbed(Derivation::TorqueAboutContact, |c| c.drag *= 1.001),
     );
-    changes("terminal-accelerations", &wrong);
+    changes(ClaimId::TerminalAccelerations, &wrong);
     // A lift 10 % off leaves a∞ alone but not its derived 1/r approach.
     let wrong = lab().with_coefficients(
         Derivation::Energy,
         perturbed(Derivation::Energy, |c| c.lift *= 1.1),
     );
-    changes("terminal-accelerations", &wrong);
+    changes(ClaimId::TerminalAccelerations, &wrong);
 }
 
 #[test]
@@ -229,7 +229,7 @@ fn eq89_collision_notices_a_wrong_collision() {
     let kept = edited_table(long_run(ModelKind::Turns, &s), |r| {
         r.v_after_m_s = r.v_end_m_s;
     });
-    changes("eq89-collision", &lab().with_long_run(false, kept));
+    changes(ClaimId::Eq89Collision, &lab().with_long_run(false, kept));
     // A collision that conserves kinetic energy instead of L_C.
     let elastic = edited_table(long_run(ModelKind::TurnsExact, &s), |r| {
         let (rk, b) = (0.1 + r.turn as f64 * 0.01, 0.01);
@@ -237,7 +237,7 @@ fn eq89_collision_notices_a_wrong_collision() {
         // T_end = m1 (1 + r1²/(2rk²)) v²/2 = T_after = (3/4) m1 v′².
         r.v_after_m_s = r.v_end_m_s * ((1.0 + r1 * r1 / (2.0 * rk * rk)) / 1.5).sqrt();
     });
-    changes("eq89-collision", &lab().with_long_run(true, elastic));
+    changes(ClaimId::Eq89Collision, &lab().with_long_run(true, elastic));
 }
 
 #[test]
@@ -251,7 +251,7 @@ fn eq70_mass_notices_a_model_that_counts_the_printed_mass() {
             Ok(traj)
         })
     });
-    changes("eq70-mass-after-first-turn", &wrong);
+    changes(ClaimId::Eq70MassAfterFirstTurn, &wrong);
 }
 
 #[test]
@@ -264,7 +264,7 @@ fn snowless_limit_notices_a_model_whose_bare_slope_acceleration_is_wrong() {
             ModelKind::Energy.build().simulate(&Scenario::new(f)?, opts)
         })
     });
-    changes("snowless-limit", &wrong);
+    changes(ClaimId::SnowlessLimit, &wrong);
 }
 
 #[test]
@@ -276,14 +276,14 @@ fn lagrangian_refutation_needs_the_models_to_be_what_the_note_prints() {
         perturbed(Derivation::Energy, |c| c.drag = 0.51),
     );
     assert_eq!(
-        verdict(&wrong, "lagrangian-differs-from-energy"),
+        verdict(&wrong, ClaimId::LagrangianDiffersFromEnergy),
         Verdict::Inconclusive
     );
     let wrong = lab().with_coefficients(
         Derivation::LagrangianPrinted,
         perturbed(Derivation::LagrangianPrinted, |c| c.drag = 1.01),
     );
-    changes("lagrangian-differs-from-energy", &wrong);
+    changes(ClaimId::LagrangianDiffersFromEnergy, &wrong);
 }
 
 #[test]
@@ -301,7 +301,7 @@ fn long_run_refutations_need_both_turn_models_to_reach_the_derived_limits() {
     }
     let free = edited_table(free, |_| {});
     changes(
-        "multi-turn-mean-four-ninths",
+        ClaimId::MultiTurnMeanFourNinths,
         &lab().with_long_run(true, free),
     );
     // Both turn models on 20 % deeper snow: v²/(πGk²b) is 0.6, not 1/2.
@@ -310,12 +310,12 @@ fn long_run_refutations_need_both_turn_models_to_reach_the_derived_limits() {
         .with_long_run(false, long_run(ModelKind::Turns, &deep))
         .with_long_run(true, long_run(ModelKind::TurnsExact, &deep));
     assert_eq!(
-        verdict(&wrong, "eq78-speed-in-turn-n"),
+        verdict(&wrong, ClaimId::Eq78SpeedInTurnN),
         Verdict::Inconclusive
     );
     // Only the first-order model wrong: still noticed.
     let wrong = lab().with_long_run(false, long_run(ModelKind::Turns, &deep));
-    changes("eq78-speed-in-turn-n", &wrong);
+    changes(ClaimId::Eq78SpeedInTurnN, &wrong);
 }
 
 #[test]
@@ -325,7 +325,7 @@ fn never_settles_notices_a_model_whose_acceleration_is_steady() {
         r.max_a_m_s2 = r.mean_a_turn_m_s2;
     });
     changes(
-        "multi-turn-never-settles",
+        ClaimId::MultiTurnNeverSettles,
         &lab().with_long_run(false, steady),
     );
 }
@@ -336,7 +336,7 @@ fn eq88_notices_a_turn_model_without_exact_geometry() {
     // only to O((b/r)²).
     let first_order = long_run(ModelKind::Turns, &Scenario::default());
     changes(
-        "eq88-energy-balance",
+        ClaimId::Eq88EnergyBalance,
         &lab().with_long_run(true, first_order),
     );
 }
@@ -347,7 +347,7 @@ fn collision_potential_jump_notices_wrong_turn_speeds() {
         r.v_end_m_s *= 1.1;
     });
     changes(
-        "collision-potential-jump",
+        ClaimId::CollisionPotentialJump,
         &lab().with_long_run(false, faster),
     );
 }
@@ -358,7 +358,7 @@ fn eq73_truncation_notices_when_the_exact_model_is_the_first_order_one() {
         (kind == ModelKind::TurnsExact)
             .then(|| TurnModel::new(TurnVariant::Paper).simulate(s, opts))
     });
-    changes("eq73-truncates-exact", &wrong);
+    changes(ClaimId::Eq73TruncatesExact, &wrong);
 }
 
 #[test]
@@ -368,34 +368,34 @@ fn circular_checks_notice_wrong_coefficients() {
     };
     // Eq. (6) given eq. (4)'s coefficient: two analyses coincide.
     changes(
-        "circular-analyses-differ",
+        ClaimId::CircularAnalysesDiffer,
         &lab().with_coefficients(
             Derivation::TorqueAboutContact,
             Derivation::TorqueAboutCentre.coefficients(),
         ),
     );
     changes(
-        "eq5-contact-torque",
+        ClaimId::Eq5ContactTorque,
         &d(Derivation::TorqueAboutContact, |c| c.drag = 1.6),
     );
     changes(
-        "loney-solves-eq4",
+        ClaimId::LoneySolvesEq4,
         &d(Derivation::TorqueAboutCentre, |c| c.drag *= 1.001),
     );
     changes(
-        "loney-limit-fifth",
+        ClaimId::LoneyLimitFifth,
         &d(Derivation::TorqueAboutCentre, |c| c.drag *= 1.01),
     );
     changes(
-        "eq35-terminal-third",
+        ClaimId::Eq35TerminalThird,
         &d(Derivation::QuasiCircular, |c| c.drag = 0.55),
     );
     changes(
-        "eq33-35-terminal-argument",
+        ClaimId::Eq33_35TerminalArgument,
         &d(Derivation::QuasiCircular, |c| c.drag = 0.52),
     );
     changes(
-        "eq36-slows-approach",
+        ClaimId::Eq36SlowsApproach,
         &d(Derivation::QuasiCircular, |c| c.drag = 0.6),
     );
     // A snow term that does not vanish with b: a lift term in b^0 is not
@@ -409,7 +409,7 @@ fn circular_checks_notice_wrong_coefficients() {
                 .simulate(&Scenario::new(f)?, opts)
         })
     });
-    changes("circular-agree-as-b-vanishes", &wrong);
+    changes(ClaimId::CircularAgreeAsBVanishes, &wrong);
 }
 
 #[test]
@@ -423,7 +423,7 @@ fn app_a_notices_a_snowless_model_with_the_wrong_acceleration() {
                 .simulate(&Scenario::new(f)?, opts)
         })
     });
-    changes("app-a-moving-points", &wrong);
+    changes(ClaimId::AppAMovingPoints, &wrong);
 }
 
 // ---- The project's own errata. ----
@@ -479,7 +479,7 @@ fn every_errata_row_names_a_claim_a_test_or_a_reason() {
         let ok = if let Some(rest) = shown_by.strip_prefix("claim ") {
             rest.split(", ")
                 .map(|id| id.trim_matches('`'))
-                .all(|id| CLAIMS.iter().any(|c| c.claim.id == id))
+                .all(|id| id.parse::<ClaimId>().is_ok())
         } else if let Some(rest) = shown_by.strip_prefix("test ") {
             rest.split(", ").map(|t| t.trim_matches('`')).all(|t| {
                 let name = t.rsplit("::").next().unwrap_or(t);
@@ -539,12 +539,12 @@ fn ball_perturbed(d: Derivation, edit: impl FnOnce(&mut Coefficients)) -> Coeffi
 fn snowball_checks_notice_wrong_models() {
     // The log's snowless model run on the ball: 2/3 instead of 5/7.
     changes(
-        "snowball-five-sevenths",
+        ClaimId::SnowballFiveSevenths,
         &lab().with_coefficients(Derivation::Snowless, Derivation::Snowless.coefficients()),
     );
     // A ball whose torque-contact momentum term is 1 % off.
     changes(
-        "snowball-terminal-fractions",
+        ClaimId::SnowballTerminalFractions,
         &lab().with_coefficients(
             Derivation::TorqueAboutContact,
             ball_perturbed(Derivation::TorqueAboutContact, |c| c.drag *= 1.01),
@@ -553,7 +553,7 @@ fn snowball_checks_notice_wrong_models() {
     // The ball's energy model with the log's lift coefficient (1, not 10/7):
     // the same limit, but the derived 1/r approach no longer fits.
     changes(
-        "snowball-terminal-fractions",
+        ClaimId::SnowballTerminalFractions,
         &lab().with_coefficients(
             Derivation::Energy,
             ball_perturbed(Derivation::Energy, |c| c.lift = 1.0),
@@ -561,7 +561,7 @@ fn snowball_checks_notice_wrong_models() {
     );
     // The letter against the log's torque-cm coefficients on the ball ...
     changes(
-        "tpt-letter-closed-form",
+        ClaimId::TptLetterClosedForm,
         &lab().with_coefficients(
             Derivation::TorqueAboutCentre,
             Derivation::TorqueAboutCentre.coefficients(),
@@ -570,7 +570,7 @@ fn snowball_checks_notice_wrong_models() {
     // ... and against a lab whose torque-contact is secretly torque-cm: the
     // letter would then not single out one model.
     changes(
-        "tpt-letter-closed-form",
+        ClaimId::TptLetterClosedForm,
         &lab().with_runner(|kind, s, opts| {
             (kind == ModelKind::TorqueContact)
                 .then(|| ModelKind::TorqueCm.build().simulate(s, opts))
@@ -591,7 +591,7 @@ fn regime_map_borders_notice_a_turn_model_that_never_hops() {
             TurnModel::new(TurnVariant::Paper).simulate(s, &opts)
         })
     });
-    changes("regime-map-borders", &wrong);
+    changes(ClaimId::RegimeMapBorders, &wrong);
 }
 
 #[test]
@@ -605,7 +605,7 @@ fn regime_map_borders_notice_a_turn_model_with_twice_the_snow() {
             TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
         })
     });
-    changes("regime-map-borders", &wrong);
+    changes(ClaimId::RegimeMapBorders, &wrong);
 }
 
 #[test]
@@ -618,7 +618,7 @@ fn snowless_drag_terminal_velocity_notices_a_model_with_too_much_drag() {
             ModelKind::Snowless.build().simulate(s, &opts)
         })
     });
-    changes("snowless-drag-terminal-velocity", &wrong);
+    changes(ClaimId::SnowlessDragTerminalVelocity, &wrong);
 }
 
 #[test]
@@ -633,5 +633,5 @@ fn energy_ledger_balances_notices_a_ledger_with_too_little_drag_work() {
             Ok(traj)
         })
     });
-    changes("energy-ledger-balances", &wrong);
+    changes(ClaimId::EnergyLedgerBalances, &wrong);
 }

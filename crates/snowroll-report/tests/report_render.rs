@@ -13,8 +13,8 @@ use snowroll::{ModelKind, Sampling, Scenario, ScenarioFile, SimOptions, Trajecto
 use snowroll_io::VERSION;
 use snowroll_report::plot::{png_size, Axis, Chart, PlotError, Provenance, Series, Style};
 use snowroll_report::{
-    figure_csv, Animation, Claim, ClaimResult, Criterion, Figure, Metadata, Report, ReportError,
-    Tolerance, Verdict,
+    figure_csv, Animation, Claim, ClaimId, ClaimResult, Criterion, Figure, Metadata, Report,
+    ReportError, Tolerance, Verdict,
 };
 
 /// Trapezoid rule for θ = ∫ dx/r over steps of 5 ms: the error per step is
@@ -273,7 +273,8 @@ fn csv_keeps_every_point_even_those_a_log_axis_cannot_draw() {
 }
 
 static HOLDS: Claim = Claim {
-    id: "demo-holds",
+    // Real ids (the set of ids is closed); the rest of the row is made up.
+    id: ClaimId::SnowlessLimit,
     paper_ref: "App. A",
     statement: "A <b>bold</b> claim & more | with a pipe.",
     method: "m",
@@ -286,7 +287,7 @@ static HOLDS: Claim = Claim {
 };
 
 static CORRECTED: Claim = Claim {
-    id: "demo-corrected",
+    id: ClaimId::LagrangianDiffersFromEnergy,
     paper_ref: "eq. (21)",
     statement: "s",
     method: "m",
@@ -421,7 +422,7 @@ fn claims_json_carries_verdicts_errata_and_mismatches() {
     assert_eq!(v["params"]["alpha_deg"], "30");
     let claims = v["claims"].as_array().unwrap();
     assert_eq!(claims.len(), 2);
-    assert_eq!(claims[0]["id"], "demo-holds");
+    assert_eq!(claims[0]["id"], "snowless-limit");
     assert_eq!(claims[0]["verdict"]["verdict"], "holds");
     assert_eq!(claims[0]["as_expected"], true);
     assert_eq!(claims[1]["expected"]["erratum"], "docs/errata.md (21)");
@@ -491,7 +492,7 @@ fn markdown_has_the_claims_table_and_links_every_figure() {
     let md = small_report().to_markdown();
     assert!(md.contains(&format!("snowroll {VERSION}")));
     assert!(md.contains(
-        "| `demo-holds` | App. A | A &lt;b&gt;bold&lt;/b&gt; claim &amp; more \\| with a pipe."
+        "| `snowless-limit` | App. A | A &lt;b&gt;bold&lt;/b&gt; claim &amp; more \\| with a pipe."
     ));
     assert!(md.contains("**✗ refuted (expected: holds after correction (docs/errata.md (21)))**"));
     // The tolerances shown are the checks' own, with their reasons, and the

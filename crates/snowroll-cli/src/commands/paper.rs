@@ -77,7 +77,7 @@ fn print_claims(claims: &[ClaimResult]) -> Result<Tally> {
     let mut out = console::Stdout;
     let id_width = claims
         .iter()
-        .map(|c| c.claim.id.chars().count())
+        .map(|c| c.claim.id.as_str().chars().count())
         .max()
         .unwrap_or(0);
     writeln!(out, "Claims of the note ({} checked):", claims.len())?;

@@ -8,8 +8,8 @@
 
 use super::{holds_if, pass, Finding, Lab};
 use crate::plot::{ColorBy, PlotError, RegimeMap};
+use crate::{ClaimId, Figure, ReportError};
 use crate::{Criterion, Tolerance};
-use crate::{Figure, ReportError};
 use snowroll::error::SimError;
 use snowroll::models::CollisionModel;
 use snowroll::models::ModelKind;
@@ -202,10 +202,11 @@ pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
     Ok(Figure::new(
         chart,
         &format!(
-            "What the turn-by-turn log (eq. (73)) does from rest within {MAP_TURNS} turns, one marker per run: it stalls in its first turn on gentle slopes (fn. 7), hops on steep ones (fn. 10) and rolls on between. The lines are the closed forms: the first-turn stall slope and the hop slope within the turns reached, tan α_K = (1 + ε c_C)/(½ − ε c_G) (`docs/contact-forces.md` §4.3), with its late-turn limit tan α = 2. Every simulated border lies within one grid cell of its line (claim regime-map-borders)."
+            "What the turn-by-turn log (eq. (73)) does from rest within {MAP_TURNS} turns, one marker per run: it stalls in its first turn on gentle slopes (fn. 7), hops on steep ones (fn. 10) and rolls on between. The lines are the closed forms: the first-turn stall slope and the hop slope within the turns reached, tan α_K = (1 + ε c_C)/(½ − ε c_G) (`docs/contact-forces.md` §4.3), with its late-turn limit tan α = 2. Every simulated border lies within one grid cell of its line (claim {claim}).",
+            claim = ClaimId::RegimeMapBorders
         ),
     )
-    .supports(&["regime-map-borders", "fn10-hop-threshold", "fn7-stall-in-first-turn"])
+    .supports(&[ClaimId::RegimeMapBorders, ClaimId::Fn10HopThreshold, ClaimId::Fn7StallInFirstTurn])
     .param("r0", r0)
     .param("v0", 0.0)
     .param("turns", MAP_TURNS))

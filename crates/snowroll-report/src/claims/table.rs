@@ -42,13 +42,13 @@ use super::terminal::{
     TERMINAL_PRINTED,
 };
 use super::ClaimCheck;
-use crate::{Claim, Verdict};
+use crate::{Claim, ClaimId, Verdict};
 
 /// The table of claims: each row is judged by its check.
 pub static CLAIMS: &[ClaimCheck] = &[
     ClaimCheck {
         claim: Claim {
-            id: "circular-analyses-differ",
+            id: ClaimId::CircularAnalysesDiffer,
             paper_ref: "§2.1–2.3, eqs. (4), (6), (14), (21)",
             statement: "The four analyses of the always-circular log give four different equations of motion.",
             method: "integrate each from rest (default scenario) and compare a/(g sin α) at t = 10 s",
@@ -59,7 +59,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "circular-agree-as-b-vanishes",
+            id: ClaimId::CircularAgreeAsBVanishes,
             paper_ref: "§2.1.3, §2.3, App. A",
             statement: "All four agree with the snowless (2/3) g sin α as b → 0.",
             method: "largest |a/G − 2/3| over 5 s for b = 1e-6, 1e-8, 1e-10 m; must fall like b",
@@ -70,7 +70,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "lagrangian-differs-from-energy",
+            id: ClaimId::LagrangianDiffersFromEnergy,
             paper_ref: "§2.3, eqs. (19)–(21)",
             statement: "The Lagrangian equation of motion (21) differs slightly from the energy equation (14).",
             method: "on a grid of states (r, v): the models' accelerations (first sample of a run started there) against (21) with ∂T/∂x restored and against the derived difference −(bv²/2πr²)/(1 + b²/6π²r²)",
@@ -81,7 +81,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq5-contact-torque",
+            id: ClaimId::Eq5ContactTorque,
             paper_ref: "§2.1.2, eq. (5)",
             statement: "The torque about the contact line equals d(3mr²/2)/dt, which gives eq. (6).",
             method: "along the integrated eq. (6): d(3mrv/2)/dt and d(3mr²/2)/dt by central differences of the samples, against r m g sin α",
@@ -92,7 +92,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "loney-solves-eq4",
+            id: ClaimId::LoneySolvesEq4,
             paper_ref: "fn. 4",
             statement: "Loney's closed form v² = 2G s/(5b) + K/s^(7/3) solves eq. (4).",
             method: "integrate eq. (4) to x = 10 km for three scenarios and compare v(x) with fn. 4's u(x), typed here",
@@ -103,7 +103,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "loney-acceleration-coefficient",
+            id: ClaimId::LoneyAccelerationCoefficient,
             paper_ref: "fn. 4",
             statement: "The acceleration is a = (g/5) sin α − 7bK/[3 (π r0² + b x)^(10/3)].",
             method: "compare with ½ du/dx of fn. 4's u(x) (central difference)",
@@ -114,7 +114,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "loney-limit-fifth",
+            id: ClaimId::LoneyLimitFifth,
             paper_ref: "fn. 4",
             statement: "Under eq. (4) the acceleration tends to (g/5) sin α.",
             method: "fn. 4's u(x) differentiated and eq. (4) integrated, at x = 10⁷ r0",
@@ -125,7 +125,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "terminal-accelerations",
+            id: ClaimId::TerminalAccelerations,
             paper_ref: "§2.4, eqs. (4), (6), (14), (15), (21), (32), (36)",
             statement: "Each circular equation of motion has a terminal acceleration (the note gives G/5 for (4) and G/3 for (32)).",
             method: "integrate each to x = 10⁷ r0; compare a/G with the limit (2/3)/(1 + 2c) derived here from the drag coefficient c of the printed equation (plus its derived 1/r term where there is lift), and with the note's G/5, G/3; the measured power of r in |a − a∞| against the derived one",
@@ -136,7 +136,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq35-terminal-third",
+            id: ClaimId::Eq35TerminalThird,
             paper_ref: "eq. (35)",
             statement: "Under eq. (32) the acceleration tends to g sin α / 3.",
             method: "integrate eq. (32) to x = 1000 km",
@@ -147,7 +147,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq33-35-terminal-argument",
+            id: ClaimId::Eq33_35TerminalArgument,
             paper_ref: "§2.4, eqs. (33)–(35)",
             statement: "Differentiating (32) gives v̈ ≈ (b/2πr²)(bv²/(2πr³) − v̇), so a∞ ≈ bv²/(2πr³); late on x ≈ a_cm t²/2 and, from (31), πr² ≈ bx.",
             method: "along the integrated eq. (32): v̈ by central differences of a against (33); at x = 1000 km, a against (34), x against a t²/2, πr² against bx",
@@ -158,7 +158,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq36-slows-approach",
+            id: ClaimId::Eq36SlowsApproach,
             paper_ref: "§2.4, term (36)",
             statement: "A lift term −g b cos α/(π r) does not change the terminal value but slows the approach to it.",
             method: "log-slope of |a − G/3| against r for (32) and for (32)+(36), against the derived powers",
@@ -169,7 +169,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "fn7-stall-threshold",
+            id: ClaimId::Fn7StallThreshold,
             paper_ref: "fn. 7, eqs. (14), (15)",
             statement: "A log too light for the snow does not start: it must lift the snow it collects.",
             method: "closed-form critical slope from a(0) = 0 in the printed eqs. (14), (15), against bisection on the simulated models; runs just below (must not start) and just above (must keep rolling)",
@@ -180,7 +180,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "fn7-stall-in-first-turn",
+            id: ClaimId::Fn7StallInFirstTurn,
             paper_ref: "fn. 7, §3, eqs. (62), (73)",
             statement: "In the setting of §3 a log that is too light for the snow starts (a(0) = 2G/3) but stalls inside its first turn.",
             method: "bisection in α on the simulated turns and turns-exact (stall inside turn 0 or not), against the closed form max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)) typed from (62), the library's threshold (shown by `snowroll models`), and the leading-order forms in ε = b/(πr0); runs just below (must start, then stall in turn 0) and just above (must roll on)",
@@ -198,7 +198,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "snowless-limit",
+            id: ClaimId::SnowlessLimit,
             paper_ref: "App. A, eqs. (95)–(130)",
             statement: "Without snow a rolling cylinder accelerates at (2/3) g sin α, whichever way it is derived; every model tends to it as b → 0.",
             method: "every model with snow at b = 1e-5 and 1e-6 m: a and x at t = 2 s extrapolated linearly to b = 0, against 2G/3 and G t²/3",
@@ -209,7 +209,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "app-a-moving-points",
+            id: ClaimId::AppAMovingPoints,
             paper_ref: "App. A.3.2, A.4.1, A.5.2, eqs. (111), (115), (127), (128)",
             statement: "About the moving contact line L′_P = I_cm ω = mr²v/2 (111); F_y − mg = 0 (115); about the point P of A.5.2, τ′_P = τ_P + rma and L′_P = L_cm.",
             method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; F_y from Newton's law with the simulated snowless motion",
@@ -220,7 +220,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "first-turn-58-64-69",
+            id: ClaimId::FirstTurn58_64_69,
             paper_ref: "§3.1–3.3, eqs. (58), (63), (64), (68), (69)",
             statement: "Torque (58), energy (64) and Lagrangian (69) analyses of the first turn give the same equation of motion.",
             method: "evaluate each for θ over a turn and three speeds, (64) and (69) from V of eq. (62) differentiated numerically",
@@ -231,7 +231,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq47-48-angular-momentum",
+            id: ClaimId::Eq47_48AngularMomentum,
             paper_ref: "§3, eqs. (47), (48)",
             statement: "An element moves with ẋ′ = ẋ − r′θ̇′ cos θ, and L_cm = −ρlθ̇ ∫{r0r′(1 − cos θ′) + …} ≈ −(m0r0²/2 + m0br0θ/π)θ̇.",
             method: "ẋ′ by central differences of the element's position; the integrand of (48) against ∫ dm (x′ − x_cm) × v′ of the disk and layer; the final line against the exact L_cm for two depths",
@@ -242,7 +242,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq54-cross-product",
+            id: ClaimId::Eq54CrossProduct,
             paper_ref: "eq. (54)",
             statement: "(x_cm − x_C) × m a_cm = −m0[r0² θ̈ + (b r/π)(θθ̈ − 2θ̇ sin θ − θ̇² cos θ)] to O(b).",
             method: "compare with the cross product of (43) and (45) evaluated exactly, at two b: the residual must be O(b²)",
@@ -253,7 +253,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq51-55-accreting-body",
+            id: ClaimId::Eq51_55AccretingBody,
             paper_ref: "§3.1, eqs. (51)–(55)",
             statement: "The torque analysis about the contact line, eqs. (51)–(55), gives the first-turn equation of motion to first order in b.",
             method: "the rigorous angular-momentum balance of the accreting body and the energy equation, both from element integrals of the disk and layer, against each other (their derived O(b³) difference) and against (55) for two depths",
@@ -264,7 +264,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq70-mass-after-first-turn",
+            id: ClaimId::Eq70MassAfterFirstTurn,
             paper_ref: "eq. (70)",
             statement: "After the first turn the log has mass m1 = 2πρ l r1².",
             method: "the disk plus the layer integrated element by element, against the printed and corrected (70) and the masses turns-exact and turns report at θ = 2π",
@@ -275,7 +275,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "multi-turn-never-settles",
+            id: ClaimId::MultiTurnNeverSettles,
             paper_ref: "§3.4, eqs. (77)–(79)",
             statement: "The acceleration of the log turn by turn never settles: it oscillates within every turn.",
             method: "simulate both turn models for many turns (10⁵ in the report); the range of a/G within the turns of the last decade against the derived [0, 2/3]",
@@ -286,7 +286,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "multi-turn-mean-four-ninths",
+            id: ClaimId::MultiTurnMeanFourNinths,
             paper_ref: "eq. (79)",
             statement: "On average the multi-turn log accelerates at 4 g sin α / 9.",
             method: "mean of a over the turns of the last decade of a long run, within turns and including the collisions, for both turn models, against 4/9 and against the long-run means derived from eqs. (76), (89)",
@@ -297,7 +297,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq78-speed-in-turn-n",
+            id: ClaimId::Eq78SpeedInTurnN,
             paper_ref: "eq. (78)",
             statement: "In the n-th turn v² ≈ π g n² b sin α / 3.",
             method: "v²/(π g n² b sin α) at the start of the last turn of a long run of both turn models, against 1/3 (and 2/3) and against the derived limit",
@@ -308,7 +308,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq89-collision",
+            id: ClaimId::Eq89Collision,
             paper_ref: "eq. (89)",
             statement: "In the collision at the end of a turn the angular momentum about the contact line is conserved.",
             method: "for the first 200 and the last collision of both long runs: L_C = I_C ω with I_C of the disk and layer integrated element by element, before and after, from the runs' speeds",
@@ -319,7 +319,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "collision-potential-jump",
+            id: ClaimId::CollisionPotentialJump,
             paper_ref: "§3.4, eqs. (70), (89)",
             statement: "At the collision the centre of the log rises by b; neglecting the potential energy this takes costs only a relative O(b/r) per turn.",
             method: "the rise m g b cos α from the element integrals, against the energy each turn releases, on the long run of turns; its ratio times rₖ/b against the derived C/(2πG)",
@@ -330,7 +330,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq88-energy-balance",
+            id: ClaimId::Eq88EnergyBalance,
             paper_ref: "eqs. (80)–(88)",
             statement: "Energy conservation within a turn, T_beg = T_end + V_end with V_end of (87), gives v at the end of the turn.",
             method: "v_end from (88) against the integrated turns, exact geometry and eq. (73); (87) corrected and printed; the turn index of (80)–(88) and of (73)",
@@ -341,7 +341,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "eq73-truncates-exact",
+            id: ClaimId::Eq73TruncatesExact,
             paper_ref: "§3.4, eqs. (73), (76), (88)",
             statement: "The turn equation (73) holds to first order in b/r: with exact mass properties the motion differs only at second order.",
             method: "v at the end of turn 0 from rest of turns and turns-exact for b/r0 = 0.02 and 0.01",
@@ -352,7 +352,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "fn10-hop-threshold",
+            id: ClaimId::Fn10HopThreshold,
             paper_ref: "fn. 10",
             statement: "The note leaves open whether the turn-by-turn log hops (fn. 10). Answer: in late turns the smallest normal force of a turn tends to M g (cos α − ½ sin α), so the log hops iff tan α > 2 (α* = 63.435°).",
             method: "turns and turns-exact from rest for 2000 turns at α* ± 1° with the hop event on: above, it must hop; below, it must complete every turn, and the smallest N/(M g) of its last turn (2000 samples) must match cos α − ½ sin α",
@@ -363,7 +363,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "slip-mu-min",
+            id: ClaimId::SlipMuMin,
             paper_ref: "issue 10 (App. A, §2.4, fn. 4)",
             statement: "The smallest coefficient of static friction that keeps a model rolling over the default run is tan α/3 for the snowless cylinder, tan α/(3 + b tan α/(π r0)) for eq. (32) and (G − a₀)/(C + b a₀/(2π r0)) for the lift models (needed at rest), and for eqs. (4), (6) the closed-form F/N at the end of the run (it grows towards (2/5) tan α and (1/2) tan α).",
             method: "max over every step of the default run (from rest, 100 s) of |F|/N, F and N from the momentum balance; against the closed forms of `docs/contact-forces.md` §5.1–§5.2 (u = v² from fn. 4's solution at the run's final radius)",
@@ -374,7 +374,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "snowball-five-sevenths",
+            id: ClaimId::SnowballFiveSevenths,
             paper_ref: "issue 11; App. A for a ball",
             statement: "A uniform ball (I = (2/5) M r²) rolling without slipping on a bare slope accelerates at (5/7) g sin α.",
             method: "the snowless model with shape = sphere on the default slope: a/G at every sample and x(10 s) against 5Gt²/14",
@@ -385,7 +385,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "snowball-terminal-fractions",
+            id: ClaimId::SnowballTerminalFractions,
             paper_ref: "issue 11; §2 for a ball (docs/snowball-and-losses.md §1.3)",
             statement: "The always-round snowball (swath 2r) tends to a/(g sin α) = 1/6 (torque about the centre, eq. (4)'s balance), 1/7 (contact line, eq. (6)), 2/7 (energy, eqs. (14), (15), (32), (32)+(36)), 5/28 (eq. (21) as printed).",
             method: "each circular model with shape = sphere from rest to x = 5e5 m; a/G against the derived fraction plus the derived 1/r approach of the models with the lift term",
@@ -396,7 +396,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "tpt-letter-closed-form",
+            id: ClaimId::TptLetterClosedForm,
             paper_ref: "The Physics Teacher 57, p. 436 (2019), on S. Rubin, TPT 57 (2019); §2.1.1 (eq. (4)) for a ball",
             statement: "A snowball rolling down a snowy incline has a closed-form motion whose acceleration starts at (5/7) g sin α and tends to (1/6) g sin α (the letter's C − 60V² = 14 r A, V = dr/dt, dr/dφ = k/2π).",
             method: "the ball's torque-cm (swath 2r, so b = k) from rest for 100 s against v² = (G s/(3b))(1 − (s0/s)^{30/7}) and a = (G/6)(1 + (23/7)(s0/s)^{30/7}), s = π r² (docs/snowball-and-losses.md §1.4); the ball's other derivations at 100 s against the same v²",
@@ -407,7 +407,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "regime-map-borders",
+            id: ClaimId::RegimeMapBorders,
             paper_ref: "fn. 7, fn. 10",
             statement: "Over slope × snow depth the turn-by-turn log started from rest stalls in its first turn below the fn. 7 slope, hops within K turns above tan α_K = (1 + ε c_C)/(½ − ε c_G) (ε = b/r_(K−1)) and rolls on between: the closed forms are the borders of the regime map.",
             method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms",
@@ -418,7 +418,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "snowless-drag-terminal-velocity",
+            id: ClaimId::SnowlessDragTerminalVelocity,
             paper_ref: "fn. 5",
             statement: "The note sets dissipation aside (fn. 5). With air drag and no snow the rolling log has a terminal velocity v_t² = M g sin α/(½ ρ_a C_d A), A = 2 r0 l (docs/snowball-and-losses.md §2.2); with snow it has none (v grows like t^(1/3)).",
             method: "snowless with C_d = 1, ρ_a = 1.2 kg/m³ from rest until |a| ≤ 1e-10 g sin α/(1 + k) (stop `terminal`); its speed there against the closed form",
@@ -429,7 +429,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     },
     ClaimCheck {
         claim: Claim {
-            id: "energy-ledger-balances",
+            id: ClaimId::EnergyLedgerBalances,
             paper_ref: "fn. 5; eqs. (7), (10)",
             statement: "With the losses fn. 5 sets aside (air drag, rolling resistance, compaction of the snow picked up), the energy is still accounted for: the kinetic energy, the work of each loss and the energy the model's own equation destroys (W_model) add up to the potential energy released plus the initial kinetic energy (docs/snowball-and-losses.md §3).",
             method: "every circular model on 12 scenarios each, logs and balls (swath 2r) alternately, drawn from a fixed seed with all three losses; at 17 samples of each run, K from eq. (7) and the energy released from eq. (10) (their ball forms, docs/snowball-and-losses.md §1.2) computed from (x, r, v), D_comp = e_c (M − M0), the works D_drag, D_rr and W_model read from the run's ledger",
@@ -439,3 +439,18 @@ pub static CLAIMS: &[ClaimCheck] = &[
         check: ledger_balances,
     },
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_claim_id_has_one_row_in_the_order_of_all() {
+        let rows: Vec<ClaimId> = CLAIMS.iter().map(|c| c.claim.id).collect();
+        assert_eq!(rows, ClaimId::ALL, "CLAIMS and ClaimId::ALL differ");
+        for id in ClaimId::ALL {
+            let n = CLAIMS.iter().filter(|c| c.claim.id == id).count();
+            assert_eq!(n, 1, "{id} has {n} rows");
+        }
+    }
+}

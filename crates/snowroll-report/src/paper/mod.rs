@@ -147,7 +147,7 @@ pub fn build_paper_report(
 fn run_claims(lab: &Lab, tick: &mut dyn FnMut(&str)) -> Result<Vec<ClaimResult>, ReportError> {
     let mut claims: Vec<ClaimResult> = Vec::with_capacity(CLAIMS.len());
     for check in CLAIMS {
-        tick(check.claim.id);
+        tick(check.claim.id.as_str());
         claims.push(check.run(lab)?);
     }
     Ok(claims)
