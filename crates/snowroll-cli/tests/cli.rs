@@ -534,6 +534,42 @@ fn model_aliases_are_accepted() {
     }
 }
 
+/// The slope the note of a run that does not start asks for is the run's
+/// own (issue 21): the ball's, tan α* = 2b/(π r0) + 3b²/(4π r0²) = 49.4503°
+/// at b = 0.05 m, r0 = 0.04 m, not the log's 40.2149°; with rolling
+/// resistance c_rr the log's tan α* grows by c_rr (eq. (14):
+/// (3 b r0 + b²)/(2π r0²) + 0.5 at the defaults, 28.7817°). Values typed
+/// from those closed forms, to the 4 decimals the note prints.
+#[test]
+fn does_not_start_names_the_run_s_own_threshold() {
+    let note = |args: &[&str]| {
+        let out = snowroll()
+            .args(["simulate", "--model", "energy", "-o", "/dev/null"])
+            .args(args)
+            .assert()
+            .success();
+        String::from_utf8_lossy(&out.get_output().stderr).to_string()
+    };
+    let ball = note(&[
+        "--shape",
+        "sphere",
+        "--snow-depth",
+        "0.05",
+        "--r0",
+        "0.04",
+        "--alpha-deg",
+        "45",
+    ]);
+    assert!(ball.contains("needs alpha > 49.4503 degrees"), "{ball}");
+    let log = note(&["--snow-depth", "0.05", "--r0", "0.04", "--alpha-deg", "30"]);
+    assert!(log.contains("needs alpha > 40.2149 degrees"), "{log}");
+    let rolling = note(&["--rolling-resistance", "0.5", "--alpha-deg", "20"]);
+    assert!(
+        rolling.contains("needs alpha > 28.7817 degrees"),
+        "{rolling}"
+    );
+}
+
 #[test]
 fn does_not_start_and_stall_are_reported_on_stderr_with_exit_zero() {
     // Below the stall slope of eq. (14) (fn. 7) the log cannot start from rest.

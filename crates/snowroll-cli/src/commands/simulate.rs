@@ -161,15 +161,15 @@ fn stop_note(
         stop.reason.describe()
     );
     if stop.reason == StopReason::DoesNotStart {
-        let threshold = model.derivation().and_then(|d| {
-            d.coefficients()
-                .stall_slope(scenario.snow_depth(), scenario.initial_radius())
-        });
-        match threshold.map(f64::to_degrees) {
+        // The run's own body, swath and losses set the threshold.
+        let threshold = model.stall_threshold_in(scenario, &opts.losses);
+        match threshold.map(|t| t.slope.to_degrees()) {
             Some(deg) if deg < 89.9999 => note.push_str(&format!(
                 "; from rest this model needs alpha > {deg:.4} degrees"
             )),
-            Some(_) => note.push_str("; with this snow and radius it cannot start on any slope"),
+            Some(_) => {
+                note.push_str("; with this snow, radius and losses it cannot start on any slope")
+            }
             None => {}
         }
     }

@@ -10,6 +10,7 @@
 use serde::Serialize;
 
 use super::{first_turn_stall_slope, ModelKind, TurnVariant};
+use crate::losses::Losses;
 use crate::scenario::{Scenario, Shape};
 use crate::units::{Meters, Radians};
 
@@ -111,6 +112,8 @@ impl ModelKind {
     /// ([`Coefficients::stall_slope`](super::Coefficients::stall_slope)); for
     /// the turn models, where the log stalls inside turn 0
     /// ([`first_turn_stall_slope`]). `None` for models that always roll on.
+    /// For the log without losses; [`ModelKind::stall_threshold_in`] takes
+    /// the run's own body and losses.
     pub fn stall_threshold(self, b: Meters, r0: Meters) -> Option<StallThreshold> {
         if let Some(variant) = TurnVariant::of(self) {
             return first_turn_stall_slope(variant, r0, b).map(|slope| StallThreshold {
@@ -120,6 +123,30 @@ impl ModelKind {
         }
         self.derivation()
             .and_then(|d| d.coefficients().stall_slope(b, r0))
+            .map(|slope| StallThreshold {
+                slope,
+                kind: StallKind::DoesNotStart,
+            })
+    }
+}
+
+impl ModelKind {
+    /// The stall threshold of fn. 7 for a run on `scenario` with `losses`:
+    /// for the circular models, where a(0) from rest falls to zero with the
+    /// run's own body, swath and losses
+    /// ([`Derivation::stall_slope_in`](super::Derivation::stall_slope_in));
+    /// for the turn models (the log, no losses), where the log stalls inside
+    /// turn 0 ([`first_turn_stall_slope`]).
+    pub fn stall_threshold_in(
+        self,
+        scenario: &Scenario,
+        losses: &Losses,
+    ) -> Option<StallThreshold> {
+        if TurnVariant::of(self).is_some() {
+            return self.stall_threshold(scenario.snow_depth(), scenario.initial_radius());
+        }
+        self.derivation()
+            .and_then(|d| d.stall_slope_in(scenario, losses))
             .map(|slope| StallThreshold {
                 slope,
                 kind: StallKind::DoesNotStart,
@@ -224,6 +251,91 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The ball's threshold in the energy model, typed from
+    /// `docs/snowball-and-losses.md` §1.2 (issue 21):
+    /// tan α* = 2b/(π r0) + 3b²/(4π r0²); the log's, eq. (14):
+    /// tan α* = (3 b r0 + b²)/(2π r0²). Each from the run's own body, not
+    /// the log's for both. Tolerance 1e-12 rad: both are closed forms.
+    #[test]
+    fn stall_threshold_follows_the_body() {
+        use crate::scenario::ScenarioFile;
+        use std::f64::consts::PI;
+        let (b, r0) = (0.05, 0.04);
+        let at = |shape| {
+            let s = Scenario::new(ScenarioFile {
+                snow_depth: b,
+                r0,
+                shape,
+                ..ScenarioFile::default()
+            })
+            .unwrap();
+            ModelKind::Energy
+                .stall_threshold_in(&s, &Losses::default())
+                .unwrap()
+                .slope
+        };
+        let ball = (2.0 * b / (PI * r0) + 3.0 * b * b / (4.0 * PI * r0 * r0)).atan();
+        let log = ((3.0 * b * r0 + b * b) / (2.0 * PI * r0 * r0)).atan();
+        assert!(
+            (at(Shape::Sphere) - ball).abs() < 1e-12,
+            "{}",
+            at(Shape::Sphere).to_degrees()
+        );
+        assert!((at(Shape::Cylinder) - log).abs() < 1e-12);
+        assert!((ball.to_degrees() - 49.450).abs() < 1e-3);
+    }
+
+    /// With losses a(0) from rest loses c_rr C and F_c/M to the drive
+    /// (`docs/snowball-and-losses.md` §2.1), so: eq. (4), which always
+    /// starts without losses, needs tan α > c_rr; eq. (14) needs
+    /// tan α > (3 b r0 + b²)/(2π r0²) + c_rr; eq. (4) with compaction alone
+    /// needs g sin α > e_c b/(π r0²) (F_c/M = e_c b/s0 at the start).
+    /// Bisection to rounding: tolerance 1e-12 rad.
+    #[test]
+    fn stall_threshold_follows_the_losses() {
+        use crate::scenario::ScenarioFile;
+        use std::f64::consts::PI;
+        let s = Scenario::new(ScenarioFile {
+            alpha_deg: 20.0,
+            ..ScenarioFile::default()
+        })
+        .unwrap();
+        let (b, r0, g) = (s.snow_depth(), s.initial_radius(), s.gravity());
+        let rolling = |c_rr| Losses {
+            rolling_resistance: c_rr,
+            ..Losses::default()
+        };
+        let slope = |kind: ModelKind, l: &Losses| kind.stall_threshold_in(&s, l).map(|t| t.slope);
+        assert_eq!(slope(ModelKind::TorqueCm, &Losses::default()), None);
+        let got = slope(ModelKind::TorqueCm, &rolling(0.3)).unwrap();
+        assert!((got - 0.3f64.atan()).abs() < 1e-12, "{got}");
+        let lift = (3.0 * b * r0 + b * b) / (2.0 * PI * r0 * r0);
+        let got = slope(ModelKind::Energy, &rolling(0.5)).unwrap();
+        assert!(
+            (got - (lift + 0.5).atan()).abs() < 1e-12,
+            "{}",
+            got.to_degrees()
+        );
+        let e_c = 20.0;
+        let compaction = Losses {
+            compaction_energy: e_c,
+            ..Losses::default()
+        };
+        let got = slope(ModelKind::TorqueCm, &compaction).unwrap();
+        let want = (e_c * b / (PI * r0 * r0 * g)).asin();
+        assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+        // Compaction beyond g: no slope will do.
+        let heavy = Losses {
+            compaction_energy: 1e5,
+            ..Losses::default()
+        };
+        assert_eq!(
+            slope(ModelKind::TorqueCm, &heavy),
+            Some(std::f64::consts::FRAC_PI_2)
+        );
+    }
+
     use crate::scenario::ScenarioFile;
 
     fn scenario(edit: impl FnOnce(&mut ScenarioFile)) -> Scenario {

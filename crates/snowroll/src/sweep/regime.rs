@@ -261,7 +261,7 @@ impl ModelBorders<'_> {
                 let s = self.with(v)?;
                 let t = self
                     .model
-                    .stall_threshold(s.snow_depth(), s.initial_radius())?;
+                    .stall_threshold_in(&s, &self.base.options.losses)?;
                 Some(self.plane.place(t.slope.to_degrees(), v))
             })
             .collect();

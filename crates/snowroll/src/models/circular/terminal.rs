@@ -2,9 +2,12 @@
 //! acceleration (eq. (35), fn. 4, App. A), how fast a run approaches it, and
 //! the slope below which a log at rest does not start (fn. 7).
 
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
-use super::Coefficients;
+use super::rhs::Acceleration;
+use super::{Coefficients, Derivation};
+use crate::losses::Losses;
+use crate::scenario::{Scenario, ScenarioFile};
 use crate::units::Radians;
 
 impl Coefficients {
@@ -53,5 +56,53 @@ impl Coefficients {
         let (num, den) = self.shape.push_ratio();
         let tan = den * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (num * PI * r0 * r0);
         Some(tan.atan())
+    }
+}
+
+impl Derivation {
+    /// The slope α* below which this model, started from rest on `s` (its
+    /// body, swath and snow) with the losses `l`, does not start (fn. 7):
+    /// where its acceleration at rest a(0) falls to zero. `None` when it
+    /// starts on every slope; π/2 when on none (compaction or rolling
+    /// resistance at least the drive of a vertical wall).
+    ///
+    /// a(0) is the model's own right-hand side at x = 0, v = 0, so the
+    /// threshold follows the body and the losses the run has. Without
+    /// losses on the area law it is [`Coefficients::stall_slope`]'s closed
+    /// form; otherwise a(0) = A sin α − B cos α − E (A > 0, B, E ≥ 0: the
+    /// drive, the lift and rolling resistance, compaction) increases with α
+    /// and its zero is found by bisection to rounding.
+    pub fn stall_slope_in(self, s: &Scenario, l: &Losses) -> Option<Radians> {
+        let c = self.coefficients_for(s.shape());
+        if !l.any() && s.follows_area_law() {
+            return c.stall_slope(s.snow_depth(), s.initial_radius());
+        }
+        let at_rest = |alpha: f64| -> Option<f64> {
+            let file = ScenarioFile {
+                alpha_deg: alpha.to_degrees(),
+                v0: 0.0,
+                ..ScenarioFile::from(*s)
+            };
+            let s = Scenario::new(file).ok()?;
+            Some(Acceleration::of(self, &c, &s, l).at(0.0, 0.0))
+        };
+        // The open interval of slopes a scenario takes, less a margin that
+        // keeps sin and cos away from 0.
+        let (mut lo, mut hi) = (1e-9, FRAC_PI_2 - 1e-9);
+        if at_rest(lo)? > 0.0 {
+            return None;
+        }
+        if at_rest(hi)? <= 0.0 {
+            return Some(FRAC_PI_2);
+        }
+        while hi - lo > 4.0 * f64::EPSILON * hi {
+            let mid = 0.5 * (lo + hi);
+            if at_rest(mid)? > 0.0 {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some(0.5 * (lo + hi))
     }
 }
