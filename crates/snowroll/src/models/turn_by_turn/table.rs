@@ -19,11 +19,11 @@ use super::{
     TurnModel, TurnSystem, TurnVariant, EVENT_TURN_END,
 };
 use crate::error::{ParamError, SimError, SinkError};
-use crate::integrate::{integrate, EventRecord, Observer, Stats, Termination};
-use crate::models::ode::OdeModel;
+use crate::integrate::{EventRecord, Observer, Stats};
+use crate::models::ode::{run_observed, stop_at, OdeModel, RowBudget, RunObserver};
 use crate::models::ModelKind;
 use crate::scenario::Scenario;
-use crate::trajectory::{LedgerRow, SimOptions, Stop, StopReason};
+use crate::trajectory::{LedgerRow, SimOptions, Stop};
 use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Seconds};
 
 /// One completed turn k. Column names carry their units.
@@ -390,14 +390,24 @@ pub struct TurnTable {
     pub stats: Stats,
 }
 
-/// Makes one [`TurnRow`] per turn-end event and sends it on.
+/// Makes one [`TurnRow`] per turn-end event and sends it on, with the
+/// ledger just before its collision when the run records one.
+///
+/// It runs through [`run_observed`], as every ODE model does, but not
+/// through [`run_ode`]'s [`Recorder`], which records at the times
+/// [`Sampling`](crate::Sampling) asks for rather than at the turn ends,
+/// counts samples rather than turns, and would change what is recorded.
+///
+/// [`Recorder`]: crate::models::ode::Recorder
+/// [`run_ode`]: crate::models::ode::run_ode
 struct TableObserver<'a> {
     sink: &'a mut dyn TurnSink,
     summary: SummaryBuilder,
-    rows: u64,
-    max_rows: u64,
-    failed: Option<SinkError>,
+    /// Rows sent, against [`SimOptions::max_rows`], and the sink's failure.
+    budget: RowBudget,
+    /// Time the current turn started, s.
     t_start: f64,
+    /// Speed at the start of the current turn, m/s.
     v_start: f64,
 }
 
@@ -477,19 +487,21 @@ impl Observer<TurnSystem, 2> for TableObserver<'_> {
             None => Ok(()),
         }
         .and_then(|()| self.sink.turn(&row));
-        match sent {
-            Ok(()) => {
-                self.summary.push(&row);
-                self.rows += 1;
-            }
-            Err(e) => self.failed = Some(e),
+        if self.budget.book(sent) {
+            self.summary.push(&row);
         }
         self.t_start = event.t;
         self.v_start = v_after;
     }
 
     fn stop_requested(&self) -> bool {
-        self.failed.is_some() || self.rows >= self.max_rows
+        self.budget.full()
+    }
+}
+
+impl RunObserver<TurnSystem, 2> for TableObserver<'_> {
+    fn budget(&mut self) -> &mut RowBudget {
+        &mut self.budget
     }
 }
 
@@ -499,7 +511,7 @@ impl TurnModel {
     /// (memory O(log n) in the number of turns; `opts.sampling` is
     /// ignored). A run asked for more turns than `opts.max_rows` is refused
     /// before it starts; without a turn count it stops at `opts.max_rows`
-    /// rows ([`StopReason::RowLimit`]).
+    /// rows ([`StopReason::RowLimit`](crate::StopReason::RowLimit)).
     ///
     /// # Errors
     /// As [`Model::simulate_into`](crate::Model::simulate_into), and
@@ -522,57 +534,26 @@ impl TurnModel {
         let mut observer = TableObserver {
             sink,
             summary: SummaryBuilder::new(scenario.g_along(), opts.turns),
-            rows: 0,
-            max_rows: opts.max_rows,
-            failed: None,
+            budget: RowBudget::new(opts.max_rows),
             t_start: 0.0,
             v_start: 0.0,
         };
         let y0 = Self::initial_state(scenario);
         if let Some(reason) = system.start(&y0) {
-            let first = system.sample(0.0, &y0);
+            // Stopped at its start: no turn was completed, so no row goes out.
             return Ok(TurnRunEnd {
                 model: self.variant.kind(),
-                stop: Stop {
-                    reason,
-                    t_s: 0.0,
-                    x_m: first.x_m,
-                    v_m_s: first.v_m_s,
-                    turn: system.turn_state(0.0, &y0),
-                },
+                stop: stop_at(&system, reason, 0.0, &y0),
                 summary: observer.summary.finish(),
                 stats: Stats::default(),
             });
         }
-        let outcome = integrate(
-            &mut system,
-            0.0,
-            y0,
-            opts.t_end,
-            &opts.tolerances,
-            &mut observer,
-        )?;
-        if let Some(e) = observer.failed {
-            return Err(SimError::Sink(e));
-        }
-        let reason = match outcome.termination {
-            Termination::EndTime => StopReason::EndTime,
-            Termination::Event { index } => system.stop_reason(index),
-            Termination::StepLimit => StopReason::StepLimit,
-            Termination::Stopped => StopReason::RowLimit,
-        };
-        let last = system.sample(outcome.t, &outcome.y);
+        let end = run_observed(&mut system, y0, opts, &mut observer)?;
         Ok(TurnRunEnd {
             model: self.variant.kind(),
-            stop: Stop {
-                reason,
-                t_s: outcome.t,
-                x_m: last.x_m,
-                v_m_s: last.v_m_s,
-                turn: system.turn_state(outcome.t, &outcome.y),
-            },
+            stop: end.stop,
             summary: observer.summary.finish(),
-            stats: outcome.stats,
+            stats: end.stats,
         })
     }
 
