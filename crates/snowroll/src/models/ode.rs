@@ -6,7 +6,7 @@
 //! bookkeeping exists once. Its usual observer is the [`Recorder`], which sends
 //! samples to a [`SampleSink`] as [`Sampling`] asks, one at a time (memory O(1)
 //! in the number of samples): that is [`run_ode`]. The turn table's observer
-//! (`turn_by_turn/table.rs`) is the other.
+//! (`turn_by_turn/observer.rs`) is the other.
 
 use crate::error::{SimError, SinkError};
 use crate::integrate::{integrate, DenseStep, EventRecord, Observer, OdeSystem, Termination};
