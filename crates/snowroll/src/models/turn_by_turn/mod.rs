@@ -35,29 +35,30 @@
 mod collision;
 mod contact;
 mod extremes;
+mod observer;
+mod row;
+mod runner;
 mod stall;
-mod table;
+mod summary;
 
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
 pub use contact::{ContactRange, TurnExtremes};
+pub use row::{TurnRow, TurnSink};
+pub use runner::{run_turns, run_turns_into, TurnModel, TurnRunEnd, TurnTable};
 pub use stall::first_turn_stall_slope;
-pub use table::{
-    run_turns, run_turns_into, TurnCheckpoint, TurnRow, TurnRunEnd, TurnSink, TurnSummary,
-    TurnTable,
-};
+use summary::SummaryBuilder;
+pub use summary::{TurnCheckpoint, TurnSummary};
 
 use std::f64::consts::PI;
 
 use super::contact::ContactForces;
 use super::exact_geometry::exact_turn_coefficients;
-use super::ode::{run_ode, stopped_at_start, OdeModel};
-use super::{Model, ModelKind};
-use crate::error::{ParamError, SimError};
+use super::ode::OdeModel;
+use super::ModelKind;
+use crate::error::ParamError;
 use crate::integrate::{Direction, EventAction, OdeSystem};
 use crate::scenario::Scenario;
-use crate::trajectory::{
-    LedgerRow, OnHop, RunEnd, Sample, SampleSink, SimOptions, StopReason, TurnState,
-};
+use crate::trajectory::{LedgerRow, OnHop, Sample, SimOptions, StopReason, TurnState};
 use crate::units::{Joules, Meters, MetersPerSecond, MetersPerSecondSquared, Radians};
 
 /// Full turn, rad.
@@ -892,69 +893,5 @@ impl OdeModel<2> for TurnSystem {
             _ if self.pivoting => StopReason::Stuck,
             _ => StopReason::Stalled,
         }
-    }
-}
-
-/// The turn-by-turn model of §3.4 (ids `turns`, `turns-exact`).
-///
-/// ```
-/// use snowroll::{Model, Scenario, SimOptions, StopReason, TurnModel, TurnVariant};
-/// let opts = SimOptions { turns: Some(3), t_end: 1e3, ..SimOptions::default() };
-/// let traj = TurnModel::new(TurnVariant::Paper).simulate(&Scenario::default(), &opts)?;
-/// assert_eq!(traj.stop.reason, StopReason::Turns);
-/// assert_eq!(traj.turn_states.last().unwrap().turn, 2);
-/// # Ok::<(), snowroll::SimError>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct TurnModel {
-    variant: TurnVariant,
-}
-
-impl TurnModel {
-    /// The model with the mass properties of `variant`.
-    pub fn new(variant: TurnVariant) -> Self {
-        Self { variant }
-    }
-
-    /// Its variant.
-    pub fn variant(&self) -> TurnVariant {
-        self.variant
-    }
-
-    /// The initial state `[θ, θ̇] = [0, v0/r0]`.
-    fn initial_state(s: &Scenario) -> [f64; 2] {
-        [0.0, s.initial_speed() / s.initial_radius()]
-    }
-}
-
-impl Model for TurnModel {
-    fn kind(&self) -> ModelKind {
-        self.variant.kind()
-    }
-
-    /// The common checks, and the turn models' own: the scale of a turn
-    /// ([`check_turn_scale`]) and the losses they do not take.
-    fn check(&self, scenario: &Scenario, opts: &SimOptions) -> Result<(), SimError> {
-        opts.validate()?;
-        self.kind().check_shape(scenario)?;
-        check_turn_scale(scenario, opts)?;
-        check_turn_losses(self.kind(), opts)?;
-        crate::models::check_tolerances(self.kind(), scenario, opts)?;
-        Ok(())
-    }
-
-    fn simulate_into(
-        &self,
-        scenario: &Scenario,
-        opts: &SimOptions,
-        sink: &mut dyn SampleSink,
-    ) -> Result<RunEnd, SimError> {
-        self.check(scenario, opts)?;
-        let mut system = TurnSystem::new(self.variant, scenario, opts);
-        let y0 = Self::initial_state(scenario);
-        if let Some(reason) = system.start(&y0) {
-            return stopped_at_start(&system, y0, reason, sink);
-        }
-        run_ode(&mut system, y0, opts, sink)
     }
 }
