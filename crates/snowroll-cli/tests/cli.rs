@@ -1557,3 +1557,52 @@ fn a_refused_run_writes_nothing_before_the_error() {
         .code(1);
     assert!(!path.exists());
 }
+
+/// Issue 20, item 7: the format follows the name of `-o` when `--format` is
+/// not given, and a format that contradicts the name is refused before
+/// anything is written; a `--dt` grid's row count counts the points the run
+/// would write (0, 0.1, 0.2, 0.3: four, though 0.3/0.1 rounds below 3).
+#[test]
+fn output_name_sets_the_format_and_row_counts_are_exact() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("run.JSON");
+    snowroll()
+        .args([
+            "simulate", "--model", "energy", "--t-end", "1", "--dt", "0.5", "-o",
+        ])
+        .arg(&json)
+        .assert()
+        .success();
+    let text = fs::read_to_string(&json).unwrap();
+    assert!(serde_json::from_str::<Value>(&text).is_ok(), "{text}");
+    let csv = dir.path().join("run.csv");
+    snowroll()
+        .args(["simulate", "--model", "energy", "--format", "json", "-o"])
+        .arg(&csv)
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains(
+            "ends in .csv but the format is json",
+        ));
+    assert!(!csv.exists());
+    snowroll()
+        .args([
+            "simulate", "--model", "energy", "--dt", "0.1", "--t-end", "0.3",
+        ])
+        .args(["--max-rows", "3"])
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("would write 4 rows"));
+    let out = snowroll()
+        .args([
+            "simulate", "--model", "energy", "--dt", "0.1", "--t-end", "0.3",
+        ])
+        .args(["--max-rows", "4"])
+        .assert()
+        .success();
+    let rows = String::from_utf8_lossy(&out.get_output().stdout)
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .count();
+    assert_eq!(rows, 5, "header and four rows");
+}

@@ -4,7 +4,8 @@
 use anyhow::{anyhow, Result};
 use snowroll::{ModelKind, ParamError, Sampling, Scenario, Settings, SimOptions};
 
-use crate::args::ScenarioArgs;
+use crate::args::{OutputArgs, ScenarioArgs};
+use snowroll_io::Format;
 
 /// The turn-by-turn models of §3.4, which alone take `--turns`.
 pub fn turn_models() -> Vec<ModelKind> {
@@ -54,6 +55,43 @@ pub fn options(
     base.options.sampling = sampling;
     base.options.turns = turns;
     Ok(settings(a, base)?.options)
+}
+
+/// The output format: `--format` (or the config file's), else the one the
+/// name of `-o` ends in (`.json`, `.csv`, any case), else CSV. A format
+/// that contradicts the name is refused (issue 20: `-o run.json` wrote CSV).
+pub fn format(out: &OutputArgs) -> Result<Format> {
+    let named = out.output.as_deref().and_then(|p| {
+        let ext = p.extension()?.to_str()?.to_ascii_lowercase();
+        let format = match ext.as_str() {
+            "json" => Format::Json,
+            "csv" => Format::Csv,
+            _ => return None,
+        };
+        Some((format, ext))
+    });
+    match (out.format, named) {
+        (Some(given), Some((by_name, ext))) if given != by_name => {
+            Err(anyhow!(
+            "the output {} ends in .{ext} but the format is {}: give --format {ext}, or a name \
+             that ends in .{}",
+            out.output.as_deref().map_or(String::new(), |p| p.display().to_string()),
+            format_name(given),
+            format_name(given)
+        ))
+        }
+        (Some(given), _) => Ok(given),
+        (None, Some((by_name, _))) => Ok(by_name),
+        (None, None) => Ok(Format::default()),
+    }
+}
+
+/// How `--format` spells `f`.
+fn format_name(f: Format) -> &'static str {
+    match f {
+        Format::Csv => "csv",
+        Format::Json => "json",
+    }
 }
 
 /// Refuses, before the run, a run whose row count is known and above

@@ -24,7 +24,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     };
     let (model, scenario, opts) = prepare(&args)?;
     let runner = model.build();
-    let format = args.output.format.unwrap_or_default();
+    let format = inputs::format(&args.output)?;
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()
         .map(ToString::to_string)

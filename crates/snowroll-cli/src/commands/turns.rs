@@ -55,7 +55,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     inputs::check_row_count(&opts, Some(wanted as f64), &format!("--turns {wanted}"))?;
     // Everything the model refuses, before any output (nothing reaches stdout).
     model.build().check(&scenario, &opts)?;
-    let format = args.output.format.unwrap_or_default();
+    let format = inputs::format(&args.output)?;
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()
         .map(ToString::to_string)

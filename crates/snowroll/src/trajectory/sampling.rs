@@ -23,6 +23,27 @@ pub enum Sampling {
     Ends,
 }
 
+/// The number of points of the grid `0, dt, 2 dt, …` up to `t_end`,
+/// counted as [`Sampling::grid_time`] places them (a point within a few
+/// ulps of `t_end` is the last): `⌊t_end/dt⌋ + 1`, corrected by one where
+/// the quotient's rounding falls on the other side of a point (dt = 0.1,
+/// t_end = 0.3: 0.3/0.1 = 2.9999999999999996, yet 0.3 is a point, so 4
+/// rows). Beyond 2^52 points the quotient itself is the count.
+fn grid_rows(dt: Seconds, t_end: Seconds) -> f64 {
+    let n = (t_end / dt).floor();
+    if !(0.0..4.0e15).contains(&n) {
+        return n + 1.0;
+    }
+    let mut last = n as usize;
+    while Sampling::grid_time(dt, last + 1, t_end).is_some() {
+        last += 1;
+    }
+    while last > 0 && Sampling::grid_time(dt, last, t_end).is_none() {
+        last -= 1;
+    }
+    last as f64 + 1.0
+}
+
 impl Sampling {
     /// Point `i` of the regular grid `0, dt, 2dt, …` that ends at `t_end`, s;
     /// `None` past the end. A point within a few ulps of `t_end` (on either
@@ -48,7 +69,7 @@ impl Sampling {
     pub fn known_rows(&self, t_end: Seconds) -> Option<f64> {
         match self {
             Sampling::Times(ts) => Some(ts.len() as f64),
-            Sampling::Every(dt) => Some((t_end / dt).floor() + 1.0),
+            Sampling::Every(dt) => Some(grid_rows(*dt, t_end)),
             Sampling::Steps => None,
             Sampling::Ends => Some(2.0),
         }
@@ -127,6 +148,28 @@ fn decimal_multiple(dt: f64, i: usize) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The count known before the run is the number of points the grid
+    /// writes (issue 20: 0.3/0.1 rounds below 3, yet 0.3 is a point).
+    #[test]
+    fn known_rows_count_the_points_written() {
+        for (dt, t_end) in [
+            (0.1, 0.3),
+            (0.1, 1.0),
+            (0.25, 1.0),
+            (0.3, 1.0),
+            (0.7, 2.1),
+            (1e-3, 1.0),
+        ] {
+            let mut count = 0;
+            while Sampling::grid_time(dt, count, t_end).is_some() {
+                count += 1;
+            }
+            let known = Sampling::Every(dt).known_rows(t_end).unwrap();
+            assert_eq!(known, count as f64, "dt = {dt}, t_end = {t_end}");
+        }
+        assert_eq!(Sampling::Every(0.1).known_rows(0.3), Some(4.0));
+    }
 
     /// The decimal `i · q / 10^d` written out by integer arithmetic alone,
     /// e.g. (3, 1, 1) → "0.3": what a person means by point i of a grid of

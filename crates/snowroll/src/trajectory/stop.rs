@@ -103,14 +103,21 @@ impl Stop {
     /// Where, for people: `t = … s, x = … m, v = … m/s` and, for the turn
     /// models, `, turn k, theta = … rad, omega = … rad/s`.
     pub fn place(&self) -> String {
+        // Numbers as the outputs write them: exponent form outside
+        // 1e-4..1e9 (`v = -5.551115123125783e-18`, not eighteen zeros).
+        let n = crate::number::format_number;
         let mut s = format!(
             "t = {} s, x = {} m, v = {} m/s",
-            self.t_s, self.x_m, self.v_m_s
+            n(self.t_s),
+            n(self.x_m),
+            n(self.v_m_s)
         );
         if let Some(k) = self.turn {
             s.push_str(&format!(
                 ", turn {} (0-based), theta = {} rad, omega = {} rad/s",
-                k.turn, k.theta_rad, k.omega_rad_s
+                k.turn,
+                n(k.theta_rad),
+                n(k.omega_rad_s)
             ));
         }
         s
