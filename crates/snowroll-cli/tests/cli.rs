@@ -1606,3 +1606,53 @@ fn output_name_sets_the_format_and_row_counts_are_exact() {
         .count();
     assert_eq!(rows, 5, "header and four rows");
 }
+
+/// Issue 20, item 7: a newline in the output's name does not split the
+/// `# command:` line of a sweep's header (it is written as `$'…\n…'`, as a
+/// shell reads it back), and the file reads back as a `--config`.
+#[test]
+fn a_newline_in_a_sweep_path_keeps_the_command_on_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("two\nlines.csv");
+    snowroll()
+        .args([
+            "sweep",
+            "-q",
+            "--model",
+            "torque-cm",
+            "--alpha-deg",
+            "10,20",
+            "-o",
+        ])
+        .arg(&out)
+        .assert()
+        .success();
+    let text = fs::read_to_string(&out).unwrap();
+    let command: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("# command: "))
+        .collect();
+    assert_eq!(command.len(), 1, "{text}");
+    assert!(command[0].contains(r"two\nlines.csv'"), "{}", command[0]);
+    // Every header line is a `#` line: nothing of the name leaked onto its own.
+    let header: Vec<&str> = text
+        .lines()
+        .take_while(|l| !l.starts_with("index,"))
+        .collect();
+    assert!(header.iter().all(|l| l.starts_with('#')), "{header:?}");
+    let again = dir.path().join("again.csv");
+    snowroll()
+        .args(["sweep", "-q", "--config"])
+        .arg(&out)
+        .arg("-o")
+        .arg(&again)
+        .assert()
+        .success();
+    let rows = |t: &str| {
+        t.lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(String::from)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(rows(&fs::read_to_string(&again).unwrap()), rows(&text));
+}

@@ -290,6 +290,35 @@ pub fn parse_shard(text: &str) -> Result<(u64, u64)> {
     Ok((i, n))
 }
 
+/// `word` as a shell reads it back as one word, so that the `# command:`
+/// line stays one line and can be pasted: unchanged when it is plain (letters,
+/// digits, `_./:,+=@%-`), in single quotes when it has other printable
+/// characters, in `$'…'` with `\n`, `\t`, `\xNN` escapes when it has control
+/// characters (a newline in a file name). Written here: the quoting crates
+/// either refuse control characters or quote them raw, which breaks the line.
+fn shell_word(word: &str) -> std::borrow::Cow<'_, str> {
+    let plain = |c: char| c.is_ascii_alphanumeric() || "_./:,+=@%-".contains(c);
+    if !word.is_empty() && word.chars().all(plain) {
+        return word.into();
+    }
+    if !word.chars().any(char::is_control) {
+        return format!("'{}'", word.replace('\'', r"'\''")).into();
+    }
+    let mut out = String::from("$'");
+    for c in word.chars() {
+        match c {
+            '\n' => out.push_str("\\n"),
+            '\t' => out.push_str("\\t"),
+            '\\' => out.push_str("\\\\"),
+            '\'' => out.push_str("\\'"),
+            c if c.is_control() => out.push_str(&format!("\\x{:02x}", u32::from(c))),
+            c => out.push(c),
+        }
+    }
+    out.push('\'');
+    out.into()
+}
+
 /// The `#` lines and the column names: everything a resumed run or a merge
 /// checks, plus the command line (which they do not): `recorded`, the one a
 /// `--config` file holds, when the run is that file's own; else `args`'.
@@ -303,13 +332,23 @@ fn header(
 ) -> String {
     let mut command = String::from("snowroll sweep");
     if let Some(path) = &args.grid {
-        command.push_str(&format!(" --grid {}", path.display()));
+        command.push_str(&format!(
+            " --grid {}",
+            shell_word(&path.display().to_string())
+        ));
     }
     for (key, value) in flag_axes(args) {
-        command.push_str(&format!(" --{} {value}", key.replace('_', "-")));
+        command.push_str(&format!(
+            " --{} {}",
+            key.replace('_', "-"),
+            shell_word(value)
+        ));
     }
     if let Some(path) = &args.output {
-        command.push_str(&format!(" --output {}", path.display()));
+        command.push_str(&format!(
+            " --output {}",
+            shell_word(&path.display().to_string())
+        ));
     }
     if args.method != Method::Auto {
         command.push_str(" --method ode");
@@ -321,7 +360,7 @@ fn header(
         });
     }
     if let Some(s) = &args.shard {
-        command.push_str(&format!(" --shard {s}"));
+        command.push_str(&format!(" --shard {}", shell_word(s)));
     }
     if let Some(recorded) = recorded {
         command = recorded.to_string();
