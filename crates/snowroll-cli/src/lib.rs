@@ -25,6 +25,7 @@ mod config;
 pub mod console;
 mod outdir;
 mod scratch;
+mod shell;
 mod sink;
 
 use std::ffi::OsString;

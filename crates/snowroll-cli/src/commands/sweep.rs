@@ -26,6 +26,7 @@ use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid, with_config};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
+use crate::shell::shell_word;
 use crate::sink::Sink;
 
 /// Start of the header line naming the command (not compared on resume or merge).
@@ -288,35 +289,6 @@ pub fn parse_shard(text: &str) -> Result<(u64, u64)> {
         return Err(bad());
     }
     Ok((i, n))
-}
-
-/// `word` as a shell reads it back as one word, so that the `# command:`
-/// line stays one line and can be pasted: unchanged when it is plain (letters,
-/// digits, `_./:,+=@%-`), in single quotes when it has other printable
-/// characters, in `$'…'` with `\n`, `\t`, `\xNN` escapes when it has control
-/// characters (a newline in a file name). Written here: the quoting crates
-/// either refuse control characters or quote them raw, which breaks the line.
-fn shell_word(word: &str) -> std::borrow::Cow<'_, str> {
-    let plain = |c: char| c.is_ascii_alphanumeric() || "_./:,+=@%-".contains(c);
-    if !word.is_empty() && word.chars().all(plain) {
-        return word.into();
-    }
-    if !word.chars().any(char::is_control) {
-        return format!("'{}'", word.replace('\'', r"'\''")).into();
-    }
-    let mut out = String::from("$'");
-    for c in word.chars() {
-        match c {
-            '\n' => out.push_str("\\n"),
-            '\t' => out.push_str("\\t"),
-            '\\' => out.push_str("\\\\"),
-            '\'' => out.push_str("\\'"),
-            c if c.is_control() => out.push_str(&format!("\\x{:02x}", u32::from(c))),
-            c => out.push(c),
-        }
-    }
-    out.push('\'');
-    out.into()
 }
 
 /// The `#` lines and the column names: everything a resumed run or a merge
