@@ -114,7 +114,7 @@ fn with_default(text: &str, default: impl Display) -> String {
 }
 
 /// How a value of a clap enum is spelt on the command line.
-fn value_name(v: impl ValueEnum) -> String {
+pub(crate) fn value_name(v: impl ValueEnum) -> String {
     v.to_possible_value()
         .map_or_else(String::new, |p| p.get_name().to_string())
 }

@@ -147,8 +147,7 @@ impl clap::FromArgMatches for AxisArgs {
                 self.given.push((p, text.clone()));
             }
         }
-        let order = |p: &Param| PARAMS.iter().position(|q| q.key == p.key);
-        self.given.sort_by_key(|(p, _)| order(p));
+        self.given.sort_by_key(|(p, _)| p.position());
         Ok(())
     }
 }
@@ -166,8 +165,7 @@ impl AxisArgs {
     pub fn fill(&mut self, p: &'static Param, text: Option<String>) {
         if let (None, Some(text)) = (self.get(p.key), text) {
             self.given.push((p, text));
-            let order = |p: &Param| PARAMS.iter().position(|q| q.key == p.key);
-            self.given.sort_by_key(|(p, _)| order(p));
+            self.given.sort_by_key(|(p, _)| p.position());
         }
     }
 }

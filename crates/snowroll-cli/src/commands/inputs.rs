@@ -4,7 +4,7 @@
 use anyhow::{anyhow, Result};
 use snowroll::{ModelKind, ParamError, Sampling, Scenario, Settings, SimOptions};
 
-use crate::args::{OutputArgs, ScenarioArgs};
+use crate::args::{value_name, OutputArgs, ScenarioArgs};
 use snowroll_io::Format;
 
 /// The turn-by-turn models of §3.4, which alone take `--turns`.
@@ -76,21 +76,13 @@ pub fn format(out: &OutputArgs) -> Result<Format> {
             "the output {} ends in .{ext} but the format is {}: give --format {ext}, or a name \
              that ends in .{}",
             out.output.as_deref().map_or(String::new(), |p| p.display().to_string()),
-            format_name(given),
-            format_name(given)
+            value_name(given),
+            value_name(given)
         ))
         }
         (Some(given), _) => Ok(given),
         (None, Some((by_name, _))) => Ok(by_name),
         (None, None) => Ok(Format::default()),
-    }
-}
-
-/// How `--format` spells `f`.
-fn format_name(f: Format) -> &'static str {
-    match f {
-        Format::Csv => "csv",
-        Format::Json => "json",
     }
 }
 

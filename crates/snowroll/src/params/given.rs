@@ -1,6 +1,6 @@
 //! Values given for some parameters, applied over the defaults.
 
-use super::{Param, Settings, Value, PARAMS};
+use super::{Param, Settings, Value};
 use crate::error::ParamError;
 
 /// Values given for some parameters (on a command line, in a config file,
@@ -23,8 +23,7 @@ impl Given {
             Some(slot) => slot.1 = value,
             None => {
                 self.values.push((param, value));
-                let order = |p: &Param| PARAMS.iter().position(|q| q.key == p.key);
-                self.values.sort_by_key(|(p, _)| order(p));
+                self.values.sort_by_key(|(p, _)| p.position());
             }
         }
     }

@@ -242,9 +242,18 @@ impl Param {
     /// The parameter of `key`: its snake-case key, its flag's name in
     /// kebab case (`alpha-deg`) or one of its [`aliases`](Param::aliases).
     pub fn find(key: &str) -> Option<&'static Param> {
+        let snake = key.replace('-', "_");
         PARAMS
             .iter()
-            .find(|p| p.key == key || p.aliases.contains(&key) || p.flag() == key)
+            .find(|p| p.key == snake || p.aliases.contains(&key))
+    }
+
+    /// Its place in [`PARAMS`]: the order of help, records and sweep axes.
+    pub fn position(&self) -> usize {
+        PARAMS
+            .iter()
+            .position(|q| q.key == self.key)
+            .unwrap_or(PARAMS.len())
     }
 
     /// Every name [`Param::find`] knows `self` by: the key, the flag's name
