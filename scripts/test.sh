@@ -3,7 +3,8 @@
 # Python package's tests (scripts/test-python.sh), then `snowroll paper
 # --strict` (fails when any verdict differs from the one the claims table
 # expects) and the browser test of the report it writes (installs
-# Debian's chromium first if it is missing; needs root or sudo for that).
+# Debian's chromium first if it is missing; needs root or sudo for that), then
+# scripts/check-guide.py (links of the docs, the user guide's examples).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -31,3 +32,7 @@ mkdir -p target/browser-test
 cp "$report_dir"/browser-*.png target/browser-test/ 2>/dev/null || true
 echo "browser test artifacts: target/browser-test/"
 echo "browser: 1 passed, 0 failed"
+
+# The user guide: every link of the README and docs/ resolves, and every
+# example of docs/guide/ runs (the Python ones with the wheel just tested).
+python3 scripts/check-guide.py "$cli" --python "$target/pyenv-test/bin/python"

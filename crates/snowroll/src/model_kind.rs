@@ -2,7 +2,7 @@
 //! [`ModelKind`], its serde and clap spellings, [`ModelKind::id`],
 //! [`ModelKind::alias`], [`ModelKind::equation`],
 //! [`ModelKind::description`] and [`ModelKind::is_turn_model`] are all
-//! generated. The README's model table is checked against it by a test.
+//! generated. The user guide's model table (docs/guide/running.md) is checked against it by a test.
 //!
 //! This module depends on nothing else in the crate, so the output schema
 //! ([`Trajectory`](crate::Trajectory)) can name a model without depending on
@@ -223,8 +223,8 @@ mod tests {
     }
 
     #[test]
-    fn readme_lists_every_model_as_the_table_does() {
-        let readme = include_str!("../../../README.md");
+    fn user_guide_lists_every_model_as_the_table_does() {
+        let readme = include_str!("../../../docs/guide/running.md");
         let rows: Vec<(&str, &str)> = readme
             .lines()
             .filter_map(|l| {
@@ -239,7 +239,7 @@ mod tests {
         let want: Vec<(&str, &str)> = MODEL_TABLE.iter().map(|m| (m.id, m.alias)).collect();
         assert_eq!(
             rows, want,
-            "README's model table (id | alias) differs from MODEL_TABLE"
+            "the user guide's model table (docs/guide/running.md: id | alias) differs from MODEL_TABLE"
         );
     }
 }
