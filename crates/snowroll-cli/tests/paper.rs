@@ -42,6 +42,7 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
             "report.html references {external}"
         );
     }
+    assert_no_source_text(&html);
     let claims: Value =
         serde_json::from_str(&fs::read_to_string(out.join("claims.json")).unwrap()).unwrap();
     let text = claims.to_string();
@@ -82,6 +83,63 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
     for entry in fs::read_dir(&out).unwrap() {
         let name = entry.unwrap().file_name().to_string_lossy().into_owned();
         assert!(!name.ends_with(".tmp") && !name.starts_with('.'), "{name}");
+    }
+}
+
+/// The text a reader sees in `html`: no `<script>`, `<style>` or `<code>`
+/// element, no tag, entities as they are.
+fn visible_text(html: &str) -> String {
+    let mut text = html.to_string();
+    for element in ["script", "style", "code"] {
+        let (open, close) = (format!("<{element}"), format!("</{element}>"));
+        while let Some(start) = text.find(&open) {
+            let end = text[start..]
+                .find(&close)
+                .map_or(text.len(), |e| start + e + close.len());
+            text.replace_range(start..end, " ");
+        }
+    }
+    let mut out = String::with_capacity(text.len());
+    let mut in_tag = false;
+    for c in text.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' if in_tag => in_tag = false,
+            _ if !in_tag => out.push(c),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// Issue 22, item 3: no source text in the page. No backtick (code is set
+/// in `<code>`), no rustdoc link, no "issue N", no ASCII notation such as
+/// `b^2`, `r_{k}` or a one-letter name's subscript `I_C` (the page writes
+/// b², rₖ, I<sub>C</sub>).
+fn assert_no_source_text(html: &str) {
+    let text = visible_text(html);
+    let chars: Vec<char> = text.chars().collect();
+    let around = |i: usize| -> String {
+        chars[i.saturating_sub(40)..(i + 40).min(chars.len())]
+            .iter()
+            .collect()
+    };
+    for (i, w) in chars.windows(3).enumerate() {
+        let word = |c: char| c.is_alphanumeric() || c == '_' || c == '.';
+        let bad = w[0] == '`'
+            || (w[0] == '[' && w[1] == '`')
+            || (matches!(w[0], '^' | '_') && matches!(w[1], '(' | '{'))
+            || (w[0] == '^' && w[1].is_ascii_digit())
+            || (w[1] == '_'
+                && w[0].is_ascii_alphabetic()
+                && (i == 0 || !word(chars[i - 1]))
+                && w[2].is_ascii_alphanumeric()
+                && !chars.get(i + 3).is_some_and(|&c| word(c)));
+        assert!(!bad, "source text in the report: …{}…", around(i));
+    }
+    for n in 0..100 {
+        let issue = format!("issue {n} ");
+        assert!(!text.contains(&issue), "the report names {issue}");
     }
 }
 

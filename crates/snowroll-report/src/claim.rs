@@ -304,7 +304,7 @@ impl Tally {
 }
 
 /// What "every verdict as expected" means, one sentence for the report.
-pub const EXPECTATION_NOTE: &str = "“As expected” means that each verdict equals the one recorded for its claim in the program's claim table (`report::CLAIMS`, field `expected`); the test suite (`tests/claims.rs`) and `snowroll paper --strict` fail when any verdict differs, and a claim is marked refuted only when its check also measured what holds instead.";
+pub const EXPECTATION_NOTE: &str = "“As expected” means that each verdict equals the one recorded for its claim in the program's table of claims; the program's tests and `snowroll paper --strict` fail when any verdict differs, and a claim is marked refuted only when its check also measured what holds instead.";
 
 #[cfg(test)]
 mod tests {

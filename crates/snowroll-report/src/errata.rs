@@ -10,7 +10,6 @@
 use std::fmt::Write as _;
 
 use super::markup::esc;
-use super::notation;
 
 /// The errata, compiled in.
 const ERRATA_MD: &str = include_str!("../../../docs/errata.md");
@@ -69,18 +68,9 @@ pub(super) fn link_citations(escaped: &str) -> String {
     out
 }
 
-/// Inline markup of the errata: `code` spans; everything else is prose in
-/// the report's one notation ([`notation::prettify_html`]).
+/// Inline markup of the errata: the report's prose ([`crate::markup::prose`]).
 fn inline(text: &str) -> String {
-    let mut out = String::new();
-    for (i, piece) in text.split('`').enumerate() {
-        if i % 2 == 1 {
-            let _ = write!(out, "<code>{}</code>", esc(piece));
-        } else {
-            out.push_str(&notation::prettify_html(piece, esc));
-        }
-    }
-    out
+    crate::markup::prose(text)
 }
 
 /// Whether `line` is a pipe table's separator row (`|---|:--:|`): only

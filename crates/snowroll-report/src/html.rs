@@ -188,8 +188,12 @@ fn figure_links(id: ClaimId, figures: &[Figure]) -> String {
 fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
     let tally = Tally::of(claims);
     h.push_str("<section id=\"claims\">\n<h2>Claims of the note</h2>\n");
-    let _ = writeln!(h, "<p class=\"tally\">{}</p>", esc(&tally.sentence()));
-    let _ = writeln!(h, "<p class=\"expectation\">{}</p>", esc(EXPECTATION_NOTE));
+    let _ = writeln!(h, "<p class=\"tally\">{}</p>", prose(&tally.sentence()));
+    let _ = writeln!(
+        h,
+        "<p class=\"expectation\">{}</p>",
+        prose(EXPECTATION_NOTE)
+    );
     h.push_str(
         "<p class=\"legend\"><span class=\"verdict holds\">✓ holds</span> \
          <span class=\"verdict corrected\">✎ holds after correction</span> \
@@ -224,13 +228,13 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
             id = esc(c.id.as_str()),
             class = r.verdict.class(),
             ok = r.as_expected(),
-            paper = esc(c.paper_ref),
+            paper = prose(c.paper_ref),
             statement = prose(c.statement),
             method = prose(c.method),
             tol = prose(&c.tolerances_text()),
             measured = prose(&r.measured),
             symbol = r.verdict.symbol(),
-            label = link_citations(&esc(&r.verdict.label())),
+            label = link_citations(&prose(&r.verdict.label())),
             evidence = link_citations(&prose(&r.evidence)),
             figures = figure_links(c.id, figures),
         );
@@ -328,7 +332,7 @@ fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
              <a href=\"figures/{name}.png\">PNG</a>, <a href=\"data/{name}.csv\">data (CSV)</a>. \
              {prov}</span></figcaption>\n</figure>",
             num = i + 1,
-            title = esc(&fig.chart.title),
+            title = prose(&fig.chart.title),
             caption = prose(&fig.caption),
             prov = esc(&prov),
         );

@@ -9,7 +9,7 @@
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 
-use super::markup::esc;
+use super::markup::{esc, prose};
 use super::ClaimId;
 use snowroll::models::{as_fraction, Coefficients, ModelKind};
 
@@ -201,11 +201,11 @@ pub(super) fn intro_section(h: &mut String) {
              <td>{eq}</td><td>{desc}; {validity}</td><td>{terminal}</td></tr>",
             id = esc(kind.id()),
             alias = esc(kind.alias()),
-            note = esc(kind.equation()),
-            eq = esc(&equation_of_motion(kind)),
-            desc = esc(kind.description()),
-            validity = esc(kind.validity().statement),
-            terminal = esc(&terminal_text(kind)),
+            note = prose(kind.equation()),
+            eq = prose(&equation_of_motion(kind)),
+            desc = prose(kind.description()),
+            validity = prose(kind.validity().statement),
+            terminal = prose(&terminal_text(kind)),
         );
     }
     h.push_str("</tbody></table></div>\n");

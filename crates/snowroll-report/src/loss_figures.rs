@@ -322,7 +322,7 @@ fn with_speed_runs(
 }
 
 /// Legend entry of the closed-form terminal velocity.
-const VT_NAME: &str = "snowless with drag: closed-form v_t";
+const VT_NAME: &str = "snowless with drag: closed-form vₜ";
 
 #[cfg(test)]
 mod tests {

@@ -2,9 +2,21 @@
 
 use crate::notation;
 
-/// Prose of the report, in its one notation ([`notation::prettify_html`]), escaped.
+/// Prose of the report, escaped: `code` spans as `<code>` elements (no
+/// backtick reaches the page), the rest in the report's one notation
+/// ([`notation::prettify_html`]).
 pub(crate) fn prose(s: &str) -> String {
-    notation::prettify_html(s, esc)
+    let mut out = String::with_capacity(s.len() + 16);
+    for (i, piece) in s.split('`').enumerate() {
+        if i % 2 == 1 {
+            out.push_str("<code>");
+            out.push_str(&esc(piece));
+            out.push_str("</code>");
+        } else {
+            out.push_str(&notation::prettify_html(piece, esc));
+        }
+    }
+    out
 }
 
 /// Escapes text for HTML element content and attribute values.
@@ -21,4 +33,17 @@ pub(crate) fn esc(s: &str) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn prose_sets_code_spans_and_notation() {
+        assert_eq!(
+            prose("run `snowroll models` for I_C < 1e-3"),
+            "run <code>snowroll models</code> for I<sub>C</sub> &lt; 10⁻³"
+        );
+    }
 }

@@ -194,6 +194,7 @@ fn prettify_plain(text: &str, marks: bool) -> String {
     let mut i = 0;
     while i < chars.len() {
         let found = group_at(&chars, i, marks)
+            .or_else(|| subscript_name_at(&chars, i, marks))
             .or_else(|| superscript_run_at(&chars, i))
             .or_else(|| number_at(&chars, i));
         if let Some((pretty, next)) = found {
@@ -248,6 +249,44 @@ fn group_at(chars: &[char], i: usize, marks: bool) -> Option<(String, usize)> {
         return Some((out, i + len + 3));
     }
     None
+}
+
+/// The longest subscript written without braces: `I_C`, `x_cm`, `v_end`.
+const NAME_SUBSCRIPT_MAX: usize = 3;
+
+/// `_C`, `_cm`, `_end` at `i` after a one-letter name (`I_C`, `v_end`, and
+/// `dI_C` for a derivative): the subscript in Unicode where every character
+/// has a form, else (with `marks`) between marks for `<sub>`; else `None`.
+/// A name of more letters (`mass_kg`), a longer subscript or a second
+/// underscore (`v_m_s`, `a_over_g`) is an identifier, left as it is; write
+/// identifiers in backticks.
+fn subscript_name_at(chars: &[char], i: usize, marks: bool) -> Option<(String, usize)> {
+    if chars[i] != '_' || i == 0 || !chars[i - 1].is_ascii_alphabetic() {
+        return None;
+    }
+    let starts_word = |j: usize| j == 0 || !is_word(chars[j - 1]);
+    let name_alone = starts_word(i - 1) || (i >= 2 && chars[i - 2] == 'd' && starts_word(i - 2));
+    let len = chars[i + 1..]
+        .iter()
+        .take_while(|c| c.is_ascii_alphanumeric())
+        .count();
+    let end = i + 1 + len;
+    let ends_word = match chars.get(end) {
+        None => true,
+        Some('_') => false,
+        Some('.') => !chars
+            .get(end + 1)
+            .is_some_and(|c| c.is_ascii_alphanumeric()),
+        Some(c) => !c.is_ascii_alphanumeric(),
+    };
+    if !name_alone || len == 0 || len > NAME_SUBSCRIPT_MAX || !ends_word {
+        return None;
+    }
+    let inner: String = chars[i + 1..end].iter().collect();
+    if let Some(mapped) = all_in(&inner, subscript_char) {
+        return Some((mapped, end));
+    }
+    marks.then(|| (format!("{SUB_OPEN}{inner}{SUB_CLOSE}"), end))
 }
 
 /// ^−7/3, ^2, ^−p at `i`: the run of characters that have a superscript, in
@@ -372,8 +411,14 @@ mod tests {
         assert_eq!(prettify("∝ r^−p, b^2 terms"), "∝ r⁻ᵖ, b² terms");
         assert_eq!(prettify("over [-0.0000, 0.6667]"), "over [0.0000, 0.6667]");
         assert_eq!(prettify("a = -0.25 G"), "a = −0.25 G");
-        // Words, identifiers and code stay as they are.
-        assert_eq!(prettify("eq32+36 and x_m, v2e3"), "eq32+36 and x_m, v2e3");
+        // A one-letter name's subscript is notation; words, identifiers
+        // (more letters, a second underscore) and code stay as they are.
+        assert_eq!(prettify("r_k and x_n."), "rₖ and xₙ.");
+        assert_eq!(
+            prettify("eq32+36 and mass_kg, v_m_s, a_over_g, v2e3"),
+            "eq32+36 and mass_kg, v_m_s, a_over_g, v2e3"
+        );
+        assert_eq!(prettify("`x_m` and x_m"), "`x_m` and xₘ");
         assert_eq!(
             prettify("run `--rtol 1e-10` then"),
             "run `--rtol 1e-10` then"
@@ -389,7 +434,12 @@ mod tests {
         // K has no Unicode subscript: the group is set in <sub>, text escaped.
         assert_eq!(prettify_html("r_(K−1) < r", esc), "r<sub>K−1</sub> &lt; r");
         assert_eq!(prettify_html("e^{a<b}", esc), "e<sup>a&lt;b</sup>");
+        assert_eq!(
+            prettify_html("dI_C/dt, x_cm, v_end, c_rr", esc),
+            "dI<sub>C</sub>/dt, x<sub>cm</sub>, v<sub>end</sub>, cᵣᵣ"
+        );
         // Plain prettify leaves what it cannot map as it was.
+        assert_eq!(prettify("I_C"), "I_C");
         assert_eq!(prettify("r_(K−1)"), "r_(K−1)");
         assert_eq!(prettify_html("`x_{k}` stays", esc), "`x_{k}` stays");
     }

@@ -84,7 +84,7 @@ model_table! {
         "circular log, torque about the contact line (§2.1.2)";
     /// §2.2: energy conservation with the b² terms, eq. (14).
     Energy: "energy", "eq14", "eq. (14)", false,
-        "circular log, energy conservation with b^2 terms (§2.2)";
+        "circular log, energy conservation with b² terms (§2.2)";
     /// §2.2: eq. (14) without the b² terms, eq. (15).
     EnergyThin: "energy-thin", "eq15", "eq. (15)", false,
         "circular log, energy conservation to first order in b (§2.2)";

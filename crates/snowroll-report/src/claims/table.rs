@@ -364,7 +364,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     ClaimCheck {
         claim: Claim {
             id: ClaimId::SlipMuMin,
-            paper_ref: "issue 10 (App. A, §2.4, fn. 4)",
+            paper_ref: "beyond the note: App. A, §2.4, fn. 4",
             statement: "The smallest coefficient of static friction that keeps a model rolling over the default run is tan α/3 for the snowless cylinder, tan α/(3 + b tan α/(π r0)) for eq. (32) and (G − a₀)/(C + b a₀/(2π r0)) for the lift models (needed at rest), and for eqs. (4), (6) the closed-form F/N at the end of the run (it grows towards (2/5) tan α and (1/2) tan α).",
             method: "max over every step of the default run (from rest, 100 s) of |F|/N, F and N from the momentum balance; against the closed forms of `docs/contact-forces.md` §5.1–§5.2 (u = v² from fn. 4's solution at the run's final radius)",
             tolerances: &[MU_AT_REST, MU_AT_END],
@@ -375,7 +375,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     ClaimCheck {
         claim: Claim {
             id: ClaimId::SnowballFiveSevenths,
-            paper_ref: "issue 11; App. A for a ball",
+            paper_ref: "beyond the note: App. A for a ball",
             statement: "A uniform ball (I = (2/5) M r²) rolling without slipping on a bare slope accelerates at (5/7) g sin α.",
             method: "the snowless model with shape = sphere on the default slope: a/G at every sample and x(10 s) against 5Gt²/14",
             tolerances: &[FIVE_SEVENTHS],
@@ -386,7 +386,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
     ClaimCheck {
         claim: Claim {
             id: ClaimId::SnowballTerminalFractions,
-            paper_ref: "issue 11; §2 for a ball (docs/snowball-and-losses.md §1.3)",
+            paper_ref: "beyond the note: §2 for a ball (`docs/snowball-and-losses.md` §1.3)",
             statement: "The always-round snowball (swath 2r) tends to a/(g sin α) = 1/6 (torque about the centre, eq. (4)'s balance), 1/7 (contact line, eq. (6)), 2/7 (energy, eqs. (14), (15), (32), (32)+(36)), 5/28 (eq. (21) as printed).",
             method: "each circular model with shape = sphere from rest to x = 5e5 m; a/G against the derived fraction plus the derived 1/r approach of the models with the lift term",
             tolerances: &[BALL_TERMINAL_LIMIT],

@@ -27,6 +27,12 @@ pub enum Method {
     /// model that does not come near a stall, rtol ≥ [`FAST_MIN_RTOL`]),
     /// the ODE elsewhere.
     #[default]
+    #[cfg_attr(
+        feature = "clap",
+        value(
+            help = "The closed form of the circular models where it applies (a run that does not come near a stall, --rtol at least 1e-12), the ODE elsewhere"
+        )
+    )]
     Auto,
     /// The model's own `simulate` for every row (the ODE for the circular
     /// models): for comparisons and benchmarks.
@@ -150,4 +156,21 @@ pub fn run_chunks<E: From<ParamError>>(
         start += n;
     }
     Ok(())
+}
+
+#[cfg(all(test, feature = "clap"))]
+mod help_tests {
+    use super::*;
+    use clap::ValueEnum;
+
+    /// The `--method auto` help quotes the fast path's smallest rtol: it must
+    /// be the constant the runner uses.
+    #[test]
+    fn auto_help_quotes_the_fast_paths_smallest_rtol() {
+        let help = Method::Auto
+            .to_possible_value()
+            .and_then(|v| v.get_help().map(ToString::to_string))
+            .unwrap_or_default();
+        assert!(help.contains(&format!("{FAST_MIN_RTOL:e}")), "{help}");
+    }
 }

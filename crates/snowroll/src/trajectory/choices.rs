@@ -59,6 +59,12 @@ pub enum OnHop {
     /// Stop with [`StopReason::Hop`] (default): past N = 0 the log flies and
     /// the rolling models no longer apply.
     #[default]
+    #[cfg_attr(
+        feature = "clap",
+        value(
+            help = "Stop with reason `hop` (default): past N = 0 the log flies and the rolling models no longer apply"
+        )
+    )]
     Stop,
     /// Go on as if contact were kept (N < 0 would have to pull the log onto
     /// the snow): for exploring the model past its validity, e.g. the
