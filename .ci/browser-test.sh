@@ -69,7 +69,7 @@ run_chromium() {
 }
 
 echo "browser-test: $chromium on $page"
-run_chromium dom --window-size=1280,900 --dump-dom >"$work/dom.html" \
+run_chromium dom --window-size=1400,900 --dump-dom >"$work/dom.html" \
     || fail "chromium exited with an error while loading the page (see below)
 $(tail -20 "$work/dom.log")"
 [ -s "$work/dom.html" ] || fail "chromium returned an empty DOM"
@@ -102,7 +102,7 @@ timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
     "file://$work/phone.html" >"$work/phone-dom.html" 2>"$work/phonedom.log" \
     || fail "chromium exited with an error while loading the page in a phone-wide frame"
 
-run_chromium desktop --window-size=1280,2400 --screenshot="$report_dir/browser-desktop.png" >/dev/null \
+run_chromium desktop --window-size=1400,2400 --screenshot="$report_dir/browser-desktop.png" >/dev/null \
     || fail "desktop screenshot failed: $(tail -5 "$work/desktop.log")"
 run_chromium phone --window-size=400,1800 --screenshot="$report_dir/browser-phone.png" >/dev/null \
     || fail "phone screenshot failed: $(tail -5 "$work/phone.log")"

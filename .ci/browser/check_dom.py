@@ -36,6 +36,9 @@ class Dom(html.parser.HTMLParser):
         self.claim_supports = {}  # claim id -> figure links and data files linked from its row
         self.latexisms = []  # text outside code with _{ ^{ ^( _(
         self.table_rows = []  # (id or None, texts of the cells) of every table row
+        self.sections = []  # ids of the <section> elements, in order
+        self.findings = []  # data-claim of each li of #findings
+        self.claim_details = {}  # claim row id -> list of its <details>' open flags
         self._row = None
         self._status_id = None
         self._verdict_depth = None
@@ -65,6 +68,14 @@ class Dom(html.parser.HTMLParser):
             self.hrefs.append((a["href"][1:], owner))
             if owner and owner.startswith("fig-") and a["href"].startswith("#claim-"):
                 self.figure_supports.setdefault(owner, []).append(a["href"][len("#claim-"):])
+        if tag == "section":
+            self.sections.append(a.get("id"))
+        if tag == "li" and "data-claim" in a and self._inside(lambda t, x: x.get("id") == "findings"):
+            self.findings.append(a["data-claim"])
+        if tag == "details":
+            row = next((x["id"] for t, x in reversed(self.stack) if t == "tr" and "id" in x), None)
+            if row and row.startswith("claim-"):
+                self.claim_details.setdefault(row, []).append("open" in a)
         if tag == "tr" and a.get("id", "").startswith("model-"):
             self.model_rows += 1
         if tag == "html":
@@ -138,6 +149,15 @@ def main():
     want_claims = int(dom.body_attrs.get("data-claims", "-1"))
     check(want_claims >= 1 and len(dom.claim_rows) == want_claims,
           f"claims table has {len(dom.claim_rows)} rows, page declares {want_claims}")
+    rows = [r.get("id", "") for r in dom.claim_rows]
+    check(dom.sections[:1] == ["findings"],
+          f"the page opens with its findings (first section: {dom.sections[:1]})")
+    check(sorted("claim-" + c for c in dom.findings) == sorted(rows)
+          and all(("claim-" + c, "findings") in dom.hrefs for c in dom.findings),
+          f"the findings give one line per claim, linked to its row ({len(dom.findings)} lines)")
+    folded = [r for r in rows if dom.claim_details.get(r) == [False]]
+    check(len(folded) == len(rows),
+          f"each claim's checking folds out of its row, closed at first ({len(folded)} of {len(rows)})")
     bad = [t for t in dom.verdict_texts if not any(t.endswith(w) or w + " (" in t for w in VERDICT_WORDS)]
     check(len(dom.verdict_texts) == len(dom.claim_rows) and not bad,
           f"every claim shows a verdict in words ({len(dom.verdict_texts)} found; unreadable: {bad})")
@@ -209,7 +229,7 @@ def main():
                 ok = False
             check(ok, f"{where}: animation {prefix}'s distance labels do not overlap (narrowest gap: {gap} px)")
 
-    label_gap_check(dom.root_attrs, "at 1280 px")
+    label_gap_check(dom.root_attrs, "at 1400 px")
 
     raw = (report_dir / "report.html").read_text(encoding="utf-8")
     external = re.findall(r"""(?:src|href)\s*=\s*["']?(?:https?:)?//[^"'\s>]+|url\(\s*["']?(?:https?:)?//[^)]+\)|@import|<link\b""", raw)

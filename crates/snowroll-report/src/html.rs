@@ -13,6 +13,7 @@
 use std::fmt::Write as _;
 
 use super::errata::{errata_section, link_citations};
+use super::findings::{headline, short_measured, Group};
 use super::intro::intro_section;
 use super::markup::{esc, prose};
 use super::CLAIMS_CSV;
@@ -40,6 +41,7 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
     let mut h = String::with_capacity(64 * 1024 + svgs.iter().map(String::len).sum::<usize>());
     page_head(&mut h, report);
     page_top(&mut h, report);
+    findings_section(&mut h, &report.claims);
     intro_section(&mut h);
     claims_section(&mut h, &report.claims, &report.figures);
     for (i, t) in report.tables.iter().enumerate() {
@@ -102,7 +104,9 @@ fn page_top(h: &mut String, report: &Report) {
         esc(&m.title),
         esc(&m.software)
     );
-    h.push_str("<nav><a href=\"#problem\">The problem</a><a href=\"#claims\">Claims</a>");
+    h.push_str(
+        "<nav><a href=\"#findings\">Findings</a><a href=\"#problem\">The problem</a><a href=\"#claims\">Claims</a>",
+    );
     for (i, t) in report.tables.iter().enumerate() {
         let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
     }
@@ -185,6 +189,52 @@ fn figure_links(id: ClaimId, figures: &[Figure]) -> String {
     )
 }
 
+/// "Findings": the tally, then one line per claim (its verdict, its
+/// headline linked to its row of the claims table, the measured value),
+/// grouped: refuted, corrected (naming the erratum), beyond the note, holds.
+fn findings_section(h: &mut String, claims: &[ClaimResult]) {
+    h.push_str("<section id=\"findings\">\n<h2>Findings</h2>\n");
+    let _ = writeln!(
+        h,
+        "<p class=\"tally\">{}</p>",
+        prose(&Tally::of(claims).sentence())
+    );
+    for group in Group::ALL {
+        let rows: Vec<&ClaimResult> = claims.iter().filter(|r| Group::of(r) == group).collect();
+        if rows.is_empty() {
+            continue;
+        }
+        let _ = writeln!(h, "<h3>{}</h3>\n<ul class=\"findings\">", group.title());
+        for r in rows {
+            let erratum = match r.verdict {
+                super::Verdict::HoldsAfterCorrection(e) => {
+                    format!(
+                        " <span class=\"erratum\">({})</span>",
+                        link_citations(&prose(e))
+                    )
+                }
+                _ => String::new(),
+            };
+            let _ = writeln!(
+                h,
+                "<li data-claim=\"{id}\"><span class=\"verdict {class}\" title=\"{label}\">{symbol}</span> \
+                 <a href=\"#claim-{id}\">{headline}</a>{erratum}: <span class=\"measured\">{measured}</span></li>",
+                id = esc(r.claim.id.as_str()),
+                class = r.verdict.class(),
+                label = esc(r.verdict.class()),
+                symbol = r.verdict.symbol(),
+                headline = prose(headline(r.claim.id)),
+                measured = prose(&short_measured(&r.measured)),
+            );
+        }
+        h.push_str("</ul>\n");
+    }
+    h.push_str("</section>\n");
+}
+
+/// "Claims of the note": one line per claim (where in the note, statement,
+/// the measured value, verdict); how it was checked, the tolerances, the
+/// whole measurement and the evidence fold out of the statement.
 fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
     let tally = Tally::of(claims);
     h.push_str("<section id=\"claims\">\n<h2>Claims of the note</h2>\n");
@@ -202,8 +252,8 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
     );
     h.push_str(
         "<div class=\"table-wrap\"><table id=\"claims-table\" class=\"claims\">\n<thead><tr>\
-         <th scope=\"col\">Claim</th><th scope=\"col\">Statement</th><th scope=\"col\">How checked</th>\
-         <th scope=\"col\">Measured</th><th scope=\"col\">Verdict</th><th scope=\"col\">Evidence</th>\
+         <th scope=\"col\">Claim</th><th scope=\"col\">Statement</th>\
+         <th scope=\"col\">Measured</th><th scope=\"col\">Verdict</th>\
          </tr></thead>\n<tbody>\n",
     );
     for r in claims {
@@ -220,11 +270,11 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
             h,
             "<tr id=\"claim-{id}\" data-verdict=\"{class}\" data-as-expected=\"{ok}\">\
              <td data-label=\"Claim\"><strong>{paper}</strong><br><code>{id}</code></td>\
-             <td data-label=\"Statement\">{statement}</td>\
-             <td data-label=\"How checked\">{method}<br><span class=\"tol\">tolerances: {tol}</span></td>\
-             <td data-label=\"Measured\">{measured}</td>\
-             <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td>\
-             <td data-label=\"Evidence\">{evidence}{figures}</td></tr>",
+             <td data-label=\"Statement\">{statement}<details><summary>How it was checked</summary>\
+             <p>{method}</p><p class=\"tol\">Tolerances: {tol}</p><p>Measured: {measured}</p>\
+             <p>{evidence}{figures}</p></details></td>\
+             <td data-label=\"Measured\">{short}</td>\
+             <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td></tr>",
             id = esc(c.id.as_str()),
             class = r.verdict.class(),
             ok = r.as_expected(),
@@ -233,6 +283,7 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
             method = prose(c.method),
             tol = prose(&c.tolerances_text()),
             measured = prose(&r.measured),
+            short = prose(&short_measured(&r.measured)),
             symbol = r.verdict.symbol(),
             label = link_citations(&prose(&r.verdict.label())),
             evidence = link_citations(&prose(&r.evidence)),

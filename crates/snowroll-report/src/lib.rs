@@ -42,6 +42,7 @@ mod contact;
 mod document;
 mod errata;
 mod files;
+mod findings;
 mod html;
 mod intro;
 mod loss_figures;

@@ -3,6 +3,7 @@
 
 use std::fmt::Write as _;
 
+use super::findings::{headline, short_measured, Group};
 use super::CLAIMS_CSV;
 use super::{notation, Report, Tally, EXPECTATION_NOTE};
 
@@ -30,12 +31,14 @@ pub(super) fn render(report: &Report) -> String {
         m.software
     );
 
+    findings_section(&mut md, report);
     problem_section(&mut md);
     claims_section(&mut md, report);
     tables_section(&mut md, report);
     super::losses_section::markdown(&mut md, report);
     animations_section(&mut md, report);
     figures_section(&mut md, report);
+    checks_section(&mut md, report);
     parameters_section(&mut md, report);
     md
 }
@@ -82,24 +85,79 @@ fn problem_section(md: &mut String) {
     md.push('\n');
 }
 
-/// "Claims of the note": the tally and one row per claim, linking the
-/// figures that support it.
+/// "Findings": the tally, then one line per claim, grouped as in the HTML
+/// page ([`Group`]), each linked to its row of the claims table.
+fn findings_section(md: &mut String, report: &Report) {
+    md.push_str("## Findings\n\n");
+    let _ = writeln!(md, "{}\n", Tally::of(&report.claims).sentence());
+    for group in Group::ALL {
+        let rows: Vec<_> = report
+            .claims
+            .iter()
+            .filter(|r| Group::of(r) == group)
+            .collect();
+        if rows.is_empty() {
+            continue;
+        }
+        let _ = writeln!(md, "### {}\n", group.title());
+        for r in rows {
+            let erratum = match r.verdict {
+                super::Verdict::HoldsAfterCorrection(e) => format!(" ({})", cell(e)),
+                _ => String::new(),
+            };
+            let _ = writeln!(
+                md,
+                "- {} [{}](#claim-{}){erratum}: {}",
+                r.verdict.symbol(),
+                cell(headline(r.claim.id)),
+                r.claim.id.as_str(),
+                cell(&short_measured(&r.measured)),
+            );
+        }
+        md.push('\n');
+    }
+}
+
+/// "Claims of the note": the tally and one line per claim (where in the
+/// note, statement, the measured value, verdict); how each was checked is
+/// in the appendix ([`checks_section`]).
 fn claims_section(md: &mut String, report: &Report) {
     md.push_str("## Claims of the note\n\n");
     let _ = writeln!(
         md,
-        "{} {}\n",
+        "{} {} How each claim was checked, with its tolerances and evidence, folds out in \
+         [How each claim was checked](#how-each-claim-was-checked).\n",
         Tally::of(&report.claims).sentence(),
         EXPECTATION_NOTE
     );
-    md.push_str("| Claim | Note | Statement | How checked | Measured | Verdict | Evidence |\n");
-    md.push_str("|---|---|---|---|---|---|---|\n");
+    md.push_str("| Claim | Note | Statement | Measured | Verdict |\n");
+    md.push_str("|---|---|---|---|---|\n");
     for r in &report.claims {
         let c = r.claim;
         let mut verdict = format!("{} {}", r.verdict.symbol(), r.verdict.label());
         if !r.as_expected() {
             let _ = write!(verdict, " (expected: {})", c.expected.label());
         }
+        let _ = writeln!(
+            md,
+            "| <a id=\"claim-{id}\"></a>`{id}` | {} | {} | {} | **{}** |",
+            cell(c.paper_ref),
+            cell(c.statement),
+            cell(&short_measured(&r.measured)),
+            cell(&verdict),
+            id = c.id.as_str(),
+        );
+    }
+    md.push('\n');
+}
+
+/// The appendix: for each claim, a collapsible section with how it was
+/// checked, the tolerances, the whole measurement, the evidence and the
+/// figures that support it.
+fn checks_section(md: &mut String, report: &Report) {
+    md.push_str("## How each claim was checked\n\n");
+    for r in &report.claims {
+        let c = r.claim;
         let figures: Vec<String> = report
             .figures
             .iter()
@@ -120,15 +178,15 @@ fn claims_section(md: &mut String, report: &Report) {
         };
         let _ = writeln!(
             md,
-            "| `{}` | {} | {} | {} (tolerances: {}) | {} | **{}** | {}{see} Measured values: [data/{CLAIMS_CSV}](data/{CLAIMS_CSV}). |",
-            cell(c.id.as_str()),
-            cell(c.paper_ref),
-            cell(c.statement),
+            "<details><summary><code>{id}</code>: {}</summary>\n\n\
+             {}\n\nTolerances: {}\n\nMeasured: {}\n\n{}{see} Measured values: \
+             [data/{CLAIMS_CSV}](data/{CLAIMS_CSV}).\n\n</details>\n",
+            cell(headline(c.id)),
             cell(c.method),
             cell(&c.tolerances_text()),
             cell(&r.measured),
-            cell(&verdict),
             cell(&r.evidence),
+            id = c.id.as_str(),
         );
     }
 }

@@ -251,8 +251,8 @@ fn group_at(chars: &[char], i: usize, marks: bool) -> Option<(String, usize)> {
     None
 }
 
-/// The longest subscript written without braces: `I_C`, `x_cm`, `v_end`.
-const NAME_SUBSCRIPT_MAX: usize = 3;
+/// The longest subscript written without braces: `I_C`, `x_cm`, `v_Loney`.
+const NAME_SUBSCRIPT_MAX: usize = 6;
 
 /// `_C`, `_cm`, `_end` at `i` after a one-letter name (`I_C`, `v_end`, and
 /// `dI_C` for a derivative): the subscript in Unicode where every character

@@ -492,12 +492,18 @@ fn markdown_has_the_claims_table_and_links_every_figure() {
     let md = small_report().to_markdown();
     assert!(md.contains(&format!("snowroll {VERSION}")));
     assert!(md.contains(
-        "| `snowless-limit` | App. A | A &lt;b&gt;bold&lt;/b&gt; claim &amp; more \\| with a pipe."
+        "| <a id=\"claim-snowless-limit\"></a>`snowless-limit` | App. A | A &lt;b&gt;bold&lt;/b&gt; claim &amp; more \\| with a pipe."
     ));
     assert!(md.contains("**✗ refuted (expected: holds after correction (docs/errata.md (21)))**"));
     // The tolerances shown are the checks' own, with their reasons, and the
     // report says what "as expected" means, in the report's one notation.
-    assert!(md.contains("(tolerances: q: relative 10⁻⁸ (why))"));
+    assert!(md.contains("Tolerances: q: relative 10⁻⁸ (why)"));
+    // The findings open the report, one line per claim linked to its row;
+    // how each was checked folds out in the appendix.
+    let findings = md.find("## Findings").unwrap();
+    assert!(findings < md.find("## The problem").unwrap());
+    assert!(md.contains("](#claim-snowless-limit)"));
+    assert!(md.contains("<details><summary><code>snowless-limit</code>"));
     assert!(md.contains(snowroll_report::EXPECTATION_NOTE));
     // Extra tables, escaped like the claims.
     assert!(md.contains("| 1 | &lt;2&gt; |"));

@@ -1,0 +1,158 @@
+//! The report's opening: what the program found, one line per claim,
+//! grouped so that a physicist reads the refutations and corrections first.
+//!
+//! Each claim has a headline ([`headline`]): the finding in one sentence,
+//! with its closed-form number where there is one. The line the report
+//! prints beside it is the claim's measured value ([`short_measured`]) and
+//! its verdict, so a headline never states a verdict the run did not reach.
+
+use crate::claim::{ClaimResult, Verdict};
+use crate::ClaimId;
+
+/// The finding of claim `id` in one sentence. An exhaustive match: a new
+/// claim does not compile until it has one.
+pub(crate) fn headline(id: ClaimId) -> &'static str {
+    use ClaimId::*;
+    match id {
+        CircularAnalysesDiffer => {
+            "The four circular analyses of §2 give four different equations of motion (terminal a/G = 1/5, 1/6, 1/3, 2/9)"
+        }
+        CircularAgreeAsBVanishes => "Every circular model tends to the snowless log, a = (2/3) g sin α, as b → 0",
+        LagrangianDiffersFromEnergy => {
+            "The Lagrangian eq. (21) differs from eq. (14) only because it omits ∂T/∂x; with it, the two are one equation"
+        }
+        Eq5ContactTorque => "The torque about the contact line, eq. (5), holds as d(3mrv/2)/dt",
+        LoneySolvesEq4 => "Loney's closed form (fn. 4) solves eq. (4)",
+        LoneyAccelerationCoefficient => "In Loney's acceleration the decaying term is 7bK/6, not 7bK/3",
+        LoneyLimitFifth => "Under eq. (4) the acceleration tends to g sin α / 5",
+        TerminalAccelerations => "The terminal acceleration of each circular equation, derived and simulated",
+        Eq35TerminalThird => "Under eq. (32) the acceleration tends to g sin α / 3",
+        Eq33_35TerminalArgument => "The argument of eqs. (33)–(35) for the terminal value",
+        Eq36SlowsApproach => "The lift term (36) slows the approach to G/3 from ∝ r⁻⁴ to ∝ r⁻¹",
+        Fn7StallThreshold => "A log too light for its snow never starts: the stall slope of fn. 7, in closed form",
+        Fn7StallInFirstTurn => "In the turn model a light log starts and stalls within its first turn",
+        SnowlessLimit => "Without snow every derivation gives a = (2/3) g sin α",
+        AppAMovingPoints => "Angular momentum and torque about moving points (App. A)",
+        FirstTurn58_64_69 => "Torque, energy and Lagrangian agree on the first turn (eqs. (58), (64), (69))",
+        Eq47_48AngularMomentum => "An element's velocity and the angular momentum in the first turn (eqs. (47), (48))",
+        Eq54CrossProduct => "The cross product of eq. (54) to first order in b",
+        Eq51_55AccretingBody => "The torque analysis of the accreting body (eqs. (51)–(55))",
+        Eq70MassAfterFirstTurn => "The mass after the first turn is πρl r₁² (eq. (70))",
+        MultiTurnNeverSettles => "Turn by turn the acceleration never settles: within every turn a/G swings from about 0 to 2/3",
+        MultiTurnMeanFourNinths => {
+            "The turn model's long-run mean acceleration is G/4 with the collisions (G/3 within a turn), not the 4G/9 of eq. (79)"
+        }
+        Eq78SpeedInTurnN => "The speed in turn n: v²/(π g n² b sin α) tends to 1/2, not the 1/3 of eq. (78)",
+        Eq89Collision => "The collision at the end of each turn (eq. (89)) keeps the angular momentum about the new contact",
+        CollisionPotentialJump => "The rise of the centre at a collision is a small cost that fades turn by turn",
+        Eq88EnergyBalance => "The energy balance within a turn (eqs. (80)–(88)) holds with exact mass properties",
+        Eq73TruncatesExact => "The turn equation (73) holds to first order in b/r",
+        Fn10HopThreshold => "A turn-model log hops in late turns exactly when tan α > 2 (α > 63.43°)",
+        SlipMuMin => "The smallest friction coefficient that keeps each model rolling (tan α/3 without snow)",
+        SnowballFiveSevenths => "A ball on a bare slope accelerates at (5/7) g sin α",
+        SnowballTerminalFractions => {
+            "The always-round snowball tends to a/G = 1/6 (torque about the centre), 1/7, 2/7 or 5/28"
+        }
+        TptLetterClosedForm => "The closed form of the letter in The Physics Teacher 57 (2019) is the ball's eq. (4), from 5/7 to 1/6",
+        RegimeMapBorders => "The closed-form stall and hop slopes border the simulated regime map",
+        SnowlessDragTerminalVelocity => "With air drag and no snow the log reaches the closed-form terminal velocity",
+        EnergyLedgerBalances => "With losses every joule is accounted for in the energy ledger",
+    }
+}
+
+/// Claims the note leaves open (it names the question but not the answer,
+/// or does not ask): they open the "found beyond the note" group when they hold.
+const BEYOND_THE_NOTE: [ClaimId; 10] = [
+    ClaimId::Fn10HopThreshold,
+    ClaimId::Fn7StallThreshold,
+    ClaimId::Fn7StallInFirstTurn,
+    ClaimId::SnowballTerminalFractions,
+    ClaimId::TptLetterClosedForm,
+    ClaimId::SnowballFiveSevenths,
+    ClaimId::SlipMuMin,
+    ClaimId::RegimeMapBorders,
+    ClaimId::SnowlessDragTerminalVelocity,
+    ClaimId::EnergyLedgerBalances,
+];
+
+/// The groups of the opening, in the order the report prints them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Group {
+    /// Refuted (or undecided): the note is wrong, and what holds instead.
+    Refuted,
+    /// Holds once an erratum is applied.
+    Corrected,
+    /// Holds, and answers what the note leaves open.
+    Beyond,
+    /// Holds as printed.
+    Holds,
+}
+
+impl Group {
+    /// Every group, in order.
+    pub const ALL: [Group; 4] = [
+        Group::Refuted,
+        Group::Corrected,
+        Group::Beyond,
+        Group::Holds,
+    ];
+
+    /// The group's heading.
+    pub fn title(self) -> &'static str {
+        match self {
+            Group::Refuted => "Refuted, and what holds instead",
+            Group::Corrected => "Holds after a correction (the erratum named)",
+            Group::Beyond => "Found beyond the note",
+            Group::Holds => "Holds as printed",
+        }
+    }
+
+    /// The group of a result.
+    pub fn of(r: &ClaimResult) -> Group {
+        match r.verdict {
+            Verdict::Refuted | Verdict::Inconclusive => Group::Refuted,
+            Verdict::HoldsAfterCorrection(_) => Group::Corrected,
+            Verdict::Holds if BEYOND_THE_NOTE.contains(&r.claim.id) => Group::Beyond,
+            Verdict::Holds => Group::Holds,
+        }
+    }
+}
+
+/// Longest measured text a line of the opening shows, in characters.
+const SHORT_MEASURED_MAX: usize = 140;
+
+/// The first clause of the measured value (up to its first `; `), cut to
+/// [`SHORT_MEASURED_MAX`] characters: the number a reader looks for first.
+pub(crate) fn short_measured(measured: &str) -> String {
+    let first = measured.split("; ").next().unwrap_or(measured).trim();
+    if first.chars().count() <= SHORT_MEASURED_MAX {
+        return first.to_string();
+    }
+    let cut: String = first.chars().take(SHORT_MEASURED_MAX - 1).collect();
+    format!("{}…", cut.trim_end())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_claim_has_a_one_line_headline() {
+        for id in ClaimId::ALL {
+            let h = headline(id);
+            assert!(
+                !h.is_empty() && h.len() < 200 && !h.contains('\n'),
+                "{id}: {h}"
+            );
+        }
+    }
+
+    #[test]
+    fn short_measured_keeps_the_first_clause() {
+        assert_eq!(short_measured("a = 1; b = 2"), "a = 1");
+        let long = "x".repeat(300);
+        let s = short_measured(&long);
+        assert_eq!(s.chars().count(), SHORT_MEASURED_MAX);
+        assert!(s.ends_with('…'));
+    }
+}
