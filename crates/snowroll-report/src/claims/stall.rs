@@ -212,6 +212,52 @@ fn stalls_in_first_turn(
     ))
 }
 
+/// One turn model of `fn7-stall-in-first-turn` on `base`: its threshold by
+/// bisection against `independent` (tan α*, the closed form for `turns`,
+/// the exact body integrated here for `turns-exact`) and the library's,
+/// and runs [`TURN_STALL_MARGIN`] below and above `independent` (must
+/// start, then stall in turn 0; must roll on). Returns (whether all hold,
+/// the numbers behind them, the measured text).
+fn judge_turn_model(
+    lab: &Lab,
+    kind: ModelKind,
+    base: &Scenario,
+    independent: f64,
+) -> Result<(bool, [f64; 4], String), SimError> {
+    let (b, r0) = (base.snow_depth(), base.initial_radius());
+    let margin = TURN_STALL_MARGIN.value();
+    let sim = bisect(1e-3, 60.0, |deg| {
+        Ok(!stalls_in_first_turn(lab, kind, base, deg, 1)?.0)
+    })?;
+    let library = kind
+        .stall_threshold(b, r0)
+        .map_or(f64::NAN, |t| t.slope.tan());
+    let (criterion, start, name) = if kind == ModelKind::Turns {
+        (TURN_STALL_FORMULA, TURN_START, "closed form")
+    } else {
+        (TURN_STALL_EXACT, TURN_START_EXACT, "exact body integrated")
+    };
+    // The runs bracket the independent threshold, not the bisected one.
+    let at = independent.atan().to_degrees();
+    let (stalls_below, _, a0_below) = stalls_in_first_turn(lab, kind, base, at - margin, 1)?;
+    let (stalls_above, reason_above, a0_above) =
+        stalls_in_first_turn(lab, kind, base, at + margin, 3)?;
+    let rolls_on = !stalls_above && reason_above == StopReason::Turns;
+    let sim_tan = sim.to_radians().tan();
+    let start_ok = start.accepts(a0_below, 2.0 / 3.0) && start.accepts(a0_above, 2.0 / 3.0);
+    let ok = start_ok
+        && stalls_below
+        && rolls_on
+        && TURN_STALL_LIBRARY.accepts(sim_tan, library)
+        && criterion.accepts(sim_tan, independent);
+    let part = format!(
+        "{}: α* = {sim:.6}° by bisection (library {:.6}°, {name} {at:.6}°), a(0)/G = {a0_below:.12}; {margin}° below that the log stalls in turn 0: {stalls_below}; {margin}° above it rolls on for 3 turns: {rolls_on}",
+        kind.id(),
+        library.atan().to_degrees(),
+    );
+    Ok((ok, [sim, library, a0_below, a0_above], part))
+}
+
 /// fn. 7 in §3: the turn models start at a = 2G/3 and stall inside turn 0
 /// below the threshold slope.
 pub(super) fn stall_in_first_turn(lab: &Lab) -> Result<Finding, SimError> {
@@ -231,45 +277,11 @@ pub(super) fn stall_in_first_turn(lab: &Lab) -> Result<Finding, SimError> {
     let mut numbers = vec![closed, exact, lead, corrected];
     let mut parts = Vec::new();
     let margin = TURN_STALL_MARGIN.value();
-    for kind in [ModelKind::Turns, ModelKind::TurnsExact] {
-        let sim = bisect(1e-3, 60.0, |deg| {
-            Ok(!stalls_in_first_turn(lab, kind, &base, deg, 1)?.0)
-        })?;
-        let library = kind
-            .stall_threshold(b, r0)
-            .map_or(f64::NAN, |t| t.slope.tan());
-        // The runs bracket the independent threshold, not the bisected one.
-        let (independent, criterion) = if kind == ModelKind::Turns {
-            (closed, TURN_STALL_FORMULA)
-        } else {
-            (exact, TURN_STALL_EXACT)
-        };
-        let at = independent.atan().to_degrees();
-        let (stalls_below, _, a0_below) = stalls_in_first_turn(lab, kind, &base, at - margin, 1)?;
-        let (stalls_above, reason_above, a0_above) =
-            stalls_in_first_turn(lab, kind, &base, at + margin, 3)?;
-        let rolls_on = !stalls_above && reason_above == StopReason::Turns;
-        let sim_tan = sim.to_radians().tan();
-        let start = if kind == ModelKind::Turns {
-            TURN_START
-        } else {
-            TURN_START_EXACT
-        };
-        let start_ok = start.accepts(a0_below, 2.0 / 3.0) && start.accepts(a0_above, 2.0 / 3.0);
-        ok &= start_ok
-            && stalls_below
-            && rolls_on
-            && TURN_STALL_LIBRARY.accepts(sim_tan, library)
-            && criterion.accepts(sim_tan, independent);
-        numbers.extend([sim, library, a0_below, a0_above]);
-        parts.push(format!(
-            "{}: α* = {sim:.6}° by bisection (library {:.6}°, {} {at:.6}°), a(0)/G = {a0_below:.12}; {margin}° below that the log stalls in turn 0: {}; {margin}° above it rolls on for 3 turns: {}",
-            kind.id(),
-            library.atan().to_degrees(),
-            if kind == ModelKind::Turns { "closed form" } else { "exact body integrated" },
-            stalls_below,
-            rolls_on
-        ));
+    for (kind, independent) in [(ModelKind::Turns, closed), (ModelKind::TurnsExact, exact)] {
+        let (kind_ok, kind_numbers, part) = judge_turn_model(lab, kind, &base, independent)?;
+        ok &= kind_ok;
+        numbers.extend(kind_numbers);
+        parts.push(part);
     }
     // The orders of the leading forms, on the closed form at ε and ε/10.
     let ((e1, e2), (ratio_lead, ratio_corr)) = leading_form_errors(eps);
