@@ -414,7 +414,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::RegimeMapBorders,
             paper_ref: "fn. 7, fn. 10",
             statement: "Over slope × snow depth the turn-by-turn log started from rest stalls in its first turn below the fn. 7 slope, hops within K turns above tan α_K = (1 + ε c_C)/(½ − ε c_G) (ε = b/r_(K−1)) and rolls on between: the closed forms are the borders of the regime map.",
-            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms",
+            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms typed in the check (not the library's functions)",
             tolerances: &[MAP_CELL],
             expected: Verdict::Holds,
         },
