@@ -635,3 +635,89 @@ fn energy_ledger_balances_notices_a_ledger_with_too_little_drag_work() {
     });
     changes(ClaimId::EnergyLedgerBalances, &wrong);
 }
+
+// ---- Issue 21, item 3: verdicts that a wrong model or claim flips. ----
+
+#[test]
+fn regression_21_energy_ledger_notices_a_model_that_creates_or_destroys_the_wrong_energy() {
+    // eq. (14) lifting 1 % more snow: its ledger still balances (W_model is
+    // −∫P with P from its own a), but it no longer conserves energy.
+    let wrong = lab().with_coefficients(
+        Derivation::Energy,
+        perturbed(Derivation::Energy, |c| c.lift *= 1.01),
+    );
+    changes(ClaimId::EnergyLedgerBalances, &wrong);
+    // eq. (4) with 1 % more momentum drag: it destroys more than Loney's W_4.
+    let wrong = lab().with_coefficients(
+        Derivation::TorqueAboutCentre,
+        perturbed(Derivation::TorqueAboutCentre, |c| c.drag *= 1.01),
+    );
+    changes(ClaimId::EnergyLedgerBalances, &wrong);
+}
+
+#[test]
+fn regression_21_eq89_notices_a_collision_that_keeps_l_about_the_centre() {
+    // A collision that keeps the angular momentum about the centre of mass
+    // (I_cm ω) instead of about the impact point.
+    let s = Scenario::default();
+    let (r0, b) = (s.initial_radius(), s.snow_depth());
+    let about_centre = edited_table(long_run(ModelKind::Turns, &s), |r| {
+        let rk = r0 + r.turn as f64 * b;
+        // Before and after I_cm = m r_(k+1)²/2: ω kept, v′ = v_end r_(k+1)/r_k.
+        r.v_after_m_s = r.v_end_m_s * (rk + b) / rk;
+    });
+    changes(
+        ClaimId::Eq89Collision,
+        &lab().with_long_run(false, about_centre),
+    );
+}
+
+#[test]
+fn regression_21_app_a_notices_a_snowless_model_with_the_printed_normal_force() {
+    // The snowless model reporting the printed (115), N = m g.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Snowless).then(|| {
+            let mut traj = ModelKind::Snowless.build().simulate(s, opts)?;
+            for p in &mut traj.samples {
+                p.normal_n = p.mass_kg * s.gravity();
+            }
+            Ok(traj)
+        })
+    });
+    changes(ClaimId::AppAMovingPoints, &wrong);
+}
+
+#[test]
+fn regression_21_fn7_stall_in_first_turn_notices_an_exact_turn_model_with_too_much_snow() {
+    // turns-exact run as if the snow were 2 % deeper: its threshold moves
+    // ~0.05° from the one integrated over the exact body.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::TurnsExact).then(|| {
+            let mut f = ScenarioFile::from(*s);
+            f.snow_depth *= 1.02;
+            TurnModel::new(TurnVariant::Exact).simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    changes(ClaimId::Fn7StallInFirstTurn, &wrong);
+}
+
+#[test]
+fn regression_21_circular_analyses_differ_notices_distinct_but_wrong_coefficients() {
+    // Eq. (6) with c_v = 1.4: the four analyses still differ (the old check
+    // held), but not where the note says.
+    changes(
+        ClaimId::CircularAnalysesDiffer,
+        &lab().with_coefficients(
+            Derivation::TorqueAboutContact,
+            perturbed(Derivation::TorqueAboutContact, |c| c.drag = 1.4),
+        ),
+    );
+    // Eq. (14) lifting 10 % less snow.
+    changes(
+        ClaimId::CircularAnalysesDiffer,
+        &lab().with_coefficients(
+            Derivation::Energy,
+            perturbed(Derivation::Energy, |c| c.lift *= 0.9),
+        ),
+    );
+}

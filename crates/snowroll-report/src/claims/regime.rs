@@ -6,15 +6,17 @@
 //! simulation draws lies within one grid cell of both closed forms, in
 //! every row of the map.
 
+use std::f64::consts::PI;
+
+use super::stall::closed_form_tan;
 use super::{holds_if, pass, Finding, Lab};
 use crate::plot::{ColorBy, PlotError, RegimeMap};
 use crate::{ClaimId, Figure, ReportError};
 use crate::{Criterion, Tolerance};
 use snowroll::error::SimError;
-use snowroll::models::CollisionModel;
 use snowroll::models::ModelKind;
 use snowroll::scenario::ScenarioFile;
-use snowroll::sweep::{hop_slope_within, Axis, Grid, Outcome, Param, SweepRow, Values};
+use snowroll::sweep::{Axis, Grid, Outcome, Param, SweepRow, Values};
 
 /// Turns of each run of the map. The hop angle of §4.3 expands the
 /// late-turn speed u_k ≈ A k² + B k, which holds once k b ≫ r0: at 20 turns
@@ -114,8 +116,47 @@ fn border(
     Some((0.5 * (a + b), b - a))
 }
 
+/// The closed-form borders a map is judged against, degrees, as functions
+/// of (b, r0): the first-turn stall slope and the hop slope within
+/// [`MAP_TURNS`] turns.
+pub(super) struct BorderForms {
+    /// The stall slope, degrees.
+    pub stall: fn(f64, f64) -> f64,
+    /// The hop slope within [`MAP_TURNS`] turns, degrees.
+    pub hop: fn(f64, f64) -> f64,
+}
+
+/// fn. 7's first-turn stall slope of `docs/turn-model.md`, typed in
+/// [`closed_form_tan`]: `tan α* = max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ))`,
+/// ε = b/(π r0); degrees.
+fn stall_slope_deg(b: f64, r0: f64) -> f64 {
+    closed_form_tan(b / (PI * r0)).atan().to_degrees()
+}
+
+/// The hop slope within K = [`MAP_TURNS`] turns of the `note` collision,
+/// `docs/contact-forces.md` §4.3, typed here:
+/// `tan α_K = (1 + ε c_C)/(½ − ε c_G)`, ε = b/r_(K−1), r_(K−1) = r0 + (K − 1) b,
+/// c_C = 3/2 + 8/(13π), c_G = 1/π + 14/39 − 1; degrees.
+fn hop_slope_deg(b: f64, r0: f64) -> f64 {
+    let c_c = 1.5 + 8.0 / (13.0 * PI);
+    let c_g = 1.0 / PI + 14.0 / 39.0 - 1.0;
+    let eps = b / (r0 + (MAP_TURNS - 1) as f64 * b);
+    ((1.0 + eps * c_c) / (0.5 - eps * c_g)).atan().to_degrees()
+}
+
+/// The closed forms of the claim, typed here (not the library's).
+const TYPED_FORMS: BorderForms = BorderForms {
+    stall: stall_slope_deg,
+    hop: hop_slope_deg,
+};
+
 /// The regime map's borders against the closed forms.
 pub(super) fn map_borders(lab: &Lab) -> Result<Finding, SimError> {
+    borders_against(lab, &TYPED_FORMS)
+}
+
+/// The regime map's borders against the closed forms `forms`.
+pub(super) fn borders_against(lab: &Lab, forms: &BorderForms) -> Result<Finding, SimError> {
     let (_, rows) = lab.regime_map()?;
     let alphas = map_alphas();
     let depths = map_depths();
@@ -129,11 +170,7 @@ pub(super) fn map_borders(lab: &Lab) -> Result<Finding, SimError> {
         let outcomes: Vec<Outcome> = (0..alphas.len())
             .map(|i| Outcome::of(&rows[i * depths.len() + j]))
             .collect();
-        let stall_closed = ModelKind::Turns
-            .stall_threshold(b, r0)
-            .map_or(f64::NAN, |t| t.slope.to_degrees());
-        let hop_closed = hop_slope_within(b, r0, MAP_TURNS, CollisionModel::Note)
-            .map_or(f64::NAN, f64::to_degrees);
+        let (stall_closed, hop_closed) = ((forms.stall)(b, r0), (forms.hop)(b, r0));
         let stall = border(&alphas, &outcomes, |o| {
             !matches!(o, Outcome::Stalls { turn: 0 })
         });
@@ -210,4 +247,65 @@ pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
     .param("r0", r0)
     .param("v0", 0.0)
     .param("turns", MAP_TURNS))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Verdict;
+    use snowroll::models::CollisionModel;
+    use snowroll::scenario::Scenario;
+    use snowroll::sweep::hop_slope_within;
+
+    /// The typed forms are the library's (which draws the figure's lines):
+    /// rounding only.
+    const SAME_FORM_TOL_DEG: f64 = 1e-9;
+
+    #[test]
+    fn the_typed_borders_are_the_librarys() {
+        let r0 = Scenario::default().initial_radius();
+        for b in map_depths() {
+            let stall = ModelKind::Turns
+                .stall_threshold(b, r0)
+                .map(|t| t.slope.to_degrees())
+                .unwrap();
+            let hop = hop_slope_within(b, r0, MAP_TURNS, CollisionModel::Note)
+                .unwrap()
+                .to_degrees();
+            assert!((stall_slope_deg(b, r0) - stall).abs() < SAME_FORM_TOL_DEG);
+            assert!((hop_slope_deg(b, r0) - hop).abs() < SAME_FORM_TOL_DEG);
+        }
+    }
+
+    /// A wrong claim: the stall slope with ε = b/r0 (π times too large).
+    fn wrong_stall(b: f64, r0: f64) -> f64 {
+        closed_form_tan(b / r0).atan().to_degrees()
+    }
+
+    /// A wrong claim: the hop slope of the circular models, tan α = 2,
+    /// 3° too low (the first-turn hop of a log started fast).
+    fn wrong_hop(_: f64, _: f64) -> f64 {
+        2f64.atan().to_degrees() - 3.0
+    }
+
+    #[test]
+    fn regression_21_regime_map_borders_notice_wrong_closed_forms() {
+        let lab = Lab::new(Scenario::default(), 10);
+        assert_eq!(map_borders(&lab).unwrap().verdict, Verdict::Holds);
+        for forms in [
+            BorderForms {
+                stall: wrong_stall,
+                hop: hop_slope_deg,
+            },
+            BorderForms {
+                stall: stall_slope_deg,
+                hop: wrong_hop,
+            },
+        ] {
+            assert_eq!(
+                borders_against(&lab, &forms).unwrap().verdict,
+                Verdict::Refuted
+            );
+        }
+    }
 }

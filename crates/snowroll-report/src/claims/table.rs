@@ -8,10 +8,10 @@ use super::app_a::{
 };
 use super::circular::{
     circular_agree_as_b_vanishes, circular_differ, eq5_contact_torque, lagrangian_vs_energy,
-    loney_closed_form, loney_coefficient, loney_limit, stall_threshold, DIFFER, EQ5_PRINTED_APART,
-    EQ5_TORQUE, ERRATUM_5, ERRATUM_FN4, LAGRANGE_APART, LAGRANGE_CORRECTED, LAGRANGE_DIFFERENCE,
-    LONEY_DERIVATIVE, LONEY_LIMIT, LONEY_PRINTED_APART, LONEY_SPEED, SPREAD_LINEAR, SPREAD_SMALL,
-    STALL_BISECTION, STALL_MARGIN,
+    loney_closed_form, loney_coefficient, loney_limit, stall_threshold, DIFFER,
+    DIFFER_COEFFICIENTS, DIFFER_TERMINAL, EQ5_PRINTED_APART, EQ5_TORQUE, ERRATUM_5, ERRATUM_FN4,
+    LAGRANGE_APART, LAGRANGE_CORRECTED, LAGRANGE_DIFFERENCE, LONEY_DERIVATIVE, LONEY_LIMIT,
+    LONEY_PRINTED_APART, LONEY_SPEED, SPREAD_LINEAR, SPREAD_SMALL, STALL_BISECTION, STALL_MARGIN,
 };
 use super::contact::{hop_threshold, HOP_LATE_MIN, HOP_MARGIN};
 use super::first_turn::{
@@ -20,7 +20,10 @@ use super::first_turn::{
     EQ48_ORDER, EQ54_ORDER, ERRATUM_47_48, ERRATUM_54, ERRATUM_58_69, ERRATUM_70, FIRST_TURN_AGREE,
     FIRST_TURN_APART, MASS_EXACT, MASS_FIRST_ORDER, MASS_PRINTED_APART,
 };
-use super::losses::{drag_terminal_velocity, ledger_balances, DRAG_TERMINAL, LEDGER_BALANCE};
+use super::losses::{
+    drag_terminal_velocity, ledger_balances, DRAG_TERMINAL, LEDGER_BALANCE, LEDGER_CONSERVED,
+    LEDGER_W4,
+};
 use super::multi_turn::{
     collision_loss, collision_potential_jump, eq73_truncates_exact, eq78_speed, eq88_balance,
     mean_four_ninths, never_settles, COLLISION_L, COLLISION_T, EQ88_APART, EQ88_EXACT, ERRATUM_87,
@@ -33,8 +36,8 @@ use super::snowball::{
     TPT_CLOSED_FORM, TPT_OTHERS_APART,
 };
 use super::stall::{
-    stall_in_first_turn, TURN_STALL_FORMULA, TURN_STALL_LIBRARY, TURN_STALL_MARGIN,
-    TURN_STALL_ORDER, TURN_START, TURN_START_EXACT,
+    stall_in_first_turn, TURN_STALL_EXACT, TURN_STALL_FORMULA, TURN_STALL_LIBRARY,
+    TURN_STALL_MARGIN, TURN_STALL_ORDER, TURN_START, TURN_START_EXACT,
 };
 use super::terminal::{
     eq33_35_argument, eq35_third, eq36_slows, terminal_values, APPROACH_POWER, EQ33_DERIVATIVE,
@@ -51,8 +54,8 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::CircularAnalysesDiffer,
             paper_ref: "§2.1–2.3, eqs. (4), (6), (14), (21)",
             statement: "The four analyses of the always-circular log give four different equations of motion.",
-            method: "integrate each from rest (default scenario) and compare a/(g sin α) at t = 10 s",
-            tolerances: &[DIFFER],
+            method: "read the coefficients c_v of b v²/(πr²) and λ of the lift C(3br + b²)/(3πr²) off each model's acceleration at rest and at b v²/(πr²) = G, at r = r0, 3r0, 10r0, against the printed 7/6, 3/2, 1/2, 1 and 0, 0, 1, 1; the terminal fractions (2/3)/(1 + 2c_v) they imply (1/5, 1/6, 1/3, 2/9) must be apart; and each integrated from rest, a/(g sin α) at t = 10 s",
+            tolerances: &[DIFFER_COEFFICIENTS, DIFFER_TERMINAL, DIFFER],
             expected: Verdict::Holds,
         },
         check: circular_differ,
@@ -183,11 +186,12 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::Fn7StallInFirstTurn,
             paper_ref: "fn. 7, §3, eqs. (62), (73)",
             statement: "In the setting of §3 a log that is too light for the snow starts (a(0) = 2G/3) but stalls inside its first turn.",
-            method: "bisection in α on the simulated turns and turns-exact (stall inside turn 0 or not), against the closed form max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)) typed from (62), the library's threshold (shown by `snowroll models`), and the leading-order forms in ε = b/(πr0); runs just below (must start, then stall in turn 0) and just above (must roll on)",
+            method: "bisection in α on the simulated turns and turns-exact (stall inside turn 0 or not), against the closed form max ε(θ − sin θ)/(θ + ε(θ²/2 − 1 + cos θ)) typed from (62) (turns), the maximum of Q/P of the exact disk and layer integrated element by element (turns-exact), the library's threshold (shown by `snowroll models`), and the leading-order forms in ε = b/(πr0); runs just below these independent thresholds (must start, then stall in turn 0) and just above (must roll on)",
             tolerances: &[
                 TURN_START,
                 TURN_START_EXACT,
                 TURN_STALL_FORMULA,
+                TURN_STALL_EXACT,
                 TURN_STALL_LIBRARY,
                 TURN_STALL_ORDER,
                 TURN_STALL_MARGIN,
@@ -201,7 +205,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::SnowlessLimit,
             paper_ref: "App. A, eqs. (95)–(130)",
             statement: "Without snow a rolling cylinder accelerates at (2/3) g sin α, whichever way it is derived; every model tends to it as b → 0.",
-            method: "every model with snow at b = 1e-5 and 1e-6 m: a and x at t = 2 s extrapolated linearly to b = 0, against 2G/3 and G t²/3",
+            method: "every model with snow at b = 1e-7 and 1e-8 m: a and x at t = 2 s extrapolated linearly to b = 0, against 2G/3 and G t²/3",
             tolerances: &[SNOWLESS_LIMIT],
             expected: Verdict::Holds,
         },
@@ -212,7 +216,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::AppAMovingPoints,
             paper_ref: "App. A.3.2, A.4.1, A.5.2, eqs. (111), (115), (127), (128)",
             statement: "About the moving contact line L′_P = I_cm ω = mr²v/2 (111); F_y − mg = 0 (115); about the point P of A.5.2, τ′_P = τ_P + rma and L′_P = L_cm.",
-            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; F_y from Newton's law with the simulated snowless motion",
+            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; the normal force the snowless model reports against m g cos α and against Newton's law m(ÿ − g_y) for its centre's simulated motion",
             tolerances: &[APP_A_INTEGRALS, APP_A_APART],
             expected: Verdict::HoldsAfterCorrection(ERRATUM_APP_A),
         },
@@ -311,7 +315,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::Eq89Collision,
             paper_ref: "eq. (89)",
             statement: "In the collision at the end of a turn the angular momentum about the contact line is conserved.",
-            method: "for the first 200 and the last collision of both long runs: L_C = I_C ω with I_C of the disk and layer integrated element by element, before and after, from the runs' speeds",
+            method: "for the first 200 and the last collision of both long runs: the speed after it predicted from the impact's geometry (the impact point where the new rim meets the slope; L about it, I_cm ω + M (c − P) × v_c, with the centres and I_cm of the disk and layer integrated element by element, the same before and after), against the run's; and the kinetic energy kept",
             tolerances: &[COLLISION_L, COLLISION_T],
             expected: Verdict::Holds,
         },
@@ -410,7 +414,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::RegimeMapBorders,
             paper_ref: "fn. 7, fn. 10",
             statement: "Over slope × snow depth the turn-by-turn log started from rest stalls in its first turn below the fn. 7 slope, hops within K turns above tan α_K = (1 + ε c_C)/(½ − ε c_G) (ε = b/r_(K−1)) and rolls on between: the closed forms are the borders of the regime map.",
-            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms",
+            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms typed in the check (not the library's functions)",
             tolerances: &[MAP_CELL],
             expected: Verdict::Holds,
         },
@@ -432,8 +436,8 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::EnergyLedgerBalances,
             paper_ref: "fn. 5; eqs. (7), (10)",
             statement: "With the losses fn. 5 sets aside (air drag, rolling resistance, compaction of the snow picked up), the energy is still accounted for: the kinetic energy, the work of each loss and the energy the model's own equation destroys (W_model) add up to the potential energy released plus the initial kinetic energy (docs/snowball-and-losses.md §3).",
-            method: "every circular model on 12 scenarios each, logs and balls (swath 2r) alternately, drawn from a fixed seed with all three losses; at 17 samples of each run, K from eq. (7) and the energy released from eq. (10) (their ball forms, docs/snowball-and-losses.md §1.2) computed from (x, r, v), D_comp = e_c (M − M0), the works D_drag, D_rr and W_model read from the run's ledger",
-            tolerances: &[LEDGER_BALANCE],
+            method: "every circular model on 12 scenarios each, logs and balls (swath 2r) alternately, drawn from a fixed seed with all three losses; at 17 samples of each run, K from eq. (7) and the energy released from eq. (10) (their ball forms, docs/snowball-and-losses.md §1.2) computed from (x, r, v), D_comp = e_c (M − M0), the works D_drag, D_rr and W_model read from the run's ledger; W_model of energy and snowless against 0, and W_model of torque-cm from rest without losses against Loney's closed form W_4 (docs/snowball-and-losses.md §3.1)",
+            tolerances: &[LEDGER_BALANCE, LEDGER_CONSERVED, LEDGER_W4],
             expected: Verdict::Holds,
         },
         check: ledger_balances,
@@ -443,6 +447,19 @@ pub static CLAIMS: &[ClaimCheck] = &[
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The method of `snowless-limit` quotes the depths its check runs.
+    #[test]
+    fn the_snowless_limit_method_quotes_the_depths_it_uses() {
+        let row = CLAIMS
+            .iter()
+            .find(|c| c.claim.id == ClaimId::SnowlessLimit)
+            .map(|c| c.claim.method)
+            .unwrap_or_default();
+        let [b1, b2] = super::super::app_a::SNOWLESS_B;
+        let quoted = format!("b = {b1:e} and {b2:e} m");
+        assert!(row.contains(&quoted), "{quoted} not in {row}");
+    }
 
     #[test]
     fn every_claim_id_has_one_row_in_the_order_of_all() {

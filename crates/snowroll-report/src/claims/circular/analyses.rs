@@ -29,42 +29,145 @@ pub(in crate::claims) const DIFFER: Criterion = Criterion {
     },
     reason: "far above the integration error (~1e-9 G at rtol 1e-10) and below the gap any two distinct drag coefficients leave",
 };
+/// `circular-analyses-differ`: the coefficients read off each analysis
+/// against those the note prints.
+pub(in crate::claims) const DIFFER_COEFFICIENTS: Criterion = Criterion {
+    quantity: "|c_v measured − c_v printed| and |λ measured − λ printed| of each analysis, at the 3 radii of the check",
+    tolerance: Tolerance::Absolute {
+        value: 1e-9,
+        unit: "(dimensionless)",
+    },
+    reason: "each is the difference of two accelerations of O(G) evaluated at one state (no integration), divided by a term of O(G): rounding ~1e-15",
+};
+/// `circular-analyses-differ`: the terminal fractions the coefficients imply.
+pub(in crate::claims) const DIFFER_TERMINAL: Criterion = Criterion {
+    quantity: "smallest pairwise gap of the terminal fractions (2/3)/(1 + 2 c_v) implied by the measured c_v",
+    tolerance: Tolerance::AtLeast {
+        value: 1e-2,
+        unit: "(fraction of g sin α)",
+    },
+    reason: "the note's four fractions 1/5, 1/6, 1/3, 2/9 are at least 1/45 ≈ 0.022 apart; a coefficient within 1e-9 of its printed value moves its fraction by < 1e-9",
+};
 
-/// The four analyses give four different equations of motion.
+/// The note's printed forms, per analysis: c_v, the coefficient of
+/// `b v²/(π r²)`; λ, that of the lift `C (3br + b²)/(3π r²)`; whether the
+/// inertia carries `1 + b²/(6π² r²)`. Eqs. (4), (6), (14), (21).
+const PRINTED: [(f64, f64, bool); 4] = [
+    (7.0 / 6.0, 0.0, false),
+    (1.5, 0.0, false),
+    (0.5, 1.0, true),
+    (1.0, 1.0, true),
+];
+
+/// Radii of the coefficient read-out, as multiples of r0.
+const DIFFER_RADII: [f64; 3] = [1.0, 3.0, 10.0];
+
+/// The coefficients of `kind` at radius `r`, read off two accelerations at
+/// rest and at the speed where `b v²/(π r²) = G`, with the inertia factor
+/// `inertia` of the analysis: `(c_v, λ)` of
+/// `a · inertia = 2G/3 − c_v b v²/(π r²) − λ C (3br + b²)/(3π r²)`.
+fn read_coefficients(
+    lab: &Lab,
+    kind: ModelKind,
+    r: f64,
+    with_inertia: bool,
+) -> Result<(f64, f64), SimError> {
+    let Symbols { b, gs, gc, .. } = symbols(lab.scenario());
+    let inertia = if with_inertia {
+        1.0 + b * b / (6.0 * PI * PI * r * r)
+    } else {
+        1.0
+    };
+    let v = (gs * PI * r * r / b).sqrt();
+    let a_rest = lab.acceleration_at(kind, r, 0.0)? * inertia;
+    let a_moving = lab.acceleration_at(kind, r, v)? * inertia;
+    let drag = (a_rest - a_moving) / gs;
+    let lift_unit = gc * (3.0 * b * r + b * b) / (3.0 * PI * r * r);
+    Ok((drag, (2.0 * gs / 3.0 - a_rest) / lift_unit))
+}
+
+/// The four analyses give four different equations of motion, and differ
+/// where the note says: c_v = 7/6, 3/2, 1/2, 1 and the lift only in (14)
+/// and (21), hence the terminal fractions (2/3)/(1 + 2c_v) = 1/5, 1/6, 1/3,
+/// 2/9 (late in the run q = b v²/(πr²) → 2a and the lift → 0).
 pub(in crate::claims) fn circular_differ(lab: &Lab) -> Result<Finding, SimError> {
     let opts = SimOptions {
         sampling: Sampling::Times(vec![10.0]),
         t_end: 10.0,
         ..SimOptions::default()
     };
+    let r0 = lab.scenario().initial_radius();
     let mut values = Vec::new();
-    for kind in FOUR {
-        values.push((
+    let mut worst_coefficient: f64 = 0.0;
+    let mut fractions = Vec::new();
+    let mut read = Vec::new();
+    for (kind, (drag, lift, with_inertia)) in FOUR.into_iter().zip(PRINTED) {
+        values.push(crate::claims::last_a_over_g(
+            lab,
             kind,
-            crate::claims::last_a_over_g(lab, kind, lab.scenario(), &opts)?,
+            lab.scenario(),
+            &opts,
+        )?);
+        let (mut c_v, mut lambda) = (f64::NAN, f64::NAN);
+        for k in DIFFER_RADII {
+            (c_v, lambda) = read_coefficients(lab, kind, k * r0, with_inertia)?;
+            let dev = DIFFER_COEFFICIENTS
+                .deviation(c_v, drag)
+                .max(DIFFER_COEFFICIENTS.deviation(lambda, lift));
+            worst_coefficient = if dev.is_nan() {
+                dev
+            } else {
+                worst_coefficient.max(dev)
+            };
+        }
+        let fraction = 2.0 / 3.0 / (1.0 + 2.0 * c_v);
+        fractions.push(fraction);
+        read.push(format!(
+            "{} c_v = {c_v:.9}, λ = {lambda:.9}, a∞/G = {fraction:.6}",
+            kind.equation()
         ));
     }
-    let mut min_gap = f64::INFINITY;
-    for (i, a) in values.iter().enumerate() {
-        for b in &values[i + 1..] {
-            min_gap = min_gap.min((a.1 - b.1).abs());
-        }
-    }
-    let ok = DIFFER.accepts_deviation(min_gap);
-    let measured = values
+    let min_gap = min_pairwise_gap(&values);
+    let terminal_gap = min_pairwise_gap(&fractions);
+    let differ_ok = DIFFER.accepts_deviation(min_gap);
+    let coefficients_ok = DIFFER_COEFFICIENTS.accepts_deviation(worst_coefficient);
+    let terminal_ok = DIFFER_TERMINAL.accepts_deviation(terminal_gap);
+    let ok = differ_ok && coefficients_ok && terminal_ok;
+    let measured = FOUR
         .iter()
+        .zip(&values)
         .map(|(k, v)| format!("{} a/G = {v:.4}", k.equation()))
         .collect::<Vec<_>>()
         .join("; ");
+    let mut numbers = vec![min_gap, worst_coefficient, terminal_gap];
+    numbers.extend(&fractions);
     Ok(Finding {
-        measured: format!("at t = 10 s: {measured}"),
-        verdict: holds_if(ok, &[min_gap]),
+        measured: format!(
+            "at t = 10 s: {measured}; read off each equation at r = {{1, 3, 10}} r0: {}",
+            read.join("; ")
+        ),
+        verdict: holds_if(ok, &numbers),
         evidence: format!(
-            "smallest pairwise difference of a/(g sin α) = {min_gap:.3e}, {} the bound of at least {:e}",
-            pass(ok),
+            "the coefficients are the printed ones (largest deviation {worst_coefficient:.1e}, {} {:e}): (4) and (6) differ only in c_v (7/6 against 3/2), (14) and (21) only in c_v (1/2 against 1), the torque analyses have no lift, the energy analyses lift C(3br + b²)/(3πr²) and carry the inertia 1 + b²/(6π²r²); their terminal fractions (2/3)/(1 + 2c_v) are 1/5, 1/6, 1/3, 2/9, smallest gap {terminal_gap:.4} ({} {:e}); at t = 10 s the smallest pairwise difference of a/G is {min_gap:.3e} ({} {:e})",
+            pass(coefficients_ok),
+            DIFFER_COEFFICIENTS.value(),
+            pass(terminal_ok),
+            DIFFER_TERMINAL.value(),
+            pass(differ_ok),
             DIFFER.value()
         ),
     })
+}
+
+/// The smallest |a − b| over distinct pairs.
+fn min_pairwise_gap(values: &[f64]) -> f64 {
+    let mut gap = f64::INFINITY;
+    for (i, a) in values.iter().enumerate() {
+        for b in &values[i + 1..] {
+            gap = gap.min((a - b).abs());
+        }
+    }
+    gap
 }
 
 /// `circular-agree-as-b-vanishes`: the spread must fall like b.

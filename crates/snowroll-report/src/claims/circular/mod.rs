@@ -16,12 +16,15 @@ mod loney;
 mod threshold;
 
 pub(super) use analyses::{
-    circular_agree_as_b_vanishes, circular_differ, lagrangian_vs_energy, DIFFER, LAGRANGE_APART,
-    LAGRANGE_CORRECTED, LAGRANGE_DIFFERENCE, SPREAD_LINEAR, SPREAD_SMALL,
+    circular_agree_as_b_vanishes, circular_differ, lagrangian_vs_energy, DIFFER,
+    DIFFER_COEFFICIENTS, DIFFER_TERMINAL, LAGRANGE_APART, LAGRANGE_CORRECTED, LAGRANGE_DIFFERENCE,
+    SPREAD_LINEAR, SPREAD_SMALL,
 };
 pub(super) use contact_torque::{eq5_contact_torque, EQ5_PRINTED_APART, EQ5_TORQUE, ERRATUM_5};
 pub(super) use loney::{
     loney_closed_form, loney_coefficient, loney_limit, ERRATUM_FN4, LONEY_DERIVATIVE, LONEY_LIMIT,
     LONEY_PRINTED_APART, LONEY_SPEED,
 };
+#[cfg(test)]
+pub(super) use threshold::STALL_TOL_DEG;
 pub(super) use threshold::{bisect, stall_threshold, STALL_BISECTION, STALL_MARGIN};

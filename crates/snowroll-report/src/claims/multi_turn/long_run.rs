@@ -127,7 +127,7 @@ pub(in crate::claims) const LONG_RUN: Criterion = Criterion {
         value: 2e-3,
         unit: "(fraction of G; ratio)",
     },
-    reason: "the limits hold to leading order in 1/k (v²/(πGk²b) ≈ 1/2 + 9/k measured); runs of ≥ 10⁴ turns leave ≤ 1e-3",
+    reason: "the limits hold to leading order in 1/k (v²/(πGk²b) = 1/2 + [r0/b − (14 + 24 cot α)/39]/k + O(1/k²), docs/contact-forces.md §6.4: 1/2 + 8.6/k at the defaults); runs of ≥ 10⁴ turns leave ≤ 1e-3",
 };
 /// `multi-turn-mean-four-ninths`, `eq78-speed-in-turn-n`: the note's values are visibly off.
 pub(in crate::claims) const NOTE_APART: Criterion = Criterion {
