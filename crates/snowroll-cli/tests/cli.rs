@@ -1089,6 +1089,57 @@ fn models_stall_slope_is_the_threshold_of_eq14_and_of_simulate() {
     assert_eq!(reason(stall_deg * 1.01), "end-time");
 }
 
+/// Issue 22, item 4: `snowroll models` takes the scenario flags, and its
+/// stall slopes are those of that body and those losses. The ball's eq. (14)
+/// from rest: a(0) = 0 where tan α = 2b/(π r0) + 3b²/(4π r0²) (issue 21,
+/// `docs/snowball-and-losses.md`); with rolling resistance c_rr and no snow
+/// the snowless log stalls where tan α = c_rr.
+#[test]
+fn models_takes_the_scenario_flags_for_its_stall_slopes() {
+    let stall = |args: &[&str], id: &str| -> Option<f64> {
+        let mut all = vec!["models", "--format", "json"];
+        all.extend_from_slice(args);
+        let out = snowroll().args(&all).assert().success();
+        let doc = json(std::str::from_utf8(&out.get_output().stdout).unwrap());
+        let row = doc["models"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["id"] == id)
+            .unwrap()
+            .clone();
+        row["stall_slope_deg"].as_f64()
+    };
+    let (b, r0) = (0.05_f64, 0.04_f64);
+    let ball = ["--shape", "sphere", "--snow-depth", "0.05", "--r0", "0.04"];
+    let want = (2.0 * b / (PI * r0) + 3.0 * b * b / (4.0 * PI * r0 * r0))
+        .atan()
+        .to_degrees();
+    assert_close(stall(&ball, "energy").unwrap(), want, CLOSED_FORM_TOL);
+    // The turn models take no ball, and no losses.
+    assert_eq!(stall(&ball, "turns"), None);
+    let rolling = ["--rolling-resistance", "0.5"];
+    assert_close(
+        stall(&rolling, "snowless").unwrap(),
+        0.5_f64.atan().to_degrees(),
+        CLOSED_FORM_TOL,
+    );
+    assert_eq!(stall(&rolling, "turns"), None);
+    // The table names the flags it was computed for; a bad value is an
+    // error naming it.
+    let text = snowroll().args(["models"]).args(ball).assert().success();
+    let text = String::from_utf8(text.get_output().stdout.clone()).unwrap();
+    assert!(
+        text.contains("(--snow-depth 0.05 --r0 0.04 --shape sphere)"),
+        "{text}"
+    );
+    snowroll()
+        .args(["models", "--r0", "-1"])
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("r0"));
+}
+
 /// The turn-0 stall slope of eq. (73) from a grid of 10⁶ points over (0, 2π]:
 /// the grid misses the maximum of Q/P by ~(Q/P)″h²/8 ≈ 1e-12 relative.
 const GRID_STALL_TOL: f64 = 1e-9;

@@ -16,7 +16,7 @@ use snowroll::{ModelKind, Param};
 
 mod table;
 use snowroll_io::Format;
-pub use table::{sweep_axes, AxisArgs, ParamArgs};
+pub use table::{sweep_axes, AxisArgs, BodyArgs, ParamArgs};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.
@@ -361,6 +361,11 @@ pub struct ModelsArgs {
     /// Output format
     #[arg(long, value_enum, ignore_case = true, default_value_t = ModelsFormat::Table)]
     pub format: ModelsFormat,
+
+    /// The scenario and the losses the stall slopes and the ball's column
+    /// are computed for (the flags of `simulate`).
+    #[command(flatten)]
+    pub body: BodyArgs,
 }
 
 /// How `snowroll models` prints.

@@ -5,7 +5,7 @@
 
 use clap::builder::PossibleValuesParser;
 use clap::{Arg, ArgAction};
-use snowroll::params::{Kind, Scope};
+use snowroll::params::{Group, Kind, Scope};
 use snowroll::{Given, Param, Value, PARAMS};
 
 /// One flag per [`Scope::Shared`] parameter of [`PARAMS`], built from the
@@ -22,6 +22,27 @@ pub struct ParamArgs {
 /// The shared parameters, in table order.
 fn shared() -> impl Iterator<Item = &'static Param> {
     PARAMS.iter().filter(|p| p.scope == Scope::Shared)
+}
+
+/// The shared parameters of the scenario and the losses (not of the run:
+/// no end, tolerance or sampling), in table order.
+fn bodily() -> impl Iterator<Item = &'static Param> {
+    shared().filter(|p| matches!(p.group, Group::Scenario | Group::Losses))
+}
+
+/// The values given on the command line of the flags of `params`.
+fn given_of(params: impl Iterator<Item = &'static Param>, m: &clap::ArgMatches, given: &mut Given) {
+    for p in params {
+        let value = match p.kind {
+            Kind::Flag => m.get_flag(p.key).then_some(Value::Flag(true)),
+            Kind::Count | Kind::OptionalCount => m.get_one::<u64>(p.key).map(|n| Value::Count(*n)),
+            Kind::Choice(_) => m.get_one::<String>(p.key).map(|w| Value::Word(w.clone())),
+            _ => m.get_one::<f64>(p.key).map(|x| Value::Real(*x)),
+        };
+        if let Some(v) = value {
+            given.insert(p, v);
+        }
+    }
 }
 
 /// The flag of parameter `p`.
@@ -67,19 +88,39 @@ impl clap::FromArgMatches for ParamArgs {
     }
 
     fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
-        for p in shared() {
-            let value = match p.kind {
-                Kind::Flag => m.get_flag(p.key).then_some(Value::Flag(true)),
-                Kind::Count | Kind::OptionalCount => {
-                    m.get_one::<u64>(p.key).map(|n| Value::Count(*n))
-                }
-                Kind::Choice(_) => m.get_one::<String>(p.key).map(|w| Value::Word(w.clone())),
-                _ => m.get_one::<f64>(p.key).map(|x| Value::Real(*x)),
-            };
-            if let Some(v) = value {
-                self.given.insert(p, v);
-            }
-        }
+        given_of(shared(), m, &mut self.given);
+        Ok(())
+    }
+}
+
+/// One flag per parameter of the scenario and the losses ([`Group::Scenario`],
+/// [`Group::Losses`]), for commands that describe a body on a slope
+/// without running it (`snowroll models`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BodyArgs {
+    /// The values of the flags given on the command line.
+    pub given: Given,
+}
+
+impl clap::Args for BodyArgs {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        cmd.args(bodily().map(param_arg))
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+impl clap::FromArgMatches for BodyArgs {
+    fn from_arg_matches(m: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        let mut me = Self::default();
+        me.update_from_arg_matches(m)?;
+        Ok(me)
+    }
+
+    fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
+        given_of(bodily(), m, &mut self.given);
         Ok(())
     }
 }

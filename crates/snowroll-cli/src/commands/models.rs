@@ -11,9 +11,10 @@ use std::io::Write;
 use anyhow::{Context, Result};
 use serde::Serialize;
 use snowroll::models::{StallKind, Validity};
+use snowroll::params::Settings;
 use snowroll::{ModelKind, Scenario, ScenarioFile, Shape};
 
-use crate::args::{ModelsArgs, ModelsFormat};
+use crate::args::{BodyArgs, ModelsArgs, ModelsFormat};
 use crate::sink::Sink;
 use snowroll::as_fraction;
 
@@ -46,20 +47,30 @@ struct Row {
 #[derive(Debug, Serialize)]
 struct Listing {
     snowroll_version: &'static str,
-    /// Snow depth b used for `stall_slope_deg`, m (the default scenario).
+    /// Snow depth b used for `stall_slope_deg`, m.
     snow_depth: f64,
-    /// Initial radius r0 used for `stall_slope_deg`, m (the default scenario).
+    /// Initial radius r0 used for `stall_slope_deg`, m.
     r0: f64,
     models: Vec<Row>,
+    /// The flags the listing was computed for, when any was given (else
+    /// the default log without losses).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    flags_given: Option<String>,
 }
 
-fn listing() -> Listing {
-    let d = ScenarioFile::default();
-    let (b, r0) = (d.snow_depth, d.r0);
+/// The listing for the scenario and losses of `args` (the defaults where
+/// no flag is given): the stall slopes on that body with those losses, the
+/// ball's column on the same slope and snow.
+fn listing(args: &ModelsArgs) -> Result<Listing> {
+    let settings = args.body.given.apply(Settings::default())?;
+    let (file, losses) = (settings.scenario, settings.options.losses);
+    losses.validate()?;
+    let scenario = Scenario::new(file.clone())?;
     let ball = Scenario::new(ScenarioFile {
         shape: Shape::Sphere,
-        ..d
+        ..file.clone()
     });
+    let (b, r0) = (file.snow_depth, file.r0);
     let models = ModelKind::ALL
         .into_iter()
         .map(|kind| {
@@ -69,6 +80,14 @@ fn listing() -> Listing {
                 Ok(s) if shapes.contains(&Shape::Sphere) => kind.terminal_fraction_on(s),
                 _ => None,
             };
+            // A model that does not take this body (the turn models and a
+            // ball) or these losses (the turn models take none) has no
+            // stall slope for them.
+            let takes =
+                shapes.contains(&scenario.shape()) && !(kind.is_turn_model() && losses.any());
+            let stall = takes
+                .then(|| kind.stall_threshold_in(&scenario, &losses))
+                .flatten();
             Row {
                 id: kind.id(),
                 alias: kind.alias(),
@@ -83,23 +102,35 @@ fn listing() -> Listing {
                 sphere_terminal_fraction_exact: sphere
                     .and_then(as_fraction)
                     .map(|(p, q)| format!("{p}/{q}")),
-                stall_slope_deg: kind.stall_threshold(b, r0).map(|t| t.slope.to_degrees()),
-                stall_kind: kind.stall_threshold(b, r0).map(|t| t.kind),
+                stall_slope_deg: stall.map(|t| t.slope.to_degrees()),
+                stall_kind: stall.map(|t| t.kind),
                 validity: kind.validity(),
             }
         })
         .collect();
-    Listing {
+    Ok(Listing {
         snowroll_version: snowroll_io::VERSION,
         snow_depth: b,
         r0,
         models,
-    }
+        flags_given: assumptions(&args.body),
+    })
+}
+
+/// The flags given, as typed on a command line in table order (`None`
+/// when there are none: the default log without losses).
+fn assumptions(body: &BodyArgs) -> Option<String> {
+    let flags: Vec<String> = body
+        .given
+        .iter()
+        .map(|(p, v)| format!("--{} {}", p.flag(), p.text(v)))
+        .collect();
+    (!flags.is_empty()).then(|| flags.join(" "))
 }
 
 /// Prints the listing.
 pub fn run(args: &ModelsArgs) -> Result<()> {
-    let listing = listing();
+    let listing = listing(args)?;
     let text = match args.format {
         ModelsFormat::Json => serde_json::to_string_pretty(&listing)? + "\n",
         ModelsFormat::Table => table(&listing),
@@ -200,8 +231,13 @@ fn stall_notes(listing: &Listing, width: usize) -> String {
             continue;
         }
         text.push_str(&format!(
-            "Stall (fn. 7): with b = {} m, r0 = {} m these models {what} unless alpha exceeds:\n",
-            listing.snow_depth, listing.r0
+            "Stall (fn. 7): with b = {} m, r0 = {} m{} these models {what} unless alpha exceeds:\n",
+            listing.snow_depth,
+            listing.r0,
+            listing
+                .flags_given
+                .as_ref()
+                .map_or_else(String::new, |a| format!(" ({a})")),
         ));
         for (id, slope) in list {
             text.push_str(&format!("  {id:<width$}  {slope:.4} degrees\n"));
