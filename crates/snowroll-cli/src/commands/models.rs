@@ -65,10 +65,10 @@ fn listing(args: &ModelsArgs) -> Result<Listing> {
     let settings = args.body.given.apply(Settings::default())?;
     let (file, losses) = (settings.scenario, settings.options.losses);
     losses.validate()?;
-    let scenario = Scenario::new(file.clone())?;
+    let scenario = Scenario::new(file)?;
     let ball = Scenario::new(ScenarioFile {
         shape: Shape::Sphere,
-        ..file.clone()
+        ..file
     });
     let (b, r0) = (file.snow_depth, file.r0);
     let models = ModelKind::ALL
