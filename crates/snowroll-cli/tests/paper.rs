@@ -143,6 +143,64 @@ fn assert_no_source_text(html: &str) {
     }
 }
 
+/// Issue 22, item 4: the report at another scenario. Claims that adapt are
+/// judged on it (fn. 7's stall slope names its b and r0); those whose checks
+/// are set for the default scenario say so and are judged there; every
+/// verdict stays the expected one (--strict); the outputs record the
+/// scenario. A ball or no snow is refused with a message.
+#[test]
+fn paper_judges_the_claims_at_the_scenario_given() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report");
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--strict", "--turns", "10000"])
+        .args([
+            "--alpha-deg",
+            "20",
+            "--snow-depth",
+            "0.02",
+            "--r0",
+            "0.3",
+            "--out",
+        ])
+        .arg(&out)
+        .assert()
+        .success();
+    let claims: Value =
+        serde_json::from_str(&fs::read_to_string(out.join("claims.json")).unwrap()).unwrap();
+    assert_eq!(claims["params"]["alpha_deg"], "20");
+    let measured = |id: &str| -> String {
+        claims["claims"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["id"] == id)
+            .unwrap()["measured"]
+            .as_str()
+            .unwrap()
+            .to_string()
+    };
+    assert!(measured("fn7-stall-threshold").starts_with("b = 0.02 m, r0 = 0.3 m"));
+    for c in CLAIMS {
+        let on_default = measured(c.claim.id.as_str()).starts_with("on the default scenario (");
+        assert_eq!(
+            on_default,
+            snowroll_report::tuned_to_default(c.claim.id).is_some(),
+            "{}",
+            c.claim.id
+        );
+    }
+    for bad in [["--shape", "sphere"], ["--snow-depth", "0"]] {
+        cargo_bin_cmd!("snowroll")
+            .args(["paper", "--quiet", "--out"])
+            .arg(dir.path().join("bad"))
+            .args(bad)
+            .assert()
+            .failure()
+            .stderr(predicate::str::contains("paper judges the note's claims"));
+    }
+}
+
 #[test]
 fn paper_rejects_too_few_turns_with_one_line() {
     cargo_bin_cmd!("snowroll")

@@ -96,7 +96,6 @@ pub(super) const SUM_NAME: &str = "sum of the shares";
 /// # Errors
 /// [`ReportError`] when the run fails.
 pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
-    let s = lab.scenario();
     let kind = ModelKind::TorqueCm;
     let opts = SimOptions {
         t_end: LEDGER_T_END,
@@ -104,7 +103,17 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         losses: all_losses(),
         ..SimOptions::default()
     };
-    let traj = lab.run(kind, s, &opts)?;
+    // The losses are set for the default slope; on a shallower one they
+    // may stop the log before the first sample: then the figure shows the
+    // default slope, and says so.
+    let mut s = lab.scenario();
+    let mut traj = lab.run(kind, s, &opts)?;
+    let default = Scenario::default();
+    let fell_back = traj.samples.len() < 2 && *s != default;
+    if fell_back {
+        s = &default;
+        traj = lab.run(kind, s, &opts)?;
+    }
     // From rest K(0) = 0, so the ledger reads K + ΣD + W_model = released
     // (+ the residual); the shares are each term over the released energy.
     let rows: Vec<(f64, &LedgerRow)> = traj
@@ -127,10 +136,15 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         .fold(0.0, f64::max);
     let file = ScenarioFile::from(*s);
     let caption = format!(
-        "The energy ledger of the log of eq. (4) from rest on the default slope with air drag (C_d = {DRAG_COEFFICIENT}, a bluff cylinder), rolling resistance (c_rr = {ROLLING_RESISTANCE}, soft snow) and compaction (e_c = {COMPACTION_ENERGY} J/kg), each term as a share of the potential energy released so far (docs/snowball-and-losses.md §3.3). \
+        "{}The energy ledger of the log of eq. (4) from rest on the default slope with air drag (C_d = {DRAG_COEFFICIENT}, a bluff cylinder), rolling resistance (c_rr = {ROLLING_RESISTANCE}, soft snow) and compaction (e_c = {COMPACTION_ENERGY} J/kg), each term as a share of the potential energy released so far (docs/snowball-and-losses.md §3.3). \
          The losses were picked so that each one takes more than a few per cent at some time: compaction costs e_c per kilogram picked up while the energy released per kilogram grows like x, so it dominates at first ({:.0} % at {LEDGER_T_FIRST} s) and fades; rolling resistance takes a steady c_rr cot α ≈ {:.1} %; drag grows with v² ({:.1} % at {LEDGER_T_END} s); eq. (4)'s own W_model is the snow's inelastic pick-up (≈ Ṁ v², {:.0} % at the end), negative at first because eq. (4) does not pay for lifting the snow onto the log. \
          The shares add up to 1 at every time (circles): the balance made visible; their largest departure from 1 is {}, the ledger's residual. \
          The run stops at {LEDGER_T_END} s, where the log has rolled x = {:.0} m and grown to r = {:.2} m: still a log on a hill.",
+        if fell_back {
+            "On the report's scenario these losses stop the log at once; the figure shows the default scenario. "
+        } else {
+            ""
+        },
         pct(early, |l| l.compaction_j),
         pct(end, |l| l.rolling_j),
         pct(end, |l| l.drag_j),

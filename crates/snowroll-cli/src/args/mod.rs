@@ -16,7 +16,7 @@ use snowroll::{ModelKind, Param};
 
 mod table;
 use snowroll_io::Format;
-pub use table::{sweep_axes, AxisArgs, BodyArgs, ParamArgs};
+pub use table::{sweep_axes, AxisArgs, BodyArgs, ParamArgs, SlopeArgs};
 
 /// Simulate a log rolling down a snowy slope, picking up snow as it goes
 /// (K. T. McDonald's note, every model). Units are SI; angles are in degrees.
@@ -102,6 +102,12 @@ pub struct PaperArgs {
     /// Exit with an error when any verdict differs from the one the claims table expects (the report is still written)
     #[arg(long)]
     pub strict: bool,
+
+    /// The scenario every claim is judged on (the flags of `simulate`;
+    /// the defaults where none is given). Claims whose check needs the
+    /// default scenario say so in their verdict.
+    #[command(flatten)]
+    pub scenario: SlopeArgs,
 }
 
 /// Turns run by `snowroll turns` when neither `--turns` nor the config

@@ -93,6 +93,36 @@ impl clap::FromArgMatches for ParamArgs {
     }
 }
 
+/// `clap::Args` for a struct `{ given: Given }` whose flags are the table's
+/// parameters that `$params()` yields (the builder, since clap's derive
+/// cannot loop over a table).
+macro_rules! flags_of_table {
+    ($name:ident, $params:path) => {
+        impl clap::Args for $name {
+            fn augment_args(cmd: clap::Command) -> clap::Command {
+                cmd.args($params().map(param_arg))
+            }
+
+            fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+                Self::augment_args(cmd)
+            }
+        }
+
+        impl clap::FromArgMatches for $name {
+            fn from_arg_matches(m: &clap::ArgMatches) -> Result<Self, clap::Error> {
+                let mut me = Self::default();
+                me.update_from_arg_matches(m)?;
+                Ok(me)
+            }
+
+            fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
+                given_of($params(), m, &mut self.given);
+                Ok(())
+            }
+        }
+    };
+}
+
 /// One flag per parameter of the scenario and the losses ([`Group::Scenario`],
 /// [`Group::Losses`]), for commands that describe a body on a slope
 /// without running it (`snowroll models`).
@@ -102,28 +132,22 @@ pub struct BodyArgs {
     pub given: Given,
 }
 
-impl clap::Args for BodyArgs {
-    fn augment_args(cmd: clap::Command) -> clap::Command {
-        cmd.args(bodily().map(param_arg))
-    }
+flags_of_table!(BodyArgs, bodily);
 
-    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
-        Self::augment_args(cmd)
-    }
+/// The shared parameters of the scenario only ([`Group::Scenario`]).
+fn scenic() -> impl Iterator<Item = &'static Param> {
+    shared().filter(|p| p.group == Group::Scenario)
 }
 
-impl clap::FromArgMatches for BodyArgs {
-    fn from_arg_matches(m: &clap::ArgMatches) -> Result<Self, clap::Error> {
-        let mut me = Self::default();
-        me.update_from_arg_matches(m)?;
-        Ok(me)
-    }
-
-    fn update_from_arg_matches(&mut self, m: &clap::ArgMatches) -> Result<(), clap::Error> {
-        given_of(bodily(), m, &mut self.given);
-        Ok(())
-    }
+/// One flag per parameter of the scenario ([`Group::Scenario`]): the slope,
+/// the snow and the body that `snowroll paper` judges the note on.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SlopeArgs {
+    /// The values of the flags given on the command line.
+    pub given: Given,
 }
+
+flags_of_table!(SlopeArgs, scenic);
 
 /// One flag per parameter of the table that a sweep varies
 /// ([`Param::sweep`]), each taking a value, a list `a,b,c` or a range

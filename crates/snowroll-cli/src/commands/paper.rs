@@ -8,7 +8,8 @@ use std::io::Write;
 
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
-use snowroll::Scenario;
+use snowroll::params::Settings;
+use snowroll::{Scenario, Shape};
 use snowroll_report::{build_paper_report, paper_steps, ClaimResult, Lab, ReportError, Tally};
 
 use crate::args::PaperArgs;
@@ -19,7 +20,8 @@ use crate::outdir::StagedDir;
 pub fn run(args: &PaperArgs) -> Result<()> {
     // Check --out before the long computation, so that a bad path fails at once.
     let staged = StagedDir::open(&args.out)?;
-    let lab = Lab::new(Scenario::default(), args.turns);
+    let scenario = scenario_of(args)?;
+    let lab = Lab::new(scenario, args.turns);
     let bar = progress_bar(args.quiet)?;
     let report = build_paper_report(&lab, &mut |p| {
         bar.set_position(p.done as u64);
@@ -55,6 +57,23 @@ pub fn run(args: &PaperArgs) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// The scenario of the flags given (the defaults for the others). The
+/// note's claims are about the log: a ball is refused.
+fn scenario_of(args: &PaperArgs) -> Result<Scenario> {
+    let settings = args.scenario.given.apply(Settings::default())?;
+    let scenario = Scenario::new(settings.scenario)?;
+    if scenario.snow_depth() == 0.0 {
+        bail!("paper judges the note's claims about snow: give --snow-depth > 0 m (the snowless log is every model's b → 0 limit, which the report checks)");
+    }
+    if scenario.shape() != Shape::Cylinder {
+        bail!(
+            "paper judges the note's claims about the log: give no --shape (or --shape cylinder); \
+             the report's snowball claims and figures roll their own ball"
+        );
+    }
+    Ok(scenario)
 }
 
 /// The progress bar on stderr: hidden with `--quiet` or off a terminal.

@@ -58,6 +58,38 @@ pub use table::CLAIMS;
 pub type Runner =
     dyn Fn(ModelKind, &Scenario, &SimOptions) -> Option<Result<Trajectory, SimError>> + Send + Sync;
 
+/// Why the check of claim `id` is judged on the default scenario when the
+/// report runs another (`snowroll paper --alpha-deg ...`), or `None` when it
+/// adapts to any scenario. An exhaustive match: a new claim must decide.
+pub fn tuned_to_default(id: crate::ClaimId) -> Option<&'static str> {
+    use crate::ClaimId::*;
+    match id {
+        SnowlessLimit | CircularAgreeAsBVanishes => {
+            Some("its b → 0 extrapolation and absolute tolerance are set for the default run's growth x/r0")
+        }
+        SlipMuMin => Some("its closed forms are for a start from rest on a slope where no model hops"),
+        SnowballFiveSevenths | TptLetterClosedForm | SnowballTerminalFractions => {
+            Some("the ball's closed forms start from rest and its runs are as long as the default b/r0 needs")
+        }
+        TerminalAccelerations | Eq35TerminalThird | Eq33_35TerminalArgument | Eq36SlowsApproach => {
+            Some("the run must reach the terminal regime, whose distance grows like r0/b")
+        }
+        MultiTurnNeverSettles | MultiTurnMeanFourNinths | Eq78SpeedInTurnN | CollisionPotentialJump
+        | Eq88EnergyBalance | Eq51_55AccretingBody => Some(
+            "the turn-model checks need a log that rolls on without hopping, with tolerances set for b/r0 = 0.1",
+        ),
+        Fn7StallInFirstTurn | Fn10HopThreshold => {
+            Some("it brackets the slope 0.01° to 1° either side, on the default body")
+        }
+        AppAMovingPoints => Some("its derivatives are sampled at the default slope's speeds"),
+        CircularAnalysesDiffer | LagrangianDiffersFromEnergy | Eq5ContactTorque | LoneySolvesEq4
+        | LoneyAccelerationCoefficient | LoneyLimitFifth | Fn7StallThreshold | FirstTurn58_64_69
+        | Eq47_48AngularMomentum | Eq54CrossProduct | Eq70MassAfterFirstTurn | Eq89Collision
+        | Eq73TruncatesExact | RegimeMapBorders | SnowlessDragTerminalVelocity
+        | EnergyLedgerBalances => None,
+    }
+}
+
 /// The set-up every check observes: the scenario, the models (the library's
 /// own unless replaced by a deliberately wrong one), and the long
 /// multi-turn runs, computed once and shared by the claims that read them.

@@ -46,10 +46,15 @@ pub(crate) fn map_alphas() -> Vec<f64> {
     stall.chain(rolling).chain(hop).collect()
 }
 
-/// Snow depths of the map, m: b/r0 from 0.05 to 0.2 at r0 = 0.1 m (at
-/// b/r0 = 0.025, K b/r0 = 5 only: the log hops 1° above the form, 0.96 cells).
-pub(crate) fn map_depths() -> Vec<f64> {
-    (2..=8).map(|k| 0.0025 * f64::from(k)).collect()
+/// Snow depths of the map, m, for initial radius `r0`: b/r0 from 0.05 to
+/// 0.2 (0.005 m to 0.02 m at the default r0 = 0.1 m). Both borders depend
+/// on b/r0 only (ε = b/(π r0) for the stall, b/r_K for the hop), so the
+/// map's slopes suit every r0. (At b/r0 = 0.025, K b/r0 = 5 only: the log
+/// hops 1° above the form, 0.96 cells.)
+pub(crate) fn map_depths(r0: f64) -> Vec<f64> {
+    // r0/r0_default is exactly 1 at the default: its depths to the bit.
+    let scale = r0 / ScenarioFile::default().r0;
+    (2..=8).map(|k| 0.0025 * f64::from(k) * scale).collect()
 }
 
 /// The regime map's grid and its rows, one per grid point in grid order.
@@ -78,7 +83,7 @@ pub(super) fn map_rows(lab: &Lab) -> Result<MapRows, SimError> {
         vec![ModelKind::Turns],
         vec![
             list(Param::AlphaDeg, map_alphas()),
-            list(Param::SnowDepth, map_depths()),
+            list(Param::SnowDepth, map_depths(base.r0)),
             list(Param::R0, vec![base.r0]),
             list(Param::G, vec![base.g]),
             list(Param::V0, vec![0.0]),
@@ -159,7 +164,7 @@ pub(super) fn map_borders(lab: &Lab) -> Result<Finding, SimError> {
 pub(super) fn borders_against(lab: &Lab, forms: &BorderForms) -> Result<Finding, SimError> {
     let (_, rows) = lab.regime_map()?;
     let alphas = map_alphas();
-    let depths = map_depths();
+    let depths = map_depths(lab.scenario().initial_radius());
     let r0 = lab.scenario().initial_radius();
     let mut ok = true;
     let mut numbers = Vec::new();
@@ -264,7 +269,7 @@ mod tests {
     #[test]
     fn the_typed_borders_are_the_librarys() {
         let r0 = Scenario::default().initial_radius();
-        for b in map_depths() {
+        for b in map_depths(r0) {
             let stall = ModelKind::Turns
                 .stall_threshold(b, r0)
                 .map(|t| t.slope.to_degrees())
