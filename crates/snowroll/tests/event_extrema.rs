@@ -7,10 +7,17 @@
 //!   step 4) and `docs/contact-forces.md` §3 (N), written out again, not
 //!   through the library; a fine grid in θ finds the first turn and angle
 //!   where N reaches 0, without any integrator.
+//! * Circular models: the ball of `lagrangian-printed` at 70°, whose |F|/N
+//!   rises from 0.8079 to a maximum 0.8086 at t ≈ 0.39 s and falls again
+//!   within what used to be one step; its equation of motion
+//!   (`docs/snowball-and-losses.md` §1.2, table) and contact forces (§2.3
+//!   there, `circular_forces`) are integrated here by RK4.
 
 use std::f64::consts::PI;
 
-use snowroll::{run_turns, ModelKind, OnHop, Scenario, ScenarioFile, SimOptions, StopReason};
+use snowroll::{
+    run_turns, ModelKind, OnHop, Scenario, ScenarioFile, Shape, SimOptions, StopReason,
+};
 
 /// Grid points per turn of the independent search: spacing 3e-4 rad, far
 /// below the width of the dips of N below 0 here (N″ ~ C per rad², depth
@@ -210,6 +217,99 @@ fn the_first_hop_of_a_turn_model_does_not_depend_on_the_tolerance() {
             let going_on = run_turns(kind, &s, &options(rtol, OnHop::Continue)).unwrap();
             let first_negative = going_on.rows.iter().position(|row| row.min_normal_n < 0.0);
             assert_eq!(first_negative, Some(k_hop as usize), "{what}");
+        }
+    }
+}
+
+/// The ball of `lagrangian-printed` on the area law π r² = π r0² + b x
+/// (defaults b = 0.01 m, r0 = 0.1 m), with q = b v²/(π r²):
+/// `a (1 + 5b²/(28π²r²)) = 5G/7 − (3/2) q − (10/7) C b/(π r) − (15/28) C b²/(π r²)
+/// − (5/56) b³ v²/(π³ r⁴)`, and per unit mass `N = C + r′ (a + q)`,
+/// `F = G − a − (3/2) q` with r′ = b/(2π r) (the ball's n = 3 in
+/// `N/M = C + r′ (a + (n − 1) q/2)`, `F/M = G − a − λ v²`, λ = n r′/r).
+/// Returns `(a, |F|/N)` at `(x, v)`.
+fn ball(x: f64, v: f64, b: f64, r0: f64, g: f64, c: f64) -> (f64, f64) {
+    let r2 = r0 * r0 + b * x / PI;
+    let r = r2.sqrt();
+    let q = b * v * v / (PI * r2);
+    let a = (5.0 * g / 7.0
+        - 1.5 * q
+        - 10.0 / 7.0 * c * b / (PI * r)
+        - 15.0 / 28.0 * c * b * b / (PI * r2)
+        - 5.0 / 56.0 * b.powi(3) * v * v / (PI.powi(3) * r2 * r2))
+        / (1.0 + 5.0 * b * b / (28.0 * PI * PI * r2));
+    let normal = c + b / (2.0 * PI * r) * (a + q);
+    let friction = g - a - 1.5 * q;
+    (a, friction.abs() / normal)
+}
+
+/// RK4 from rest with step 1e-5 s up to 1 s (past the maximum of |F|/N):
+/// `(t, |F|/N)` at every step. RK4's error ~ (1e-5 s)⁴ × (rates of order
+/// 10 per s⁴), and the samples 1e-5 s apart miss the maximum of |F|/N by
+/// ~|f″| (1e-5)²/8 with |f″| ~ 1e-2 per s²: both far below 1e-9.
+fn ball_ratio_history(b: f64, r0: f64, g: f64, c: f64) -> Vec<(f64, f64)> {
+    let dt = 1e-5;
+    let f = |x: f64, v: f64| (v, ball(x, v, b, r0, g, c).0);
+    let (mut x, mut v) = (0.0, 0.0);
+    let mut out = vec![(0.0, ball(0.0, 0.0, b, r0, g, c).1)];
+    for i in 1..=100_000 {
+        let k1 = f(x, v);
+        let k2 = f(x + 0.5 * dt * k1.0, v + 0.5 * dt * k1.1);
+        let k3 = f(x + 0.5 * dt * k2.0, v + 0.5 * dt * k2.1);
+        let k4 = f(x + dt * k3.0, v + dt * k3.1);
+        x += dt / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
+        v += dt / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);
+        out.push((i as f64 * dt, ball(x, v, b, r0, g, c).1));
+    }
+    out
+}
+
+/// `lagrangian-printed`, ball, 70°: |F|/N has an interior maximum, from
+/// 0.8079 at the start. With μ 5e-7 below it the run must slip, on the
+/// rising flank where |F|/N first reaches μ (to 1e-4 s: the flank's slope
+/// there, ~1e-4 per s, turns the run's error in |F|/N at rtol 1e-10 and the
+/// RK4 samples' 1e-9 into < 1e-5 s); with μ 5e-7 above it, never. The
+/// default tolerance stepped over the peak with μ even 1e-5 below it.
+#[test]
+fn a_narrow_peak_of_friction_over_normal_slips_a_circular_model() {
+    let s = Scenario::new(ScenarioFile {
+        alpha_deg: 70.0,
+        shape: Shape::Sphere,
+        ..ScenarioFile::default()
+    })
+    .unwrap();
+    let (sa, ca) = s.slope_angle().sin_cos();
+    let (b, r0, g) = (s.snow_depth(), s.initial_radius(), s.gravity());
+    let history = ball_ratio_history(b, r0, g * sa, g * ca);
+    let (t_top, top) =
+        history.iter().copied().fold(
+            (0.0, f64::NEG_INFINITY),
+            |m, p| if p.1 > m.1 { p } else { m },
+        );
+    assert!(
+        t_top > 0.1 && t_top < 0.9 && top > history[0].1 + 1e-4,
+        "{t_top}, {top}"
+    );
+    for (mu, slips) in [(top - 5e-7, true), (top + 5e-7, false)] {
+        let opts = SimOptions {
+            t_end: 1.0,
+            mu: Some(mu),
+            ..SimOptions::default()
+        };
+        let traj = ModelKind::LagrangianPrinted
+            .build()
+            .simulate(&s, &opts)
+            .unwrap();
+        if slips {
+            assert_eq!(traj.stop.reason, StopReason::Slip, "μ = {mu}");
+            let t_cross = history.iter().find(|p| p.1 >= mu).unwrap().0;
+            assert!(
+                (traj.stop.t_s - t_cross).abs() < 1e-4,
+                "{} vs {t_cross}",
+                traj.stop.t_s
+            );
+        } else {
+            assert_eq!(traj.stop.reason, StopReason::EndTime, "μ = {mu}");
         }
     }
 }
