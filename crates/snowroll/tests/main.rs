@@ -4,6 +4,7 @@
 mod circular;
 mod collision;
 mod contact;
+mod event_extrema;
 mod integrator;
 mod invariants;
 mod losses;

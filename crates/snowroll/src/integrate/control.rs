@@ -6,6 +6,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::{OdeSystem, Tolerances};
+use crate::error::{ParamError, SimError};
 
 // Hairer's DOP853 controller constants (his defaults).
 /// Safety factor on the predicted step.
@@ -116,4 +117,29 @@ impl StepControl {
         self.last_rejected = false;
         self.h = h_new;
     }
+}
+
+/// Rejects a start or end time the loop cannot work with.
+pub(super) fn check_times<const N: usize>(
+    t0: f64,
+    y0: &[f64; N],
+    t_end: f64,
+) -> Result<(), SimError> {
+    let bad = |name, value, expected| {
+        Err(SimError::Param(ParamError::InvalidParameter {
+            name,
+            value,
+            expected,
+        }))
+    };
+    if !t0.is_finite() {
+        return bad("t0", t0, "a finite start time");
+    }
+    if !(t_end.is_finite() && t_end >= t0) {
+        return bad("t_end", t_end, "a finite end time, not before the start");
+    }
+    if !y0.iter().all(|v| v.is_finite()) {
+        return Err(SimError::NonFiniteState { t: t0 });
+    }
+    Ok(())
 }

@@ -6,15 +6,16 @@
 // hide that correspondence.
 #![allow(clippy::needless_range_loop)]
 
-use super::control::{initial_step, StepControl};
+use super::control::{check_times, initial_step, StepControl};
 use super::dense::{DenseStep, Polynomial, DENSE_TERMS};
 use super::events::{crossings, scan_step_ends};
+use super::peaks::Peaks;
 use super::tableau::{A, B, C, D, E3, E5};
 use super::{
     EventAction, EventRecord, Observer, OdeSystem, Outcome, Stats, Termination, Tolerances,
     MAX_EVENTS,
 };
-use crate::error::{ParamError, SimError};
+use crate::error::SimError;
 
 /// Stages of the 8th-order solution.
 const STAGES: usize = 12;
@@ -58,6 +59,8 @@ struct Integrator<'s, S, const N: usize> {
     g_new: [f64; MAX_EVENTS],
     /// Events located so far (they count towards `tol.max_steps`).
     events_located: u64,
+    /// The slopes of the events that may turn back within a step.
+    peaks: Peaks,
 }
 
 impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
@@ -177,27 +180,6 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     }
 }
 
-/// Rejects a start or end time the loop cannot work with.
-fn check_times<const N: usize>(t0: f64, y0: &[f64; N], t_end: f64) -> Result<(), SimError> {
-    let bad = |name, value, expected| {
-        Err(SimError::Param(ParamError::InvalidParameter {
-            name,
-            value,
-            expected,
-        }))
-    };
-    if !t0.is_finite() {
-        return bad("t0", t0, "a finite start time");
-    }
-    if !(t_end.is_finite() && t_end >= t0) {
-        return bad("t_end", t_end, "a finite end time, not before the start");
-    }
-    if !y0.iter().all(|v| v.is_finite()) {
-        return Err(SimError::NonFiniteState { t: t0 });
-    }
-    Ok(())
-}
-
 /// Integrates `system` from `(t0, y0)` forward to `t_end` with DOP853,
 /// locating the system's events on the dense output and applying their
 /// actions, and reports each accepted step (cut at events) and each event
@@ -212,7 +194,9 @@ fn check_times<const N: usize>(t0: f64, y0: &[f64; N], t_end: f64) -> Result<(),
 /// changes between the ends of each step, so a function that crosses zero
 /// twice within one step is not seen, unless a `Continue` event in between
 /// changed it (after `Continue` events the rest of the step is searched
-/// again, so a counter in the event function works). Simultaneous events
+/// again, so a counter in the event function works) or the system marks
+/// the event with [`OdeSystem::event_may_turn`] (then an extremum inside
+/// the step is searched for as well, `peaks.rs`). Simultaneous events
 /// are offered in index order; after a `Reset` the others of the same step
 /// are dropped, and the integration restarts from the new state.
 ///
@@ -250,6 +234,7 @@ where
         });
     }
     let controlled = system.controlled_components().clamp(1, N);
+    let peaks = Peaks::new(&*system, n_events);
     let mut it = Integrator {
         system,
         tol: *tol,
@@ -260,6 +245,7 @@ where
         g_old: [0.0; MAX_EVENTS],
         g_new: [0.0; MAX_EVENTS],
         events_located: 0,
+        peaks,
     };
     observer.start(&*it.system, t0, &y0);
     if t_end <= t0 {
@@ -291,6 +277,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         }
         self.system.rhs(t, y, &mut self.k[0]);
         self.stats.evaluations += 1;
+        self.peaks.restart();
     }
 
     /// The step loop from `(t, y)` to `t_end`: trial steps, the
@@ -362,6 +349,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
             t = t_new;
             y = y_new;
             self.g_old[..self.n_events].copy_from_slice(&self.g_new[..self.n_events]);
+            self.peaks.advance();
             if last {
                 return Ok(self.outcome(t, y, Termination::EndTime));
             }
@@ -389,9 +377,17 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
             &self.g_old[..self.n_events],
             &mut self.g_new,
         );
+        let n = self.n_events;
+        let suspects = self.peaks.suspects(
+            &*self.system,
+            [(t, y, &self.k[0]), (t_new, y_new, &self.k[STAGES])],
+            (&self.g_old[..n], &self.g_new[..n]),
+            h,
+        );
+        let search = ends.needs_dense() || suspects != 0;
         // Asked on every accepted step, so the observer sees each full step.
         let wanted = observer.wants_dense(t, t_new);
-        let coefficients = if ends.needs_dense() || wanted {
+        let coefficients = if search || wanted {
             Some(self.dense_coefficients(t, y, y_new, h))
         } else {
             None
@@ -399,8 +395,9 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         let dense = coefficients.as_ref().map(|f| Polynomial { t, y, h, f });
         // Start of the part of the step not yet shown to the observer.
         let mut seen = (t, *y);
-        if let (true, Some(p)) = (ends.needs_dense(), dense) {
-            if let Some(interrupt) = self.handle_events(observer, &p, &mut seen, (t_new, y_new)) {
+        if let (true, Some(p)) = (search, dense) {
+            let end = (t_new, y_new);
+            if let Some(interrupt) = self.handle_events(observer, &p, &mut seen, end, suspects) {
                 return Some(interrupt);
             }
         }
@@ -426,6 +423,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         p: &Polynomial<'_, N>,
         seen: &mut (f64, [f64; N]),
         (t_new, y_new): (f64, &[f64; N]),
+        suspects: u32,
     ) -> Option<Interrupt<N>> {
         let n_events = self.n_events;
         // Where the search for crossings starts, and the event values there.
@@ -437,6 +435,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                 (seen.0, &g_lo[..n_events]),
                 t_new,
                 &self.g_new,
+                suspects,
             );
             if found.is_empty() {
                 return None;

@@ -14,6 +14,7 @@
 //! still finds the next crossing when one step spans the whole excursion.
 
 use super::dense::Polynomial;
+use super::peaks::crossing_before_extremum;
 use super::{OdeSystem, MAX_EVENTS};
 
 /// How far into a step, in ulps of `|t| + h`, an event function that starts
@@ -84,13 +85,16 @@ impl Found {
 
 /// Locates every crossing in `(t_lo, t_new]`, part of the step whose dense
 /// output is `p`, given the event values `g_lo` at `t_lo` and `g_new` at
-/// `t_new`.
+/// `t_new`; for the events in `suspects` (bit i for event i) that do not
+/// cross at the ends, also a crossing before an extremum inside the step
+/// (`peaks.rs`).
 pub(super) fn crossings<S: OdeSystem<N>, const N: usize>(
     system: &S,
     p: &Polynomial<'_, N>,
     (t_lo, g_lo): (f64, &[f64]),
     t_new: f64,
     g_new: &[f64; MAX_EVENTS],
+    suspects: u32,
 ) -> Found {
     let t_nudge = (t_lo + NUDGE_ULPS * f64::EPSILON * (t_lo.abs() + p.h)).min(0.5 * (t_lo + t_new));
     let mut y_nudge = None;
@@ -115,6 +119,11 @@ pub(super) fn crossings<S: OdeSystem<N>, const N: usize>(
             });
             found.events[found.len] = (te, i);
             found.len += 1;
+        } else if suspects & (1 << i) != 0 {
+            if let Some(te) = crossing_before_extremum(system, p, i, (t_start, g_start), t_new) {
+                found.events[found.len] = (te, i);
+                found.len += 1;
+            }
         }
     }
     // A stable sort: simultaneous events keep their index order.

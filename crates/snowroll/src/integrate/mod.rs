@@ -48,6 +48,7 @@ mod control;
 mod dense;
 mod dop853;
 mod events;
+mod peaks;
 mod tableau;
 
 pub use dense::DenseStep;
@@ -135,6 +136,16 @@ pub trait OdeSystem<const N: usize> {
     /// Which crossings of event function `index` count.
     fn event_direction(&self, _index: usize) -> Direction {
         Direction::Either
+    }
+
+    /// Whether event function `index` may pass zero in its direction and
+    /// turn back within one step (a narrow maximum of a `Rising` function,
+    /// a narrow minimum of a `Falling` one): then each step is also searched
+    /// for such an extremum, at the cost of one more evaluation of the
+    /// event function per step (`peaks.rs`). Default: only sign changes
+    /// between the ends of a step count.
+    fn event_may_turn(&self, _index: usize) -> bool {
+        false
     }
 
     /// What to do at a located event of function `index` (events are offered in time order).

@@ -152,6 +152,17 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
             _ => Direction::Rising,
         }
     }
+
+    /// N and |F| − μN may have a narrow extremum past zero inside a step
+    /// (a peak of |F|/N just above μ, a dip of N just below 0): each step
+    /// is searched for it, not only its ends (issue 21).
+    fn event_may_turn(&self, index: usize) -> bool {
+        match index {
+            EVENT_HOP => self.stop_on_hop,
+            EVENT_SLIP => self.mu.is_some(),
+            _ => false,
+        }
+    }
 }
 
 impl<const N: usize> OdeModel<N> for CircularSystem<N> {

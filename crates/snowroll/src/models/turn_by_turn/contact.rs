@@ -81,9 +81,19 @@ impl TurnDynamics {
 
     /// Over a turn started with `θ̇(0) = omega0`, for θ ∈ [0, `theta_max`],
     /// from the energy integral (no integration): the extremes of N and of
-    /// |F|/N. The ratio is undefined (`None`) if N reaches 0.
+    /// |F|/N, and where N first reaches 0. The ratio is undefined (`None`)
+    /// if N reaches 0.
     pub fn contact_range(&self, omega0: f64, theta_max: Radians) -> ContactRange {
         self.scan(omega0, theta_max, false).contact
+    }
+
+    /// The first θ in [0, `theta_max`] where N reaches 0 on the energy
+    /// integral of a turn started with `θ̇(0) = omega0`, if any
+    /// ([`ContactRange::first_zero_normal`]): found from N(θ), not from the
+    /// steps of an integrator, so a dip of N below 0 narrower than a step is
+    /// not stepped over and the answer does not depend on the tolerance.
+    pub fn first_hop(&self, omega0: f64, theta_max: Radians) -> Option<Radians> {
+        self.contact_range(omega0, theta_max).first_zero_normal
     }
 
     /// [`Self::contact_range`] over the whole turn together with
@@ -98,18 +108,22 @@ impl TurnDynamics {
     /// rotation recurrence, off by ~FORCE_GRID ulp); Brent's method then
     /// refines each wanted extreme from its own grid point, with one
     /// `sin_cos` per evaluation. The extremes of a are refined only if `with_a`.
+    /// N is refined at every local minimum of its samples
+    /// ([`Self::normal_minima`]), which also gives where N first reaches 0.
     fn scan(&self, omega0: f64, theta_max: Radians, with_a: bool) -> TurnExtremes {
         let mu = self.coeffs.accretion;
         let g = self.g_along.hypot(self.g_normal);
         let step = theta_max / FORCE_GRID as f64;
         let (sh, ch) = step.sin_cos();
         let (mut s, mut c) = (0.0, 1.0);
-        // Smallest sampled value and its grid index of a, −a, N, N/(M g), −|F|/N.
-        let mut least = [(f64::INFINITY, 0usize); 5];
-        for i in 0..=FORCE_GRID {
+        let mut normal = [0.0; FORCE_GRID + 1];
+        // Smallest sampled value and its grid index of a, −a, N/(M g), −|F|/N.
+        let mut least = [(f64::INFINITY, 0usize); 4];
+        for (i, n_i) in normal.iter_mut().enumerate() {
             let theta = i as f64 * step;
             let (a, n, f) = self.orbit_sc(theta, s, c, omega0);
-            let values = [a, -a, n, n / ((1.0 + mu * theta) * g), -f.abs() / n];
+            *n_i = n;
+            let values = [a, -a, n / ((1.0 + mu * theta) * g), -f.abs() / n];
             for (slot, value) in least.iter_mut().zip(values) {
                 if value < slot.0 {
                     *slot = (value, i);
@@ -118,7 +132,7 @@ impl TurnDynamics {
             (s, c) = (s * ch + c * sh, c * ch - s * sh);
         }
         let refine = |h: &dyn Fn(f64) -> f64, (value, i): (f64, usize)| {
-            extremes::refine_min(h, 0.0, step, FORCE_GRID, i, value, FORCE_THETA_TOL)
+            extremes::refine_min(h, 0.0, step, FORCE_GRID, i, value, FORCE_THETA_TOL).1
         };
         let (a_min, a_max) = if with_a {
             (
@@ -128,10 +142,10 @@ impl TurnDynamics {
         } else {
             (f64::NAN, f64::NAN)
         };
-        let n_min = refine(&|theta| self.orbit(theta, omega0).1, least[2]);
+        let (n_min, first_zero_normal) = self.normal_minima(omega0, &normal, step);
         let min_normal_over_mg = refine(
             &|theta| self.orbit(theta, omega0).1 / ((1.0 + mu * theta) * g),
-            least[3],
+            least[2],
         );
         let max_friction_ratio = (n_min > 0.0).then(|| {
             -refine(
@@ -139,7 +153,7 @@ impl TurnDynamics {
                     let (_, n, f) = self.orbit(theta, omega0);
                     -f.abs() / n
                 },
-                least[4],
+                least[3],
             )
         });
         TurnExtremes {
@@ -149,8 +163,52 @@ impl TurnDynamics {
                 min_normal_per_mk: n_min,
                 min_normal_over_mg,
                 max_friction_ratio,
+                first_zero_normal,
             },
         }
+    }
+
+    /// From the samples `normal[i]` of N at θ = i `step` on the energy
+    /// integral: the smallest N and the first θ where N ≤ 0, if any.
+    ///
+    /// Every local minimum of the samples (the first of a run of equal
+    /// ones) is refined by Brent's method over its two intervals, so a dip
+    /// of N below 0 that opens and closes between grid points is seen. In
+    /// θ order, the first sample with N ≤ 0 or the first refined minimum
+    /// with N ≤ 0 closes a bracket whose other end (the last grid point
+    /// before it) has N > 0; bisection then narrows it until the two ends
+    /// are adjacent doubles, and the end with N ≤ 0 is the hop.
+    fn normal_minima(&self, omega0: f64, normal: &[f64], step: f64) -> (f64, Option<Radians>) {
+        let n_at = |theta: f64| self.orbit(theta, omega0).1;
+        let last = normal.len() - 1;
+        let (mut n_min, mut first_zero) = (f64::INFINITY, None);
+        for (i, &n_i) in normal.iter().enumerate() {
+            let theta_i = i as f64 * step;
+            n_min = n_min.min(n_i);
+            if first_zero.is_none() && n_i <= 0.0 {
+                first_zero = Some(match i {
+                    0 => 0.0,
+                    _ => first_root(n_at, theta_i - step, theta_i),
+                });
+            }
+            let local = (i == 0 || n_i < normal[i - 1]) && (i == last || n_i <= normal[i + 1]);
+            if !local {
+                continue;
+            }
+            let (theta_m, n_m) =
+                extremes::refine_min(n_at, 0.0, step, last, i, n_i, FORCE_THETA_TOL);
+            n_min = n_min.min(n_m);
+            if first_zero.is_none() && n_m <= 0.0 {
+                // N > 0 at every grid point up to θ_i (and θ_m ≥ θ_{i−1}).
+                let lo = if theta_m > theta_i {
+                    theta_i
+                } else {
+                    theta_i - step
+                };
+                first_zero = Some(first_root(n_at, lo, theta_m));
+            }
+        }
+        (n_min, first_zero)
     }
 
     /// `(N, F)` per unit `m_k` on the energy integral ([`Self::orbit`]).
@@ -235,6 +293,26 @@ pub struct ContactRange {
     pub min_normal_over_mg: f64,
     /// Largest |F|/N; `None` (undefined) when N ≤ 0 somewhere in the range.
     pub max_friction_ratio: Option<f64>,
+    /// The first θ of the range where N ≤ 0 (where the log hops, `docs/contact-forces.md`
+    /// §4), to the rounding of θ; `None` when N > 0 throughout.
+    pub first_zero_normal: Option<Radians>,
+}
+
+/// The first θ in `(lo, hi]` where `n(θ) ≤ 0`, given `n(lo) > 0 ≥ n(hi)` and
+/// one crossing between them: bisection until `lo` and `hi` are adjacent
+/// doubles (at most ~60 halvings for θ ≤ 2π); the end with `n ≤ 0`.
+fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            return hi;
+        }
+        if n(mid) <= 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
 }
 
 #[cfg(test)]

@@ -12,9 +12,14 @@ const MAX_STEPS: usize = 60;
 const PROBE: f64 = 1e-6;
 
 /// The smallest value of `f` near its minimum in `[lo, hi]` (f unimodal
-/// there), located to `x_tol` (absolute) in the argument: the smallest value
-/// evaluated.
-pub(super) fn brent_min(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, x_tol: f64) -> f64 {
+/// there), located to `x_tol` (absolute) in the argument: `(x, f(x))` of the
+/// smallest value evaluated.
+pub(super) fn brent_min(
+    f: impl Fn(f64) -> f64,
+    mut lo: f64,
+    mut hi: f64,
+    x_tol: f64,
+) -> (f64, f64) {
     let mut x = lo + GOLDEN * (hi - lo);
     let (mut w, mut v) = (x, x);
     let mut fx = f(x);
@@ -83,7 +88,7 @@ pub(super) fn brent_min(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, x_tol:
             }
         }
     }
-    fx
+    (x, fx)
 }
 
 /// `(min, max)` of `f` over `[lo, hi]`: `grid` intervals bracket each
@@ -108,15 +113,16 @@ pub(super) fn range_on(
             (f_max, i_max) = (fi, i);
         }
     }
-    let refined_min = refine_min(&f, lo, step, grid, i_min, f_min, x_tol);
-    let refined_max = -refine_min(|x| -f(x), lo, step, grid, i_max, -f_max, x_tol);
+    let (_, refined_min) = refine_min(&f, lo, step, grid, i_min, f_min, x_tol);
+    let refined_max = -refine_min(|x| -f(x), lo, step, grid, i_max, -f_max, x_tol).1;
     (f_min.min(refined_min), f_max.max(refined_max))
 }
 
 /// The smallest value of `g` near point `i` of the grid `lo + j step`,
 /// `j = 0..=grid`, where `g_i` is the smallest sampled value: Brent's method
 /// over the two neighbouring intervals; an end point that `g` increases away
-/// from is itself the extreme. Never above `g_i`.
+/// from is itself the extreme. Returns `(θ, g(θ))` of the smallest value
+/// found, never above `g_i`.
 pub(super) fn refine_min(
     g: impl Fn(f64) -> f64,
     lo: f64,
@@ -125,7 +131,7 @@ pub(super) fn refine_min(
     i: usize,
     g_i: f64,
     x_tol: f64,
-) -> f64 {
+) -> (f64, f64) {
     let at = |j: usize| lo + j as f64 * step;
     let inward = if i == 0 {
         Some(PROBE * step)
@@ -135,13 +141,16 @@ pub(super) fn refine_min(
         None
     };
     match inward {
-        Some(dx) if g(at(i) + dx) >= g_i => g_i,
-        _ => g_i.min(brent_min(
-            g,
-            at(i.saturating_sub(1)),
-            at((i + 1).min(grid)),
-            x_tol,
-        )),
+        Some(dx) if g(at(i) + dx) >= g_i => (at(i), g_i),
+        _ => {
+            let (x, gx) = brent_min(g, at(i.saturating_sub(1)), at((i + 1).min(grid)), x_tol);
+            // `g_i.min(gx)` as a value: the grid point wins a tie.
+            if gx < g_i {
+                (x, gx)
+            } else {
+                (at(i), g_i)
+            }
+        }
     }
 }
 
@@ -168,7 +177,7 @@ mod tests {
         let direct = (0..=2_000_000)
             .map(|i| g(i as f64 * 1e-6))
             .fold(f64::INFINITY, f64::min);
-        let refined = brent_min(g, 1.0, 1.6, 1e-10);
+        let (_, refined) = brent_min(g, 1.0, 1.6, 1e-10);
         assert!(refined <= direct + VALUE_TOL, "{refined} vs {direct}");
     }
 }

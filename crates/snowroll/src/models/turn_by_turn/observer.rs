@@ -24,8 +24,8 @@
 //! [`OdeSystem::commit_event`]: crate::integrate::OdeSystem::commit_event
 
 use super::{
-    collision_speed, kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, CollisionModel,
-    SummaryBuilder, TurnRow, TurnSink, TurnSummary, TurnSystem, EVENT_TURN_END,
+    kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, CollisionModel, SummaryBuilder,
+    TurnRow, TurnSink, TurnSummary, TurnSystem, EVENT_TURN_END,
 };
 use crate::integrate::{EventRecord, Observer};
 use crate::models::ode::{OdeModel, RowBudget, RunObserver};
@@ -78,19 +78,16 @@ impl Observer<TurnSystem, 2> for TableObserver<'_> {
         let r_next = r + b;
         let omega_end = event.y_before[1];
         let v_end = r * omega_end;
-        let (v_after, collision_loss) = match system.collision() {
+        let v_after = system.speed_after(omega_end);
+        let collision_loss = match system.collision() {
             CollisionModel::Note => {
                 // The collision keeps (r_{k+1}² + 2r_k²)/(3r_{k+1}²) of T_end (eqs. (85), (86), (89)).
                 let t_end_kinetic = kinetic_energy_at_turn_end(system.rho_l(), r, b, v_end);
-                (
-                    collision_speed(r, b, v_end),
-                    t_end_kinetic * 2.0 * b * (2.0 * r + b) / (3.0 * r_next * r_next),
-                )
+                t_end_kinetic * 2.0 * b * (2.0 * r + b) / (3.0 * r_next * r_next)
             }
             collision => {
                 // Kinetic energy before (rolling about C, or pivoting about E)
                 // minus after (eq. (82) for turn k + 1); 0 speed when stuck.
-                let v_after = system.omega_next(omega_end).unwrap_or(0.0) * r_next;
                 let before = if collision == CollisionModel::Pivot {
                     0.5 * system.start_mass()
                         * system.pivot_impact().inertia_e
@@ -100,21 +97,13 @@ impl Observer<TurnSystem, 2> for TableObserver<'_> {
                     kinetic_energy_at_turn_end(system.rho_l(), r, b, v_end)
                 };
                 let after = kinetic_energy_at_turn_start(system.rho_l(), r_next, v_after);
-                (v_after, before - after)
+                before - after
             }
         };
-        let omega0 = self.v_start / r;
-        // The contact forces while rolling: up to θ_c with `--collision pivot`.
-        let ((a_min, a_max), contact) = match system.collision() {
-            CollisionModel::Pivot => (
-                dynamics.acceleration_range(omega0),
-                dynamics.contact_range(omega0, system.pivot_impact().theta_c),
-            ),
-            _ => {
-                let both = dynamics.turn_extremes(omega0);
-                ((both.a_min, both.a_max), both.contact)
-            }
-        };
+        // The range of a, and the contact forces while rolling (up to θ_c
+        // with `--collision pivot`).
+        let extremes = system.turn_extremes(self.v_start / r);
+        let (a_min, a_max, contact) = (extremes.a_min, extremes.a_max, extremes.contact);
         let m_k = system.start_mass();
         let dt = event.t - self.t_start;
         let row = TurnRow {

@@ -8,7 +8,7 @@ use std::f64::consts::PI;
 
 use super::{
     charged_collision_speed, collision_speed, kinetic_energy_at_turn_start, CollisionModel,
-    PivotImpact, TurnDynamics, TurnVariant, TWO_PI,
+    PivotImpact, TurnDynamics, TurnExtremes, TurnVariant, TWO_PI,
 };
 
 use crate::scenario::Scenario;
@@ -30,7 +30,11 @@ const EVENT_IMPACT: usize = 5;
 /// the end distance, the hop N = 0 (`docs/contact-forces.md` §4), the slip
 /// |F| = μN (§5) and, with [`CollisionModel::Pivot`], the impact of the new
 /// layer's corner at θ = θ_c (§6.3), after which the state `[θ, θ̇]` follows
-/// the pivot about the edge E until θ = 2π.
+/// the pivot about the edge E until θ = 2π. While rolling, the hop and the
+/// slip are planned when the turn starts, from N(θ) and F(θ) on the turn's
+/// energy integral ([`TurnDynamics::first_hop`], [`TurnDynamics::first_slip`]),
+/// and their events are `θ = θ_hop`, `θ = θ_slip`: a window of N < 0 or
+/// |F| > μN narrower than a step is not stepped over.
 pub(crate) struct TurnSystem {
     variant: TurnVariant,
     r0: Meters,
@@ -61,6 +65,12 @@ pub(crate) struct TurnSystem {
     stop_override: Option<StopReason>,
     /// θ where this turn slips, from the energy integral ([`TurnDynamics::first_slip`]).
     slip_theta: Option<Radians>,
+    /// θ where this turn hops while rolling, from the energy integral
+    /// ([`TurnDynamics::first_hop`]), when a hop stops the run.
+    hop_theta: Option<Radians>,
+    /// The extremes of this turn from the plan of its hop, with the `θ̇(0)`
+    /// they were computed for, for the turn table to reuse ([`Self::turn_extremes`]).
+    planned: Option<(f64, TurnExtremes)>,
     /// The energy ledger, when the run records one.
     ledger: Option<TurnLedger>,
 }
@@ -108,6 +118,8 @@ impl TurnSystem {
             pivoting: false,
             stop_override: None,
             slip_theta: None,
+            hop_theta: None,
+            planned: None,
             ledger: None,
         };
         system.enter_turn(0);
@@ -298,18 +310,24 @@ impl TurnSystem {
     }
 
     /// Why a run that starts at `y0` stops at once, if it does (hop or slip
-    /// at the start); otherwise plans the slip of turn 0.
+    /// at the start); otherwise plans the hop and the slip of turn 0.
     pub(crate) fn start(&mut self, y0: &[f64; 2]) -> Option<StopReason> {
         let (n, f) = self.contact_per_mass(y0[0], y0[1]);
         if let Err(reason) = self.check_contact(n, f) {
             return Some(reason);
         }
-        self.plan_slip(y0[1]);
+        let r = self.dynamics.radius();
+        self.plan_turn(y0[1], r * y0[1]);
         None
     }
 
-    /// Where the turn just entered with `θ̇(0) = omega0` slips while rolling, if it does.
-    fn plan_slip(&mut self, omega0: f64) {
+    /// Where the turn just entered with `θ̇(0) = omega0` slips while
+    /// rolling, and where it hops when a hop stops the run. `v_start` is the
+    /// turn's starting speed as the turn table computes it (`v_after` of
+    /// the collision before, [`Self::speed_after`]); the hop is planned from
+    /// `v_start/r_k`, equal to `omega0` but for rounding, so that the table
+    /// can reuse the extremes found on the way ([`Self::turn_extremes`]).
+    fn plan_turn(&mut self, omega0: f64, v_start: f64) {
         let theta_max = match self.collision {
             CollisionModel::Pivot => self.impact.theta_c,
             _ => TWO_PI,
@@ -317,6 +335,62 @@ impl TurnSystem {
         self.slip_theta = self
             .mu
             .and_then(|mu| self.dynamics.first_slip(omega0, mu, theta_max));
+        self.planned = None;
+        self.hop_theta = None;
+        if self.stop_on_hop {
+            let omega_table = v_start / self.dynamics.radius();
+            let extremes = self.rolling_extremes(omega_table);
+            self.hop_theta = extremes.contact.first_zero_normal;
+            self.planned = Some((omega_table, extremes));
+        }
+    }
+
+    /// The extremes of a turn started with `θ̇(0) = omega0` while rolling:
+    /// over the whole turn, or with `--collision pivot` the contact forces up
+    /// to θ_c only (the range of a is then left NaN).
+    fn rolling_extremes(&self, omega0: f64) -> TurnExtremes {
+        match self.collision {
+            CollisionModel::Pivot => TurnExtremes {
+                a_min: f64::NAN,
+                a_max: f64::NAN,
+                contact: self.dynamics.contact_range(omega0, self.impact.theta_c),
+            },
+            _ => self.dynamics.turn_extremes(omega0),
+        }
+    }
+
+    /// What a row of the turn table reports for the current turn started
+    /// with `θ̇(0) = omega0`: the range of a over the whole turn and the
+    /// contact forces while rolling. Reuses the extremes of the turn's plan
+    /// when they were computed for this very `omega0`.
+    pub(crate) fn turn_extremes(&self, omega0: f64) -> TurnExtremes {
+        let planned = self
+            .planned
+            .filter(|(w, _)| w.to_bits() == omega0.to_bits())
+            .map(|(_, e)| e);
+        let extremes = planned.unwrap_or_else(|| self.rolling_extremes(omega0));
+        match self.collision {
+            CollisionModel::Pivot => {
+                let (a_min, a_max) = self.dynamics.acceleration_range(omega0);
+                TurnExtremes {
+                    a_min,
+                    a_max,
+                    ..extremes
+                }
+            }
+            _ => extremes,
+        }
+    }
+
+    /// The speed just after the collision at the end of turn k, from `θ̇` at
+    /// θ = 2π, as the turn table reports it: eq. (89) for `note`, else the
+    /// rule's `θ̇′ r_{k+1}` (0 when the log is stuck), m/s.
+    pub(crate) fn speed_after(&self, omega_end: f64) -> f64 {
+        let r = self.dynamics.radius();
+        match self.collision {
+            CollisionModel::Note => collision_speed(r, self.b, r * omega_end),
+            _ => self.omega_next(omega_end).unwrap_or(0.0) * (r + self.b),
+        }
     }
 
     /// Position of the nominal centre along the slope: `X_k + r_k θ` while

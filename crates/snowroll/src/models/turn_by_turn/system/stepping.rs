@@ -34,7 +34,11 @@ impl OdeSystem<2> for TurnSystem {
                 Some(x_end) => self.position(y[0]) - x_end,
                 None => -1.0,
             },
-            EVENT_HOP if self.stop_on_hop => self.contact_per_mass(y[0], y[1]).0,
+            EVENT_HOP if self.stop_on_hop && self.pivoting => self.contact_per_mass(y[0], y[1]).0,
+            EVENT_HOP if self.stop_on_hop => match self.hop_theta {
+                Some(theta) => theta - y[0],
+                None => 1.0,
+            },
             EVENT_SLIP => match (self.mu, self.pivoting, self.slip_theta) {
                 (Some(mu), true, _) => {
                     let (n, f) = self.contact_per_mass(y[0], y[1]);
@@ -90,8 +94,9 @@ impl OdeSystem<2> for TurnSystem {
                     let r = self.dynamics.radius();
                     self.pivot_shift += r * p.theta_c + p.d - TWO_PI * r;
                 }
+                let v_start = self.speed_after(y_before[1]);
                 self.enter_turn(self.turn + 1);
-                self.plan_slip(y_after[1]);
+                self.plan_turn(y_after[1], v_start);
             }
             (_, Ok(_)) => {
                 self.book_impact(y_before, y_after);
