@@ -6,6 +6,7 @@ mod collision;
 mod contact;
 mod integrator;
 mod invariants;
+mod loney;
 mod losses;
 mod sphere;
 mod streaming;
