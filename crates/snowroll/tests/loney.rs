@@ -176,3 +176,50 @@ fn fn4_drag_only_closed_form_gives_u_a_t_and_x_of_t() {
         }
     }
 }
+
+/// The sweep's fast path for `loney` on the ball: where the friction stays
+/// well inside μ (μ = 1.3 times the largest |F|/N of the run, the ball's
+/// F/M = G − a − 3q/2 and N/M = C + r′(a + q) of `circular_forces`), it
+/// takes the row and ends where `loney` itself ends (the same solver, so to
+/// rounding: 1e-14); where the ball slips (μ = 0.8 times that ratio) it
+/// leaves the row to `loney`, which stops with `slip`. (With the log's
+/// contact terms, F/M = G − a − q, the late ratio is 3/2 of the ball's and
+/// the first check fails.)
+#[test]
+fn loney_on_the_ball_takes_the_fast_path_only_clear_of_a_slip() {
+    use snowroll::sweep::{circular_end, ContactCheck};
+    use snowroll::{Derivation, StopReason};
+    const SAME: f64 = 1e-14;
+    let s = body(Shape::Sphere, 30.0, 0.01, 0.0);
+    let eq4 = Derivation::TorqueAboutCentre.coefficients_for(Shape::Sphere);
+    let loney = |mu: Option<f64>| {
+        let opts = SimOptions {
+            t_end: 50.0,
+            sampling: Sampling::Steps,
+            on_hop: OnHop::Continue,
+            mu,
+            ..SimOptions::default()
+        };
+        ModelKind::Loney.build().simulate(&s, &opts).unwrap()
+    };
+    let free = loney(None);
+    let ratio_max = free
+        .samples
+        .iter()
+        .filter_map(|p| p.friction_ratio)
+        .fold(0.0, f64::max);
+    assert!(ratio_max > 0.0);
+    let check = |mu: f64| ContactCheck {
+        stop_on_hop: false,
+        mu: Some(mu),
+    };
+    let end = circular_end(&eq4, &s, 50.0, None, check(1.3 * ratio_max))
+        .expect("the fast path takes a run clear of a slip");
+    let stop = &loney(Some(1.3 * ratio_max)).stop;
+    assert_eq!(stop.reason, StopReason::EndTime);
+    for (fast, own) in [(end.t, stop.t_s), (end.x, stop.x_m), (end.v, stop.v_m_s)] {
+        assert!((fast - own).abs() <= SAME * own, "{fast} vs {own}");
+    }
+    assert!(circular_end(&eq4, &s, 50.0, None, check(0.8 * ratio_max)).is_none());
+    assert_eq!(loney(Some(0.8 * ratio_max)).stop.reason, StopReason::Slip);
+}
