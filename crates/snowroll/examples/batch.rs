@@ -133,7 +133,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     .map(|d| d.coefficients())
     .filter(|c| c.accretes && c.lift == 0.0 && c.lift_b2 == 0.0 && c.inertia_b2 == 0.0);
     if let Some(c) = drag_only {
-        let v_exact = DragOnlyClosedForm::new(&scenario, c.drag).speed(end.x_m);
+        let v_exact = DragOnlyClosedForm::new(&scenario, c.drag)?.speed(end.x_m);
         println!(
             "closed form (fn. 4) at that x: v = {v_exact:.15e} m/s, relative difference {:.2e}",
             (end.v_m_s - v_exact).abs() / v_exact

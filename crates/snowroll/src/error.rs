@@ -163,6 +163,13 @@ pub enum SimError {
         /// Requested time, s.
         t: f64,
     },
+    /// The closed form's time t(x) = ∫ dx/v could not be integrated (a
+    /// quadrature panel that is not finite, or too many panels).
+    #[error("could not integrate t(x) up to x = {} m", number(*x))]
+    TimeIntegral {
+        /// The distance asked for, m.
+        x: f64,
+    },
 }
 
 /// A failure of a [`SampleSink`](crate::SampleSink), kept whole (its

@@ -99,7 +99,7 @@
 //! | eq. (21) | [`Derivation::LagrangianPrinted`] |
 //! | eq. (32), (36) | [`Derivation::QuasiCircular`], [`Derivation::QuasiCircularLift`] |
 //! | eq. (35) and every terminal value | [`Coefficients::terminal_fraction`] |
-//! | fn. 4 | [`LoneyModel`], [`DragOnlyClosedForm`] |
+//! | fn. 4 (and its form (F1) for every circular model) | [`sweep::SpeedSquared`] (the one closed-form solver), as [`LoneyModel`], [`DragOnlyClosedForm`] and the sweep's [`sweep::circular_end`] |
 //! | fn. 7 | [`Coefficients::stall_slope`] (§2: does not start), [`first_turn_stall_slope`] (§3: stalls in turn 0), [`ModelKind::stall_threshold`] |
 //! | range of validity (order in b/r) | [`ModelKind::validity`], [`validity_warnings`] |
 //! | eq. (95) | [`Derivation::Snowless`] |

@@ -1,5 +1,6 @@
-//! Adaptive Gauss–Kronrod (7/15-point) quadrature for the smooth integrals of
-//! the closed forms (t(x) of fn. 4).
+//! The Gauss–Kronrod (7/15-point) rule for the smooth integrals of the
+//! closed forms (t(x) of fn. 4); the adaptive bisection over it is the
+//! closed-form solver's (`models/closed_form`).
 //!
 //! Written here because the need is one small, smooth, one-dimensional
 //! integral per call at near machine precision; the quadrature crates either
@@ -57,53 +58,6 @@ pub(crate) fn kronrod(f: &mut impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f
     (k * h, ((k - g) * h).abs())
 }
 
-/// Most bisections of one integral: far more than a smooth integrand needs
-/// at machine precision (tens), few enough that one that never meets its
-/// tolerance costs milliseconds, not the 2^40 rule evaluations of a full
-/// bisection tree.
-const MAX_BISECTIONS: u32 = 1000;
-
-/// ∫ₐᵇ f with relative tolerance `rtol` (absolute floor `atol`), by
-/// recursive bisection of the 15-point rule, at most 40 levels deep and
-/// [`MAX_BISECTIONS`] bisections in all. An interval whose error estimate is
-/// not finite (an integrand that overflowed) is not bisected: its estimate
-/// is returned as it is, for the caller to find non-finite.
-pub(crate) fn integrate(
-    f: &mut impl FnMut(f64) -> f64,
-    a: f64,
-    b: f64,
-    rtol: f64,
-    atol: f64,
-) -> f64 {
-    fn recurse(
-        f: &mut impl FnMut(f64) -> f64,
-        a: f64,
-        b: f64,
-        whole: (f64, f64),
-        tol: f64,
-        depth: u32,
-        budget: &mut u32,
-    ) -> f64 {
-        let (value, err) = whole;
-        if err <= tol || depth == 0 || !err.is_finite() || *budget == 0 {
-            return value;
-        }
-        *budget -= 1;
-        let m = 0.5 * (a + b);
-        let left = kronrod(f, a, m);
-        let right = kronrod(f, m, b);
-        recurse(f, a, m, left, 0.5 * tol, depth - 1, budget)
-            + recurse(f, m, b, right, 0.5 * tol, depth - 1, budget)
-    }
-    if b <= a {
-        return 0.0;
-    }
-    let whole = kronrod(f, a, b);
-    let tol = (rtol * whole.0.abs()).max(atol);
-    let mut budget = MAX_BISECTIONS;
-    recurse(f, a, b, whole, tol, 40, &mut budget)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -122,45 +76,5 @@ mod tests {
             };
             assert!((v - want).abs() < EXACT_TOL, "degree {k}: {v} vs {want}");
         }
-    }
-
-    /// Regression of issue 7 (fuzzing): `simulate --model loney --v0 1e308`
-    /// hung, its integrand overflowing so that no interval ever met its
-    /// tolerance and the bisection tree grew to 2^40 leaves.
-    #[test]
-    fn regression_7_an_integrand_that_never_converges_costs_a_bounded_effort() {
-        for f in [
-            (|x: f64| if x > 0.5 { f64::INFINITY } else { x }) as fn(f64) -> f64,
-            |_| f64::NAN,
-            // Not integrable at 0: the error estimate never meets the tolerance.
-            |x| 1.0 / x,
-        ] {
-            let mut calls = 0u64;
-            let _ = integrate(
-                &mut |x| {
-                    calls += 1;
-                    f(x)
-                },
-                0.0,
-                1.0,
-                1e-15,
-                0.0,
-            );
-            assert!(
-                calls <= 15 * (2 * u64::from(MAX_BISECTIONS) + 1),
-                "{calls} evaluations"
-            );
-        }
-    }
-
-    #[test]
-    fn adaptive_reaches_machine_precision_on_smooth_integrands() {
-        let v = integrate(&mut |x: f64| x.exp(), 0.0, 10.0, 1e-15, 0.0);
-        let want = 10f64.exp_m1();
-        assert!(((v - want) / want).abs() < 4e-15, "{v} vs {want}");
-        // A peaked integrand needs subdivision.
-        let v = integrate(&mut |x: f64| 1.0 / (1e-4 + x * x), -1.0, 1.0, 1e-13, 0.0);
-        let want = 2.0 * (1.0f64 / 1e-2).atan() / 1e-2;
-        assert!(((v - want) / want).abs() < 1e-12, "{v} vs {want}");
     }
 }

@@ -61,7 +61,7 @@ fn fn4_loney_closed_form_matches_integrated_eq4_up_to_10_km() {
         let traj = run(ModelKind::TorqueCm, s, &opts);
         assert_eq!(traj.stop.reason, StopReason::Distance, "{s:?}");
         assert!((traj.stop.x_m - 1e4).abs() < 1e-6);
-        let loney = DragOnlyClosedForm::new(s, 7.0 / 6.0);
+        let loney = DragOnlyClosedForm::new(s, 7.0 / 6.0).unwrap();
         let mut worst: f64 = 0.0;
         for p in traj.samples.iter().filter(|p| p.v_m_s > 0.0) {
             let rel = (p.v_m_s / loney.speed(p.x_m) - 1.0).abs();
@@ -103,7 +103,7 @@ fn fn4_loney_model_positions_match_integrated_eq4_at_requested_times() {
 #[test]
 fn fn4_corrected_coefficient_is_half_du_dx() {
     let s = scenario(30.0, 0.01, 0.1, 1.5);
-    let cf = DragOnlyClosedForm::new(&s, 7.0 / 6.0);
+    let cf = DragOnlyClosedForm::new(&s, 7.0 / 6.0).unwrap();
     for x in [0.01, 0.3, 2.0, 40.0] {
         let h = 1e-4 * x;
         let du = (cf.speed_squared(x + h) - cf.speed_squared(x - h)) / (2.0 * h);
@@ -307,7 +307,7 @@ fn drag_only_models_approach_with_the_derived_power_of_r() {
             "{kind}: {slope} vs {want}"
         );
         // The closed form of the same equation gives the same deviation.
-        let cf = DragOnlyClosedForm::new(&s, c.drag);
+        let cf = DragOnlyClosedForm::new(&s, c.drag).unwrap();
         let x2 = PI * (r2 * r2 - 0.01) / s.snow_depth();
         let d_cf = (cf.acceleration(x2) - a_inf).abs();
         assert!(
@@ -403,7 +403,7 @@ fn eq21_as_printed_differs_from_eq14_and_corrected_equals_it() {
 #[test]
 fn halving_rtol_halves_the_error_against_loney() {
     let s = scenario(30.0, 0.01, 0.1, 0.0);
-    let loney = DragOnlyClosedForm::new(&s, 7.0 / 6.0);
+    let loney = DragOnlyClosedForm::new(&s, 7.0 / 6.0).unwrap();
     let err = |rtol: f64| {
         let traj = run(
             ModelKind::TorqueCm,

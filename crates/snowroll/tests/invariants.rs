@@ -246,7 +246,12 @@ fn the_closed_form_solves_eq4_and_keeps_eq8() {
                 Ok(t) => t,
                 Err(e) => {
                     prop_assert!(
-                        matches!(e, SimError::Inversion { .. } | SimError::Param(_)),
+                        matches!(
+                            e,
+                            SimError::Inversion { .. }
+                                | SimError::TimeIntegral { .. }
+                                | SimError::Param(_)
+                        ),
                         "{e}"
                     );
                     errors.set(errors.get() + 1);

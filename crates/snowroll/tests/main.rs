@@ -7,6 +7,7 @@ mod contact;
 mod event_extrema;
 mod integrator;
 mod invariants;
+mod loney;
 mod losses;
 mod sphere;
 mod streaming;

@@ -15,7 +15,9 @@ mod turn_by_turn;
 mod validity;
 
 pub use circular::{Balance, CircularModel, Coefficients, Derivation};
-pub use closed_form::{DragOnlyClosedForm, LoneyModel};
+pub use closed_form::{
+    circular_end, ContactCheck, DragOnlyClosedForm, FastEnd, LoneyModel, SpeedSquared,
+};
 pub use contact::{circular_forces, ContactForces};
 pub use exact_geometry::SectorBody;
 pub use tolerance::{

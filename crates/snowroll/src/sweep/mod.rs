@@ -16,14 +16,13 @@
 //!   bit-identical for any thread count, chunk size and shard split.
 
 mod axis;
-mod fast;
 mod grid;
 mod regime;
 mod row;
 mod run;
 
+pub use crate::models::{circular_end, ContactCheck, FastEnd, SpeedSquared};
 pub use axis::{Axis, GridError, Param, Values};
-pub use fast::{circular_end, ContactCheck, FastEnd, SpeedSquared};
 pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
 pub use row::SweepRow;

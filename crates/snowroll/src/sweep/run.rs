@@ -5,12 +5,11 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::fast::{circular_end, ContactCheck};
 use super::grid::{Grid, Point};
 use super::row::circular_turns;
 use super::row::SweepRow;
 use crate::error::ParamError;
-use crate::models::{circular_forces, Derivation, ModelKind};
+use crate::models::{circular_end, circular_forces, ContactCheck, Derivation, ModelKind};
 use crate::physics;
 use crate::trajectory::Sample;
 
@@ -66,21 +65,20 @@ pub fn run_point(grid: &Grid, index: u64, method: Method) -> Result<SweepRow, Pa
 /// The row of a circular model from the closed form, or `None` where it
 /// does not apply.
 fn fast_row(point: &Point) -> Option<SweepRow> {
-    let derivation = match point.model {
-        ModelKind::Loney => Derivation::TorqueAboutCentre,
-        kind => kind.derivation()?,
-    };
     let o = &point.options;
-    // The closed form is the log's (2G/3) and knows no losses
-    // (`docs/snowball-and-losses.md` §2); the ball and lossy runs take the ODE path.
-    if o.tolerances.rtol < FAST_MIN_RTOL
-        || point.scenario.shape() != crate::scenario::Shape::Cylinder
-        || o.losses.records_ledger()
-    {
+    let s = &point.scenario;
+    // The closed form knows no losses (`docs/snowball-and-losses.md` §2).
+    // Loney's closed form is eq. (4) on the scenario's body (the ball too,
+    // on its natural swath: [`crate::LoneyModel`] runs the same solver);
+    // the ball's circular models take the ODE path.
+    let c = match point.model {
+        ModelKind::Loney => Derivation::TorqueAboutCentre.coefficients_for(s.shape()),
+        _ if s.shape() != crate::scenario::Shape::Cylinder => return None,
+        kind => kind.derivation()?.coefficients(),
+    };
+    if o.tolerances.rtol < FAST_MIN_RTOL || o.losses.records_ledger() {
         return None;
     }
-    let c = derivation.coefficients();
-    let s = &point.scenario;
     let contact = ContactCheck {
         stop_on_hop: o.on_hop == crate::trajectory::OnHop::Stop,
         mu: o.mu,

@@ -1,5 +1,7 @@
-//! The fast path of a sweep for the circular models: the speed in closed
-//! form, the time by one quadrature, no ODE solver.
+//! The closed-form solver of the circular equations of motion: the speed in
+//! closed form, the time by quadrature and a series, no ODE solver. It is
+//! Loney's solution of eq. (4) (fn. 4, [`LoneyModel`]) and the sweep's fast
+//! path ([`circular_end`]) for every circular model.
 //!
 //! Every circular equation of motion has the common form of
 //! [`crate::models::Coefficients`]. With `u = v²`, `du/dx = 2a`,
@@ -7,9 +9,13 @@
 //!
 //! `(du/ds)(s + k) = (2/b)(P s − D u − L √s − M)`,
 //!
-//! with `P = 2G/3`, `D = c_v b`, `L = λ₁ C b/√π`, `M = λ₂ C b²/3` and
+//! with `P = G/(1 + k)` (2G/3 for the log, 5G/7 for the ball on its natural
+//! swath 2r, [`crate::scenario::Shape::push_ratio`]), `D = c_v b`, `L = λ₁ C b/√π`, `M = λ₂ C b²/3` and
 //! `k = κ b²/(6π)` (G = g sin α, C = g cos α): a linear first-order equation
-//! in u. With `n = 2D/b = 2c_v` its integrating factor is `(s + k)^n`:
+//! in u. (Here k is the inertia term; the body's k = I/(M r²) enters only
+//! through P.) For eq. (4), L = M = k = 0 and n = 7/3 on the log, n = 23/7 on
+//! the ball (`docs/snowball-and-losses.md` §1.4), and (F1) is fn. 4:
+//! `u = v0² (s0/s)^n + 2P/(1+n) · (s0/b) [s/s0 − (s0/s)^n]`. With `n = 2D/b = 2c_v` its integrating factor is `(s + k)^n`:
 //!
 //! `F(s) = u (s + k)^n = u0 (s0 + k)^n + (2/b) ∫_{s0}^{s} (Pσ − L√σ − M)(σ + k)^{n−1} dσ`.  (F1)
 //!
@@ -40,6 +46,11 @@
 //! For the models without lift and inertia term (eqs. (4), (6), (32)) the
 //! panels stop soon after the start: beyond it t is a convergent series in
 //! `s^(−(n+1))` (submodule `series`), and Newton's method runs on that series.
+//!
+//! Submodules: `series` (that series), `end` (where a run ends, the sweep's
+//! [`circular_end`]), `clock` (t(x) and x(t) at any point, for samples) and
+//! `loney` ([`LoneyModel`], [`DragOnlyClosedForm`]: contact events located
+//! by a scan, and the samples).
 
 use std::cell::Cell;
 use std::f64::consts::PI;
@@ -48,10 +59,13 @@ use crate::models::Coefficients;
 use crate::quadrature::kronrod;
 use crate::scenario::Scenario;
 
+mod clock;
 mod end;
+mod loney;
 mod series;
 
 pub use end::{circular_end, FastEnd};
+pub use loney::{DragOnlyClosedForm, LoneyModel};
 
 /// Largest whole n = 2c_v handled with the inertia term k ≠ 0 (eq. (21)
 /// as printed has n = 2): the polynomial of (F1) has degree 2n + 1.
@@ -125,7 +139,7 @@ pub struct SpeedSquared {
     b: f64,
     /// v0², m²/s².
     u0: f64,
-    /// P = 2G/3, m/s².
+    /// P = G/(1 + k): 2G/3 (log) or 5G/7 (ball), m/s².
     push: f64,
     /// √s* of the module doc (0 without lift), m.
     sqrt_s_min: f64,
@@ -137,6 +151,10 @@ pub struct SpeedSquared {
     lift: f64,
     lift_b2: f64,
     inertia: f64,
+    /// (n − 1)/2 and n/2 for M ∝ rⁿ: the coefficients of q in N/M and F/M
+    /// (½ and 1 for the log, 1 and 3/2 for the ball).
+    normal_q: f64,
+    friction_q: f64,
     /// What the contact forces must not do.
     contact: ContactCheck,
     /// Cleared when a node of the quadrature comes near a hop or a slip.
@@ -158,12 +176,36 @@ pub struct ContactCheck {
 
 impl SpeedSquared {
     /// The closed form of `c` in `scenario`, or `None` where (F1) is not
-    /// elementary here (k ≠ 0 and n not a whole number up to 4).
+    /// elementary here (k ≠ 0 and n not a whole number up to 4) or does not
+    /// hold: coefficients of another shape than the scenario's, a `b³`
+    /// drag term (`drag_b3`, the ball's energy models), or a ball whose
+    /// fixed swath breaks the area law π r² = π r0² + b x.
     pub fn new(
         c: &Coefficients,
         scenario: &Scenario,
         contact: ContactCheck,
     ) -> Option<SpeedSquared> {
+        let u = Self::with_power_form(c, scenario, contact)?;
+        if u.inertia == 0.0 || u.b == 0.0 {
+            return Some(u);
+        }
+        let (n, s0, k) = (2.0 * c.drag, u.s0, u.inertia);
+        let form = poly_form(u.push, u.lift, u.lift_b2, s0, k, n, u.u0)?;
+        Some(SpeedSquared { form, ..u })
+    }
+
+    /// As [`new`](Self::new), with the form of k = 0 (the inertia term
+    /// left out of u, not of the acceleration): `None` only where (F1)
+    /// does not hold.
+    fn with_power_form(
+        c: &Coefficients,
+        scenario: &Scenario,
+        contact: ContactCheck,
+    ) -> Option<SpeedSquared> {
+        let shape = scenario.shape();
+        if c.shape != shape || c.drag_b3 != 0.0 || !scenario.follows_area_law() {
+            return None;
+        }
         let b = if c.accretes {
             scenario.snow_depth()
         } else {
@@ -172,7 +214,9 @@ impl SpeedSquared {
         let r0 = scenario.initial_radius();
         let s0 = PI * r0 * r0;
         let gc = scenario.g_normal();
-        let push = 2.0 * scenario.g_along() / 3.0;
+        let (num, den) = shape.push_ratio();
+        let push = num * scenario.g_along() / den;
+        let mass_n = shape.mass_exponent();
         let u0 = scenario.initial_speed().powi(2);
         let big_l = c.lift * gc * b / PI.sqrt();
         let big_m = c.lift_b2 * gc * b * b / 3.0;
@@ -181,15 +225,13 @@ impl SpeedSquared {
         let sqrt_s_min = (big_l + (big_l * big_l + 4.0 * push * big_m).sqrt()) / (2.0 * push);
         let form = if b == 0.0 {
             Form::Constant
-        } else if k == 0.0 {
+        } else {
             Form::Power {
                 p: push,
                 l: big_l / s0.sqrt(),
                 m: big_m / s0,
                 n,
             }
-        } else {
-            poly_form(push, big_l, big_m, s0, k, n, u0)?
         };
         Some(SpeedSquared {
             form,
@@ -204,6 +246,8 @@ impl SpeedSquared {
             lift: big_l,
             lift_b2: big_m,
             inertia: k,
+            normal_q: (mass_n - 1.0) / 2.0,
+            friction_q: mass_n / 2.0,
             contact,
             contact_ok: Cell::new(true),
         })
@@ -266,22 +310,35 @@ impl SpeedSquared {
         2.0 * w / u.sqrt()
     }
 
+    /// The acceleration `a = (P − D u/s − L/√s − M/s)/(1 + k/s)` of the
+    /// common form at `x` with `v² = u`, m/s² (`½ du/dx` when u = u(x)).
+    fn acceleration_at(&self, x: f64, u: f64) -> f64 {
+        let s = self.s0 + self.b * x;
+        (self.push - self.drag * u / s - self.lift / s.sqrt() - self.lift_b2 / s)
+            / (1.0 + self.inertia / s)
+    }
+
+    /// The acceleration after rolling `x` on the closed form, m/s².
+    pub fn acceleration(&self, x: f64) -> f64 {
+        self.acceleration_at(x, self.at(x))
+    }
+
     /// Whether N and μN − |F| (`docs/contact-forces.md` §2, as
-    /// [`crate::circular_forces`]: `N/M = C + b(a + q/2)/(2πr)`,
-    /// `F/M = G − a − q`, q = b v²/(π r²)) are at least [`CONTACT_MARGIN`]
-    /// C at (x, v² = u), for the events the run watches.
+    /// [`crate::circular_forces`]: `N/M = C + b(a + (n−1)q/2)/(2πr)`,
+    /// `F/M = G − a − n q/2`, q = b v²/(π r²), M ∝ rⁿ: `a + q/2` and `q`
+    /// for the log) are at least [`CONTACT_MARGIN`] C at (x, v² = u), for
+    /// the events the run watches.
     fn contact_holds(&self, x: f64, u: f64) -> bool {
         let c = &self.contact;
         if !c.stop_on_hop && c.mu.is_none() {
             return true;
         }
         let s = self.s0 + self.b * x;
-        let a = (self.push - self.drag * u / s - self.lift / s.sqrt() - self.lift_b2 / s)
-            / (1.0 + self.inertia / s);
+        let a = self.acceleration_at(x, u);
         let q = self.b * u / s;
         let r = (s / PI).sqrt();
-        let normal = self.g_normal + self.b / (2.0 * PI * r) * (a + 0.5 * q);
-        let friction = self.g_along - a - q;
+        let normal = self.g_normal + self.b / (2.0 * PI * r) * (a + self.normal_q * q);
+        let friction = self.g_along - a - self.friction_q * q;
         let margin = CONTACT_MARGIN * self.g_normal;
         let hop_ok = !c.stop_on_hop || normal >= margin;
         let slip_ok =
@@ -444,6 +501,32 @@ mod tests {
 #[cfg(test)]
 mod gauss_tests {
     use super::*;
+
+    /// Regression of issue 7 (fuzzing): `simulate --model loney --v0 1e308`
+    /// hung, its integrand overflowing so that no interval ever met its
+    /// tolerance and the bisection tree grew to 2^40 leaves. The bisection
+    /// budget bounds the effort of one panel.
+    #[test]
+    fn regression_7_an_integrand_that_never_converges_costs_a_bounded_effort() {
+        for f in [
+            (|x: f64| if x > 0.5 { f64::INFINITY } else { x }) as fn(f64) -> f64,
+            |_| f64::NAN,
+            // Not integrable at 0: the error estimate never meets the tolerance.
+            |x| 1.0 / x,
+        ] {
+            let mut calls = 0u64;
+            let mut budget = MAX_BISECTIONS;
+            let mut g = |x| {
+                calls += 1;
+                f(x)
+            };
+            let _ = adaptive(&mut g, 0.0, 1.0, &mut budget);
+            assert!(
+                calls <= 15 * (2 * u64::from(MAX_BISECTIONS) + 1),
+                "{calls} evaluations"
+            );
+        }
+    }
 
     /// The 5-point rule integrates polynomials of degree 9 exactly (to
     /// rounding of a 5-term sum).
