@@ -15,6 +15,7 @@
 //! Where the message names a CLI flag (`--snow-depth`), the Python keyword
 //! (`snow_depth`) replaces it (`python_message`).
 
+mod guard;
 mod sweep;
 
 use numpy::IntoPyArray;
@@ -24,10 +25,11 @@ use pyo3::types::{PyDict, PyList};
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::params::{Kind, Scope};
 use snowroll::{
-    run_turns, validity_warnings, Given, LedgerRow, ModelKind, Param, ParamError, Sampling,
+    run_turns_into, validity_warnings, Given, LedgerRow, ModelKind, Param, ParamError, Sampling,
     Scenario, ScenarioFile, Settings, SimError, SimOptions, Stop, Trajectory, TurnTable, Value,
     PARAMS,
 };
+use snowroll::trajectory::Collected;
 use snowroll_io::RunParams;
 
 /// A library message in Python's words: each CLI flag `--kebab-name` (two
@@ -355,10 +357,11 @@ fn turn_columns<'py>(py: Python<'py>, table: &TurnTable) -> PyResult<Bound<'py, 
 /// `warnings`. The keywords are the parameter table's (`PARAMS`); the
 /// Python layer wraps the dict in `snowroll.Result`.
 #[pyfunction]
-#[pyo3(signature = (model = "torque-cm", **params))]
+#[pyo3(signature = (model = "torque-cm", *, max_memory = guard::MAX_MEMORY_DEFAULT, **params))]
 fn simulate<'py>(
     py: Python<'py>,
     model: &str,
+    max_memory: u64,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let scopes = [Scope::Shared, Scope::Sampling, Scope::Turns];
@@ -382,9 +385,17 @@ fn simulate<'py>(
         base.options.turns = Some(n);
     }
     let (scenario, opts) = inputs(&given, base)?;
-    let traj = py
-        .detach(|| kind.build().simulate(&scenario, &opts))
-        .map_err(sim_error)?;
+    let guard = guard::Guard::new(max_memory, guard::sample_bytes());
+    if let Some(rows) = opts.known_rows() {
+        guard.check_up_front(rows, "simulate()")?;
+    }
+    let mut sink = guard::GuardedSamples {
+        collected: Collected::default(),
+        guard,
+    };
+    let end = py.detach(|| kind.build().simulate_into(&scenario, &opts, &mut sink));
+    let guard::GuardedSamples { collected, guard } = sink;
+    let traj = collected.into_trajectory(kind, guard.outcome(end, sim_error)?);
     let mut params = RunParams::new(&scenario, &opts);
     params.warnings = validity_warnings(kind, &scenario)
         .iter()
@@ -406,10 +417,11 @@ fn simulate<'py>(
 /// dict with `columns` (one row per turn), `summary`, `stop`, `params`,
 /// `version`, `model`, `equation`, `warnings`.
 #[pyfunction]
-#[pyo3(signature = (model = "turns", **params))]
+#[pyo3(signature = (model = "turns", *, max_memory = guard::MAX_MEMORY_DEFAULT, **params))]
 fn turns<'py>(
     py: Python<'py>,
     model: &str,
+    max_memory: u64,
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let mut given = given("turns", &[Scope::Shared, Scope::Turns], params)?;
@@ -430,9 +442,24 @@ fn turns<'py>(
     base.options.sampling = Sampling::Ends;
     base.options.turns = Some(wanted);
     let (scenario, opts) = inputs(&given, base)?;
-    let table = py
-        .detach(|| run_turns(kind, &scenario, &opts))
-        .map_err(sim_error)?;
+    let guard = guard::Guard::new(max_memory, guard::turn_bytes());
+    guard.check_up_front(wanted as f64, "turns()")?;
+    let mut sink = guard::GuardedTurns {
+        rows: Vec::new(),
+        ledger: Vec::new(),
+        guard,
+    };
+    let end = py.detach(|| run_turns_into(kind, &scenario, &opts, &mut sink));
+    let guard::GuardedTurns { rows, ledger, guard } = sink;
+    let end = guard.outcome(end, sim_error)?;
+    let table = TurnTable {
+        model: end.model,
+        rows,
+        ledger,
+        stop: end.stop,
+        summary: end.summary,
+        stats: end.stats,
+    };
     let mut params = RunParams::new(&scenario, &opts).per_turn();
     params.warnings = validity_warnings(kind, &scenario)
         .iter()

@@ -2,7 +2,7 @@
 //! given as a Python dict, rows as numpy columns named as in the CLI's
 //! `snowroll sweep` CSV.
 
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use snowroll::sweep::{
@@ -11,6 +11,7 @@ use snowroll::sweep::{
 };
 use snowroll::{CollisionModel, ModelKind, OnHop, ParamError};
 
+use crate::guard::Guard;
 use crate::{column, record, value_error, value_error_text};
 
 /// The values of one sweep axis: a string as the CLI reads it (`a,b,c` or
@@ -89,12 +90,13 @@ fn choice_list<T: Copy>(
 /// `collision`, `stop`, `error`) as lists of `str` or `None`, which the
 /// Python layer turns into numpy object arrays.
 #[pyfunction]
-#[pyo3(signature = (grid, *, shard = None, method = "auto"))]
+#[pyo3(signature = (grid, *, shard = None, method = "auto", max_memory = crate::guard::MAX_MEMORY_DEFAULT))]
 pub(crate) fn sweep<'py>(
     py: Python<'py>,
     grid: &Bound<'py, PyDict>,
     shard: Option<(u64, u64)>,
     method: &str,
+    max_memory: u64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let method = match method {
         "auto" => Method::Auto,
@@ -108,16 +110,24 @@ pub(crate) fn sweep<'py>(
     let grid = parse_grid(grid)?;
     let (i, n) = shard.unwrap_or((0, 1));
     let range = shard_range(grid.len(), i, n).map_err(|e| value_error_text(&e))?;
-    let rows = py
-        .detach(|| {
-            let mut rows: Vec<SweepRow> = Vec::new();
-            run_chunks(&grid, range, DEFAULT_CHUNK, method, |chunk| {
-                rows.extend_from_slice(chunk);
-                Ok::<(), ParamError>(())
-            })
-            .map(|()| rows)
-        })
-        .map_err(value_error)?;
+    let mut guard = Guard::new(max_memory, sweep_row_bytes());
+    guard.check_up_front((range.end - range.start) as f64, "sweep()")?;
+    // Chunks small enough that Ctrl-C is seen within about a second even
+    // for the slowest models, large enough to keep both cores busy.
+    let chunk = DEFAULT_CHUNK / 8;
+    let (rows, done) = py.detach(|| {
+        let mut rows: Vec<SweepRow> = Vec::new();
+        let done = run_chunks(&grid, range, chunk, method, |part| {
+            guard.rows(part.len() as u64, "sweep()").map_err(|_| Stop::Guard)?;
+            rows.extend_from_slice(part);
+            Ok::<(), Stop>(())
+        });
+        (rows, done)
+    });
+    guard.outcome(done, |e| match e {
+        Stop::Param(p) => value_error(p),
+        Stop::Guard => PyRuntimeError::new_err("sweep stopped"),
+    })?;
     let c = columns(py, &rows)?;
     let out = PyDict::new(py);
     out.set_item("columns", c)?;
@@ -125,6 +135,25 @@ pub(crate) fn sweep<'py>(
     out.set_item("shard", (i, n))?;
     out.set_item("version", snowroll_io::VERSION)?;
     Ok(out)
+}
+
+/// Why a sweep's rows stopped coming: a bad grid point, or the guard.
+enum Stop {
+    Param(ParamError),
+    /// The guard stopped the run; its error is the guard's.
+    Guard,
+}
+
+impl From<ParamError> for Stop {
+    fn from(e: ParamError) -> Self {
+        Stop::Param(e)
+    }
+}
+
+/// Bytes a sweep row holds until the call returns: the library's row and
+/// one float (or object pointer) per column made from it.
+fn sweep_row_bytes() -> u64 {
+    (std::mem::size_of::<SweepRow>() + 8 * 24) as u64
 }
 
 /// The grid of a Python grid dict: `model`, the numeric axes and the two
