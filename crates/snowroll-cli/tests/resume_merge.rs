@@ -192,6 +192,12 @@ fn regression_20_resume_checks_the_rows_already_there() {
             "leaves a gap",
         ),
         (
+            // A torn last line is not cut when an earlier row is refused.
+            [&rows[..5], &rows[6..]].concat().concat() + &rows[0][..9],
+            line(5),
+            "leaves a gap",
+        ),
+        (
             [&rows[..6], &rows[5..]].concat().concat(),
             line(6),
             "repeats an earlier row",

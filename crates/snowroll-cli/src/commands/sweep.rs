@@ -187,8 +187,7 @@ fn fill_and_finish(
     let grid = &run.recorded.grid;
     let range = run.recorded.rows.clone();
     let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
-    let header_lines = run.header.lines().count() as u64;
-    let done = partial.rows_done(run.recorded, header_lines)?;
+    let done = partial.rows_done(run.recorded)?;
     bar.inc(done);
     let shown = path.display().to_string();
     let mut last_sync = Instant::now();

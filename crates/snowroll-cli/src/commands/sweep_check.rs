@@ -13,7 +13,7 @@ use std::collections::BTreeMap;
 use std::io::{BufRead, Read};
 use std::ops::Range;
 
-use anyhow::{anyhow, bail, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use snowroll::params::Value;
 use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
 use snowroll_io::VERSION;
@@ -85,7 +85,8 @@ impl Recorded {
             let mut buf = Vec::new();
             let n = (&mut *input)
                 .take(MAX_HEADER_LINE + 1)
-                .read_until(b'\n', &mut buf)?;
+                .read_until(b'\n', &mut buf)
+                .with_context(|| format!("reading {shown}"))?;
             len += n as u64;
             let line_no = lines.len() + 1;
             if n == 0 || buf.last() != Some(&b'\n') {
@@ -296,7 +297,8 @@ pub fn check_rows(
         buf.clear();
         let n = (&mut *input)
             .take(MAX_ROW_LINE + 1)
-            .read_until(b'\n', &mut buf)?;
+            .read_until(b'\n', &mut buf)
+            .with_context(|| format!("reading {shown}"))?;
         if n == 0 {
             return Ok(next);
         }

@@ -66,6 +66,8 @@ pub struct Partial {
     path: PathBuf,
     /// Length of the header, bytes: the rows start there.
     pub header_len: u64,
+    /// Lines of the header: the first row's line number is one more.
+    header_lines: u64,
     /// Whether this run created the file (it may then remove it).
     created: bool,
 }
@@ -81,6 +83,7 @@ impl Partial {
             .map_err(|_| anyhow!("{shown} is being written by another sweep"))?;
         let mut partial = Partial {
             header_len: 0,
+            header_lines: header.lines().count() as u64,
             file,
             path: path.to_path_buf(),
             created,
@@ -115,32 +118,34 @@ impl Partial {
             );
         }
         partial.header_len = on_disk.len;
+        partial.header_lines = on_disk.lines;
         Ok(partial)
     }
 
-    /// How many rows of `range` are complete on disk: cuts a torn last line
-    /// off (the only change made to rows already there), checks every row
-    /// ([`check_rows`] against `run`'s grid) and leaves the file positioned
-    /// at its end.
-    pub fn rows_done(&mut self, run: &Recorded, header_lines: u64) -> Result<u64> {
+    /// How many rows of `run` are complete on disk: checks every row
+    /// ([`check_rows`] against `run`'s grid), then cuts a torn last line
+    /// off (the only change made to rows already there, and only when the
+    /// rows before it passed) and leaves the file positioned at its end.
+    pub fn rows_done(&mut self, run: &Recorded) -> Result<u64> {
         let shown = self.path.display().to_string();
         let range: &Range<u64> = &run.rows;
         let len = self.file.metadata()?.len();
         let end = last_newline(&mut self.file, self.header_len, len)?;
-        if end < len {
-            self.file.set_len(end)?;
-        }
         self.file.seek(SeekFrom::Start(self.header_len))?;
         let mut reader = BufReader::new((&self.file).take(end - self.header_len));
         let next = check_rows(
             &mut reader,
             &run.grid,
             range,
-            header_lines + 1,
+            self.header_lines + 1,
             &shown,
             |_| Ok(()),
         )
         .map_err(|e| anyhow!("cannot resume: {e}"))?;
+        // Only now, the rows before it being sound, is the torn line cut.
+        if end < len {
+            self.file.set_len(end)?;
+        }
         self.file.seek(SeekFrom::End(0))?;
         Ok(next - range.start)
     }
