@@ -76,35 +76,7 @@ impl Recorded {
     /// a missing or unknown line, a value that does not parse, a point
     /// count that is not the grid's, columns that are not [`SweepRow`]'s.
     pub fn read(input: &mut impl BufRead, shown: &str) -> Result<Recorded> {
-        let mut lines: Vec<String> = Vec::new();
-        let mut len = 0u64;
-        let columns = loop {
-            if lines.len() >= MAX_HEADER_LINES {
-                bail!("{shown}: more than {MAX_HEADER_LINES} header lines: not a sweep file");
-            }
-            let mut buf = Vec::new();
-            let n = (&mut *input)
-                .take(MAX_HEADER_LINE + 1)
-                .read_until(b'\n', &mut buf)
-                .with_context(|| format!("reading {shown}"))?;
-            len += n as u64;
-            let line_no = lines.len() + 1;
-            if n == 0 || buf.last() != Some(&b'\n') {
-                if n as u64 > MAX_HEADER_LINE {
-                    bail!("{shown}: line {line_no} is longer than {MAX_HEADER_LINE} bytes");
-                }
-                bail!(
-                    "{shown}: ends inside its header (line {line_no}): not a complete sweep file"
-                );
-            }
-            let line = String::from_utf8(buf)
-                .map_err(|_| anyhow!("{shown}: line {line_no} is not UTF-8"))?;
-            let line = line.trim_end_matches('\n').to_string();
-            if !line.starts_with('#') {
-                break line;
-            }
-            lines.push(line);
-        };
+        let (lines, columns, len) = header_lines(input, shown)?;
         let version = lines
             .first()
             .and_then(|l| l.strip_prefix(VERSION_KEY))
@@ -214,6 +186,39 @@ impl Recorded {
             .map(|((key, a), (_, b))| format!("{key}: {a} in {}, {b} in {}", names.0, names.1))
             .collect()
     }
+}
+
+/// The `#` lines of a header and its column line (without newlines), and
+/// the header's length in bytes; bounded in lines and line length.
+fn header_lines(input: &mut impl BufRead, shown: &str) -> Result<(Vec<String>, String, u64)> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut len = 0u64;
+    let columns = loop {
+        if lines.len() >= MAX_HEADER_LINES {
+            bail!("{shown}: more than {MAX_HEADER_LINES} header lines: not a sweep file");
+        }
+        let mut buf = Vec::new();
+        let n = (&mut *input)
+            .take(MAX_HEADER_LINE + 1)
+            .read_until(b'\n', &mut buf)
+            .with_context(|| format!("reading {shown}"))?;
+        len += n as u64;
+        let line_no = lines.len() + 1;
+        if n == 0 || buf.last() != Some(&b'\n') {
+            if n as u64 > MAX_HEADER_LINE {
+                bail!("{shown}: line {line_no} is longer than {MAX_HEADER_LINE} bytes");
+            }
+            bail!("{shown}: ends inside its header (line {line_no}): not a complete sweep file");
+        }
+        let line =
+            String::from_utf8(buf).map_err(|_| anyhow!("{shown}: line {line_no} is not UTF-8"))?;
+        let line = line.trim_end_matches('\n').to_string();
+        if !line.starts_with('#') {
+            break line;
+        }
+        lines.push(line);
+    };
+    Ok((lines, columns, len))
 }
 
 /// The values of `axis` in `grid` as text, `start:end:count` for a range
@@ -335,16 +340,27 @@ pub fn check_rows(
 /// One line parsed as a [`SweepRow`]: the column count, each cell by its
 /// column's type, every number finite.
 fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .flexible(true)
-        .from_reader(line);
-    let mut record = csv::ByteRecord::new();
-    match reader.read_byte_record(&mut record) {
-        Ok(true) => {}
-        Ok(false) => return Err("an empty line where a row was expected".to_string()),
-        Err(e) => return Err(format!("not a CSV record: {e}")),
+    let line = line.strip_suffix(b"\n").unwrap_or(line);
+    if line.last() == Some(&b'\r') {
+        return Err("the line ends in a carriage return: not a line of a sweep file".to_string());
     }
+    let record = if line.contains(&b'"') {
+        // Quoting (an error message): the csv crate's parser. Building one
+        // costs as much as a hundred rows, so plain rows are split here.
+        let mut reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .from_reader(line);
+        let mut record = csv::ByteRecord::new();
+        match reader.read_byte_record(&mut record) {
+            Ok(true) if reader.position().byte() == line.len() as u64 => record,
+            Ok(true) => return Err("more than one record on the line".to_string()),
+            Ok(false) => return Err("an empty line where a row was expected".to_string()),
+            Err(e) => return Err(format!("not a CSV record: {e}")),
+        }
+    } else {
+        csv::ByteRecord::from(line.split(|&c| c == b',').collect::<Vec<_>>())
+    };
     let columns = &SweepRow::COLUMNS;
     if record.len() != columns.len() {
         return Err(format!(
@@ -371,7 +387,16 @@ fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
     })?;
     snowroll_io::check_finite(&row, None)
         .map_err(|e| format!("column {}: {} is not a finite number", e.field, e.value))?;
-    Ok(row)
+    // A run that ended has every result and no error; one that failed has
+    // an error and no result (`SweepRow::new`).
+    let results = [row.t_s, row.x_m, row.v_m_s, row.a_over_g_sin_alpha];
+    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(Option::is_some);
+    let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(Option::is_none);
+    match (row.error.is_some(), ended, failed) {
+        (false, true, _) | (true, _, true) => Ok(row),
+        (false, ..) => Err("a result cell is empty, and the error cell too".to_string()),
+        (true, ..) => Err("an error cell with results: a failed run has none".to_string()),
+    }
 }
 
 /// Checks that `row`'s model, choices and parameters are those of the grid

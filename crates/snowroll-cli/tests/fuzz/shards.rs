@@ -235,6 +235,16 @@ impl Tally {
     }
 }
 
+/// The cells of one CSV line (an error message may be quoted).
+fn cells(line: &str) -> Vec<String> {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(line.as_bytes());
+    let mut record = csv::StringRecord::new();
+    assert!(reader.read_record(&mut record).unwrap(), "{line:?}");
+    record.iter().map(str::to_string).collect()
+}
+
 /// Checks a successful run's output against the uninterrupted sweep's
 /// rows; true when a result cell differs.
 fn check_output(out: &Path, reference: &[&str], context: &str) -> bool {
@@ -243,7 +253,7 @@ fn check_output(out: &Path, reference: &[&str], context: &str) -> bool {
     assert_eq!(got.len(), POINTS, "{context}: rows");
     let mut results_differ = false;
     for (g, want) in got.iter().zip(reference) {
-        let (g, w): (Vec<&str>, Vec<&str>) = (g.split(',').collect(), want.split(',').collect());
+        let (g, w) = (cells(g), cells(want));
         assert_eq!(g.len(), w.len(), "{context}: {g:?}");
         for k in 0..g.len() {
             let same = g[k] == w[k]
@@ -420,8 +430,16 @@ fn fuzz_merge_and_resume_with_damaged_files() {
     };
     let cases = env("FUZZ_SHARD_CASES", CI_CASES);
     let seed = env("FUZZ_SEED", 7);
+    // The other test of this binary may have left its working directory
+    // removed: a relative name is taken from where the process started.
     let summary = std::env::var_os("FUZZ_SUMMARY").map(|p| {
-        let mut p = std::env::current_dir().unwrap().join(p).into_os_string();
+        let mut p = match PathBuf::from(&p) {
+            p if p.is_absolute() => p.into_os_string(),
+            p => std::env::current_dir()
+                .unwrap_or_default()
+                .join(p)
+                .into_os_string(),
+        };
         p.push(".shards");
         PathBuf::from(p)
     });
