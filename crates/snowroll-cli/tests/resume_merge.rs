@@ -331,6 +331,11 @@ fn regression_20_merge_refuses_garbage_shards() {
             "model = energy where point 6 of the grid has torque-cm".into(),
         ),
         (
+            // An error message on a row that has results: no run gives one.
+            edit(7, &|r| r.trim_end().to_string() + "oops\n"),
+            format!("{}: an error cell with results", line(7)),
+        ),
+        (
             header.replace(",alpha_deg,", ",alpha,") + &rows.concat(),
             "column 3 is \"alpha\" where a sweep has \"alpha_deg\"".into(),
         ),
