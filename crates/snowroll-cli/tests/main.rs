@@ -9,5 +9,6 @@ mod guards;
 mod output_files;
 mod paper;
 mod reproduce;
+mod resume_merge;
 mod streaming;
 mod sweep;

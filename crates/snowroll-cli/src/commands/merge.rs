@@ -2,20 +2,23 @@
 //! i/N`) joined into one file in grid order.
 //!
 //! Checks, before writing anything, that the files come from the same sweep
-//! (their headers agree but for the command line and the shard), that each
+//! (every setting their headers record agrees, parsed: the differing ones
+//! are named), that each
 //! shard 0..N is there exactly once and that their rows tile the grid; then,
 //! while copying, that each file holds exactly its rows, in order, each line
-//! complete. The result is the uninterrupted sweep's file but for its
-//! command line.
+//! complete, each row parsed against the schema and equal in its parameters
+//! to the grid point its index names. The result is the uninterrupted
+//! sweep's file but for its command line.
 
 use std::fs::File;
-use std::io::{BufRead, BufReader, Write};
-use std::ops::Range;
+use std::io::{BufReader, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
+use snowroll::sweep::shard_range;
 
 use super::sweep::{COMMAND_KEY, SHARD_KEY};
+use super::sweep_check::{check_rows, Recorded};
 use crate::args::{MergeArgs, OutputArgs};
 use crate::sink::Sink;
 
@@ -23,70 +26,26 @@ use crate::sink::Sink;
 struct Shard {
     path: PathBuf,
     reader: BufReader<File>,
-    /// The header lines (with their newlines), column names last.
-    header: Vec<String>,
-    shard: u64,
-    shards: u64,
-    rows: Range<u64>,
+    /// Its header, parsed.
+    recorded: Recorded,
 }
 
 impl Shard {
     fn open(path: &Path) -> Result<Shard> {
-        let shown = path.display();
+        let shown = path.display().to_string();
         let file = File::open(path).with_context(|| format!("reading {shown}"))?;
         let mut reader = BufReader::new(file);
-        let mut header = Vec::new();
-        loop {
-            let mut line = String::new();
-            if reader
-                .read_line(&mut line)
-                .with_context(|| format!("reading {shown}"))?
-                == 0
-            {
-                bail!("{shown}: ends inside its header: not a complete sweep file");
-            }
-            let columns = !line.starts_with('#');
-            header.push(line);
-            if columns {
-                break;
-            }
-        }
-        let shard_line = header
-            .iter()
-            .find_map(|l| l.strip_prefix(SHARD_KEY))
-            .ok_or_else(|| anyhow!("{shown}: no `{}` line: not a sweep file", SHARD_KEY.trim()))?;
-        let (shard, shards, rows) = parse_shard_line(shard_line.trim_end())
-            .ok_or_else(|| anyhow!("{shown}: cannot read its shard line {shard_line:?}"))?;
+        let recorded = Recorded::read(&mut reader, &shown)?;
         Ok(Shard {
             path: path.to_path_buf(),
             reader,
-            header,
-            shard,
-            shards,
-            rows,
+            recorded,
         })
     }
 
-    /// The header lines that must agree between the shards of one sweep.
-    fn identity(&self) -> Vec<&str> {
-        self.header
-            .iter()
-            .filter(|l| !l.starts_with(COMMAND_KEY) && !l.starts_with(SHARD_KEY))
-            .map(String::as_str)
-            .collect()
+    fn shard(&self) -> u64 {
+        self.recorded.shard.0
     }
-}
-
-/// `i/N, rows a..b`.
-fn parse_shard_line(text: &str) -> Option<(u64, u64, Range<u64>)> {
-    let (shard, rows) = text.split_once(", rows ")?;
-    let (i, n) = shard.split_once('/')?;
-    let (a, b) = rows.split_once("..")?;
-    Some((
-        i.parse().ok()?,
-        n.parse().ok()?,
-        a.parse().ok()?..b.parse().ok()?,
-    ))
 }
 
 /// Checks and joins the shards.
@@ -96,47 +55,9 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         .iter()
         .map(|p| Shard::open(p))
         .collect::<Result<Vec<_>>>()?;
-    shards.sort_by_key(|s| s.shard);
-    let first = &shards[0];
-    let n = first.shards;
-    for s in &shards[1..] {
-        if s.identity() != first.identity() || s.shards != n {
-            bail!(
-                "{} and {} are not shards of the same sweep (their headers differ)",
-                first.path.display(),
-                s.path.display()
-            );
-        }
-    }
-    for pair in shards.windows(2) {
-        if pair[0].shard == pair[1].shard {
-            bail!(
-                "shard {}/{n} is given twice: {} and {}",
-                pair[0].shard,
-                pair[0].path.display(),
-                pair[1].path.display()
-            );
-        }
-    }
-    let present: Vec<u64> = shards.iter().map(|s| s.shard).collect();
-    let missing: Vec<String> = (0..n)
-        .filter(|i| !present.contains(i))
-        .map(|i| format!("{i}/{n}"))
-        .collect();
-    if !missing.is_empty() {
-        bail!("missing shards: {}", missing.join(", "));
-    }
-    let mut next = 0;
-    for s in &shards {
-        if s.rows.start != next {
-            bail!(
-                "{}: rows {:?} do not follow the previous shard's (which ended at {next})",
-                s.path.display(),
-                s.rows
-            );
-        }
-        next = s.rows.end;
-    }
+    shards.sort_by_key(Shard::shard);
+    check_tiling(&shards)?;
+    let points = shards[0].recorded.grid.len();
 
     let out = OutputArgs {
         format: None,
@@ -150,57 +71,113 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         command.push_str(&format!(" {}", p.display()));
     }
     let mut header = String::new();
-    for line in &shards[0].header {
+    for line in &shards[0].recorded.header {
         if line.starts_with(COMMAND_KEY) {
-            header.push_str(&format!("{COMMAND_KEY}{command}\n"));
+            header.push_str(&format!("{COMMAND_KEY}{command}"));
         } else if line.starts_with(SHARD_KEY) {
-            header.push_str(&format!("{SHARD_KEY}0/1, rows 0..{next}\n"));
+            header.push_str(&format!("{SHARD_KEY}0/1, rows 0..{points}"));
         } else {
             header.push_str(line);
         }
+        header.push('\n');
     }
     sink.write_all(header.as_bytes())
         .with_context(|| format!("writing {name}"))?;
     for s in &mut shards {
-        copy_rows(s, &mut sink).with_context(|| format!("writing {name}"))?;
+        copy_rows(s, &mut sink)?;
     }
     sink.commit().with_context(|| format!("writing {name}"))?;
     Ok(())
 }
 
-/// Copies the rows of `s`, checking that their indices are `s.rows` in order.
-fn copy_rows(s: &mut Shard, out: &mut impl Write) -> Result<()> {
-    let shown = s.path.display().to_string();
-    let mut expected = s.rows.start;
-    let mut line = String::new();
-    loop {
-        line.clear();
-        if s.reader
-            .read_line(&mut line)
-            .with_context(|| format!("reading {shown}"))?
-            == 0
-        {
-            break;
+/// Checks, from the headers, that the shards (sorted by shard) are of one
+/// sweep (every setting alike: the differing ones are named), that each
+/// shard 0..N is there once and holds the rows that shard of the grid has,
+/// so that together they cover the grid.
+fn check_tiling(shards: &[Shard]) -> Result<()> {
+    let first = &shards[0];
+    let (_, n) = first.recorded.shard;
+    let shown = |s: &Shard| s.path.display().to_string();
+    for s in &shards[1..] {
+        let names = (shown(first), shown(s));
+        let mut differs = first
+            .recorded
+            .differences(&s.recorded, false, (&names.0, &names.1));
+        if s.recorded.shard.1 != n {
+            differs.push(format!(
+                "shards: {n} in {}, {} in {}",
+                names.0, s.recorded.shard.1, names.1
+            ));
         }
-        if !line.ends_with('\n') {
-            bail!("{shown}: its last line is cut short (an interrupted sweep? finish it with --resume)");
-        }
-        let index: Option<u64> = line.split(',').next().and_then(|i| i.parse().ok());
-        if index != Some(expected) || expected >= s.rows.end {
+        if !differs.is_empty() {
             bail!(
-                "{shown}: row {} where row {expected} of {:?} was expected",
-                index.map_or_else(|| "without an index".to_string(), |i| i.to_string()),
-                s.rows
+                "{} and {} are not shards of the same sweep: {}",
+                names.0,
+                names.1,
+                differs.join("; ")
             );
         }
-        out.write_all(line.as_bytes())?;
-        expected += 1;
     }
-    if expected != s.rows.end {
+    for pair in shards.windows(2) {
+        if pair[0].shard() == pair[1].shard() {
+            bail!(
+                "shard {}/{n} is given twice: {} and {}",
+                pair[0].shard(),
+                shown(&pair[0]),
+                shown(&pair[1])
+            );
+        }
+    }
+    let points = first.recorded.grid.len();
+    let range = |i: u64| shard_range(points, i, n).map_err(|e| anyhow!("{e}"));
+    let present: Vec<u64> = shards.iter().map(Shard::shard).collect();
+    let mut missing = Vec::new();
+    for i in (0..n).filter(|i| !present.contains(i)) {
+        let r = range(i)?;
+        missing.push(format!("{i}/{n} (rows {}..{})", r.start, r.end));
+    }
+    if !missing.is_empty() {
         bail!(
-            "{shown}: holds rows {}..{expected} of its {:?}",
-            s.rows.start,
-            s.rows
+            "missing shards: {} of the {points} points",
+            missing.join(", ")
+        );
+    }
+    for s in shards {
+        let want = range(s.shard())?;
+        if s.recorded.rows != want {
+            bail!(
+                "{}: its shard line says rows {:?}, but shard {}/{n} of {points} points is rows {want:?}",
+                shown(s),
+                s.recorded.rows,
+                s.shard()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Copies the rows of `s`, each checked ([`check_rows`]), and checks that
+/// they are all of its shard's rows.
+fn copy_rows(s: &mut Shard, out: &mut Sink) -> Result<()> {
+    let shown = s.path.display().to_string();
+    let name = out.name();
+    let rows = s.recorded.rows.clone();
+    let end = check_rows(
+        &mut s.reader,
+        &s.recorded.grid,
+        &rows,
+        s.recorded.lines + 1,
+        &shown,
+        |line| {
+            out.write_all(line)
+                .with_context(|| format!("writing {name}"))
+        },
+    )?;
+    if end != rows.end {
+        bail!(
+            "{shown}: holds rows {}..{end} of its {rows:?}: rows {end}..{} are missing",
+            rows.start,
+            rows.end
         );
     }
     Ok(())

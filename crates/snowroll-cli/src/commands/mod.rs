@@ -9,8 +9,10 @@ mod paper;
 mod parquet;
 mod simulate;
 mod sweep;
+mod sweep_check;
 mod sweep_csv;
 mod sweep_grid;
+mod sweep_partial;
 mod sweep_plot;
 mod turns;
 

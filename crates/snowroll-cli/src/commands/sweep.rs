@@ -1,16 +1,17 @@
 //! `snowroll sweep`: many trajectories over a grid, one row each.
 //!
-//! To a file, rows go to `FILE.partial` (locked while a sweep writes it) a
-//! chunk at a time; at the end they are copied through the output [`Sink`]
-//! (temporary file, renamed into place) and the partial file is removed.
-//! A sweep that was killed leaves `FILE.partial`; `--resume` checks that its
-//! header is this sweep's, drops a torn last line and continues after the
+//! To a file, rows go to `FILE.partial` (locked while a sweep writes it;
+//! `sweep_partial.rs`) a chunk at a time; at the end they are copied
+//! through the output [`Sink`] (temporary file, renamed into place) and the
+//! partial file is removed. A sweep that was killed leaves `FILE.partial`;
+//! `--resume` checks that its header records the same grid and settings
+//! (parsed, not compared as bytes) and that its rows are whole, in order
+//! and those of the grid, drops a torn last line and continues after the
 //! last complete row, so the result is the same bytes as an uninterrupted
 //! run. Without `--resume` an existing partial file is refused, never
-//! overwritten.
+//! overwritten. A run that fails removes the partial file it created.
 
-use std::fs::{self, File, OpenOptions};
-use std::io::{self, BufRead, BufReader, Read, Seek, SeekFrom, Write};
+use std::io::{self, Seek, SeekFrom, Write};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -18,12 +19,13 @@ use std::time::{Duration, Instant};
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use rustix::fs::{flock, FlockOperation};
 use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
 use snowroll_io::VERSION;
 
+use super::sweep_check::Recorded;
 use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid, with_config};
+use super::sweep_partial::{partial_path, Partial};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::console;
 use crate::shell::shell_word;
@@ -35,8 +37,6 @@ pub const COMMAND_KEY: &str = "# command: ";
 pub const SHARD_KEY: &str = "# shard: ";
 /// Rows formatted by one task.
 const FORMAT_ROWS: usize = 512;
-/// What is appended to the output's name for the rows of a running sweep.
-const PARTIAL_SUFFIX: &str = ".partial";
 /// Longest wait between two `fsync`s of the partial file: a crash of the
 /// machine loses at most this much work.
 const SYNC_EVERY: Duration = Duration::from_secs(10);
@@ -56,6 +56,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     };
     let range = shard_range(grid.len(), shard, shards).map_err(|e| anyhow!("--shard: {e}"))?;
     let header = header(args, command.as_deref(), &grid, shard, shards, &range);
+    let recorded = Recorded::of_run(&grid, args.method, (shard, shards), range.clone());
 
     let out = OutputArgs {
         format: None,
@@ -64,14 +65,22 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     };
     let sink = Sink::open(&out)?;
     let partial_path = match &sink {
-        Sink::Replace { target, .. } => Some(with_suffix(target, PARTIAL_SUFFIX)),
+        Sink::Replace { target, .. } => Some(partial_path(target)),
         _ => None,
     };
     let format = format_of(args, partial_path.is_some())?;
     let bar = progress(range.end - range.start, args.quiet);
     match partial_path {
         None => to_stream(args, &grid, range, &header, sink, &bar),
-        Some(path) => to_partial(args, &grid, range, &header, sink, &bar, &path, format, plot),
+        Some(path) => {
+            let run = Run {
+                recorded: &recorded,
+                header: &header,
+                format,
+                plot,
+            };
+            to_partial(args, &run, sink, &bar, &path)
+        }
     }
 }
 
@@ -132,26 +141,53 @@ fn to_stream(
     Ok(())
 }
 
+/// What a sweep to a file writes besides its rows.
+struct Run<'a> {
+    /// Its grid, settings and rows.
+    recorded: &'a Recorded,
+    /// Its header's text.
+    header: &'a str,
+    format: SweepFormat,
+    plot: Option<(super::sweep_plot::Plan, &'a PathBuf)>,
+}
+
 /// Writes the sweep's rows to `path` (FILE.partial) as they are computed,
 /// synced every [`SYNC_EVERY`]; resumes from the rows already there with
 /// `--resume`; then draws the map and writes the finished file through
-/// `sink`, and removes the partial file.
-#[allow(clippy::too_many_arguments)]
+/// `sink`, and removes the partial file. On an error the partial file is
+/// removed if this run created it (a full disk is not left fuller), and
+/// kept if it holds an earlier run's rows.
 fn to_partial(
     args: &SweepArgs,
-    grid: &Grid,
-    range: Range<u64>,
-    header: &str,
+    run: &Run,
     sink: Sink,
     bar: &ProgressBar,
     path: &Path,
-    format: SweepFormat,
-    plot: Option<(super::sweep_plot::Plan, &PathBuf)>,
+) -> Result<()> {
+    let mut partial = Partial::open(path, run.header, run.recorded, args.resume)?;
+    match fill_and_finish(args, run, &mut partial, sink, bar, path) {
+        Ok(()) => partial.remove(),
+        Err(e) => {
+            partial.remove_if_created();
+            Err(e)
+        }
+    }
+}
+
+/// The rows of `run` not yet in `partial`, then the map and the output.
+fn fill_and_finish(
+    args: &SweepArgs,
+    run: &Run,
+    partial: &mut Partial,
+    sink: Sink,
+    bar: &ProgressBar,
+    path: &Path,
 ) -> Result<()> {
     let name = sink.name();
+    let grid = &run.recorded.grid;
+    let range = run.recorded.rows.clone();
     let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
-    let mut partial = Partial::open(path, header, args.resume)?;
-    let done = partial.rows_done(&range)?;
+    let done = partial.rows_done(run.recorded)?;
     bar.inc(done);
     let shown = path.display().to_string();
     let mut last_sync = Instant::now();
@@ -183,15 +219,14 @@ fn to_partial(
         .file
         .seek(SeekFrom::Start(0))
         .with_context(|| format!("reading {shown}"))?;
-    if let Some((plan, plot)) = plot {
-        super::sweep_plot::draw(plan, grid, &partial.file, plot)?;
+    if let Some((plan, plot)) = &run.plot {
+        super::sweep_plot::draw(*plan, grid, &partial.file, plot)?;
         partial
             .file
             .seek(SeekFrom::Start(0))
             .with_context(|| format!("reading {shown}"))?;
     }
-    finish(format, &mut partial, sink).with_context(|| format!("writing {name}"))?;
-    fs::remove_file(path).with_context(|| format!("removing {shown}"))?;
+    finish(run.format, partial, sink).with_context(|| format!("writing {name}"))?;
     Ok(())
 }
 
@@ -205,7 +240,7 @@ fn finish(format: SweepFormat, partial: &mut Partial, mut sink: Sink) -> Result<
         #[cfg(feature = "parquet")]
         SweepFormat::Parquet => {
             let mut header = vec![0u8; partial.header_len as usize];
-            partial.file.read_exact(&mut header)?;
+            io::Read::read_exact(&mut partial.file, &mut header)?;
             partial.file.seek(SeekFrom::Start(0))?;
             let header = String::from_utf8_lossy(&header).into_owned();
             sink = super::parquet::write(&partial.file, &header, sink)?;
@@ -268,13 +303,6 @@ fn progress(len: u64, quiet: bool) -> ProgressBar {
         bar.set_style(style);
     }
     bar
-}
-
-/// `path` with `suffix` appended to its file name.
-fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
-    let mut name = path.as_os_str().to_owned();
-    name.push(suffix);
-    PathBuf::from(name)
 }
 
 /// `i/N` with `0 <= i < N`.
@@ -361,128 +389,6 @@ fn header(
     h.push_str(&SweepRow::COLUMNS.join(","));
     h.push('\n');
     h
-}
-
-/// The rows file of a running sweep, locked for as long as it is open.
-struct Partial {
-    file: File,
-    path: PathBuf,
-    /// Length of the header, bytes: the rows start there.
-    header_len: u64,
-}
-
-impl Partial {
-    /// Opens (or creates) `path` and locks it; writes `header` into a new or
-    /// empty one. An existing one is refused unless `resume`, and then must
-    /// have been written by the same sweep.
-    fn open(path: &Path, header: &str, resume: bool) -> Result<Partial> {
-        let shown = path.display();
-        let mut file = OpenOptions::new()
-            .read(true)
-            .write(true)
-            .create(true)
-            .truncate(false)
-            .open(path)
-            .with_context(|| format!("cannot write {shown}"))?;
-        flock(&file, FlockOperation::NonBlockingLockExclusive)
-            .map_err(|_| anyhow!("{shown} is being written by another sweep"))?;
-        let len = file.metadata()?.len();
-        let mut on_disk = String::new();
-        if len > 0 {
-            if !resume {
-                bail!(
-                    "{shown} holds the rows of an unfinished sweep: pass --resume (with the same \
-                     flags) to continue it, or remove it to start again"
-                );
-            }
-            let mut reader = BufReader::new(&file);
-            for _ in 0..header.lines().count() {
-                if reader.read_line(&mut on_disk)? == 0 {
-                    break;
-                }
-            }
-        }
-        let lines = |h: &str| -> Vec<String> {
-            h.lines()
-                .filter(|l| !l.starts_with(COMMAND_KEY))
-                .map(str::to_string)
-                .collect()
-        };
-        let complete = on_disk.len() == header.len() && on_disk.ends_with('\n');
-        if complete {
-            if lines(&on_disk) != lines(header) {
-                let differs = lines(&on_disk)
-                    .into_iter()
-                    .zip(lines(header))
-                    .find(|(a, b)| a != b)
-                    .map(|(a, b)| format!("it has {a:?} where this sweep has {b:?}"))
-                    .unwrap_or_default();
-                bail!(
-                    "{shown} was written by another sweep ({differs}): remove it, or resume \
-                     with the flags that started it"
-                );
-            }
-        } else {
-            // Nothing, or a header cut short: start afresh.
-            file.set_len(0)?;
-            file.seek(SeekFrom::Start(0))?;
-            file.write_all(header.as_bytes())
-                .with_context(|| format!("writing {shown}"))?;
-            on_disk = header.to_string();
-        }
-        Ok(Partial {
-            file,
-            path: path.to_path_buf(),
-            header_len: on_disk.len() as u64,
-        })
-    }
-
-    /// How many rows of `range` are complete on disk: cuts a torn last line
-    /// off and checks that the last row's index is the one expected; leaves
-    /// the file positioned at its end.
-    fn rows_done(&mut self, range: &Range<u64>) -> Result<u64> {
-        let shown = self.path.display().to_string();
-        let len = self.file.metadata()?.len();
-        let end = last_newline(&mut self.file, self.header_len, len)?;
-        self.file.set_len(end)?;
-        self.file.seek(SeekFrom::End(0))?;
-        if end == self.header_len {
-            return Ok(0);
-        }
-        let start = last_newline(&mut self.file, self.header_len, end - 1)?;
-        self.file.seek(SeekFrom::Start(start))?;
-        let mut line = String::new();
-        (&self.file).take(end - start).read_to_string(&mut line)?;
-        self.file.seek(SeekFrom::End(0))?;
-        let index: u64 = line
-            .split(',')
-            .next()
-            .and_then(|i| i.parse().ok())
-            .ok_or_else(|| anyhow!("{shown}: its last row {line:?} has no index"))?;
-        if !range.contains(&index) {
-            bail!("{shown}: its last row has index {index}, outside this sweep's rows {range:?}");
-        }
-        Ok(index + 1 - range.start)
-    }
-}
-
-/// The position just after the last `\n` before `end` and at or after
-/// `floor`, or `floor` when there is none.
-fn last_newline(file: &mut File, floor: u64, end: u64) -> io::Result<u64> {
-    const BLOCK: u64 = 64 * 1024;
-    let mut hi = end;
-    let mut buf = vec![0u8; BLOCK as usize];
-    while hi > floor {
-        let lo = hi.saturating_sub(BLOCK).max(floor);
-        let n = (hi - lo) as usize;
-        file.seek(SeekFrom::Start(lo))?;
-        file.read_exact(&mut buf[..n])?;
-        if let Some(k) = buf[..n].iter().rposition(|&c| c == b'\n') {
-            return Ok(lo + k as u64 + 1);
-        }
-        hi = lo;
-    }
-    Ok(floor)
 }
 
 #[cfg(test)]

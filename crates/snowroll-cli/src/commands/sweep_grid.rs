@@ -13,7 +13,7 @@ use crate::args::{sweep_axes, SweepArgs};
 
 /// Whether `key` is a key of a sweep's grid: `model` or a sweep axis of
 /// the parameter table.
-fn is_grid_key(key: &str) -> bool {
+pub(super) fn is_grid_key(key: &str) -> bool {
     key == "model" || sweep_axes().any(|p| p.key == key)
 }
 
@@ -56,6 +56,16 @@ pub fn grid(args: &SweepArgs) -> Result<Grid> {
         (false, Some(path)) => format!("{key} = {text} in {}", path.display()),
         _ => format!("--{} {text}", key.replace('_', "-")),
     };
+    grid_of(given, &origin)
+}
+
+/// The grid of axis texts by snake-case key (`model`, `collision`,
+/// `on_hop` and the numeric axes); `origin(key, text)` says where an axis
+/// was given, for the messages.
+pub fn grid_of(
+    mut given: BTreeMap<String, String>,
+    origin: &dyn Fn(&str, &str) -> String,
+) -> Result<Grid> {
     let collision = match given.remove("collision") {
         Some(text) => choice_list::<CollisionModel>("collision", &text)?,
         None => Choices::default().collision,
@@ -262,13 +272,23 @@ pub fn with_config(args: &SweepArgs) -> Result<(SweepArgs, Option<String>)> {
             merged.shard = Some(shard);
         }
     }
-    let words: Vec<&str> = command.split_whitespace().collect();
-    if let Some(w) = words.windows(2).find(|w| w[0] == "--method") {
-        if merged.method == Method::Auto {
-            merged.method = Method::from_str(w[1], true)
-                .map_err(|_| anyhow!("config file {shown}: unknown --method {:?}", w[1]))?;
-        }
+    if merged.method == Method::Auto {
+        merged.method =
+            recorded_method(&command).map_err(|e| anyhow!("config file {shown}: {e}"))?;
     }
     merged.config = None;
     Ok((merged, (!overridden).then_some(command)))
+}
+
+/// The method a sweep's recorded command line ran with: `--method`'s value
+/// when it names one, else `auto` (the default, which the line omits).
+///
+/// # Errors
+/// An unknown method, named.
+pub fn recorded_method(command: &str) -> Result<Method> {
+    let words: Vec<&str> = command.split_whitespace().collect();
+    match words.windows(2).find(|w| w[0] == "--method") {
+        Some(w) => Method::from_str(w[1], true).map_err(|_| anyhow!("unknown --method {:?}", w[1])),
+        None => Ok(Method::Auto),
+    }
 }

@@ -28,6 +28,7 @@
 
 mod checks;
 mod inputs;
+mod shards;
 
 use std::fmt::Write as _;
 use std::fs;

@@ -100,7 +100,7 @@ impl SweepRow {
     ];
 
     /// The row of `point` with its parameters and no results.
-    pub(crate) fn parameters(point: &Point) -> SweepRow {
+    pub fn parameters(point: &Point) -> SweepRow {
         let s = ScenarioFile::from(point.scenario);
         let o = &point.options;
         SweepRow {

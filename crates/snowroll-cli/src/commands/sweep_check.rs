@@ -1,0 +1,442 @@
+//! A sweep file read back, for `sweep --resume` and `merge`: its header
+//! parsed into the grid and settings it records ([`Recorded`]), compared
+//! setting by setting with another's ([`Recorded::differences`]), and its
+//! rows each parsed against the schema and checked against the grid point
+//! its index names ([`check_rows`]).
+//!
+//! Sameness is decided from the parsed values, never from the bytes of the
+//! command line: `--t-end 20` and `--t-end 20.0`, `-o out.csv` and
+//! `-o ./out.csv`, an axis left at its default and the same value given,
+//! all make the same sweep.
+
+use std::collections::BTreeMap;
+use std::io::{BufRead, Read};
+use std::ops::Range;
+
+use anyhow::{anyhow, bail, Context, Result};
+use snowroll::params::Value;
+use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
+use snowroll_io::VERSION;
+
+use super::sweep_grid::{grid_of, is_grid_key, recorded_method};
+use crate::args::sweep_axes;
+
+/// Longest header line read (an axis may be a long list).
+const MAX_HEADER_LINE: u64 = 16 << 20;
+/// Most header lines: a sweep writes one per axis and a few more.
+const MAX_HEADER_LINES: usize = 256;
+/// Longest row read: a row is about 200 bytes, an error message at most a
+/// few hundred more.
+const MAX_ROW_LINE: u64 = 1 << 20;
+/// Start of the first header line, before the version.
+const VERSION_KEY: &str = "# snowroll sweep, version ";
+
+/// What a sweep file's header records.
+#[derive(Debug, Clone)]
+pub struct Recorded {
+    /// The version of snowroll that wrote it.
+    pub version: String,
+    /// The grid of its `model`, `collision`, `on_hop` and axis lines.
+    pub grid: Grid,
+    /// The method of its command line.
+    pub method: Method,
+    /// Its shard `i` of `n`.
+    pub shard: (u64, u64),
+    /// The grid indices of its rows.
+    pub rows: Range<u64>,
+    /// Bytes of the header, the column line included: the rows start there.
+    pub len: u64,
+    /// Lines of the header.
+    pub lines: u64,
+    /// The header's lines as read, without their newlines, the column
+    /// names last (empty for [`Recorded::of_run`]).
+    pub header: Vec<String>,
+}
+
+impl Recorded {
+    /// What this program would record for a sweep of `grid`.
+    pub fn of_run(grid: &Grid, method: Method, shard: (u64, u64), rows: Range<u64>) -> Self {
+        Recorded {
+            version: VERSION.to_string(),
+            grid: grid.clone(),
+            method,
+            shard,
+            rows,
+            len: 0,
+            lines: 0,
+            header: Vec::new(),
+        }
+    }
+
+    /// Reads the header of a sweep file from `input`, which is left at its
+    /// first row; `shown` names the file in messages.
+    ///
+    /// # Errors
+    /// Anything that is not a complete header of this program's sweeps:
+    /// a missing or unknown line, a value that does not parse, a point
+    /// count that is not the grid's, columns that are not [`SweepRow`]'s.
+    pub fn read(input: &mut impl BufRead, shown: &str) -> Result<Recorded> {
+        let (lines, columns, len) = header_lines(input, shown)?;
+        let version = lines
+            .first()
+            .and_then(|l| l.strip_prefix(VERSION_KEY))
+            .ok_or_else(|| anyhow!("{shown}: its first line is not `{}...`", VERSION_KEY))?
+            .to_string();
+        let mut fields: BTreeMap<&str, &str> = BTreeMap::new();
+        for (k, line) in lines.iter().enumerate().skip(1) {
+            let (key, value) = line
+                .strip_prefix("# ")
+                .and_then(|l| l.split_once(": "))
+                .ok_or_else(|| anyhow!("{shown}: line {}: not `# key: value`", k + 1))?;
+            let known = ["command", "points", "shard"].contains(&key) || is_grid_key(key);
+            if !known {
+                bail!("{shown}: line {}: unknown header key {key:?}", k + 1);
+            }
+            if fields.insert(key, value).is_some() {
+                bail!("{shown}: line {}: {key} is given twice", k + 1);
+            }
+        }
+        let get = |key: &str| {
+            fields
+                .get(key)
+                .copied()
+                .ok_or_else(|| anyhow!("{shown}: its header has no `# {key}:` line"))
+        };
+        let method = recorded_method(get("command")?).map_err(|e| anyhow!("{shown}: {e}"))?;
+        let axes: BTreeMap<String, String> = fields
+            .iter()
+            .filter(|(k, _)| is_grid_key(k))
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect();
+        let grid = grid_of(axes, &|key, text| format!("{key} = {text} in {shown}"))?;
+        let points = get("points")?;
+        if points.parse::<u64>().ok() != Some(grid.len()) {
+            bail!(
+                "{shown}: its header says {points} points, its grid has {}",
+                grid.len()
+            );
+        }
+        let shard_text = get("shard")?;
+        let (shard, rows) = parse_shard_line(shard_text)
+            .ok_or_else(|| anyhow!("{shown}: cannot read its shard line {shard_text:?}"))?;
+        check_columns(&columns, shown)?;
+        let n_lines = lines.len() as u64 + 1;
+        let mut header = lines.clone();
+        header.push(columns);
+        Ok(Recorded {
+            version,
+            grid,
+            method,
+            shard,
+            rows,
+            len,
+            lines: n_lines,
+            header,
+        })
+    }
+
+    /// Every setting, by name, as text: the version, the models, each
+    /// sweep parameter of the table (its values, or its default when the
+    /// sweep does not vary it), the method and, with `shard`, the shard.
+    fn settings(&self, shard: bool) -> Vec<(String, String)> {
+        let grid = &self.grid;
+        let ids = |v: Vec<&str>| v.join(",");
+        let mut out = vec![
+            ("version".to_string(), self.version.clone()),
+            (
+                "model".to_string(),
+                ids(grid.models().iter().map(|m| m.id()).collect()),
+            ),
+        ];
+        let choices = grid.choices();
+        for p in sweep_axes() {
+            let text = match Param::from_key(p.key) {
+                Some(axis) => axis_text(grid, axis, p.default_value()),
+                None if p.key == "collision" => {
+                    ids(choices.collision.iter().map(|c| c.id()).collect())
+                }
+                None => ids(choices.on_hop.iter().map(|c| c.id()).collect()),
+            };
+            out.push((p.key.to_string(), text));
+        }
+        let method = match self.method {
+            Method::Auto => "auto",
+            Method::Ode => "ode",
+        };
+        out.push(("method".to_string(), method.to_string()));
+        if shard {
+            let (i, n) = self.shard;
+            let rows = &self.rows;
+            out.push((
+                "shard".to_string(),
+                format!("{i}/{n}, rows {}..{}", rows.start, rows.end),
+            ));
+        }
+        out
+    }
+
+    /// The settings in which `self` (called `mine`) and `other` (called
+    /// `theirs`) differ, each as `key: A in MINE, B in THEIRS`; the shard
+    /// is compared when `shard`.
+    pub fn differences(&self, other: &Recorded, shard: bool, names: (&str, &str)) -> Vec<String> {
+        self.settings(shard)
+            .into_iter()
+            .zip(other.settings(shard))
+            .filter(|((_, a), (_, b))| a != b)
+            .map(|((key, a), (_, b))| format!("{key}: {a} in {}, {b} in {}", names.0, names.1))
+            .collect()
+    }
+}
+
+/// The `#` lines of a header and its column line (without newlines), and
+/// the header's length in bytes; bounded in lines and line length.
+fn header_lines(input: &mut impl BufRead, shown: &str) -> Result<(Vec<String>, String, u64)> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut len = 0u64;
+    let columns = loop {
+        if lines.len() >= MAX_HEADER_LINES {
+            bail!("{shown}: more than {MAX_HEADER_LINES} header lines: not a sweep file");
+        }
+        let mut buf = Vec::new();
+        let n = (&mut *input)
+            .take(MAX_HEADER_LINE + 1)
+            .read_until(b'\n', &mut buf)
+            .with_context(|| format!("reading {shown}"))?;
+        len += n as u64;
+        let line_no = lines.len() + 1;
+        if n == 0 || buf.last() != Some(&b'\n') {
+            if n as u64 > MAX_HEADER_LINE {
+                bail!("{shown}: line {line_no} is longer than {MAX_HEADER_LINE} bytes");
+            }
+            bail!("{shown}: ends inside its header (line {line_no}): not a complete sweep file");
+        }
+        let line =
+            String::from_utf8(buf).map_err(|_| anyhow!("{shown}: line {line_no} is not UTF-8"))?;
+        let line = line.trim_end_matches('\n').to_string();
+        if !line.starts_with('#') {
+            break line;
+        }
+        lines.push(line);
+    };
+    Ok((lines, columns, len))
+}
+
+/// The values of `axis` in `grid` as text, `start:end:count` for a range
+/// of several values; its default (from the table) when not swept.
+fn axis_text(grid: &Grid, axis: Param, default: Value) -> String {
+    match grid.axes().iter().find(|a| a.param == axis) {
+        Some(a) => match &a.values {
+            Values::Range {
+                start, count: 1, ..
+            } => Values::List(vec![*start]).to_string(),
+            v => v.to_string(),
+        },
+        None => match default {
+            Value::Real(x) => Values::List(vec![x]).to_string(),
+            _ => "none".to_string(),
+        },
+    }
+}
+
+/// `i/N, rows a..b`.
+pub fn parse_shard_line(text: &str) -> Option<((u64, u64), Range<u64>)> {
+    let (shard, rows) = text.split_once(", rows ")?;
+    let (i, n) = shard.split_once('/')?;
+    let (a, b) = rows.split_once("..")?;
+    let (i, n, a, b): (u64, u64, u64, u64) = (
+        i.parse().ok()?,
+        n.parse().ok()?,
+        a.parse().ok()?,
+        b.parse().ok()?,
+    );
+    (i < n && a <= b).then_some(((i, n), a..b))
+}
+
+/// Checks the column line against [`SweepRow::COLUMNS`].
+fn check_columns(line: &str, shown: &str) -> Result<()> {
+    let names: Vec<&str> = line.split(',').collect();
+    for (k, want) in SweepRow::COLUMNS.iter().enumerate() {
+        match names.get(k) {
+            Some(name) if name == want => {}
+            Some(name) => bail!(
+                "{shown}: column {} is {name:?} where a sweep has {want:?}",
+                k + 1
+            ),
+            None => bail!(
+                "{shown}: {} columns where a sweep has {}",
+                names.len(),
+                SweepRow::COLUMNS.len()
+            ),
+        }
+    }
+    if names.len() != SweepRow::COLUMNS.len() {
+        bail!(
+            "{shown}: {} columns where a sweep has {}",
+            names.len(),
+            SweepRow::COLUMNS.len()
+        );
+    }
+    Ok(())
+}
+
+/// Reads the rows from `input` to its end, and checks that they are rows
+/// `rows.start`, `rows.start + 1`, ... in order (no gap, no repeat, none
+/// past `rows.end`), each a whole line, each cell of its column's type and
+/// finite, and each row's parameters those of the grid point its index
+/// names. `line` is the file's line number of the first row. Each line is
+/// handed to `each` once checked. Returns the index after the last row.
+///
+/// # Errors
+/// The first bad row, with its line number and what is wrong with it.
+pub fn check_rows(
+    input: &mut impl BufRead,
+    grid: &Grid,
+    rows: &Range<u64>,
+    mut line: u64,
+    shown: &str,
+    mut each: impl FnMut(&[u8]) -> Result<()>,
+) -> Result<u64> {
+    let mut next = rows.start;
+    let mut buf = Vec::new();
+    loop {
+        buf.clear();
+        let n = (&mut *input)
+            .take(MAX_ROW_LINE + 1)
+            .read_until(b'\n', &mut buf)
+            .with_context(|| format!("reading {shown}"))?;
+        if n == 0 {
+            return Ok(next);
+        }
+        if buf.last() != Some(&b'\n') {
+            if n as u64 > MAX_ROW_LINE {
+                bail!("{shown}: line {line} is longer than {MAX_ROW_LINE} bytes");
+            }
+            bail!(
+                "{shown}: line {line}, its last, is cut short (an interrupted sweep? finish it \
+                 with --resume)"
+            );
+        }
+        let row = parse_row(&buf).map_err(|e| anyhow!("{shown}: line {line}: {e}"))?;
+        if row.index != next || next >= rows.end {
+            let what = if row.index < next {
+                "repeats an earlier row"
+            } else if next >= rows.end {
+                "is past the rows of its shard"
+            } else {
+                "leaves a gap"
+            };
+            bail!(
+                "{shown}: line {line}: row {} where row {next} of {rows:?} was expected (it {what})",
+                row.index
+            );
+        }
+        check_point(&row, grid).map_err(|e| anyhow!("{shown}: line {line}: {e}"))?;
+        each(&buf)?;
+        next += 1;
+        line += 1;
+    }
+}
+
+/// One line parsed as a [`SweepRow`]: the column count, each cell by its
+/// column's type, every number finite.
+fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
+    let line = line.strip_suffix(b"\n").unwrap_or(line);
+    if line.last() == Some(&b'\r') {
+        return Err("the line ends in a carriage return: not a line of a sweep file".to_string());
+    }
+    let record = if line.contains(&b'"') {
+        // Quoting (an error message): the csv crate's parser. Building one
+        // costs as much as a hundred rows, so plain rows are split here.
+        let mut reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .from_reader(line);
+        let mut record = csv::ByteRecord::new();
+        match reader.read_byte_record(&mut record) {
+            Ok(true) if reader.position().byte() == line.len() as u64 => record,
+            Ok(true) => return Err("more than one record on the line".to_string()),
+            Ok(false) => return Err("an empty line where a row was expected".to_string()),
+            Err(e) => return Err(format!("not a CSV record: {e}")),
+        }
+    } else {
+        csv::ByteRecord::from(line.split(|&c| c == b',').collect::<Vec<_>>())
+    };
+    let columns = &SweepRow::COLUMNS;
+    if record.len() != columns.len() {
+        return Err(format!(
+            "{} cells where a row has {}",
+            record.len(),
+            columns.len()
+        ));
+    }
+    let row: SweepRow = record.deserialize(None).map_err(|e| match e.kind() {
+        csv::ErrorKind::Deserialize { err, .. } => {
+            let column = err.field().and_then(|k| columns.get(k as usize));
+            let cell = err
+                .field()
+                .and_then(|k| record.get(k as usize))
+                .map(String::from_utf8_lossy)
+                .unwrap_or_default();
+            format!(
+                "column {}: cannot read {cell:?}: {}",
+                column.unwrap_or(&"?"),
+                err.kind()
+            )
+        }
+        _ => e.to_string(),
+    })?;
+    snowroll_io::check_finite(&row, None)
+        .map_err(|e| format!("column {}: {} is not a finite number", e.field, e.value))?;
+    // A run that ended has every result and no error; one that failed has
+    // an error and no result (`SweepRow::new`).
+    let results = [row.t_s, row.x_m, row.v_m_s, row.a_over_g_sin_alpha];
+    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(Option::is_some);
+    let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(Option::is_none);
+    match (row.error.is_some(), ended, failed) {
+        (false, true, _) | (true, _, true) => Ok(row),
+        (false, ..) => Err("a result cell is empty, and the error cell too".to_string()),
+        (true, ..) => Err("an error cell with results: a failed run has none".to_string()),
+    }
+}
+
+/// Checks that `row`'s model, choices and parameters are those of the grid
+/// point its index names.
+fn check_point(row: &SweepRow, grid: &Grid) -> Result<(), String> {
+    let point = grid.point(row.index).map_err(|e| {
+        format!(
+            "row {} is not a point of the grid ({} points): {e}",
+            row.index,
+            grid.len()
+        )
+    })?;
+    let want = SweepRow::parameters(&point);
+    let differs = |what: String, have: String, want: String| {
+        format!(
+            "row {} has {what} = {have} where point {} of the grid has {want}",
+            row.index, row.index
+        )
+    };
+    if row.model != want.model {
+        return Err(differs(
+            "model".into(),
+            row.model.id().into(),
+            want.model.id().into(),
+        ));
+    }
+    if row.collision != want.collision {
+        let (a, b) = (row.collision.id(), want.collision.id());
+        return Err(differs("collision".into(), a.into(), b.into()));
+    }
+    if row.on_hop != want.on_hop {
+        let (a, b) = (row.on_hop.id(), want.on_hop.id());
+        return Err(differs("on_hop".into(), a.into(), b.into()));
+    }
+    for p in Param::ALL {
+        let (a, b) = (row.param_value(p), want.param_value(p));
+        if a.map(f64::to_bits) != b.map(f64::to_bits) {
+            let text = |v: Option<f64>| v.map_or("none".to_string(), |x| x.to_string());
+            return Err(differs(p.key().into(), text(a), text(b)));
+        }
+    }
+    Ok(())
+}
