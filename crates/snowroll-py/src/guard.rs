@@ -13,9 +13,9 @@ use std::time::{Duration, Instant};
 use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use snowroll::error::SinkError;
-use snowroll::{TurnRow, TurnSink};
 use snowroll::trajectory::{Collected, Sample, SampleSink, TurnState};
 use snowroll::LedgerRow;
+use snowroll::{TurnRow, TurnSink};
 
 /// The default of the `max_memory` keyword, bytes: 2 GiB, a tenth of a
 /// common workstation's memory and more than any run of the defaults needs
@@ -113,7 +113,11 @@ impl Guard {
 
     /// The result of the call: the guard's own error first (the library's
     /// is then only the sink error it caused), else `r` mapped by `err`.
-    pub(crate) fn outcome<T, E>(self, r: Result<T, E>, err: impl FnOnce(E) -> PyErr) -> PyResult<T> {
+    pub(crate) fn outcome<T, E>(
+        self,
+        r: Result<T, E>,
+        err: impl FnOnce(E) -> PyErr,
+    ) -> PyResult<T> {
         match self.stop {
             Some(e) => Err(e),
             None => r.map_err(err),

@@ -16,6 +16,7 @@
 //! (`snow_depth`) replaces it (`python_message`).
 
 mod guard;
+mod models;
 mod sweep;
 
 use numpy::IntoPyArray;
@@ -24,12 +25,11 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::params::{Kind, Scope};
+use snowroll::trajectory::Collected;
 use snowroll::{
     run_turns_into, validity_warnings, Given, LedgerRow, ModelKind, Param, ParamError, Sampling,
-    Scenario, ScenarioFile, Settings, SimError, SimOptions, Stop, Trajectory, TurnTable, Value,
-    PARAMS,
+    Scenario, Settings, SimError, SimOptions, Stop, Trajectory, TurnTable, Value, PARAMS,
 };
-use snowroll::trajectory::Collected;
 use snowroll_io::RunParams;
 
 /// A library message in Python's words: each CLI flag `--kebab-name` (two
@@ -450,7 +450,11 @@ fn turns<'py>(
         guard,
     };
     let end = py.detach(|| run_turns_into(kind, &scenario, &opts, &mut sink));
-    let guard::GuardedTurns { rows, ledger, guard } = sink;
+    let guard::GuardedTurns {
+        rows,
+        ledger,
+        guard,
+    } = sink;
     let end = guard.outcome(end, sim_error)?;
     let table = TurnTable {
         model: end.model,
@@ -471,56 +475,16 @@ fn turns<'py>(
     Ok(out)
 }
 
-/// Every model: id, alias, equation, description, terminal fraction
-/// a_inf/(g sin alpha), stall slope (degrees) and stall kind for the given
-/// snow depth and radius (default: the default scenario's), validity.
-#[pyfunction]
-#[pyo3(signature = (*, snow_depth = None, r0 = None))]
-fn models<'py>(
-    py: Python<'py>,
-    snow_depth: Option<f64>,
-    r0: Option<f64>,
-) -> PyResult<Bound<'py, PyList>> {
-    let d = ScenarioFile::default();
-    // Validates b and r0 as a scenario does.
-    let scenario = Scenario::new(ScenarioFile {
-        snow_depth: snow_depth.unwrap_or(d.snow_depth),
-        r0: r0.unwrap_or(d.r0),
-        ..d
-    })
-    .map_err(value_error)?;
-    let (b, r0) = (scenario.snow_depth(), scenario.initial_radius());
-    let list = PyList::empty(py);
-    for kind in ModelKind::ALL {
-        let row = PyDict::new(py);
-        row.set_item("id", kind.id())?;
-        row.set_item("alias", kind.alias())?;
-        row.set_item("equation", kind.equation())?;
-        row.set_item("description", kind.description())?;
-        row.set_item("terminal_fraction", kind.terminal_fraction())?;
-        let shapes: Vec<&str> = kind.shapes().iter().map(|s| s.id()).collect();
-        row.set_item("shapes", shapes)?;
-        let stall = kind.stall_threshold(b, r0);
-        row.set_item("stall_slope_deg", stall.map(|t| t.slope.to_degrees()))?;
-        let stall_kind = match stall {
-            Some(t) => Some(record(py, &t.kind)?),
-            None => None,
-        };
-        row.set_item("stall_kind", stall_kind)?;
-        row.set_item("validity", record(py, &kind.validity())?)?;
-        list.append(row)?;
-    }
-    Ok(list)
-}
-
 /// The native module `snowroll._snowroll`.
 #[pymodule]
 fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", snowroll_io::VERSION)?;
     m.add("PARAMS", param_table(m.py())?)?;
+    m.add("MAX_MEMORY", guard::MAX_MEMORY_DEFAULT)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(turns, m)?)?;
-    m.add_function(wrap_pyfunction!(models, m)?)?;
+    m.add_function(wrap_pyfunction!(models::models, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::grid_len, m)?)?;
     Ok(())
 }

@@ -118,7 +118,9 @@ pub(crate) fn sweep<'py>(
     let (rows, done) = py.detach(|| {
         let mut rows: Vec<SweepRow> = Vec::new();
         let done = run_chunks(&grid, range, chunk, method, |part| {
-            guard.rows(part.len() as u64, "sweep()").map_err(|_| Stop::Guard)?;
+            guard
+                .rows(part.len() as u64, "sweep()")
+                .map_err(|_| Stop::Guard)?;
             rows.extend_from_slice(part);
             Ok::<(), Stop>(())
         });
@@ -135,6 +137,13 @@ pub(crate) fn sweep<'py>(
     out.set_item("shard", (i, n))?;
     out.set_item("version", snowroll_io::VERSION)?;
     Ok(out)
+}
+
+/// The number of points of a Python grid dict (models × every axis × the
+/// settings), without running any.
+#[pyfunction]
+pub(crate) fn grid_len(grid: &Bound<'_, PyDict>) -> PyResult<u64> {
+    Ok(parse_grid(grid)?.len())
 }
 
 /// Why a sweep's rows stopped coming: a bad grid point, or the guard.

@@ -78,3 +78,55 @@ def test_threads_give_the_same_results():
             for name in expected.columns:
                 assert np.array_equal(got[name], expected[name]), (i, name)
             assert got.stop == expected.stop
+
+
+# Issue 20, item 6: bounds on what a call holds, and Ctrl-C while it runs.
+
+
+def test_a_result_that_cannot_fit_is_refused_before_it_starts():
+    import time
+
+    t = time.monotonic()
+    with pytest.raises(MemoryError, match="max_memory"):
+        snowroll.turns("turns", turns=10**8)
+    with pytest.raises(MemoryError, match="max_memory"):
+        snowroll.sweep({"model": "torque-cm", "alpha_deg": "1:80:10000", "snow_depth": "0.001:0.1:1000"})
+    # Refused up front: no turn and no sweep row was computed (either would
+    # take seconds).
+    assert time.monotonic() - t < 1.0
+    # The keyword moves the limit both ways: 1000 turns need ~0.4 MB.
+    with pytest.raises(MemoryError):
+        snowroll.turns("turns", turns=1000, max_memory=10_000)
+    assert len(snowroll.turns("turns", turns=1000, max_memory=10**7).turn) == 1000
+
+
+def test_a_run_of_unknown_length_stops_at_the_limit_with_memory_error():
+    # Every accepted step is a row: the count is not known beforehand, so
+    # the guard counts rows as they come.
+    with pytest.raises(MemoryError, match="simulate"):
+        snowroll.simulate("torque-cm", t_end=1e4, max_memory=10_000)
+
+
+def test_ctrl_c_interrupts_a_long_run_within_a_second():
+    import os
+    import signal
+    import time
+
+    # 3x10^6 turns take about 20 s; SIGINT after 0.3 s must end the call
+    # within a second of it (the guard looks every 0.1 s).
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        snowroll.turns("turns", turns=3 * 10**6, max_memory=10**10)
+    assert time.monotonic() - t < 1.3
+
+
+def test_sweep_chunks_give_the_whole_sweep_bit_for_bit():
+    grid = {"model": "torque-cm,energy", "alpha_deg": "5:60:12", "snow_depth": [0.01, 0.02], "t_end": 5}
+    whole = snowroll.sweep(grid)
+    parts = list(snowroll.sweep_chunks(grid, rows=10))
+    assert len(parts) == 5  # 48 rows in chunks of about 10
+    joined = snowroll.SweepResult.concat(parts)
+    for name in ("index", "t_s", "x_m", "v_m_s", "a_over_g_sin_alpha"):
+        assert np.array_equal(joined[name], whole[name], equal_nan=True), name

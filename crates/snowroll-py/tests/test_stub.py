@@ -25,8 +25,10 @@ def test_committed_stub_is_the_one_the_table_writes():
 def test_keywords_are_the_table_s(function, scopes):
     want = {p["key"] for p in snowroll.PARAMS if p["scope"] in scopes}
     sig = inspect.signature(getattr(snowroll, function))
-    got = set(sig.parameters) - {"model"}
+    # The table's keywords, and max_memory, the Python call's own bound.
+    got = set(sig.parameters) - {"model", "max_memory"}
     assert got == want
+    assert sig.parameters["max_memory"].default == snowroll.MAX_MEMORY
     doc = getattr(snowroll, function).__doc__
     for key in want:
         assert f"``{key}``" in doc, key

@@ -35,7 +35,11 @@ from . import _snowroll
 
 __version__: str = _snowroll.__version__
 
-__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "__version__"]
+#: The default of ``max_memory``, bytes (2 GiB): the most a call's result
+#: may hold before it raises ``MemoryError``.
+MAX_MEMORY: int = _snowroll.MAX_MEMORY
+
+__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "sweep_chunks", "MAX_MEMORY", "__version__"]
 
 
 class _Columns:
@@ -262,6 +266,7 @@ def sweep(
     *,
     shard: Optional[Tuple[int, int]] = None,
     method: str = "auto",
+    max_memory: int = MAX_MEMORY,
 ) -> SweepResult:
     """Run every model over a grid of parameters, one summary row per run
     (the CLI's ``snowroll sweep``), rows computed in parallel with the GIL
@@ -286,6 +291,11 @@ def sweep(
     g sin alpha, to compare with the late-time fractions of :func:`models`
     and the note's eq. (79) (4/9).
 
+    ``max_memory``: the most bytes the result may hold (default
+    :data:`MAX_MEMORY`, 2 GiB); a grid whose rows would not fit raises
+    ``MemoryError`` before it starts: give a shard, or raise the limit.
+    Ctrl-C stops the sweep within about a second (``KeyboardInterrupt``).
+
     Raises ``ValueError`` for a bad grid (the library's message) or a shard
     outside ``0 <= i < n``, ``TypeError`` for a value of the wrong type.
     """
@@ -301,8 +311,33 @@ def sweep(
             raise ValueError(f"shard = ({i}, {n}) is out of range: expected 0 <= i < n")
         shard = (i, n)
     return SweepResult(
-        _snowroll.sweep(dict(grid), shard=shard, method=_text("method", method))
+        _snowroll.sweep(
+            dict(grid),
+            shard=shard,
+            method=_text("method", method),
+            max_memory=_count("max_memory", max_memory),
+        )
     )
+
+
+def sweep_chunks(
+    grid: Mapping[str, Any],
+    *,
+    rows: int = 100_000,
+    method: str = "auto",
+) -> Iterator[SweepResult]:
+    """The rows of :func:`sweep` a chunk at a time, for grids too large to
+    hold at once: yields one :class:`SweepResult` per shard of about ``rows``
+    rows, in grid order (``SweepResult.concat`` of them all is the whole
+    sweep, bit for bit). Memory stays that of one chunk; stop iterating to
+    stop the sweep. Write each chunk out (``.to_pandas().to_parquet(...)``)
+    as it comes.
+    """
+    per = _count("rows", rows, 1)
+    total = _snowroll.grid_len(dict(grid))
+    shards = max(1, -(-total // per))
+    for i in range(shards):
+        yield sweep(grid, shard=(i, shards), method=method)
 
 
 # The largest count the library takes (a u64).
@@ -439,6 +474,7 @@ def _signature(function: str, model_default: str) -> _inspect.Signature:
     for p in _keywords(function):
         default = False if p["kind"] == "flag" else None
         params.append(P(p["key"], P.KEYWORD_ONLY, default=default, annotation=_TYPE_OF_KIND[p["kind"]]))
+    params.append(P("max_memory", P.KEYWORD_ONLY, default=MAX_MEMORY, annotation=int))
     return _inspect.Signature(params)
 
 
@@ -447,7 +483,7 @@ def _warn(messages: Sequence[str]) -> None:
         _warnings.warn(m, RuntimeWarning, stacklevel=3)
 
 
-def simulate(model: str = "torque-cm", **params: Any) -> Result:
+def simulate(model: str = "torque-cm", *, max_memory: int = MAX_MEMORY, **params: Any) -> Result:
     """Integrate one model for one scenario (the CLI's ``snowroll simulate``).
 
     ``model``: an id or equation alias from :func:`models` (case-insensitive):
@@ -473,16 +509,25 @@ def simulate(model: str = "torque-cm", **params: Any) -> Result:
     Validity warnings of the model (b/r0 beyond its range) are issued as
     ``RuntimeWarning`` and kept in ``r.warnings``.
 
+    ``max_memory``: the most bytes the result may hold (default
+    :data:`MAX_MEMORY`, 2 GiB): a run whose rows would not fit raises
+    ``MemoryError``, before it starts where its row count is known (``dt``,
+    ``times``). Ctrl-C stops it within about a second (``KeyboardInterrupt``).
+
     Raises ``ValueError`` for bad parameters (the library's message) and
     ``RuntimeError`` when the integration fails.
     """
-    raw = _snowroll.simulate(_text("model", model), **_checked("simulate", params))
+    raw = _snowroll.simulate(
+        _text("model", model),
+        max_memory=_count("max_memory", max_memory),
+        **_checked("simulate", params),
+    )
     result = Result(raw)
     _warn(result.warnings)
     return result
 
 
-def turns(model: str = "turns", **params: Any) -> TurnResult:
+def turns(model: str = "turns", *, max_memory: int = MAX_MEMORY, **params: Any) -> TurnResult:
     """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
     one row per turn (the CLI's ``snowroll turns``).
 
@@ -509,10 +554,19 @@ def turns(model: str = "turns", **params: Any) -> TurnResult:
     the long-run means of a/(g sin alpha) whose value the note's
     eqs. (77)-(79) estimate as 4/9.
 
+    ``max_memory``: the most bytes the result may hold (default
+    :data:`MAX_MEMORY`, 2 GiB; a turn holds about 300 bytes): more turns
+    than fit raise ``MemoryError`` before the run starts. Ctrl-C stops it
+    within about a second (``KeyboardInterrupt``).
+
     Raises ``ValueError`` for bad parameters or a model that is not a turn
     model, ``RuntimeError`` when the integration fails.
     """
-    raw = _snowroll.turns(_text("model", model), **_checked("turns", params))
+    raw = _snowroll.turns(
+        _text("model", model),
+        max_memory=_count("max_memory", max_memory),
+        **_checked("turns", params),
+    )
     result = TurnResult(raw)
     _warn(result.warnings)
     return result

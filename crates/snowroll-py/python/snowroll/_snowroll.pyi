@@ -46,6 +46,7 @@ def simulate(
     compaction_energy: Optional[float] = None,
     ledger: bool = False,
     terminal_tol: Optional[float] = None,
+    max_memory: int = ...,
 ) -> Dict[str, Any]:
     """Integrate one model (e.g. eq. (4) ``torque-cm``, eq. (14) ``energy``,
     eq. (32) ``quasi-circular``, eqs. (73), (76) ``turns``) for one scenario,
@@ -91,6 +92,7 @@ def turns(
     compaction_energy: Optional[float] = None,
     ledger: bool = False,
     terminal_tol: Optional[float] = None,
+    max_memory: int = ...,
 ) -> Dict[str, Any]:
     """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (88)
     ``turns-exact``; collisions by eq. (89) or the ``charged``/``pivot``
@@ -101,6 +103,11 @@ def turns(
     estimate as 4/9. The log only; no losses (ValueError), a ledger at each
     turn end, before its collision.
     """
+
+MAX_MEMORY: int
+
+def grid_len(grid: Dict[str, Any]) -> int:
+    """The number of points of ``grid`` (models × axes × settings)."""
 
 def models(
     *, snow_depth: Optional[float] = None, r0: Optional[float] = None
@@ -114,6 +121,7 @@ def sweep(
     *,
     shard: Optional[Tuple[int, int]] = None,
     method: str = "auto",
+    max_memory: int = ...,
 ) -> Dict[str, Any]:
     """Every model of ``grid["model"]`` at every point of the other axes
     (``alpha_deg`` ... ``atol``, ``mu``; a number, a sequence, or ``"a,b,c"`` /

@@ -61,6 +61,11 @@ _TURNS_DOC = '''    """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (8
 '''
 
 _TAIL = '''
+MAX_MEMORY: int
+
+def grid_len(grid: Dict[str, Any]) -> int:
+    """The number of points of ``grid`` (models × axes × settings)."""
+
 def models(
     *, snow_depth: Optional[float] = None, r0: Optional[float] = None
 ) -> List[Dict[str, Any]]:
@@ -73,6 +78,7 @@ def sweep(
     *,
     shard: Optional[Tuple[int, int]] = None,
     method: str = "auto",
+    max_memory: int = ...,
 ) -> Dict[str, Any]:
     """Every model of ``grid["model"]`` at every point of the other axes
     (``alpha_deg`` ... ``atol``, ``mu``; a number, a sequence, or ``"a,b,c"`` /
@@ -96,6 +102,7 @@ def _function(name: str, model_default: str, doc: str) -> List[str]:
     for p in _keywords(name):
         default = "False" if p["kind"] == "flag" else "None"
         lines.append(f"    {p['key']}: {_TYPE_OF_KIND[p['kind']]} = {default},")
+    lines.append("    max_memory: int = ...,")
     lines.append(") -> Dict[str, Any]:")
     return lines + [doc.rstrip("\n"), ""]
 
