@@ -9,7 +9,7 @@
 //! command line.
 
 use std::fs::File;
-use std::io::{BufRead, BufReader, Write};
+use std::io::{BufReader, Write};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
@@ -17,6 +17,8 @@ use anyhow::{anyhow, bail, Context, Result};
 
 use super::sweep::{COMMAND_KEY, SHARD_KEY};
 use crate::args::{MergeArgs, OutputArgs};
+use crate::bounded::{self, MAX_ROW_LINE};
+use crate::clash::{refuse_clashes, RunFile};
 use crate::sink::Sink;
 
 /// One shard file, its header read.
@@ -35,21 +37,10 @@ impl Shard {
         let shown = path.display();
         let file = File::open(path).with_context(|| format!("reading {shown}"))?;
         let mut reader = BufReader::new(file);
-        let mut header = Vec::new();
-        loop {
-            let mut line = String::new();
-            if reader
-                .read_line(&mut line)
-                .with_context(|| format!("reading {shown}"))?
-                == 0
-            {
-                bail!("{shown}: ends inside its header: not a complete sweep file");
-            }
-            let columns = !line.starts_with('#');
-            header.push(line);
-            if columns {
-                break;
-            }
+        let header =
+            bounded::read_header(&mut reader).with_context(|| format!("reading {shown}"))?;
+        if header.last().is_none_or(|l| l.starts_with('#')) {
+            bail!("{shown}: ends inside its header: not a complete sweep file");
         }
         let shard_line = header
             .iter()
@@ -89,13 +80,24 @@ fn parse_shard_line(text: &str) -> Option<(u64, u64, Range<u64>)> {
     ))
 }
 
+/// Refuses an output that is one of the shards (however spelt), then opens
+/// each shard and reads its header.
+fn open_shards(args: &MergeArgs) -> Result<Vec<Shard>> {
+    let mut files: Vec<RunFile> = (args.inputs.iter())
+        .map(|p| RunFile::input(p, "input shard"))
+        .collect();
+    files.extend(
+        args.output
+            .as_deref()
+            .map(|p| RunFile::output(p, "-o output")),
+    );
+    refuse_clashes(&files)?;
+    args.inputs.iter().map(|p| Shard::open(p)).collect()
+}
+
 /// Checks and joins the shards.
 pub fn run(args: &MergeArgs) -> Result<()> {
-    let mut shards = args
-        .inputs
-        .iter()
-        .map(|p| Shard::open(p))
-        .collect::<Result<Vec<_>>>()?;
+    let mut shards = open_shards(args)?;
     shards.sort_by_key(|s| s.shard);
     let first = &shards[0];
     let n = first.shards;
@@ -175,8 +177,7 @@ fn copy_rows(s: &mut Shard, out: &mut impl Write) -> Result<()> {
     let mut line = String::new();
     loop {
         line.clear();
-        if s.reader
-            .read_line(&mut line)
+        if bounded::read_line(&mut s.reader, &mut line, MAX_ROW_LINE, "sweep row")
             .with_context(|| format!("reading {shown}"))?
             == 0
         {
