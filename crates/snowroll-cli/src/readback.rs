@@ -3,6 +3,13 @@
 //! of [`crate::bounded`] and never their rows. A CSV output gives its
 //! `# key = value` lines, a JSON output its `model` and `params` (streamed:
 //! the reader stops there).
+//!
+//! A JSON output is read with serde_json's streaming deserializer, stopped
+//! once it has `model` and `params` (which every output writes before its
+//! rows), rather than parsed from a bounded prefix: a prefix cut at a byte
+//! count is not valid JSON, while the streaming reader ends exactly after
+//! `params`, whatever their length, holds nothing of what it skips, and
+//! the limit of [`crate::bounded`] still caps what it reads before them.
 
 use std::io::{self, Read};
 
@@ -28,6 +35,8 @@ fn is_turn_table(sampling: &str) -> bool {
 struct JsonHead {
     model: Option<serde_json::Value>,
     params: Option<Map<String, serde_json::Value>>,
+    /// Whether the reading stopped after both, with the error [`HEAD_READ`].
+    stopped: bool,
 }
 
 /// Reads the keys of a JSON output into a [`JsonHead`] and stops (with an
@@ -65,6 +74,7 @@ impl<'de> Visitor<'de> for JsonHeadSeed<'_> {
                 }
             }
             if self.0.model.is_some() && self.0.params.is_some() {
+                self.0.stopped = true;
                 return Err(A::Error::custom(HEAD_READ));
             }
         }
@@ -81,13 +91,16 @@ pub fn from_json_output(reader: impl Read) -> Result<(ConfigFile, Origin)> {
     let mut head = JsonHead::default();
     let mut de = serde_json::Deserializer::from_reader(reader);
     let read = JsonHeadSeed(&mut head).deserialize(&mut de);
-    let Some(params) = head.params else {
+    if !head.stopped {
+        // Read to its end without both keys: it must be valid JSON.
         read.and_then(|()| de.end())
             .map_err(|e| match e.io_error_kind() {
                 // A bounded reader's error says what the limit is.
                 Some(_) => anyhow!("{}", io::Error::from(e)),
                 None => anyhow!("not valid JSON: {e}"),
             })?;
+    }
+    let Some(params) = head.params else {
         bail!("a JSON config file must be an output of snowroll (with `params` and `model`)");
     };
     let mut keys = Map::new();
