@@ -45,7 +45,7 @@ pub const MAX_ROW_LINE: u64 = 1 << 20;
 pub struct TooLong {
     /// The limit, bytes.
     pub limit: u64,
-    /// What was too long (`config file`, `header of an output`, `sweep row`).
+    /// What was too long (`a config file`, `the header of an output`).
     pub what: &'static str,
 }
 
@@ -53,7 +53,7 @@ impl fmt::Display for TooLong {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "longer than {}, the most snowroll reads of a {} (an endless file such as /dev/zero, \
+            "longer than {}, the most snowroll reads of {} (an endless file such as /dev/zero, \
              or not the file meant?)",
             size(self.limit),
             self.what
@@ -122,16 +122,22 @@ impl<R: Read> Read for Bounded<R> {
 }
 
 /// The whole of the file at `path`, at most `limit` bytes, as UTF-8 text.
-/// `role` names the file in the messages (`--grid file`).
+/// `role` names the file in the messages (`--grid file`), `what` in the
+/// one of the limit (`a --grid file`).
 ///
 /// # Errors
 /// When the file cannot be read, is longer than `limit`, or is not UTF-8.
-pub fn read_text(path: &Path, limit: u64, role: &'static str) -> Result<String> {
+pub fn read_text(
+    path: &Path,
+    limit: u64,
+    role: &'static str,
+    what: &'static str,
+) -> Result<String> {
     let shown = path.display();
     let context = || format!("cannot read {role} {shown}");
     let file = File::open(path).with_context(context)?;
     let mut bytes = Vec::new();
-    Bounded::new(file, limit, role)
+    Bounded::new(file, limit, what)
         .read_to_end(&mut bytes)
         .with_context(context)?;
     String::from_utf8(bytes).map_err(|e| {
@@ -183,12 +189,13 @@ pub fn read_header(reader: &mut impl BufRead) -> io::Result<Vec<String>> {
     let mut left = MAX_HEADER;
     loop {
         let mut line = String::new();
-        let n = read_line(reader, &mut line, left, "header of an output").map_err(|e| {
-            match e.get_ref().and_then(|e| e.downcast_ref::<TooLong>()) {
-                Some(_) => too_long(MAX_HEADER, "header of an output"),
-                None => e,
-            }
-        })?;
+        let n =
+            read_line(reader, &mut line, left, "the header of an output").map_err(|e| {
+                match e.get_ref().and_then(|e| e.downcast_ref::<TooLong>()) {
+                    Some(_) => too_long(MAX_HEADER, "the header of an output"),
+                    None => e,
+                }
+            })?;
         if n == 0 {
             return Ok(lines);
         }
@@ -222,7 +229,7 @@ mod tests {
             .unwrap_err();
         assert!(is_too_long(&e), "{e}");
         // Endless input: refused after the limit, not read for ever.
-        let e = Bounded::new(io::repeat(0), 1 << 20, "config file")
+        let e = Bounded::new(io::repeat(0), 1 << 20, "a config file")
             .read_to_end(&mut Vec::new())
             .unwrap_err();
         assert_eq!(
@@ -236,15 +243,15 @@ mod tests {
     fn lines_and_headers_are_bounded() {
         let mut r = BufReader::new(&b"abc\ndefgh\n"[..]);
         let mut line = String::new();
-        assert_eq!(read_line(&mut r, &mut line, 4, "sweep row").unwrap(), 4);
+        assert_eq!(read_line(&mut r, &mut line, 4, "a sweep row").unwrap(), 4);
         assert_eq!(line, "abc\n");
         assert!(is_too_long(
-            &read_line(&mut r, &mut line, 4, "sweep row").unwrap_err()
+            &read_line(&mut r, &mut line, 4, "a sweep row").unwrap_err()
         ));
         // A line without a newline at the end of the input is a line.
         let mut r = BufReader::new(&b"xy"[..]);
         let mut line = String::new();
-        assert_eq!(read_line(&mut r, &mut line, 4, "sweep row").unwrap(), 2);
+        assert_eq!(read_line(&mut r, &mut line, 4, "a sweep row").unwrap(), 2);
 
         let mut r = BufReader::new(&b"# a\n# b\ncols\n1,2\n"[..]);
         assert_eq!(read_header(&mut r).unwrap(), ["# a\n", "# b\n", "cols\n"]);

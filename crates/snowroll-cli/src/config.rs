@@ -262,28 +262,10 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
     let shown = path.display();
     let cannot_read = || format!("cannot read config file {shown}");
     let file = File::open(path).with_context(cannot_read)?;
-    let mut reader = BufReader::new(Bounded::new(file, MAX_HEADER, "header of an output"));
-    // The first bytes up to one that is not white space tell the format.
-    let mut prefix = Vec::new();
-    let first = loop {
-        let buf = reader.fill_buf().with_context(cannot_read)?;
-        if buf.is_empty() {
-            break None;
-        }
-        let n = buf.len();
-        prefix.extend_from_slice(buf);
-        reader.consume(n);
-        if let Some(&c) = prefix.iter().find(|c| !c.is_ascii_whitespace()) {
-            break Some(c);
-        }
-        if prefix.len() as u64 > MAX_SETTINGS_FILE {
-            // White space only so far: a TOML file past its limit.
-            return Err(bounded::too_long(MAX_SETTINGS_FILE, "config file"))
-                .with_context(cannot_read);
-        }
-    };
-    let start = prefix.iter().position(|c| !c.is_ascii_whitespace());
-    let starts_csv = start.is_some_and(|i| prefix[i..].starts_with(b"# snowroll"));
+    let mut reader = BufReader::new(Bounded::new(file, MAX_HEADER, "the header of an output"));
+    let (prefix, start) = sniff(&mut reader).with_context(cannot_read)?;
+    let first = start.map(|i| prefix[i]);
+    let starts_csv = start.is_some_and(|i| prefix[i..].starts_with(CSV_MARK));
     let mut whole = io::Cursor::new(prefix).chain(reader);
     let (file, origin) = if first == Some(b'{') {
         readback::from_json_output(&mut whole).map_err(|e| anyhow!("config file {shown}: {e}"))?
@@ -293,7 +275,7 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
             .map_err(|e| anyhow!("config file {shown}: {e}"))?
     } else {
         let mut bytes = Vec::new();
-        Bounded::new(whole, MAX_SETTINGS_FILE, "config file")
+        Bounded::new(whole, MAX_SETTINGS_FILE, "a config file")
             .read_to_end(&mut bytes)
             .with_context(cannot_read)?;
         let text = String::from_utf8(bytes).map_err(|e| {
@@ -306,6 +288,39 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
         bail!("config file {shown}: `times` and `dt` conflict, give one of them");
     }
     Ok((file, origin))
+}
+
+/// How a CSV output of snowroll starts.
+const CSV_MARK: &[u8] = b"# snowroll";
+
+/// The first bytes of `reader`, up to the first that is not white space
+/// and [`CSV_MARK`]'s length after it (they tell the format), and where
+/// that byte is. Each chunk is scanned once.
+fn sniff(reader: &mut impl BufRead) -> io::Result<(Vec<u8>, Option<usize>)> {
+    let mut prefix = Vec::new();
+    let mut start = None;
+    loop {
+        let buf = reader.fill_buf()?;
+        if buf.is_empty() {
+            return Ok((prefix, start));
+        }
+        let (scanned, n) = (prefix.len(), buf.len());
+        prefix.extend_from_slice(buf);
+        reader.consume(n);
+        if start.is_none() {
+            start = (prefix[scanned..].iter())
+                .position(|c| !c.is_ascii_whitespace())
+                .map(|i| scanned + i);
+        }
+        match start {
+            Some(i) if prefix.len() >= i + CSV_MARK.len() => return Ok((prefix, start)),
+            // White space only so far: a TOML file past its limit.
+            None if prefix.len() as u64 > MAX_SETTINGS_FILE => {
+                return Err(bounded::too_long(MAX_SETTINGS_FILE, "a config file"))
+            }
+            _ => {}
+        }
+    }
 }
 
 fn from_toml(text: &str, path: &Path) -> Result<ConfigFile> {
@@ -607,6 +622,24 @@ mod tests {
         let mut sampling_free = long_flags("simulate");
         sampling_free.retain(|f| f != "times" && f != "dt");
         assert_eq!(long_flags("turns"), sampling_free);
+    }
+
+    /// The format is told from the first byte that is not white space and
+    /// the bytes after it, wherever the reader's chunks end (found by the
+    /// fuzzing of issue 20: the mark cut by a chunk's end read as TOML, and
+    /// each chunk rescanned the whole prefix, 9 MiB of blanks taking
+    /// minutes).
+    #[test]
+    fn the_format_is_told_across_chunk_ends() {
+        let text = b"      # snowroll simulate";
+        let (prefix, start) = sniff(&mut io::BufReader::with_capacity(4, &text[..])).unwrap();
+        assert_eq!(start, Some(6));
+        assert!(prefix[6..].starts_with(CSV_MARK), "{prefix:?}");
+        let (_, start) = sniff(&mut io::BufReader::with_capacity(4, &b"  \n "[..])).unwrap();
+        assert_eq!(start, None);
+        let blanks = vec![b' '; MAX_SETTINGS_FILE as usize + 1];
+        let e = sniff(&mut io::BufReader::new(&blanks[..])).unwrap_err();
+        assert!(e.to_string().contains("8 MiB"), "{e}");
     }
 
     #[test]

@@ -177,7 +177,7 @@ fn copy_rows(s: &mut Shard, out: &mut impl Write) -> Result<()> {
     let mut line = String::new();
     loop {
         line.clear();
-        if bounded::read_line(&mut s.reader, &mut line, MAX_ROW_LINE, "sweep row")
+        if bounded::read_line(&mut s.reader, &mut line, MAX_ROW_LINE, "a sweep row")
             .with_context(|| format!("reading {shown}"))?
             == 0
         {

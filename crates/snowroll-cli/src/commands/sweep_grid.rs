@@ -139,7 +139,7 @@ pub fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
 /// array as a list.
 fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
     let shown = path.display();
-    let text = bounded::read_text(path, MAX_SETTINGS_FILE, "--grid file")?;
+    let text = bounded::read_text(path, MAX_SETTINGS_FILE, "--grid file", "a --grid file")?;
     if text.starts_with("# snowroll sweep") {
         bail!("{shown} is the output of a sweep: read it back with --config {shown}");
     }

@@ -72,8 +72,8 @@ pub(crate) fn normalise(work: &Path, path: &str) -> PathBuf {
 }
 
 /// Every path a case named as an output: `-o X`, `-oX`, `--output X`,
-/// `--output=X`, `--out X`, the config's `output`, and `paper`'s default
-/// `snowroll-report`.
+/// `--output=X`, `--out X`, `--plot X`, the config's `output`, and
+/// `paper`'s default `snowroll-report`.
 pub(crate) fn named_outputs(case: &Case) -> Vec<String> {
     let mut named = Vec::new();
     if case.args.first().is_some_and(|c| c == "paper") {
@@ -81,7 +81,7 @@ pub(crate) fn named_outputs(case: &Case) -> Vec<String> {
     }
     let mut args = case.args.iter().peekable();
     while let Some(a) = args.next() {
-        if ["-o", "--output", "--out"].contains(&a.as_str()) {
+        if ["-o", "--output", "--out", "--plot"].contains(&a.as_str()) {
             if let Some(v) = args.peek() {
                 named.push(v.to_string());
             }
@@ -116,6 +116,9 @@ pub(crate) fn prepare(work: &Path, case: &Case) {
     let p = case.prepared;
     if let Some(doc) = &case.config {
         fs::write(work.join("c.toml"), doc).unwrap();
+    }
+    for (name, bytes) in &case.files {
+        fs::write(work.join(name), bytes).unwrap();
     }
     if p.out_csv || p.link {
         fs::write(work.join("out.csv"), "previous\n").unwrap();
@@ -323,11 +326,12 @@ pub(crate) fn check(root: &Path, case: &Case, tally: &Mutex<Tally>) -> Result<()
     t.cases += 1;
     *t.by_status.entry(status).or_default() += 1;
     let command = case.args.first().cloned().unwrap_or_default();
-    let command = if ["simulate", "turns", "models", "paper"].contains(&command.as_str()) {
-        command
-    } else {
-        "other".to_string()
-    };
+    let command =
+        if ["simulate", "turns", "models", "paper", "sweep", "merge"].contains(&command.as_str()) {
+            command
+        } else {
+            "other".to_string()
+        };
     *t.by_command.entry(command).or_default() += 1;
     if status == 0 && !named.is_empty() {
         t.successful_runs_with_output_file += 1;

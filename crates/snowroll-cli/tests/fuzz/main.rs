@@ -28,6 +28,7 @@
 
 mod checks;
 mod inputs;
+mod readback;
 
 use std::fmt::Write as _;
 use std::fs;
@@ -103,6 +104,10 @@ fn fuzz_the_command_line_and_the_config_file() {
     let scratch = tempfile::tempdir_in(SCRATCH_IN_MEMORY)
         .or_else(|_| tempfile::tempdir())
         .unwrap();
+    // The real outputs the readers' cases corrupt, made before any case.
+    let seed_dir = scratch.path().join("seeds");
+    fs::create_dir(&seed_dir).unwrap();
+    let seeds = readback::seeds(&seed_dir);
     let root = scratch.path().join("root");
     fs::create_dir(&root).unwrap();
     fs::create_dir(root.join("work")).unwrap();
@@ -134,12 +139,20 @@ fn fuzz_the_command_line_and_the_config_file() {
     // of a campaign is then the first one run.
     let skip = env_u64("FUZZ_FROM", 0);
     let index = std::cell::Cell::new(0u64);
-    let result = runner.run(&case(), |case| {
+    let result = runner.run(&case(seeds), |case| {
         index.set(index.get() + 1);
         if index.get() <= skip {
             return Ok(());
         }
-        *current.lock().unwrap() = format!("{:?} config {:?}", case.args, case.config);
+        *current.lock().unwrap() = format!(
+            "{:?} config {:?} files {:?}",
+            case.args,
+            case.config,
+            case.files
+                .iter()
+                .map(|(n, b)| (n, b.len()))
+                .collect::<Vec<_>>()
+        );
         started_ms.store(epoch.elapsed().as_millis() as u64 + 1, Ordering::Relaxed);
         let outcome = check(&root, &case, &tally);
         started_ms.store(0, Ordering::Relaxed);
