@@ -152,9 +152,12 @@ fn fuzz_the_command_line_and_the_config_file() {
             "{:?} config {:?} files {:?}",
             case.args,
             case.config,
-            case.files
-                .iter()
-                .map(|(n, b)| (n, b.len()))
+            // Small files whole (a hang names what it read), large ones by size.
+            (case.files.iter())
+                .map(|(n, b)| match b.len() {
+                    len if len <= 16 << 10 => format!("{n}: {:?}", String::from_utf8_lossy(b)),
+                    len => format!("{n}: {len} bytes"),
+                })
                 .collect::<Vec<_>>()
         );
         started_ms.store(epoch.elapsed().as_millis() as u64 + 1, Ordering::Relaxed);

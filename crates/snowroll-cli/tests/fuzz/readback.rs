@@ -280,6 +280,13 @@ fn command(seed: &Seed, input: String) -> BoxedStrategy<Vec<String>> {
                     input.clone(),
                 ],
             };
+            // A corrupted header may drop `turns` and leave a turn model
+            // under `simulate` with t_end = 1e9: a run bounded only by the
+            // step budget (10^8, a minute; issue 7's finding 2). The flag
+            // bounds the run, not the reading.
+            if args[0] == "simulate" || args[0] == "turns" {
+                args.extend(["--max-steps".to_string(), "100000".to_string()]);
+            }
             if let Some(out) = out {
                 args.extend(["-o".to_string(), out]);
             }
