@@ -14,7 +14,8 @@
 //! other command (`times`, `dt` for `turns`). The model is spelt as on the
 //! command line: id or equation alias, in any case.
 
-use std::fs;
+use std::fs::File;
+use std::io::{self, BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
@@ -22,12 +23,13 @@ use std::sync::OnceLock;
 
 use serde::de::{DeserializeSeed, Error as _, MapAccess, Visitor};
 use serde::{Deserialize, Deserializer};
-use serde_json::Map;
 use snowroll::params::{Kind, Scope};
-use snowroll::{Given, ModelKind, Param, RecordedSampling, Settings, Value, PARAMS};
+use snowroll::{Given, ModelKind, Param, Settings, Value, PARAMS};
 use snowroll_io::Format;
 
 use crate::args::{OutputArgs, ParamArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
+use crate::bounded::{self, Bounded, MAX_HEADER, MAX_SETTINGS_FILE};
+use crate::readback;
 
 /// The keys of a config file: every long flag of `simulate` and `turns`
 /// except `--config` itself, in snake_case; the flag's own spelling and the
@@ -233,15 +235,6 @@ pub enum Origin {
     Turns,
 }
 
-/// The keys an output records that are not settings of a run: they are
-/// read back as the output's provenance, not as config keys.
-const RECORD_ONLY: [&str; 5] = ["sampling", "warnings", "warning", "notes", "note"];
-
-/// Whether a recorded `sampling` is that of a turn table (`snowroll turns`).
-fn is_turn_table(sampling: &str) -> bool {
-    sampling.parse() == Ok(RecordedSampling::PerTurn)
-}
-
 /// Reads and parses a config file for command `command` (`simulate` or
 /// `turns`). Every failure is one line naming the file; an output of the
 /// other command is refused (its settings would not reproduce it).
@@ -261,25 +254,73 @@ pub fn load(path: &Path, command: Origin) -> Result<ConfigFile> {
     Ok(file)
 }
 
-/// Reads and parses a config file and says what wrote it.
+/// Reads and parses a config file and says what wrote it. Reads at most
+/// what it needs, within the limits of [`crate::bounded`]: a TOML file
+/// whole, of an output only its header (a CSV's `#` lines, a JSON output up
+/// to its `model` and `params`), never its rows.
 fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
-    let text = fs::read_to_string(path)
-        .with_context(|| format!("cannot read config file {}", path.display()))?;
-    let trimmed = text.trim_start();
-    let (file, origin) = if trimmed.starts_with('{') {
-        from_json_output(&text).map_err(|e| anyhow!("config file {}: {e}", path.display()))?
-    } else if trimmed.starts_with("# snowroll") {
-        from_csv_output(&text).map_err(|e| anyhow!("config file {}: {e}", path.display()))?
+    let shown = path.display();
+    let cannot_read = || format!("cannot read config file {shown}");
+    let file = File::open(path).with_context(cannot_read)?;
+    let mut reader = BufReader::new(Bounded::new(file, MAX_HEADER, "the header of an output"));
+    let (prefix, start) = sniff(&mut reader).with_context(cannot_read)?;
+    let first = start.map(|i| prefix[i]);
+    let starts_csv = start.is_some_and(|i| prefix[i..].starts_with(CSV_MARK));
+    let mut whole = io::Cursor::new(prefix).chain(reader);
+    let (file, origin) = if first == Some(b'{') {
+        readback::from_json_output(&mut whole).map_err(|e| anyhow!("config file {shown}: {e}"))?
+    } else if starts_csv {
+        let header = bounded::read_header(&mut BufReader::new(whole)).with_context(cannot_read)?;
+        readback::from_csv_output(&header.concat())
+            .map_err(|e| anyhow!("config file {shown}: {e}"))?
     } else {
+        let mut bytes = Vec::new();
+        Bounded::new(whole, MAX_SETTINGS_FILE, "a config file")
+            .read_to_end(&mut bytes)
+            .with_context(cannot_read)?;
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let at = e.utf8_error().valid_up_to();
+            anyhow!("config file {shown} is not UTF-8 text (byte {at} is not)")
+        })?;
         (from_toml(&text, path)?, Origin::Toml)
     };
     if file.times().is_some() && file.dt().is_some() {
-        bail!(
-            "config file {}: `times` and `dt` conflict, give one of them",
-            path.display()
-        );
+        bail!("config file {shown}: `times` and `dt` conflict, give one of them");
     }
     Ok((file, origin))
+}
+
+/// How a CSV output of snowroll starts.
+const CSV_MARK: &[u8] = b"# snowroll";
+
+/// The first bytes of `reader`, up to the first that is not white space
+/// and [`CSV_MARK`]'s length after it (they tell the format), and where
+/// that byte is. Each chunk is scanned once.
+fn sniff(reader: &mut impl BufRead) -> io::Result<(Vec<u8>, Option<usize>)> {
+    let mut prefix = Vec::new();
+    let mut start = None;
+    loop {
+        let buf = reader.fill_buf()?;
+        if buf.is_empty() {
+            return Ok((prefix, start));
+        }
+        let (scanned, n) = (prefix.len(), buf.len());
+        prefix.extend_from_slice(buf);
+        reader.consume(n);
+        if start.is_none() {
+            start = (prefix[scanned..].iter())
+                .position(|c| !c.is_ascii_whitespace())
+                .map(|i| scanned + i);
+        }
+        match start {
+            Some(i) if prefix.len() >= i + CSV_MARK.len() => return Ok((prefix, start)),
+            // White space only so far: a TOML file past its limit.
+            None if prefix.len() as u64 > MAX_SETTINGS_FILE => {
+                return Err(bounded::too_long(MAX_SETTINGS_FILE, "a config file"))
+            }
+            _ => {}
+        }
+    }
 }
 
 fn from_toml(text: &str, path: &Path) -> Result<ConfigFile> {
@@ -296,95 +337,6 @@ fn from_toml(text: &str, path: &Path) -> Result<ConfigFile> {
             one_line(e.message())
         )
     })
-}
-
-/// The settings of a JSON output of snowroll (`simulate` or `turns`).
-fn from_json_output(text: &str) -> Result<(ConfigFile, Origin)> {
-    use serde_json::Value;
-    let doc: Value = serde_json::from_str(text).map_err(|e| anyhow!("not valid JSON: {e}"))?;
-    let Some(params) = doc.get("params").and_then(Value::as_object) else {
-        bail!("a JSON config file must be an output of snowroll (with `params` and `model`)");
-    };
-    let mut keys = Map::new();
-    if let Some(id) = doc.pointer("/model/id").and_then(Value::as_str) {
-        keys.insert("model".into(), Value::String(id.to_string()));
-    }
-    let sampling = params.get("sampling").and_then(Value::as_str);
-    let origin = if sampling.is_some_and(is_turn_table) {
-        Origin::Turns
-    } else {
-        Origin::Simulate
-    };
-    for (k, v) in params {
-        if !RECORD_ONLY.contains(&k.as_str()) && !v.is_null() {
-            keys.insert(k.clone(), v.clone());
-        }
-    }
-    keys.insert("format".into(), Value::String("json".into()));
-    let file = serde_json::from_value(Value::Object(keys)).map_err(|e| anyhow!("{e}"))?;
-    Ok((file, origin))
-}
-
-/// The settings of a CSV output of snowroll: its `# key = value` lines
-/// before the column header. `# model = torque-cm (eq. (4))` gives the id;
-/// `none` means not set; `times` is a comma-separated list.
-fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
-    let mut keys = Map::new();
-    let mut origin = Origin::Simulate;
-    for line in text.lines() {
-        let Some(comment) = line.strip_prefix('#') else {
-            break;
-        };
-        let Some((key, value)) = comment.split_once(" = ") else {
-            continue;
-        };
-        let (key, value) = (key.trim(), value.trim());
-        if !key
-            .bytes()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
-        {
-            continue; // a sentence (the turn table's summary), not a setting
-        }
-        let value = match key {
-            "model" => {
-                serde_json::Value::String(value.split_whitespace().next().unwrap_or("").into())
-            }
-            "sampling" => {
-                if is_turn_table(value) {
-                    origin = Origin::Turns;
-                }
-                continue;
-            }
-            k if RECORD_ONLY.contains(&k) || k == "stop" => continue,
-            _ if value == "none" => continue,
-            // A key of the table, read as its kind; any other key goes on as
-            // a number, for the config reader to name as unknown.
-            k => match Param::of_key(k) {
-                Some(p) => serde_json::to_value(p.parse_text(value).map_err(|e| anyhow!(e))?)?,
-                None => number(key, value)?,
-            },
-        };
-        keys.insert(key.to_string(), value);
-    }
-    if !keys.contains_key("model") {
-        bail!(
-            "a CSV config file must be an output of snowroll (its `# model = ...` line is missing)"
-        );
-    }
-    keys.insert("format".into(), serde_json::Value::String("csv".into()));
-    let file =
-        serde_json::from_value(serde_json::Value::Object(keys)).map_err(|e| anyhow!("{e}"))?;
-    Ok((file, origin))
-}
-
-/// A number of a CSV header line, as JSON.
-fn number(key: &str, value: &str) -> Result<serde_json::Value> {
-    let x: f64 = value
-        .parse()
-        .map_err(|_| anyhow!("`{key} = {value}` is not a number"))?;
-    serde_json::Number::from_f64(x)
-        .map(serde_json::Value::Number)
-        .ok_or_else(|| anyhow!("`{key} = {value}` is not a finite number"))
 }
 
 /// A possibly multi-line message on one line.
@@ -670,6 +622,24 @@ mod tests {
         let mut sampling_free = long_flags("simulate");
         sampling_free.retain(|f| f != "times" && f != "dt");
         assert_eq!(long_flags("turns"), sampling_free);
+    }
+
+    /// The format is told from the first byte that is not white space and
+    /// the bytes after it, wherever the reader's chunks end (found by the
+    /// fuzzing of issue 20: the mark cut by a chunk's end read as TOML, and
+    /// each chunk rescanned the whole prefix, 9 MiB of blanks taking
+    /// minutes).
+    #[test]
+    fn the_format_is_told_across_chunk_ends() {
+        let text = b"      # snowroll simulate";
+        let (prefix, start) = sniff(&mut io::BufReader::with_capacity(4, &text[..])).unwrap();
+        assert_eq!(start, Some(6));
+        assert!(prefix[6..].starts_with(CSV_MARK), "{prefix:?}");
+        let (_, start) = sniff(&mut io::BufReader::with_capacity(4, &b"  \n "[..])).unwrap();
+        assert_eq!(start, None);
+        let blanks = vec![b' '; MAX_SETTINGS_FILE as usize + 1];
+        let e = sniff(&mut io::BufReader::new(&blanks[..])).unwrap_err();
+        assert!(e.to_string().contains("8 MiB"), "{e}");
     }
 
     #[test]

@@ -20,10 +20,13 @@ compile_error!(
 );
 
 mod args;
+mod bounded;
+mod clash;
 mod commands;
 mod config;
 pub mod console;
 mod outdir;
+mod readback;
 mod scratch;
 mod shell;
 mod sink;

@@ -10,7 +10,9 @@
 //! | a device, FIFO, socket, or a handle in `/proc` (`/dev/stdout`, `/proc/self/fd/N`) | written through in place, as the shell's `>` does: no temporary file, no rename |
 //! | a directory | refused: "is a directory" |
 //! | `-` | stdout |
-//! | the run's own `--config` file | refused |
+//!
+//! A path that is one of the run's inputs, or another of its outputs, is
+//! refused before this module is reached ([`crate::clash`]).
 //!
 //! The temporary file is a [`Scratch`]: removed on error and on SIGINT or
 //! SIGTERM, and cleaned up by the next run after SIGKILL. Error messages
@@ -94,14 +96,6 @@ impl Sink {
             return Ok(Sink::stdout());
         };
         let shown = path.display();
-        if let Some(config) = args.config.as_deref() {
-            if same_file(path, config) {
-                bail!(
-                    "cannot write {shown}: it is this run's --config file {}",
-                    config.display()
-                );
-            }
-        }
         match resolve(path).with_context(|| format!("cannot write {shown}"))? {
             Destination::Stdout => Ok(Sink::stdout()),
             Destination::Through => {
@@ -201,12 +195,13 @@ pub fn parent_or_dot(path: &Path) -> &Path {
     }
 }
 
-/// Whether `a` and `b` name the same existing file (device and inode, after
-/// symbolic links).
-pub fn same_file(a: &Path, b: &Path) -> bool {
-    match (fs::metadata(a), fs::metadata(b)) {
-        (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
-        _ => false,
+/// The regular file (or place for one) that `-o path` would replace, after
+/// symbolic links; `None` for stdout, a device, a FIFO, a handle, or a path
+/// [`Sink::open`] refuses (it says why).
+pub fn replaced_target(path: &Path) -> Option<PathBuf> {
+    match resolve(path) {
+        Ok(Destination::Replace { target, .. }) => Some(target),
+        _ => None,
     }
 }
 

@@ -40,3 +40,47 @@ fn regression_7_a_config_output_in_any_toml_string_form_is_the_output() {
         .success();
     assert!(dir.path().join("x.csv").is_file());
 }
+
+/// The config reader looked for the first byte that is not white space by
+/// rescanning everything read so far at each 8 KiB chunk: a JSON output
+/// after 9 MiB of blanks took minutes (the fuzzing of the readers, issue
+/// 20). Each chunk is now scanned once: blanks just under the 8 MiB limit
+/// and a JSON output read back at once (the same run again), blanks past
+/// it refused with the limit.
+#[test]
+fn regression_20_a_config_after_megabytes_of_blanks_is_read_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    cargo_bin_cmd!("snowroll")
+        .current_dir(d)
+        .args([
+            "simulate", "--model", "eq4", "--t-end", "1", "--format", "json", "-o", "a.json",
+        ])
+        .assert()
+        .success();
+    let json = std::fs::read(d.join("a.json")).unwrap();
+    for (blanks, works) in [((8 << 20) - 1024, true), ((8 << 20) + (64 << 10), false)] {
+        let mut text = vec![b'\n'; blanks];
+        text.extend_from_slice(&json);
+        std::fs::write(d.join("b.json"), text).unwrap();
+        let started = std::time::Instant::now();
+        let out = cargo_bin_cmd!("snowroll")
+            .current_dir(d)
+            .args(["simulate", "--config", "b.json", "-o", "again.json"])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.success(), works, "{blanks} blanks: {stderr}");
+        if works {
+            assert_eq!(std::fs::read(d.join("again.json")).unwrap(), json);
+        } else {
+            assert!(stderr.contains("8 MiB"), "{stderr}");
+        }
+        // A linear scan of 8 MiB takes milliseconds; the quadratic one took
+        // seconds even optimised.
+        assert!(
+            started.elapsed() < std::time::Duration::from_secs(20),
+            "{blanks}"
+        );
+    }
+}

@@ -6,6 +6,7 @@ mod crash_safety;
 mod determinism;
 mod fuzz_findings;
 mod guards;
+mod inputs;
 mod output_files;
 mod paper;
 mod reproduce;

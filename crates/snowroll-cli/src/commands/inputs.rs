@@ -5,6 +5,7 @@ use anyhow::{anyhow, Result};
 use snowroll::{ModelKind, ParamError, Sampling, Scenario, Settings, SimOptions};
 
 use crate::args::{value_name, OutputArgs, ScenarioArgs};
+use crate::clash::{refuse_clashes, RunFile};
 use snowroll_io::Format;
 
 /// The turn-by-turn models of §3.4, which alone take `--turns`.
@@ -84,6 +85,19 @@ pub fn format(out: &OutputArgs) -> Result<Format> {
         (None, Some((by_name, _))) => Ok(by_name),
         (None, None) => Ok(Format::default()),
     }
+}
+
+/// Refuses an output (`-o`, or the config's `output`) that is the run's
+/// `--config` file, however spelt.
+pub fn refuse_own_files(out: &OutputArgs) -> Result<()> {
+    let mut files = Vec::new();
+    if let Some(config) = &out.config {
+        files.push(RunFile::input(config, "--config file"));
+    }
+    if let Some(output) = &out.output {
+        files.push(RunFile::output(output, "-o output"));
+    }
+    refuse_clashes(&files)
 }
 
 /// Refuses, before the run, a run whose row count is known and above

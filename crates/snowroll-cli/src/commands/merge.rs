@@ -20,6 +20,7 @@ use snowroll::sweep::shard_range;
 use super::sweep::{COMMAND_KEY, SHARD_KEY};
 use super::sweep_check::{check_rows, Recorded};
 use crate::args::{MergeArgs, OutputArgs};
+use crate::clash::{refuse_clashes, RunFile};
 use crate::sink::Sink;
 
 /// One shard file, its header read.
@@ -50,6 +51,11 @@ impl Shard {
 
 /// Checks and joins the shards.
 pub fn run(args: &MergeArgs) -> Result<()> {
+    let mut files: Vec<RunFile> = (args.inputs.iter())
+        .map(|p| RunFile::input(p, "input shard"))
+        .collect();
+    files.extend(args.output.as_deref().map(|p| RunFile::output(p, "-o output")));
+    refuse_clashes(&files)?;
     let mut shards = args
         .inputs
         .iter()

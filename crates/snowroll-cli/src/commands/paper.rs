@@ -13,11 +13,15 @@ use snowroll::{Scenario, Shape};
 use snowroll_report::{build_paper_report, paper_steps, ClaimResult, Lab, ReportError, Tally};
 
 use crate::args::PaperArgs;
+use crate::clash::{refuse_clashes, RunFile};
 use crate::console;
 use crate::outdir::StagedDir;
 
 /// Runs the claims and figures, writes the report, prints the claims table.
 pub fn run(args: &PaperArgs) -> Result<()> {
+    // `paper` reads no file, so its one output cannot clash today; it goes
+    // through the check every command does, which an input added later needs.
+    refuse_clashes(&[RunFile::output(&args.out, "--out report directory")])?;
     // Check --out before the long computation, so that a bad path fails at once.
     let staged = StagedDir::open(&args.out)?;
     let scenario = scenario_of(args)?;

@@ -22,6 +22,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         }
         None => flags,
     };
+    inputs::refuse_own_files(&args.output)?;
     let (model, scenario, opts) = prepare(&args)?;
     let runner = model.build();
     let format = inputs::format(&args.output)?;

@@ -24,12 +24,13 @@ use snowroll_io::VERSION;
 
 use super::sweep_check::Recorded;
 use super::sweep_csv::RowWriter;
-use super::sweep_grid::{flag_axes, grid, with_config};
+use super::sweep_grid::{flag_axes, grid, run_files, with_config};
 use super::sweep_partial::{partial_path, Partial};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
+use crate::clash::refuse_clashes;
 use crate::console;
 use crate::shell::shell_word;
-use crate::sink::Sink;
+use crate::sink::{replaced_target, Sink};
 
 /// Start of the header line naming the command (not compared on resume or merge).
 pub const COMMAND_KEY: &str = "# command: ";
@@ -43,6 +44,8 @@ const SYNC_EVERY: Duration = Duration::from_secs(10);
 
 /// Parses the grid, runs it (or this shard of it), writes the rows.
 pub fn run(args: &SweepArgs) -> Result<()> {
+    let partial = (args.output.as_deref().and_then(replaced_target)).map(|target| partial_path(&target));
+    refuse_clashes(&run_files(args, partial.as_deref()))?;
     let (args, command) = with_config(args)?;
     let args = &args;
     let grid = grid(args)?;

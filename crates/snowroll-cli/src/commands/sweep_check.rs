@@ -9,6 +9,7 @@
 //! `-o ./out.csv`, an axis left at its default and the same value given,
 //! all make the same sweep.
 
+use crate::bounded::MAX_ROW_LINE;
 use std::collections::BTreeMap;
 use std::io::{BufRead, Read};
 use std::ops::Range;
@@ -25,9 +26,6 @@ use crate::args::sweep_axes;
 const MAX_HEADER_LINE: u64 = 16 << 20;
 /// Most header lines: a sweep writes one per axis and a few more.
 const MAX_HEADER_LINES: usize = 256;
-/// Longest row read: a row is about 200 bytes, an error message at most a
-/// few hundred more.
-const MAX_ROW_LINE: u64 = 1 << 20;
 /// Start of the first header line, before the version.
 const VERSION_KEY: &str = "# snowroll sweep, version ";
 

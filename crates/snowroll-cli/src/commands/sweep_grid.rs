@@ -2,6 +2,7 @@
 
 use std::collections::BTreeMap;
 use std::fs;
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
@@ -10,6 +11,8 @@ use snowroll::sweep::{Axis, Choices, Grid, GridError, Method, Param, Values};
 use snowroll::{CollisionModel, ModelKind, OnHop};
 
 use crate::args::{sweep_axes, SweepArgs};
+use crate::bounded::{self, MAX_SETTINGS_FILE};
+use crate::clash::RunFile;
 
 /// Whether `key` is a key of a sweep's grid: `model` or a sweep axis of
 /// the parameter table.
@@ -104,6 +107,34 @@ pub fn grid_of(
     Ok(grid.with_choices(Choices { collision, on_hop })?)
 }
 
+/// The files a sweep reads (`--config`, `--grid`) and writes (`-o`, its
+/// rows file `partial`, `--plot`), for [`crate::clash::refuse_clashes`].
+pub fn run_files<'a>(args: &'a SweepArgs, partial: Option<&'a Path>) -> Vec<RunFile<'a>> {
+    let mut files = Vec::new();
+    files.extend(
+        args.config
+            .as_deref()
+            .map(|p| RunFile::input(p, "--config file")),
+    );
+    files.extend(
+        args.grid
+            .as_deref()
+            .map(|p| RunFile::input(p, "--grid file")),
+    );
+    files.extend(
+        args.output
+            .as_deref()
+            .map(|p| RunFile::output(p, "-o output")),
+    );
+    files.extend(partial.map(|p| RunFile::output(p, "rows file of the running sweep")));
+    files.extend(
+        args.plot
+            .as_deref()
+            .map(|p| RunFile::output(p, "--plot map")),
+    );
+    files
+}
+
 /// The axes given as flags, by snake-case key (`model` included).
 pub fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
     let model = a.model.as_ref().map(|m| ("model", m));
@@ -118,7 +149,7 @@ pub fn flag_axes(a: &SweepArgs) -> Vec<(&'static str, &String)> {
 /// array as a list.
 fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
     let shown = path.display();
-    let text = fs::read_to_string(path).with_context(|| format!("reading {shown}"))?;
+    let text = bounded::read_text(path, MAX_SETTINGS_FILE, "--grid file", "a --grid file")?;
     if text.starts_with("# snowroll sweep") {
         bail!("{shown} is the output of a sweep: read it back with --config {shown}");
     }
@@ -163,20 +194,21 @@ fn grid_file(path: &Path) -> Result<BTreeMap<String, String>> {
 
 /// What a sweep's output records of its run: its header's `# key: value`
 /// lines (a CSV's `#` lines, a Parquet file's `snowroll.key` metadata).
+/// Only the header is read, at most [`bounded::MAX_HEADER`] bytes.
 fn recorded(path: &Path) -> Result<Vec<(String, String)>> {
     let shown = path.display();
-    let mut head = [0u8; 4];
-    let n = fs::File::open(path)
-        .and_then(|mut f| std::io::Read::read(&mut f, &mut head))
-        .with_context(|| format!("cannot read config file {shown}"))?;
-    if &head[..n] == b"PAR1" {
+    let cannot_read = || format!("cannot read config file {shown}");
+    let mut reader = BufReader::new(fs::File::open(path).with_context(cannot_read)?);
+    if reader
+        .fill_buf()
+        .with_context(cannot_read)?
+        .starts_with(b"PAR1")
+    {
         return recorded_parquet(path);
     }
-    let file = fs::File::open(path).with_context(|| format!("cannot read config file {shown}"))?;
     let mut lines = Vec::new();
-    for line in std::io::BufRead::lines(std::io::BufReader::new(file)) {
-        let line = line.with_context(|| format!("reading config file {shown}"))?;
-        let Some(comment) = line.strip_prefix("# ") else {
+    for line in bounded::read_header(&mut reader).with_context(cannot_read)? {
+        let Some(comment) = line.trim_end_matches(['\n', '\r']).strip_prefix("# ") else {
             break;
         };
         if let Some(version) = comment.strip_prefix("snowroll sweep, version ") {

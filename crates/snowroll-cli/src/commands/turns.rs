@@ -31,6 +31,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         }
         None => flags,
     };
+    inputs::refuse_own_files(&args.output)?;
     let choices = turn_models();
     let model = inputs::model(&args.scenario, &choices)?;
     if !model.is_turn_model() {

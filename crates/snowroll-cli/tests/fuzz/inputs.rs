@@ -308,7 +308,7 @@ pub(crate) fn toml_document() -> BoxedStrategy<String> {
 }
 
 /// Files present before a case runs.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Prepared {
     pub(crate) out_csv: bool,
     pub(crate) dir: bool,
@@ -319,13 +319,34 @@ pub(crate) struct Prepared {
 }
 
 /// One fuzz case.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub(crate) struct Case {
     /// Arguments after the program name.
     pub(crate) args: Vec<String>,
     /// The config document at `c.toml`, if any.
     pub(crate) config: Option<String>,
+    /// Other input files, by name (the readers' cases of issue 20).
+    pub(crate) files: Vec<(String, Vec<u8>)>,
     pub(crate) prepared: Prepared,
+}
+
+/// The files as name, length and start: a failing case is printed, and a
+/// file may be megabytes.
+impl std::fmt::Debug for Case {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let files: Vec<String> = (self.files.iter())
+            .map(|(name, bytes)| {
+                let start = String::from_utf8_lossy(&bytes[..bytes.len().min(300)]);
+                format!("{name} ({} bytes): {start:?}", bytes.len())
+            })
+            .collect();
+        f.debug_struct("Case")
+            .field("args", &self.args)
+            .field("config", &self.config)
+            .field("files", &files)
+            .field("prepared", &self.prepared)
+            .finish()
+    }
 }
 
 pub(crate) fn prepared() -> BoxedStrategy<Prepared> {
@@ -420,7 +441,21 @@ pub(crate) fn paper_command() -> BoxedStrategy<Vec<String>> {
         .boxed()
 }
 
-pub(crate) fn case() -> BoxedStrategy<Case> {
+/// A case: mostly a command line with a TOML config (issue 7), else
+/// (weight [`READBACK_WEIGHT`] in [`COMMAND_WEIGHT_TOTAL`]) a reader of
+/// issue 20 given a corrupted output, grid or shard made from `seeds`.
+pub(crate) fn case(seeds: Vec<crate::readback::Seed>) -> BoxedStrategy<Case> {
+    prop_oneof![
+        (COMMAND_WEIGHT_TOTAL - READBACK_WEIGHT) => command_line_case(),
+        READBACK_WEIGHT => crate::readback::readback_case(seeds),
+    ]
+    .boxed()
+}
+
+/// Weight of the readers' cases among all, out of [`COMMAND_WEIGHT_TOTAL`].
+pub(crate) const READBACK_WEIGHT: u32 = 5_000;
+
+fn command_line_case() -> BoxedStrategy<Case> {
     let command = prop_oneof![
         (COMMAND_WEIGHT_TOTAL - PAPER_WEIGHT) => run_command(),
         PAPER_WEIGHT => paper_command(),
@@ -443,6 +478,7 @@ pub(crate) fn case() -> BoxedStrategy<Case> {
             Case {
                 args,
                 config,
+                files: Vec::new(),
                 prepared,
             }
         })

@@ -13,6 +13,10 @@
 //! - on failure, leave no new output file;
 //! - never write a non-finite number into a CSV.
 //!
+//! A quarter of the cases ([`readback`], issue 20) give the readers of
+//! outputs, grids and shards a corrupted, adversarial or endless file, with
+//! outputs that clash with it.
+//!
 //! Runs are kept short by construction: end times at most
 //! [`inputs::MAX_T_END`], grids no finer than [`inputs::MIN_DT`], at most
 //! [`inputs::MAX_TURNS`]
@@ -28,6 +32,7 @@
 
 mod checks;
 mod inputs;
+mod readback;
 mod shards;
 
 use std::fmt::Write as _;
@@ -104,6 +109,10 @@ fn fuzz_the_command_line_and_the_config_file() {
     let scratch = tempfile::tempdir_in(SCRATCH_IN_MEMORY)
         .or_else(|_| tempfile::tempdir())
         .unwrap();
+    // The real outputs the readers' cases corrupt, made before any case.
+    let seed_dir = scratch.path().join("seeds");
+    fs::create_dir(&seed_dir).unwrap();
+    let seeds = readback::seeds(&seed_dir);
     let root = scratch.path().join("root");
     fs::create_dir(&root).unwrap();
     fs::create_dir(root.join("work")).unwrap();
@@ -135,12 +144,23 @@ fn fuzz_the_command_line_and_the_config_file() {
     // of a campaign is then the first one run.
     let skip = env_u64("FUZZ_FROM", 0);
     let index = std::cell::Cell::new(0u64);
-    let result = runner.run(&case(), |case| {
+    let result = runner.run(&case(seeds), |case| {
         index.set(index.get() + 1);
         if index.get() <= skip {
             return Ok(());
         }
-        *current.lock().unwrap() = format!("{:?} config {:?}", case.args, case.config);
+        *current.lock().unwrap() = format!(
+            "{:?} config {:?} files {:?}",
+            case.args,
+            case.config,
+            // Small files whole (a hang names what it read), large ones by size.
+            (case.files.iter())
+                .map(|(n, b)| match b.len() {
+                    len if len <= 16 << 10 => format!("{n}: {:?}", String::from_utf8_lossy(b)),
+                    len => format!("{n}: {len} bytes"),
+                })
+                .collect::<Vec<_>>()
+        );
         started_ms.store(epoch.elapsed().as_millis() as u64 + 1, Ordering::Relaxed);
         let outcome = check(&root, &case, &tally);
         started_ms.store(0, Ordering::Relaxed);
@@ -163,6 +183,16 @@ fn fuzz_the_command_line_and_the_config_file() {
         t.successful_runs_with_output_file
     );
     let _ = writeln!(summary, "runs writing a non-finite number {}", t.non_finite);
+    let _ = writeln!(
+        summary,
+        "merges copying a non-finite cell (until item 4) {}",
+        t.merged_non_finite
+    );
+    let _ = writeln!(
+        summary,
+        "sweeps writing a non-finite cell (open finding) {}",
+        t.swept_non_finite
+    );
     let _ = writeln!(
         summary,
         "slowest case {:.3} s {}",
