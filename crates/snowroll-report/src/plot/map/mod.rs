@@ -8,7 +8,7 @@
 mod cells;
 mod draw;
 
-use super::{Axis, Chart, Legend, Scale, Series, Style};
+use super::{Axis, Chart, Scale, Series, Style};
 use cells::{classes_of, distinct, edges, param_axis, place_cells};
 use snowroll::sweep::{boundaries, Grid, Param, SweepRow};
 
@@ -234,8 +234,7 @@ impl RegimeMap {
             Scale::Log => (a * b).sqrt(),
             Scale::Linear => 0.5 * (a + b),
         };
-        let mut chart = Chart::new(name, &self.title, self.x.clone(), self.y.clone())
-            .with_legend(Legend::UpperRight);
+        let mut chart = Chart::new(name, &self.title, self.x.clone(), self.y.clone());
         for (k, class) in self.classes.iter().enumerate() {
             let points: Vec<(f64, f64)> = self
                 .cells
