@@ -333,10 +333,10 @@ enum Part {
 }
 
 /// Ticks (bold grid lines with a label) asked of each axis.
-const TICKS: usize = 11;
+pub(super) const TICKS: usize = 11;
 
 /// The one format of the tick labels of `axis`, drawn by `coord`.
-fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
+pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
     let r = coord.range();
     AxisTicks::new(
         &coord.key_points(TICKS),
@@ -414,33 +414,6 @@ fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
     }
 }
 
-/// A tick label in the report's one notation: plain decimals between 0.01
-/// and 10⁴ (`0.5`, `2500`), else powers of ten (`10⁻⁴`, `2.5×10⁷`); a
-/// Unicode minus.
-pub(crate) fn tick(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return crate::notation::fixed(v, 0);
-    }
-    let sign = if v < 0.0 { "−" } else { "" };
-    let a = v.abs();
-    if (1e-2..1e4).contains(&a) {
-        let s = format!("{a:.4}");
-        let s = s.trim_end_matches('0').trim_end_matches('.');
-        return format!("{sign}{s}");
-    }
-    let s = format!("{a:.2e}");
-    let Some((m, e)) = s.split_once('e') else {
-        return s;
-    };
-    let m = m.trim_end_matches('0').trim_end_matches('.');
-    let power = format!("10{}", crate::notation::superscript(e));
-    if m == "1" {
-        format!("{sign}{power}")
-    } else {
-        format!("{sign}{m}×{power}")
-    }
-}
-
 /// Makes text safe inside an XML comment (no `--`).
 fn escape_comment(s: &str) -> String {
     s.replace("--", "- -")
@@ -455,25 +428,5 @@ pub(super) fn with_provenance_comment(svg: String, parts: &[&str]) -> String {
     match svg.find('>') {
         Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
         None => svg,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn ticks_are_short_and_exact_for_decades() {
-        assert_eq!(tick(0.0), "0");
-        assert_eq!(tick(0.5), "0.5");
-        assert_eq!(tick(100.0), "100");
-        assert_eq!(tick(1e-6), "10⁻⁶");
-        assert_eq!(tick(2.5e7), "2.5×10⁷");
-        assert_eq!(tick(1e-4), "10⁻⁴");
-        assert_eq!(tick(1e4), "10⁴");
-        assert_eq!(tick(1e5), "10⁵");
-        assert_eq!(tick(2500.0), "2500");
-        assert_eq!(tick(-0.25), "−0.25");
-        assert_eq!(tick(0.01), "0.01");
     }
 }
