@@ -47,8 +47,8 @@ const ROW: f64 = 23.0;
 /// Padding inside the legend box and the gap from key to text, px.
 const PAD: f64 = 8.0;
 
-/// Top of the legend box below the top of the figure (the title's height), px.
-const TOP: f64 = 56.0;
+/// Top of the legend box below the top of its column (the plot's top margin), px.
+const TOP: f64 = 14.0;
 
 /// The legend column takes at most this share of the figure's width.
 const MAX_SHARE: f64 = 0.42;

@@ -6,6 +6,7 @@ use std::sync::OnceLock;
 use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{colour_slots, PALETTE};
 use super::ticks::AxisTicks;
@@ -175,11 +176,22 @@ impl Chart {
         let px = |v: f64| (v * scale).round() as u32;
         let (width, height) = root.dim_in_pixel();
         let (main, footer) = root.split_vertically(height.saturating_sub(px(28.0)));
+        // The title spans the figure, above plot and legend.
+        let (title, main) = main.split_vertically(px(TITLE_HEIGHT));
         let (plot, legend) = main.split_horizontally(width - self.legend_width(root, scale));
         if part == Part::Legend {
             return self.draw_legend_column(&legend, scale);
         }
         root.fill(&WHITE).map_err(|e| self.backend(e))?;
+        let centred = TextStyle::from((FAMILY, px(26.0)).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        title
+            .draw_text(
+                &self.title,
+                &centred,
+                ((width / 2) as i32, px(TITLE_HEIGHT / 2.0 + 4.0) as i32),
+            )
+            .map_err(|e| self.backend(e))?;
         footer
             .draw_text(
                 &provenance.line(),
@@ -217,7 +229,6 @@ impl Chart {
         let (xc, yc): (XR::CoordDescType, YR::CoordDescType) = (xr.into(), yr.into());
         let (xf, yf) = (axis_ticks(&xc, &self.x), axis_ticks(&yc, &self.y));
         let mut chart = ChartBuilder::on(area)
-            .caption(&self.title, font(26.0))
             .margin(px(14.0))
             .margin_right(px(16.0))
             .x_label_area_size(px(58.0))
@@ -334,6 +345,9 @@ enum Part {
 
 /// Ticks (bold grid lines with a label) asked of each axis.
 pub(super) const TICKS: usize = 11;
+
+/// Height of the band of the title above plot and legend, px.
+const TITLE_HEIGHT: f64 = 40.0;
 
 /// The one format of the tick labels of `axis`, drawn by `coord`.
 pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
