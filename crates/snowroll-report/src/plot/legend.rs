@@ -230,6 +230,53 @@ mod tests {
         assert_eq!(colour_slots(&odd), [0, 1]);
     }
 
+    /// The first number after `key="` in `text`.
+    fn attr(text: &str, key: &str) -> f64 {
+        let at = text.find(&format!("{key}=\"")).expect(key) + key.len() + 2;
+        let end = text[at..].find('"').unwrap() + at;
+        text[at..end].parse().unwrap()
+    }
+
+    #[test]
+    fn the_legend_is_a_group_beside_every_plotted_point() {
+        // Curves through every corner of the data, where a legend inside
+        // the plot would have to sit on one.
+        let chart = Chart::new(
+            "t",
+            "a title",
+            super::super::Axis::linear("x", "m"),
+            super::super::Axis::linear("y", "m"),
+        )
+        .with_series(line("rising"))
+        .with_series(Series::new("falling", vec![(0.0, 1.0), (1.0, 0.0)]))
+        .with_series(Series::new("dots", vec![(0.0, 0.5), (1.0, 0.5)]).style(Style::Markers));
+        let svg = chart
+            .render_svg(&super::super::Provenance::default())
+            .unwrap();
+        let (body, legend) = svg
+            .split_once("<g class=\"legend\">")
+            .expect("no legend group");
+        let left = attr(legend, "x");
+        assert!(legend.contains("rising") && legend.contains("falling") && legend.contains("dots"));
+        let mut points = 0;
+        for poly in body.split("<polyline").skip(1) {
+            let pts = &poly[poly.find("points=\"").unwrap() + 8..];
+            for xy in pts[..pts.find('"').unwrap()].split_whitespace() {
+                let x: f64 = xy.split(',').next().unwrap().parse().unwrap();
+                assert!(
+                    x < left,
+                    "a curve's point at x = {x} is under the legend (from {left})"
+                );
+                points += 1;
+            }
+        }
+        for circle in body.split("<circle").skip(1) {
+            assert!(attr(circle, "cx") < left, "a marker is under the legend");
+            points += 1;
+        }
+        assert!(points >= 6, "only {points} points found");
+    }
+
     #[test]
     fn the_palette_has_no_colour_twice() {
         for (i, a) in PALETTE.iter().enumerate() {
