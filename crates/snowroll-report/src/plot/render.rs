@@ -228,11 +228,21 @@ impl Chart {
         let font = |size: f64| (FAMILY, px(size)).into_font();
         let (xc, yc): (XR::CoordDescType, YR::CoordDescType) = (xr.into(), yr.into());
         let (xf, yf) = (axis_ticks(&xc, &self.x), axis_ticks(&yc, &self.y));
+        // Room for the widest y tick label and the axis title beside it.
+        let label_font: TextStyle = font(18.0).into();
+        let widest = yc
+            .key_points(TICKS)
+            .iter()
+            .filter_map(|&v| area.estimate_text_size(&yf.label(v), &label_font).ok())
+            .map(|(w, _)| w)
+            .max()
+            .unwrap_or(0);
+        let y_area = px(86.0).max(widest + px(44.0));
         let mut chart = ChartBuilder::on(area)
             .margin(px(14.0))
             .margin_right(px(16.0))
             .x_label_area_size(px(58.0))
-            .y_label_area_size(px(86.0))
+            .y_label_area_size(y_area)
             .build_cartesian_2d(xc, yc)
             .map_err(|e| self.backend(e))?;
         chart
