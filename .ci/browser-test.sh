@@ -18,7 +18,9 @@
 #     the text outside code has no LaTeX/ASCII groups (_{ ^{ ^( _(),
 #   - at a phone's width (400 px) no figure or animation overflows and the
 #     page does not scroll sideways,
-#   - at both widths neither animation's distance labels run together.
+#   - at both widths neither animation's distance labels run together,
+#     no figure's legend box (<g class="legend">) covers a plotted point,
+#     and the smallest figure text is at least 9 px as rendered.
 # Screenshots (desktop and phone widths) are kept in REPORT_DIR as
 # browser-desktop.png and browser-phone.png. Exits non-zero on any failure.
 set -euo pipefail

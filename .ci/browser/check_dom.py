@@ -131,6 +131,10 @@ class Dom(html.parser.HTMLParser):
             self.status_texts[self._status_id] += data
 
 
+# Smallest readable size of figure text on screen, px.
+MIN_FIGURE_FONT_PX = 9.0
+
+
 def main():
     dom_file, report_dir = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     phone_file = pathlib.Path(sys.argv[3]) if len(sys.argv) > 3 else None
@@ -231,6 +235,29 @@ def main():
 
     label_gap_check(dom.root_attrs, "at 1400 px")
 
+    def figure_checks(attrs, where):
+        # Every figure drawn from a chart has a legend box (<g class="legend">
+        # in its SVG); the page's probe lists each one whose box has a plotted
+        # point (a curve's vertex, a marker) inside it.
+        charts = sum(1 for p in (report_dir / "figures").glob("*.png"))
+        covers = attrs.get("data-legend-covers")
+        legends = attrs.get("data-legend-figures")
+        points = attrs.get("data-legend-points")
+        check(covers == "" and legends == str(charts) and int(points or 0) > 1000,
+              f"{where}: no legend box covers a plotted point ({legends} legends of {charts} charts, "
+              f"{points} points checked; covered: {covers!r})")
+        # The smallest figure text as rendered: at least 9 px, readable
+        # on a phone (the figures' 15-16 px text shown at 960 px).
+        font = attrs.get("data-figure-font-min")
+        try:
+            ok = float(font) >= MIN_FIGURE_FONT_PX
+        except (TypeError, ValueError):
+            ok = False
+        check(ok, f"{where}: figure text is at least {MIN_FIGURE_FONT_PX} px as rendered "
+                  f"(smallest: {font} px, in {attrs.get('data-figure-font-min-at')})")
+
+    figure_checks(dom.root_attrs, "at 1400 px")
+
     raw = (report_dir / "report.html").read_text(encoding="utf-8")
     external = re.findall(r"""(?:src|href)\s*=\s*["']?(?:https?:)?//[^"'\s>]+|url\(\s*["']?(?:https?:)?//[^)]+\)|@import|<link\b""", raw)
     check(not external, f"no external resources referenced ({external[:3]})")
@@ -244,6 +271,7 @@ def main():
               f"at a phone's width ({width} px) no figure or animation overflows and the page does not scroll sideways "
               f"(overflowing: {overflow!r})")
         label_gap_check(phone.root_attrs, f"at a phone's width ({width} px)")
+        figure_checks(phone.root_attrs, f"at a phone's width ({width} px)")
 
     if failures:
         print(f"browser-test: {len(failures)} check(s) failed", file=sys.stderr)

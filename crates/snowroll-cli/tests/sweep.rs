@@ -425,7 +425,8 @@ fn plot_draws_a_regime_map_with_legend_axes_and_the_stall_border() {
     let map = fs::read_to_string(&svg).unwrap();
     assert!(map.starts_with("<svg"), "{}", &map[..80]);
     for text in [
-        "legend",
+        // The colour legend's title says what the colours show.
+        "\noutcome\n",
         "never starts",
         "rolls on",
         "stall slope (fn. 7)",
@@ -459,10 +460,14 @@ fn plot_draws_a_regime_map_with_legend_axes_and_the_stall_border() {
         "v_m_s",
     ]);
     let map = fs::read_to_string(&svg).unwrap();
+    // Bins of the quantity with its unit, under the title v [m/s], never
+    // the column's name.
     assert!(
-        map.contains("≤ v_m_s &lt;") || map.contains("≤ v_m_s <"),
-        "no bins"
+        map.contains(" ≤ v &lt; ") && map.contains(" m/s\n"),
+        "no bins of v in m/s"
     );
+    assert!(map.contains("\nv [m/s]\n"), "no legend title v [m/s]");
+    assert!(!map.contains("v_m_s"), "the column name is shown");
     // A dimensionless axis carries no unit (report notation).
     assert!(map.contains("friction coefficient μ"));
 

@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 use super::claims::{mu_min_rows, Edit};
 use super::{ClaimId, Figure, Lab, ReportError, Table};
-use crate::plot::{Axis, Chart, Legend, Series, Style};
+use crate::plot::{Axis, Chart, Series, Style};
 use snowroll::models::{run_turns, CollisionModel, ModelKind};
 use snowroll::scenario::Scenario;
 use snowroll::trajectory::{OnHop, Sampling, SimOptions, StopReason};
@@ -114,8 +114,7 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
         "Smallest normal force of each turn, N/(M g)",
         Axis::log("turn k + 1", "1").column("turn_plus_one"),
         Axis::linear("min N/(M g) in the turn", "1").column("min_normal_over_mg"),
-    )
-    .with_legend(Legend::LowerLeft);
+    );
     let opts = turn_opts(CONTACT_TURNS, CollisionModel::Note, OnHop::Continue);
     let mut first_negative = Vec::new();
     for alpha_deg in figure_slopes() {
@@ -132,6 +131,7 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
         let (sa, ca) = s.slope_angle().sin_cos();
         let limit = ca - 0.5 * sa;
         let ends = [1.0, table.rows.len().max(1) as f64];
+        let curve = chart.series.len();
         chart = chart
             .with_series(Series::new(&format!("α = {alpha_deg:.3}°"), points))
             .with_series(
@@ -139,7 +139,8 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
                     &format!("α = {alpha_deg:.3}°: cos α − ½ sin α = {limit:.4}"),
                     ends.iter().map(|&k| (k, limit)).collect(),
                 )
-                .style(Style::Dashed),
+                .style(Style::Dashed)
+                .in_colour_of(curve),
             );
         if let Some(r) = table.rows.iter().find(|r| r.min_normal_over_mg <= 0.0) {
             first_negative.push(format!("{alpha_deg:.3}°: turn {}", r.turn));

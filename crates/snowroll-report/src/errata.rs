@@ -102,6 +102,8 @@ pub(super) fn errata_section(h: &mut String) {
     );
     let mut paragraph: Vec<&str> = Vec::new();
     let mut in_table = false;
+    // The header of the table being written: each cell's label on a phone.
+    let mut header: Vec<String> = Vec::new();
     let flush = |h: &mut String, paragraph: &mut Vec<&str>| {
         if !paragraph.is_empty() {
             let _ = writeln!(h, "<p>{}</p>", inline(&paragraph.join(" ")));
@@ -123,14 +125,16 @@ pub(super) fn errata_section(h: &mut String) {
                 for c in &row {
                     let _ = write!(h, "<th scope=\"col\">{}</th>", inline(c));
                 }
+                header = row.iter().map(|c| esc(&c.replace('`', ""))).collect();
                 h.push_str("</tr></thead><tbody>\n");
                 in_table = true;
             } else if is_separator(trimmed) {
                 // The header/body separator: no row of its own.
             } else {
                 let _ = write!(h, "<tr id=\"{}\">", anchor(row[0]));
-                for c in &row {
-                    let _ = write!(h, "<td>{}</td>", inline(c));
+                for (k, c) in row.iter().enumerate() {
+                    let label = header.get(k).map_or("", String::as_str);
+                    let _ = write!(h, "<td data-label=\"{label}\">{}</td>", inline(c));
                 }
                 h.push_str("</tr>\n");
             }

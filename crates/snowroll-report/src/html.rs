@@ -26,10 +26,19 @@ const SCRIPT: &str = include_str!("../assets/report.js");
 const ERROR_TRAP: &str = "(function(){var n=0;function mark(){n+=1;document.documentElement.setAttribute('data-js-errors',String(n));}window.addEventListener('error',mark);window.addEventListener('unhandledrejection',mark);})();";
 
 /// Records, once the page has laid out, what sticks out sideways: each
-/// figure whose drawing is wider than the figure or than the window, and
+/// figure whose drawing (its scrolling frame, for a figure) is wider than
+/// the figure or than the window, and
 /// the page itself if it scrolls sideways. The browser test reads
 /// `html[data-layout-overflow]` at a phone's width (empty: nothing overflows).
-const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure,.anim').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
+/// Records, once the page has laid out, for the browser test: every plotted
+/// point (vertex of a curve, marker) of a figure that lies inside its legend
+/// box (`html[data-legend-covers]`, `figure@x,y` of the first per figure;
+/// empty when none), how many figures have a legend and how many points
+/// were checked, and the smallest rendered size of figure text, px
+/// (`data-figure-font-min`, at `data-figure-font-min-at`).
+const FIGURE_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,covers=[],legends=0,points=0,fmin=1e9,fat='';document.querySelectorAll('figure.figure svg').forEach(function(svg){var name=svg.closest('figure').id;svg.querySelectorAll('text').forEach(function(t){var m=t.getScreenCTM(),f=parseFloat(t.getAttribute('font-size')||'0');if(m&&f>0&&t.textContent.trim()){var px=f*Math.sqrt(m.a*m.a+m.b*m.b);if(px<fmin){fmin=px;fat=name;}}});var g=svg.querySelector('g.legend');if(!g){return;}var frame=g.querySelector('rect');if(!frame){return;}legends+=1;var b=frame.getBoundingClientRect(),hit='';function at(x,y,m){var p=svg.createSVGPoint();p.x=x;p.y=y;p=p.matrixTransform(m);points+=1;if(!hit&&p.x>b.left&&p.x<b.right&&p.y>b.top&&p.y<b.bottom){hit=name+'@'+Math.round(p.x-b.left)+','+Math.round(p.y-b.top);}}svg.querySelectorAll('polyline,polygon,circle,rect').forEach(function(e){if(g.contains(e)){return;}var m=e.getScreenCTM();if(!m){return;}var k=e.tagName;if(k==='circle'){at(+e.getAttribute('cx'),+e.getAttribute('cy'),m);}else if(k==='rect'){var w=+e.getAttribute('width'),h=+e.getAttribute('height');if(w<100&&h<100){at(+e.getAttribute('x')+w/2,+e.getAttribute('y')+h/2,m);}}else{for(var i=0;i<e.points.numberOfItems;i++){var q=e.points.getItem(i);at(q.x,q.y,m);}}});if(hit){covers.push(hit);}});d.setAttribute('data-legend-covers',covers.join(' '));d.setAttribute('data-legend-figures',String(legends));d.setAttribute('data-legend-points',String(points));d.setAttribute('data-figure-font-min',fmin<1e9?fmin.toFixed(1):'');d.setAttribute('data-figure-font-min-at',fat);});";
+
+const LAYOUT_PROBE: &str = "window.addEventListener('load',function(){var d=document.documentElement,w=d.clientWidth,bad=[];document.querySelectorAll('figure,.anim').forEach(function(f){var r=f.getBoundingClientRect(),s=f.querySelector('.svg-wrap,svg,canvas');var sr=s?s.getBoundingClientRect():r;if(r.right>w+1||sr.right>r.right+1||sr.width>r.width+1){bad.push(f.id||'figure');}});if(d.scrollWidth>w+1){bad.push('page('+d.scrollWidth+'>'+w+')');}d.setAttribute('data-layout-overflow',bad.join(' '));d.setAttribute('data-layout-width',String(w));});";
 
 /// Makes text safe inside an HTML comment.
 fn comment(s: &str) -> String {
@@ -157,6 +166,7 @@ fn page_end(h: &mut String, report: &Report) -> Result<(), ReportError> {
     if !report.animations.is_empty() {
         let _ = writeln!(h, "<script>\n{SCRIPT}</script>");
     }
+    let _ = writeln!(h, "<script>{FIGURE_PROBE}</script>");
     let _ = writeln!(h, "<script>{LAYOUT_PROBE}</script>");
     h.push_str("</body>\n</html>\n");
     Ok(())

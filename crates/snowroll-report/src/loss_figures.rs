@@ -4,7 +4,7 @@
 //! trajectories and their energy ledgers.
 
 use super::{ClaimId, Figure, Lab, ReportError};
-use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
+use crate::plot::{Axis, Chart, Marker, Series, Style};
 use snowroll::losses::{Losses, AIR_DENSITY_DEFAULT};
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile, Shape};
@@ -178,8 +178,7 @@ fn ledger_chart(rows: &[(f64, &LedgerRow)]) -> Chart {
         "Where the released energy goes: the log of eq. (4) with all three losses",
         Axis::log("time t", "s").column("t_s"),
         Axis::linear("share of the potential energy released", "1").column("share"),
-    )
-    .with_legend(Legend::UpperLeft);
+    );
     for term in &TERMS {
         let mut series = Series::new(term.name, share(&term.of)).style(term.style);
         if let Some(m) = term.marker {
@@ -263,22 +262,28 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
         title,
         Axis::log("time t", "s").column("t_s"),
         Axis::log("speed v", "m/s").column("v_m_s"),
-    )
-    .with_legend(Legend::UpperLeft);
+    );
     let times = super::log_grid(SPEED_T_FIRST, SPEED_T_END, SPEED_POINTS);
     chart = with_speed_runs(chart, lab, &s, &times)?;
     // §2.2's closed form, v_t² = M G/(½ ρ_a C_d A). Drag alone on a slope
     // always has one; were it missing, the NaN is refused with the figure's
     // data (nothing non-finite is written), not drawn.
     let vt = snowroll::losses::terminal_velocity(&s, &drag_only()).unwrap_or(f64::NAN);
-    chart = chart.with_series(
-        Series::new(
-            VT_NAME,
-            times.iter().step_by(10).map(|&t| (t, vt)).collect(),
-        )
-        .style(Style::Markers)
-        .marker(Marker::Square),
-    );
+    // In the colour of the run it is the limit of: snowless, with drag.
+    let limit_of = chart
+        .series
+        .iter()
+        .position(|c| c.name.starts_with(ModelKind::Snowless.id()) && c.name.ends_with("drag"));
+    let mut vt_series = Series::new(
+        VT_NAME,
+        times.iter().step_by(10).map(|&t| (t, vt)).collect(),
+    )
+    .style(Style::Markers)
+    .marker(Marker::Square);
+    if let Some(k) = limit_of {
+        vt_series = vt_series.in_colour_of(k);
+    }
+    chart = chart.with_series(vt_series);
     let file = ScenarioFile::from(s);
     let caption = format!(
         "Speed of the {body}{extra} against time from rest on the default slope: without losses (solid and long-dashed) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = {AIR_DENSITY_DEFAULT} kg/m³; dashed and dotted), snowless and gathering snow by eq. (4) (torque about the centre). \

@@ -5,7 +5,7 @@
 //! animation. It only reads trajectories.
 
 use super::{Animation, ClaimId, Figure, Lab, ReportError};
-use crate::plot::{Axis, Chart, Legend, Series, Style};
+use crate::plot::{Axis, Chart, Series, Style};
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile, Shape};
 use snowroll::trajectory::{Sampling, SimOptions};
@@ -73,8 +73,7 @@ pub(super) fn snowball_figure(lab: &Lab, times: &[f64]) -> Result<Figure, Report
         "Acceleration of the snowball in every circular model",
         Axis::log("time t", "s").column("t_s"),
         Axis::linear("a / (g sin α)", "1").column("a_over_g_sin_alpha"),
-    )
-    .with_legend(Legend::LowerLeft);
+    );
     let mut fractions = Vec::new();
     for kind in ModelKind::ALL
         .into_iter()

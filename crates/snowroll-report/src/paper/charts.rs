@@ -5,7 +5,7 @@
 use super::looks::{circular_models, group_label, label, look, same_equation_groups, styled};
 use super::{log_times, run, APPROACH_FLOOR, N_TIMES, TURNS_SHOWN, T_END, X_FAR};
 use crate::notation;
-use crate::plot::{Axis, Chart, Legend, Marker, Series, Style};
+use crate::plot::{Axis, Chart, Marker, Series, Style};
 use crate::{Lab, LedgerPoint, ReportError, TurnDigest};
 use snowroll::models::ModelKind;
 use snowroll::scenario::Scenario;
@@ -96,22 +96,19 @@ pub(super) fn model_charts(
         "Acceleration of every model",
         Axis::log("time t", "s").column("t_s"),
         Axis::linear("a / (g sin α)", "1").column("a_over_g_sin_alpha"),
-    )
-    .with_legend(Legend::LowerLeft);
+    );
     let mut speed = Chart::new(
         "speed-all-models",
         "Speed of every model",
         Axis::linear("time t", "s").column("t_s"),
         Axis::linear("speed v", "m/s").column("v_m_s"),
-    )
-    .with_legend(Legend::UpperLeft);
+    );
     let mut radius = Chart::new(
         "radius-all-models",
         "Radius of the log",
         Axis::linear("time t", "s").column("t_s"),
         Axis::linear("radius r", "m").column("r_m"),
-    )
-    .with_legend(Legend::UpperLeft);
+    );
     for (group, traj) in &runs.drawn {
         let (k, name) = (group[0], group_label(group));
         let of = |y: fn(&snowroll::trajectory::Sample, f64) -> f64| {
@@ -169,8 +166,7 @@ pub(super) fn approach_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, Repo
         "Approach to the terminal acceleration",
         Axis::log("distance x", "m").column("x_m"),
         Axis::log("|a − a∞| / (g sin α)", "1").column("deviation_over_g_sin_alpha"),
-    )
-    .with_legend(Legend::LowerLeft);
+    );
     let far = SimOptions {
         t_end: 1e8,
         x_end: Some(X_FAR),
@@ -214,8 +210,7 @@ pub(super) fn in_turn_chart(lab: &Lab, opts: &SimOptions) -> Result<Chart, Repor
         "Acceleration over the first turns (with a collision at each full turn)",
         Axis::linear("time t", "s").column("t_s"),
         Axis::linear("a / (g sin α)", "1").column("a_over_g_sin_alpha"),
-    )
-    .with_legend(Legend::LowerRight);
+    );
     for kind in [ModelKind::Turns, ModelKind::TurnsExact] {
         let traj = run(kind, lab, &first_turns)?;
         let series = Series::from_samples(&label(kind), &traj.samples, |p| p.t_s, |p| p.a_m_s2 / g);
@@ -238,7 +233,6 @@ pub(super) fn means_chart(paper: &TurnDigest) -> Chart {
         Axis::log("turns completed K", "1").column("turns"),
         Axis::linear("mean a / (g sin α)", "1").column("mean_a_over_g_sin_alpha"),
     )
-    .with_legend(Legend::UpperRight)
     .with_series(Series::new(
         "in turn, mean over turns K/10 … K",
         of(|c| c.window_mean_a_turn_over_g),
@@ -288,7 +282,6 @@ pub(super) fn energy_ledger_chart(paper: &TurnDigest) -> Chart {
         Axis::log("turns completed", "1").column("turns"),
         Axis::linear("share of the energy released in the turns", "1").column("share"),
     )
-    .with_legend(Legend::UpperRight)
     .with_series(Series::new(
         "kinetic energy after the collision",
         share(|p| p.kinetic_j),

@@ -15,8 +15,10 @@
 //! naming the program version and the parameters ([`Provenance`]); the SVG
 //! also records them in a comment and the PNG in `iTXt` chunks.
 
+mod legend;
 mod map;
 mod render;
+mod ticks;
 
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
@@ -42,6 +44,16 @@ pub enum PlotError {
     InvalidName {
         /// The rejected name.
         name: String,
+    },
+    /// The chart has more curves than colours: two would share one.
+    #[error("chart {chart:?} has {curves} curves of their own colour; at most {colours} can be told apart")]
+    TooManyColours {
+        /// The chart's name.
+        chart: String,
+        /// Curves that need a colour of their own.
+        curves: usize,
+        /// Colours in the palette.
+        colours: usize,
     },
     /// The chart has no series.
     #[error("chart {chart:?} has no series")]
@@ -229,6 +241,10 @@ pub struct Series {
     /// [`MARKS_ON_A_LINE`] marks along the line; `None` draws a line without
     /// marks (and circles for [`Style::Markers`]).
     pub marker: Option<Marker>,
+    /// Drawn in the colour of the chart's series of this index, an earlier
+    /// one (a closed form in the colour of its curve), instead of a colour
+    /// of its own.
+    pub colour_of: Option<usize>,
 }
 
 impl Series {
@@ -239,6 +255,7 @@ impl Series {
             points,
             style: Style::Line,
             marker: None,
+            colour_of: None,
         }
     }
 
@@ -264,24 +281,18 @@ impl Series {
         self
     }
 
+    /// Draws the series in the colour of the chart's `k`-th series, an
+    /// earlier one: a closed form in the colour of the curve it describes
+    /// (dashed, say, beside a solid curve).
+    pub fn in_colour_of(mut self, k: usize) -> Self {
+        self.colour_of = Some(k);
+        self
+    }
+
     /// How the series looks apart from its colour: line style and marker.
     pub fn look(&self) -> (Style, Option<Marker>) {
         (self.style, self.marker)
     }
-}
-
-/// Where the legend sits inside the plotting area.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Legend {
-    /// Top right.
-    #[default]
-    UpperRight,
-    /// Top left.
-    UpperLeft,
-    /// Bottom right.
-    LowerRight,
-    /// Bottom left.
-    LowerLeft,
 }
 
 /// Who drew a figure and from which parameters; drawn as the figure's footer
@@ -311,7 +322,7 @@ impl Provenance {
     }
 }
 
-/// A chart: title, axes, series, legend position.
+/// A chart: title, axes, series (the legend is drawn beside the plot).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Chart {
     /// File stem of the figure (`figures/NAME.svg`): lower-case letters, digits, `-`, `_`.
@@ -324,8 +335,6 @@ pub struct Chart {
     pub y: Axis,
     /// The data.
     pub series: Vec<Series>,
-    /// Legend position.
-    pub legend: Legend,
 }
 
 impl Chart {
@@ -337,19 +346,12 @@ impl Chart {
             x,
             y,
             series: Vec::new(),
-            legend: Legend::default(),
         }
     }
 
     /// Adds a series.
     pub fn with_series(mut self, series: Series) -> Self {
         self.series.push(series);
-        self
-    }
-
-    /// Sets the legend position.
-    pub fn with_legend(mut self, legend: Legend) -> Self {
-        self.legend = legend;
         self
     }
 
@@ -383,6 +385,14 @@ impl Chart {
         if self.series.is_empty() {
             return Err(PlotError::NoSeries {
                 chart: self.name.clone(),
+            });
+        }
+        let curves = legend::colours_needed(&self.series);
+        if curves > legend::PALETTE.len() {
+            return Err(PlotError::TooManyColours {
+                chart: self.name.clone(),
+                curves,
+                colours: legend::PALETTE.len(),
             });
         }
         if self.series.iter().any(|s| s.name.trim().is_empty()) {

@@ -3,13 +3,14 @@
 use std::fmt;
 use std::sync::OnceLock;
 
-use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{
-    Axis, Chart, Legend, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE,
-};
+use super::legend::{colour_slots, PALETTE};
+use super::ticks::AxisTicks;
+use super::{Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE};
 
 /// The embedded font (DejaVu Sans, Bitstream Vera licence, see
 /// `assets/fonts/DejaVuSans-LICENSE.txt`).
@@ -40,20 +41,6 @@ const LOG_PAD: f64 = 0.04;
 
 /// Decades added on each side of a logarithmic axis whose data sit at one value.
 const LOG_PAD_SINGLE: f64 = 1.0;
-
-/// Colours of successive series (Tableau 10: distinct, colour-blind aware).
-const PALETTE: [RGBColor; 10] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
-    RGBColor(23, 190, 207),
-];
 
 /// Registers the embedded font with `plotters`, once per process.
 ///
@@ -101,9 +88,18 @@ impl Chart {
         let k = SVG_OVERSAMPLE;
         {
             let root = SVGBackend::with_string(&mut svg, (w * k, h * k)).into_drawing_area();
-            self.draw(&root, provenance, f64::from(k))?;
+            self.draw(&root, provenance, f64::from(k), Part::Body)?;
             root.present().map_err(|e| self.backend(e))?;
         }
+        // The legend, drawn on its own canvas of the same size, goes into
+        // the figure as one group the browser test can find.
+        let mut legend = String::new();
+        {
+            let root = SVGBackend::with_string(&mut legend, (w * k, h * k)).into_drawing_area();
+            self.draw(&root, provenance, f64::from(k), Part::Legend)?;
+            root.present().map_err(|e| self.backend(e))?;
+        }
+        let svg = with_legend_group(&svg, &legend);
         // Shown at FIGURE_SIZE, drawn in the oversampled viewBox; lines
         // join and end round.
         let svg = svg
@@ -134,7 +130,8 @@ impl Chart {
         let mut rgb = vec![0_u8; w as usize * h as usize * 3];
         {
             let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-            self.draw(&root, provenance, PNG_SCALE)?;
+            self.draw(&root, provenance, PNG_SCALE, Part::Body)?;
+            self.draw(&root, provenance, PNG_SCALE, Part::Legend)?;
             root.present().map_err(|e| self.backend(e))?;
         }
         let png_err = |e: png::EncodingError| PlotError::Png {
@@ -166,36 +163,53 @@ impl Chart {
         }
     }
 
-    /// Draws title, axes, series, legend and footer on `root`, every length
-    /// multiplied by `scale`.
+    /// Draws `part` of the figure on `root`, every length multiplied by
+    /// `scale`: title, axes, series and footer, or the legend column to the
+    /// right of the plot.
     fn draw<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         provenance: &Provenance,
         scale: f64,
+        part: Part,
     ) -> Result<(), PlotError> {
         let px = |v: f64| (v * scale).round() as u32;
+        let (width, height) = root.dim_in_pixel();
+        let (main, footer) = root.split_vertically(height.saturating_sub(px(28.0)));
+        // The title spans the figure, above plot and legend.
+        let (title, main) = main.split_vertically(px(TITLE_HEIGHT));
+        let (plot, legend) = main.split_horizontally(width - self.legend_width(root, scale));
+        if part == Part::Legend {
+            return self.draw_legend_column(&legend, scale);
+        }
         root.fill(&WHITE).map_err(|e| self.backend(e))?;
-        let (_, height) = root.dim_in_pixel();
-        let (main, footer) = root.split_vertically(height.saturating_sub(px(26.0)));
+        let centred = TextStyle::from((FAMILY, px(26.0)).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        title
+            .draw_text(
+                &self.title,
+                &centred,
+                ((width / 2) as i32, px(TITLE_HEIGHT / 2.0 + 4.0) as i32),
+            )
+            .map_err(|e| self.backend(e))?;
         footer
             .draw_text(
                 &provenance.line(),
-                &(FAMILY, px(13.0)).into_font().color(&RGBColor(90, 90, 90)),
+                &(FAMILY, px(15.0)).into_font().color(&RGBColor(90, 90, 90)),
                 (px(12.0) as i32, px(4.0) as i32),
             )
             .map_err(|e| self.backend(e))?;
         let (xr, yr) = self.ranges();
         match (self.x.scale, self.y.scale) {
-            (Scale::Linear, Scale::Linear) => self.draw_in(&main, xr, yr, scale),
-            (Scale::Linear, Scale::Log) => self.draw_in(&main, xr, yr.log_scale(), scale),
-            (Scale::Log, Scale::Linear) => self.draw_in(&main, xr.log_scale(), yr, scale),
-            (Scale::Log, Scale::Log) => self.draw_in(&main, xr.log_scale(), yr.log_scale(), scale),
+            (Scale::Linear, Scale::Linear) => self.draw_in(&plot, xr, yr, scale),
+            (Scale::Linear, Scale::Log) => self.draw_in(&plot, xr, yr.log_scale(), scale),
+            (Scale::Log, Scale::Linear) => self.draw_in(&plot, xr.log_scale(), yr, scale),
+            (Scale::Log, Scale::Log) => self.draw_in(&plot, xr.log_scale(), yr.log_scale(), scale),
         }
     }
 
-    /// Draws the axes, every series with its legend key, and the legend box
-    /// on `area` over the ranges `xr` × `yr`, every length times `scale`.
+    /// Draws the axes and every series on `area` over the ranges `xr` ×
+    /// `yr`, every length times `scale`; every tick of an axis in one format.
     fn draw_in<'a, DB, XR, YR>(
         &self,
         area: &'a DrawingArea<DB, Shift>,
@@ -212,39 +226,57 @@ impl Chart {
     {
         let px = |v: f64| (v * scale).round() as u32;
         let font = |size: f64| (FAMILY, px(size)).into_font();
+        let (xc, yc): (XR::CoordDescType, YR::CoordDescType) = (xr.into(), yr.into());
+        let (xf, yf) = (axis_ticks(&xc, &self.x), axis_ticks(&yc, &self.y));
+        // Room for the widest y tick label and the axis title beside it.
+        let label_font: TextStyle = font(18.0).into();
+        let widest = yc
+            .key_points(TICKS)
+            .iter()
+            .filter_map(|&v| area.estimate_text_size(&yf.label(v), &label_font).ok())
+            .map(|(w, _)| w)
+            .max()
+            .unwrap_or(0);
+        let y_area = px(86.0).max(widest + px(44.0));
         let mut chart = ChartBuilder::on(area)
-            .caption(&self.title, font(26.0))
             .margin(px(14.0))
-            .margin_right(px(36.0))
+            .margin_right(px(16.0))
             .x_label_area_size(px(58.0))
-            .y_label_area_size(px(86.0))
-            .build_cartesian_2d(xr, yr)
+            .y_label_area_size(y_area)
+            .build_cartesian_2d(xc, yc)
             .map_err(|e| self.backend(e))?;
         chart
             .configure_mesh()
             .x_desc(self.x.title())
             .y_desc(self.y.title())
-            .axis_desc_style(font(20.0))
-            .label_style(font(16.0))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
+            .axis_desc_style(font(21.0))
+            .label_style(font(18.0))
+            .x_labels(TICKS)
+            .y_labels(TICKS)
+            .x_label_formatter(&|v| xf.label(*v))
+            .y_label_formatter(&|v| yf.label(*v))
             .bold_line_style(RGBColor(220, 220, 220))
             .light_line_style(RGBColor(242, 242, 242))
             .draw()
             .map_err(|e| self.backend(e))?;
-        for (i, s) in self.series.iter().enumerate() {
-            self.draw_series(&mut chart, i, s, scale)?;
+        for ((i, s), slot) in self
+            .series
+            .iter()
+            .enumerate()
+            .zip(colour_slots(&self.series))
+        {
+            self.draw_series(&mut chart, (i, PALETTE[slot % PALETTE.len()]), s, scale)?;
         }
-        self.draw_legend_box(&mut chart, scale)
+        Ok(())
     }
 
-    /// Draws series `s`, the `i`-th of the chart (which sets its colour and
-    /// where its marks fall), on `chart`: its marks, its line, and its key in
-    /// the legend, every length times `scale`.
+    /// Draws series `s`, the `i`-th of the chart (which sets where its marks
+    /// fall), in `colour` on `chart`: its marks and its line, every length
+    /// times `scale`.
     fn draw_series<'a, DB, CT>(
         &self,
         chart: &mut ChartContext<'a, DB, CT>,
-        i: usize,
+        (i, colour): (usize, RGBColor),
         s: &Series,
         scale: f64,
     ) -> Result<(), PlotError>
@@ -254,9 +286,7 @@ impl Chart {
     {
         let px = |v: f64| (v * scale).round() as u32;
         let width = px(2.0);
-        let key = px(36.0) as i32;
         let dot = px(4.0);
-        let colour = PALETTE[i % PALETTE.len()];
         let style = ShapeStyle::from(colour).stroke_width(width);
         let pts: Vec<(f64, f64)> = s
             .points
@@ -268,47 +298,15 @@ impl Chart {
         let marks = marks_of(s, i, &pts);
         let filled = style.filled();
         self.draw_marks(chart, marks, marker, filled, dot)?;
-        let drawn = match s.style.dash_pattern() {
+        match s.style.dash_pattern() {
             // Markers only: the marks above are the series.
-            _ if s.style == Style::Markers => {
-                chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())
-            }
+            _ if s.style == Style::Markers => return Ok(()),
             None => chart.draw_series(LineSeries::new(pts, style)),
             Some((on, off)) => {
                 chart.draw_series(DashedLineSeries::new(pts, px(on), px(off), style))
             }
         }
         .map_err(|e| self.backend(e))?;
-        // The legend key repeats the line's pattern and marker. One
-        // element shape serves every style (a legend closure returns one
-        // type): four line pieces and a marker, unused parts transparent.
-        let hidden = ShapeStyle::from(TRANSPARENT);
-        let pieces = key_pieces(s.style, key);
-        let line = if s.style == Style::Markers {
-            hidden
-        } else {
-            style
-        };
-        let shown = s.style == Style::Markers || s.marker.is_some();
-        let (c, t, q) = match (shown, marker) {
-            (false, _) => (hidden, hidden, hidden),
-            (true, Marker::Circle) => (filled, hidden, hidden),
-            (true, Marker::Triangle) => (hidden, filled, hidden),
-            (true, Marker::Square) => (hidden, hidden, filled),
-        };
-        drawn.label(&s.name).legend(move |(x, y)| {
-            let half = key / 2;
-            let d = dot as i32;
-            let piece = |k: usize| PathElement::new(vec![(pieces[k].0, 0), (pieces[k].1, 0)], line);
-            EmptyElement::at((x, y))
-                + piece(0)
-                + piece(1)
-                + piece(2)
-                + piece(3)
-                + Circle::new((half, 0), dot, c)
-                + TriangleMarker::new((half, 0), dot + dot / 2, t)
-                + Rectangle::new([(half - d, -d), (half + d, d)], q)
-        });
         Ok(())
     }
 
@@ -344,36 +342,47 @@ impl Chart {
         .map_err(|e| self.backend(e))?;
         Ok(())
     }
+}
 
-    /// Draws the box of legend entries in the corner the chart asks for,
-    /// every length times `scale`.
-    fn draw_legend_box<'a, DB, CT>(
-        &self,
-        chart: &mut ChartContext<'a, DB, CT>,
-        scale: f64,
-    ) -> Result<(), PlotError>
-    where
-        DB: DrawingBackend + 'a,
-        CT: CoordTranslate,
-    {
-        let px = |v: f64| (v * scale).round() as u32;
-        let font = |size: f64| (FAMILY, px(size)).into_font();
-        chart
-            .configure_series_labels()
-            .position(match self.legend {
-                Legend::UpperRight => SeriesLabelPosition::UpperRight,
-                Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
-                Legend::LowerRight => SeriesLabelPosition::LowerRight,
-                Legend::LowerLeft => SeriesLabelPosition::LowerLeft,
-            })
-            .margin(px(10.0))
-            .legend_area_size(px(46.0))
-            .label_font(font(15.0))
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(160, 160, 160))
-            .draw()
-            .map_err(|e| self.backend(e))?;
-        Ok(())
+/// Which part of a figure [`Chart::draw`] draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Part {
+    /// Title, axes, series, footer.
+    Body,
+    /// The legend column.
+    Legend,
+}
+
+/// Ticks (bold grid lines with a label) asked of each axis.
+pub(super) const TICKS: usize = 11;
+
+/// Height of the band of the title above plot and legend, px.
+const TITLE_HEIGHT: f64 = 40.0;
+
+/// The one format of the tick labels of `axis`, drawn by `coord`.
+pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
+    let r = coord.range();
+    AxisTicks::new(
+        &coord.key_points(TICKS),
+        r.end - r.start,
+        axis.scale == Scale::Log,
+    )
+}
+
+/// `svg` with the drawing of `legend` (an SVG document of the same size)
+/// added as its last element, a group `<g class="legend">`.
+fn with_legend_group(svg: &str, legend: &str) -> String {
+    let body = legend
+        .find('>')
+        .and_then(|start| legend.rfind("</svg>").map(|end| &legend[start + 1..end]))
+        .unwrap_or("");
+    match svg.rfind("</svg>") {
+        Some(end) => format!(
+            "{}<g class=\"legend\">{body}</g>\n{}",
+            &svg[..end],
+            &svg[end..]
+        ),
+        None => svg.to_string(),
     }
 }
 
@@ -396,25 +405,6 @@ fn marks_of(s: &Series, i: usize, pts: &[(f64, f64)]) -> Vec<(f64, f64)> {
         }
         _ => Vec::new(),
     }
-}
-
-/// Up to four `(start, end)` pieces of a legend key `key` px long drawing
-/// `style`'s dash pattern, shrunk to fit; unused pieces are empty.
-fn key_pieces(style: Style, key: i32) -> [(i32, i32); 4] {
-    let mut pieces = [(0, 0); 4];
-    match style.dash_pattern() {
-        None => pieces[0] = (0, key),
-        Some((on, off)) => {
-            // The pattern shrunk so that exactly four dashes fill the key.
-            let period = f64::from(key) / (4.0 - off / (on + off));
-            let on_px = period * on / (on + off);
-            for (k, piece) in pieces.iter_mut().enumerate() {
-                let start = k as f64 * period;
-                *piece = (start.round() as i32, (start + on_px).round() as i32);
-            }
-        }
-    }
-    pieces
 }
 
 /// Size of a PNG figure, px.
@@ -448,33 +438,6 @@ fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
     }
 }
 
-/// A tick label in the report's one notation: plain decimals between 0.01
-/// and 10⁴ (`0.5`, `2500`), else powers of ten (`10⁻⁴`, `2.5×10⁷`); a
-/// Unicode minus.
-pub(crate) fn tick(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return crate::notation::fixed(v, 0);
-    }
-    let sign = if v < 0.0 { "−" } else { "" };
-    let a = v.abs();
-    if (1e-2..1e4).contains(&a) {
-        let s = format!("{a:.4}");
-        let s = s.trim_end_matches('0').trim_end_matches('.');
-        return format!("{sign}{s}");
-    }
-    let s = format!("{a:.2e}");
-    let Some((m, e)) = s.split_once('e') else {
-        return s;
-    };
-    let m = m.trim_end_matches('0').trim_end_matches('.');
-    let power = format!("10{}", crate::notation::superscript(e));
-    if m == "1" {
-        format!("{sign}{power}")
-    } else {
-        format!("{sign}{m}×{power}")
-    }
-}
-
 /// Makes text safe inside an XML comment (no `--`).
 fn escape_comment(s: &str) -> String {
     s.replace("--", "- -")
@@ -489,25 +452,5 @@ pub(super) fn with_provenance_comment(svg: String, parts: &[&str]) -> String {
     match svg.find('>') {
         Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
         None => svg,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn ticks_are_short_and_exact_for_decades() {
-        assert_eq!(tick(0.0), "0");
-        assert_eq!(tick(0.5), "0.5");
-        assert_eq!(tick(100.0), "100");
-        assert_eq!(tick(1e-6), "10⁻⁶");
-        assert_eq!(tick(2.5e7), "2.5×10⁷");
-        assert_eq!(tick(1e-4), "10⁻⁴");
-        assert_eq!(tick(1e4), "10⁴");
-        assert_eq!(tick(1e5), "10⁵");
-        assert_eq!(tick(2500.0), "2500");
-        assert_eq!(tick(-0.25), "−0.25");
-        assert_eq!(tick(0.01), "0.01");
     }
 }

@@ -2,7 +2,7 @@
 //! cell edges around its values, the classes (outcomes or bins of a column)
 //! that colour the cells, and one cell per row.
 
-use super::super::render::tick;
+use super::super::ticks::AxisTicks;
 use super::super::Axis;
 use super::{Cell, Class, ColorBy, MapError};
 use snowroll::sweep::{Outcome, Param, SweepRow};
@@ -115,9 +115,10 @@ fn outcome_classes(rows: &[SweepRow]) -> (Vec<Class>, Vec<usize>) {
     (classes, class_of_row)
 }
 
-/// Up to [`SCALE`]`.len()` equal bins of the column `color` between its
-/// smallest and largest value (one bin when all are equal), and a last
-/// class for the rows without a value.
+/// Up to [`SCALE`]`.len()` equal bins of the column `color` with round
+/// edges (a step of 1, 2, 2.5 or 5 times a power of ten) covering its
+/// smallest to largest value (one bin when all are equal), and a last class
+/// for the rows without a value. Labels name the quantity and its unit.
 fn value_classes(rows: &[SweepRow], color: ColorBy) -> (Vec<Class>, Vec<usize>) {
     let mut classes: Vec<Class> = Vec::new();
     let mut class_of_row: Vec<usize> = Vec::with_capacity(rows.len());
@@ -128,30 +129,70 @@ fn value_classes(rows: &[SweepRow], color: ColorBy) -> (Vec<Class>, Vec<usize>) 
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
             (lo.min(v), hi.max(v))
         });
-    let bins = if lo < hi { SCALE.len() } else { 1 };
-    let width = (hi - lo) / bins as f64;
+    let (_, sym, unit) = color.quantity().unwrap_or(("", "value", "1"));
+    let unit = if unit == "1" {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    let (start, width, bins) = round_bins(lo, hi, SCALE.len());
+    let edges: Vec<f64> = (0..=bins).map(|k| start + width * k as f64).collect();
+    let fmt = AxisTicks::new(&edges, edges[bins] - edges[0], false);
     for (k, rgb) in SCALE.iter().enumerate().take(bins) {
-        let (a, b) = (lo + width * k as f64, lo + width * (k + 1) as f64);
-        let label = if bins == 1 {
-            format!("{} = {}", color.key(), tick(lo))
+        let label = if lo >= hi {
+            format!(
+                "{sym} = {}{unit}",
+                AxisTicks::new(&[lo], lo.abs(), false).label(lo)
+            )
         } else {
-            format!("{} ≤ {} < {}", tick(a), color.key(), tick(b))
+            format!(
+                "{} ≤ {sym} < {}{unit}",
+                fmt.label(edges[k]),
+                fmt.label(edges[k + 1])
+            )
         };
         classes.push(Class { label, rgb: *rgb });
     }
     let none = classes.len();
     classes.push(Class {
-        label: format!("no {}", color.key()),
+        label: format!("no {sym}"),
         rgb: (200, 200, 200),
     });
     for v in values {
         class_of_row.push(match v {
-            Some(v) if bins > 1 => (((v - lo) / width) as usize).min(bins - 1),
+            Some(v) if bins > 1 => (((v - start) / width).floor().max(0.0) as usize).min(bins - 1),
             Some(_) => 0,
             None => none,
         });
     }
     (classes, class_of_row)
+}
+
+/// Bins of a round width covering `lo..=hi`: `(start, width, count)` with
+/// `start` a multiple of `width`, `width` 1, 2, 2.5 or 5 times a power of
+/// ten, and at most `most` bins, as many as that allows; one bin when
+/// `lo >= hi` (or either is not finite).
+pub(super) fn round_bins(lo: f64, hi: f64, most: usize) -> (f64, f64, usize) {
+    if !lo.is_finite() || !hi.is_finite() || lo >= hi || most < 2 {
+        return (lo, 1.0, 1);
+    }
+    let raw = (hi - lo) / most as f64;
+    let mut decade = 10_f64.powf(raw.log10().floor());
+    loop {
+        for m in [1.0, 2.0, 2.5, 5.0] {
+            let width = m * decade;
+            if width < raw * (1.0 - 1e-12) {
+                continue;
+            }
+            let start = (lo / width).floor() * width;
+            // The largest value falls in the last bin: it needs hi < end.
+            let count = ((hi - start) / width).floor() as usize + 1;
+            if count <= most {
+                return (start, width, count);
+            }
+        }
+        decade *= 10.0;
+    }
 }
 
 /// One cell per row, of the row's class, between the `edges` around its
@@ -193,6 +234,37 @@ pub(super) fn place_cells(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn bins_have_round_edges_and_cover_every_value() {
+        // 0.13 … 29.7 in at most 7 bins: width 5 from 0 (raw width 4.2).
+        assert_eq!(round_bins(0.13, 29.7, 7), (0.0, 5.0, 6));
+        // Negative values: the start is a multiple of the width below lo.
+        assert_eq!(round_bins(-0.3, 0.9, 7), (-0.4, 0.2, 7));
+        for (lo, hi) in [
+            (0.13, 29.7),
+            (-0.3, 0.9),
+            (1.7e-3, 2.03e-2),
+            (3.0, 3.5),
+            (0.0, 7.0),
+        ] {
+            let (start, width, n) = round_bins(lo, hi, 7);
+            assert!(
+                n <= 7 && start <= lo && hi < start + width * n as f64,
+                "{lo}..{hi}"
+            );
+            // The width is 1, 2, 2.5 or 5 times a power of ten (to round-off).
+            let m = width / 10_f64.powf(width.log10().floor());
+            assert!(
+                [1.0, 2.0, 2.5, 5.0].iter().any(|r| (m - r).abs() < 1e-9),
+                "width {width}"
+            );
+            // The start is a whole number of widths (to round-off).
+            assert!(((start / width).round() - start / width).abs() < 1e-9);
+        }
+        // One value: one bin.
+        assert_eq!(round_bins(2.0, 2.0, 7), (2.0, 1.0, 1));
+    }
 
     #[test]
     fn cell_edges_lie_halfway_and_outer_cells_match_their_neighbours() {

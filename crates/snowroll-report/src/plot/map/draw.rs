@@ -5,7 +5,7 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::super::render::{register_embedded_font, tick, with_provenance_comment, FAMILY};
+use super::super::render::{axis_ticks, register_embedded_font, with_provenance_comment, FAMILY};
 use super::super::{PlotError, Provenance, Scale};
 use super::RegimeMap;
 
@@ -86,22 +86,26 @@ impl RegimeMap {
     {
         let font = |size: u32| (FAMILY, size).into_font();
         let (plot, legend) = area.split_horizontally(MAP_SIZE.0 - LEGEND_WIDTH);
+        let (xc, yc): (XR::CoordDescType, YR::CoordDescType) = (xr.into(), yr.into());
+        let (xf, yf) = (axis_ticks(&xc, &self.x), axis_ticks(&yc, &self.y));
         let mut chart = ChartBuilder::on(&plot)
             .caption(&self.title, font(24))
             .margin(14)
             .x_label_area_size(58)
             .y_label_area_size(86)
-            .build_cartesian_2d(xr, yr)
+            .build_cartesian_2d(xc, yc)
             .map_err(backend)?;
         chart
             .configure_mesh()
             .disable_mesh()
+            .x_labels(super::super::render::TICKS)
+            .y_labels(super::super::render::TICKS)
             .x_desc(self.x.title())
             .y_desc(self.y.title())
             .axis_desc_style(font(20))
             .label_style(font(16))
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
+            .x_label_formatter(&|v| xf.label(*v))
+            .y_label_formatter(&|v| yf.label(*v))
             .draw()
             .map_err(backend)?;
         for c in &self.cells {
@@ -136,7 +140,7 @@ impl RegimeMap {
         let font = |size: u32| (FAMILY, size).into_font();
         let mut y = 60;
         legend
-            .draw_text("legend", &font(17).into(), (8, y - 30))
+            .draw_text(&self.legend_title, &font(17).into(), (8, y - 30))
             .map_err(backend)?;
         for class in &self.classes {
             let (r, g, b) = class.rgb;

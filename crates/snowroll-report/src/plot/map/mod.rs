@@ -8,7 +8,7 @@
 mod cells;
 mod draw;
 
-use super::{Axis, Chart, Legend, Scale, Series, Style};
+use super::{Axis, Chart, Scale, Series, Style};
 use cells::{classes_of, distinct, edges, param_axis, place_cells};
 use snowroll::sweep::{boundaries, Grid, Param, SweepRow};
 
@@ -50,6 +50,28 @@ impl ColorBy {
             ColorBy::VMS => "v_m_s",
             ColorBy::AOverGSinAlpha => "a_over_g_sin_alpha",
             ColorBy::Turns => "turns",
+        }
+    }
+
+    /// What the column measures, its symbol and its unit (`1` for a pure
+    /// number): `("speed at the end", "v", "m/s")`; `None` for the outcome.
+    pub fn quantity(self) -> Option<(&'static str, &'static str, &'static str)> {
+        match self {
+            ColorBy::Outcome => None,
+            ColorBy::TimeS => Some(("time at the end", "t", "s")),
+            ColorBy::XM => Some(("distance at the end", "x", "m")),
+            ColorBy::VMS => Some(("speed at the end", "v", "m/s")),
+            ColorBy::AOverGSinAlpha => Some(("acceleration at the end", "a/(g sin α)", "1")),
+            ColorBy::Turns => Some(("turns completed", "turns", "1")),
+        }
+    }
+
+    /// The title of the colour legend: `v [m/s]`, `a/(g sin α)`, `outcome`.
+    pub fn legend_title(self) -> String {
+        match self.quantity() {
+            None => "outcome".to_string(),
+            Some((_, sym, "1")) => sym.to_string(),
+            Some((_, sym, unit)) => format!("{sym} [{unit}]"),
         }
     }
 
@@ -148,6 +170,8 @@ pub struct RegimeMap {
     pub classes: Vec<Class>,
     /// Closed-form borders: legend text and curve.
     pub curves: Vec<(String, Vec<(f64, f64)>)>,
+    /// Title of the colour legend: the quantity and its unit (`v [m/s]`).
+    pub legend_title: String,
 }
 
 impl RegimeMap {
@@ -223,6 +247,7 @@ impl RegimeMap {
             cells,
             classes,
             curves: borders_inside(grid, rows, (x, &xe), (y, &ye)),
+            legend_title: color.legend_title(),
         })
     }
 
@@ -234,8 +259,7 @@ impl RegimeMap {
             Scale::Log => (a * b).sqrt(),
             Scale::Linear => 0.5 * (a + b),
         };
-        let mut chart = Chart::new(name, &self.title, self.x.clone(), self.y.clone())
-            .with_legend(Legend::UpperRight);
+        let mut chart = Chart::new(name, &self.title, self.x.clone(), self.y.clone());
         for (k, class) in self.classes.iter().enumerate() {
             let points: Vec<(f64, f64)> = self
                 .cells
@@ -292,6 +316,7 @@ fn map_title(grid: &Grid, color: ColorBy) -> String {
     if color == ColorBy::Outcome {
         format!("Regimes of {}", models.join(", "))
     } else {
-        format!("{} of {}", color.key(), models.join(", "))
+        let (what, _, _) = color.quantity().unwrap_or(("value", "", "1"));
+        format!("{what}, {}, of {}", color.legend_title(), models.join(", "))
     }
 }
