@@ -102,6 +102,10 @@ fn given(function: &str, scopes: &[Scope], kwargs: Option<&Bound<'_, PyDict>>) -
         }
         let value = match p.kind {
             Kind::Real | Kind::OptionalReal => Value::Real(v.extract()?),
+            Kind::OptionalRealOr(_) => match v.extract::<String>() {
+                Ok(word) => Value::Word(word),
+                Err(_) => Value::Real(v.extract()?),
+            },
             Kind::Count | Kind::OptionalCount => Value::Count(v.extract()?),
             Kind::Flag => Value::Flag(v.extract()?),
             Kind::Choice(_) | Kind::Text => Value::Word(v.extract()?),
@@ -139,6 +143,7 @@ fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
         let (kind, choices) = match p.kind {
             Kind::Real => ("real", None),
             Kind::OptionalReal => ("optional_real", None),
+            Kind::OptionalRealOr(word) => ("optional_real_or", Some(vec![word])),
             Kind::Count => ("count", None),
             Kind::OptionalCount => ("optional_count", None),
             Kind::Flag => ("flag", None),
