@@ -367,9 +367,9 @@ fn swath_of(file: &ScenarioFile) -> Result<Swath, ParamError> {
         )?)),
         (Shape::Sphere, Some(SwathWidth::Chord(_))) if file.snow_depth > file.r0 => {
             Err(ParamError::InvalidParameter {
-                name: "snow_depth (m) with swath_width = chord",
+                name: "snow_depth (m)",
                 value: file.snow_depth,
-                expected: "snow_depth <= r0 (the chord 2 sqrt(2 r b - b^2) is where the \
+                expected: "snow_depth <= r0 with swath_width = chord (the chord 2 sqrt(2 r b - b^2) is where the \
                            layer's top cuts a ball resting on the ground under it); give a \
                            larger --r0, a smaller --snow-depth or another --swath-width",
             })
