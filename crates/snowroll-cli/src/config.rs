@@ -23,7 +23,7 @@ use std::sync::OnceLock;
 use serde::de::{DeserializeSeed, Error as _, MapAccess, Visitor};
 use serde::{Deserialize, Deserializer};
 use serde_json::Map;
-use snowroll::params::{Kind, Scope};
+use snowroll::params::{Kind, RealOrWord, Scope};
 use snowroll::{Given, ModelKind, Param, RecordedSampling, Settings, Value, PARAMS};
 use snowroll_io::Format;
 
@@ -98,14 +98,6 @@ impl<'de> DeserializeSeed<'de> for KeySeed {
     }
 }
 
-/// A value that is a number or a word (`swath_width = 0.05` or `"chord"`).
-#[derive(serde::Deserialize)]
-#[serde(untagged)]
-enum NumberOrWord {
-    Number(f64),
-    Word(String),
-}
-
 /// Reads the value of a parameter as its kind, and refuses a word outside
 /// a choice while the reader is on it (the message gives its place).
 struct ValueSeed(&'static Param);
@@ -120,10 +112,7 @@ impl<'de> DeserializeSeed<'de> for ValueSeed {
             Kind::Flag => Value::Flag(bool::deserialize(d)?),
             Kind::Choice(_) | Kind::Text => Value::Word(String::deserialize(d)?),
             Kind::Reals => Value::Reals(Vec::deserialize(d)?),
-            Kind::OptionalRealOr(_) => match NumberOrWord::deserialize(d)? {
-                NumberOrWord::Number(x) => Value::Real(x),
-                NumberOrWord::Word(w) => Value::Word(w),
-            },
+            Kind::OptionalRealOr(_) => RealOrWord::deserialize(d)?.into(),
         };
         self.0
             .set(&mut Settings::default(), value.clone())

@@ -33,7 +33,7 @@ use crate::trajectory::{CollisionModel, OnHop, SimOptions};
 pub use given::Given;
 pub use sampling::{RecordedSampling, UnknownSampling};
 pub use table::PARAMS;
-pub use value::{Value, WrongKind};
+pub use value::{RealOrWord, Value, WrongKind};
 
 /// The kind of value a parameter takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
