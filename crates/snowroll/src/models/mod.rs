@@ -180,9 +180,13 @@ impl ModelKind {
                  one turn gains a band round its equator, not a shell, and stops being a ball \
                  (docs/snowball-and-losses.md §1.2); use a circular model such as torque-cm"
             }
+            (ModelKind::Loney, Shape::Sphere) if s.swath_width().is_some() => {
+                "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
+                 2r; with a fixed --swath-width integrate torque-cm instead"
+            }
             (ModelKind::Loney, Shape::Sphere) if !s.follows_area_law() => {
                 "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
-                 2r; with a fixed --swath-width or the chord integrate torque-cm instead"
+                 2r; with --swath-width chord integrate torque-cm instead"
             }
             _ => return Ok(()),
         };
