@@ -26,8 +26,8 @@ pub enum Shape {
     Cylinder,
     /// A uniform ball: I = (2/5) M r², M = (4/3)πρ r³, swath 2r by default
     /// (again π r² = π r0² + b x), a fixed width w
-    /// ((4π/3)(r³ − r0³) = b w x), or the contact chord 2√(2rb − b²)
-    /// ([`Swath::Chord`]), `docs/snowball-and-losses.md` §1.1.
+    /// ((4π/3)(r³ − r0³) = b w x), or the contact chord 2√(2rb − b²),
+    /// `docs/snowball-and-losses.md` §1.1.
     Sphere,
 }
 
