@@ -23,7 +23,7 @@ use std::sync::OnceLock;
 
 use serde::de::{DeserializeSeed, Error as _, MapAccess, Visitor};
 use serde::{Deserialize, Deserializer};
-use snowroll::params::{Kind, Scope};
+use snowroll::params::{Kind, RealOrWord, Scope};
 use snowroll::{Given, ModelKind, Param, Settings, Value, PARAMS};
 use snowroll_io::Format;
 
@@ -114,6 +114,7 @@ impl<'de> DeserializeSeed<'de> for ValueSeed {
             Kind::Flag => Value::Flag(bool::deserialize(d)?),
             Kind::Choice(_) | Kind::Text => Value::Word(String::deserialize(d)?),
             Kind::Reals => Value::Reals(Vec::deserialize(d)?),
+            Kind::OptionalRealOr(_) => RealOrWord::deserialize(d)?.into(),
         };
         self.0
             .set(&mut Settings::default(), value.clone())

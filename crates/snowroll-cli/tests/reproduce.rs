@@ -382,6 +382,23 @@ fn a_snowball_run_reproduces_its_run_in_either_format() {
             ],
             &format!("natural.{format}"),
         );
+        // issue 21: the contact chord is recorded as the word and read back.
+        reproduces(
+            "simulate",
+            &[
+                "--model",
+                "torque-cm",
+                "--shape",
+                "sphere",
+                "--swath-width",
+                "CHORD",
+                "--t-end",
+                "3",
+                "--format",
+                format,
+            ],
+            &format!("chord.{format}"),
+        );
     }
     let dir = tempfile::tempdir().unwrap();
     run(
@@ -412,6 +429,31 @@ fn a_snowball_run_reproduces_its_run_in_either_format() {
         &["simulate", "--config", "b.toml", "-o", "b.csv"],
     );
     assert_eq!(text, fs::read_to_string(dir.path().join("b.csv")).unwrap());
+    // The chord from TOML, as the word, gives the run of the flag.
+    let flags = [
+        "--shape",
+        "sphere",
+        "--swath-width",
+        "chord",
+        "--t-end",
+        "2",
+    ];
+    run(
+        dir.path(),
+        &[&["simulate", "--model", "eq4", "-o", "c.csv"][..], &flags].concat(),
+    );
+    let chord = fs::read_to_string(dir.path().join("c.csv")).unwrap();
+    assert!(chord.contains("# swath_width = chord\n"), "{chord}");
+    fs::write(
+        dir.path().join("d.toml"),
+        "model = \"eq4\"\nshape = \"sphere\"\nswath_width = \"chord\"\nt_end = 2\n",
+    )
+    .unwrap();
+    run(
+        dir.path(),
+        &["simulate", "--config", "d.toml", "-o", "d.csv"],
+    );
+    assert_eq!(chord, fs::read_to_string(dir.path().join("d.csv")).unwrap());
 }
 
 #[test]
@@ -456,6 +498,56 @@ fn a_shape_a_model_cannot_take_is_refused_by_name() {
         ],
     );
     assert!(err.contains("model loney does not support"), "{err}");
+    // Nor the chord (its closed form needs eq. (8)); and a word other than
+    // chord is refused by the flag.
+    let err = fails(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "loney",
+            "--shape",
+            "sphere",
+            "--swath-width",
+            "chord",
+        ],
+    );
+    assert!(
+        err.contains("model loney does not support") && err.contains("chord"),
+        "{err}"
+    );
+    let out = cargo_bin_cmd!("snowroll")
+        .current_dir(dir.path())
+        .args(["simulate", "--model", "torque-cm", "--shape", "sphere"])
+        .args(["--swath-width", "cord"])
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("expected a number or chord"), "{err}");
+}
+
+/// Issue 21: a fixed swath wider than the ball's diameter 2 r0 at the start
+/// is a run warning, shown by simulate and recorded in its output; a width
+/// of 2 r0 is not.
+#[test]
+fn a_swath_wider_than_the_ball_is_warned_and_recorded() {
+    let dir = tempfile::tempdir().unwrap();
+    for (width, warned) in [("0.25", true), ("0.2", false)] {
+        let out = cargo_bin_cmd!("snowroll")
+            .current_dir(dir.path())
+            .args(["simulate", "--model", "torque-cm", "--shape", "sphere"])
+            .args(["--swath-width", width])
+            .args(["--t-end", "1", "--format", "json", "-o", "w.json"])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        let json = fs::read_to_string(dir.path().join("w.json")).unwrap();
+        let says = "wider than the ball's diameter 2 r0 = 0.2 m";
+        assert_eq!(err.contains(says), warned, "{width}: {err}");
+        assert_eq!(json.contains(says), warned, "{width}");
+    }
 }
 
 /// Issue 11: the losses, the ledger and the terminal stop are settings an

@@ -22,7 +22,7 @@ mod sweep;
 use numpy::IntoPyArray;
 use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyDict, PyList, PyString};
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 use snowroll::params::{Kind, Scope};
 use snowroll::trajectory::Collected;
@@ -103,7 +103,8 @@ fn given(function: &str, scopes: &[Scope], kwargs: Option<&Bound<'_, PyDict>>) -
             continue;
         }
         let value = match p.kind {
-            Kind::Real | Kind::OptionalReal => Value::Real(v.extract()?),
+            Kind::OptionalRealOr(_) if v.is_instance_of::<PyString>() => Value::Word(v.extract()?),
+            Kind::Real | Kind::OptionalReal | Kind::OptionalRealOr(_) => Value::Real(v.extract()?),
             Kind::Count | Kind::OptionalCount => Value::Count(v.extract()?),
             Kind::Flag => Value::Flag(v.extract()?),
             Kind::Choice(_) | Kind::Text => Value::Word(v.extract()?),
@@ -141,6 +142,7 @@ fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
         let (kind, choices) = match p.kind {
             Kind::Real => ("real", None),
             Kind::OptionalReal => ("optional_real", None),
+            Kind::OptionalRealOr(word) => ("optional_real_or", Some(vec![word])),
             Kind::Count => ("count", None),
             Kind::OptionalCount => ("optional_count", None),
             Kind::Flag => ("flag", None),
@@ -169,8 +171,7 @@ fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
     Ok(list)
 }
 
-/// `value` (a serde record) as Python objects: numbers, strings, lists,
-/// dicts, `None`.
+/// `value` (a serde record) as Python numbers, strings, lists, dicts, `None`.
 fn to_py<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
     use serde_json::Value;
     Ok(match value {
@@ -264,8 +265,7 @@ fn stop<'py>(py: Python<'py>, s: &Stop) -> PyResult<Bound<'py, PyDict>> {
     Ok(d)
 }
 
-/// What both runs return besides their columns: version, model, params,
-/// stop, warnings.
+/// What both runs return besides their columns: version, model, params, stop, warnings.
 fn common<'py>(
     py: Python<'py>,
     model: ModelKind,

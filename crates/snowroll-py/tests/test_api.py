@@ -137,6 +137,13 @@ def test_shape_sphere_keyword_rolls_a_ball():
     assert r.params["shape"] == "sphere" and "swath_width" not in r.params
     w = snowroll.simulate("torque-cm", shape="sphere", swath_width=0.05, t_end=1)
     assert w.params["swath_width"] == 0.05
+    # issue 21: the contact chord, as the word; the run is the CLI's, and
+    # mass_kg is (4/3) pi rho r^3 of its own radius column (1e-12: roundings).
+    c = snowroll.simulate("torque-cm", shape="sphere", swath_width="chord", t_end=1, dt=0.5)
+    assert c.params["swath_width"] == "chord"
+    assert np.allclose(c.mass_kg, 4.0 / 3.0 * math.pi * 400 * c.r_m**3, rtol=1e-12, atol=0)
+    with pytest.raises(ValueError, match="a number or chord"):
+        snowroll.simulate("torque-cm", shape="sphere", swath_width="cord")
 
 
 def test_shape_errors_name_the_problem():

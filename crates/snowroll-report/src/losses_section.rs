@@ -34,7 +34,7 @@ const RESULTS: [Item; 5] = [
     },
     Item {
         claim: ClaimId::SnowballTerminalFractions,
-        lead: "Picking up the layer over its diameter (π r² = π r₀² + b x, as for the log), the always-round ball tends to a terminal fraction of g sin α set by its balance: 1/6 (torque about the centre), 1/7 (contact line), 2/7 (energy), 5/28 (eq. (21) as printed), each below the log's 1/5, 1/6, 1/3 and 2/9.",
+        lead: "Picking up the layer over its diameter (π r² = π r₀² + b x, as for the log), the always-round ball tends to a terminal fraction of g sin α set by its balance: 1/6 (torque about the centre), 1/7 (contact line), 2/7 (energy), 5/28 (eq. (21) as printed), each below the log's 1/5, 1/6, 1/3 and 2/9. These fractions, and the letter's 1/6 with them, hold for the swath 2r only: a fixed width gives 15/67 (torque about the centre), the contact chord 2√(2rb − b²) of a ball pressed through the layer 25/127, approached only like b/r (docs/snowball-and-losses.md §1.3); the snowless 5/7 holds for any swath.",
     },
     Item {
         claim: ClaimId::SnowlessDragTerminalVelocity,

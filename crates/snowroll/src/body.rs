@@ -25,8 +25,9 @@ pub enum Shape {
     #[default]
     Cylinder,
     /// A uniform ball: I = (2/5) M r², M = (4/3)πρ r³, swath 2r by default
-    /// (again π r² = π r0² + b x), or a fixed width w
-    /// ((4π/3)(r³ − r0³) = b w x), `docs/snowball-and-losses.md` §1.1.
+    /// (again π r² = π r0² + b x), a fixed width w
+    /// ((4π/3)(r³ − r0³) = b w x), or the contact chord 2√(2rb − b²),
+    /// `docs/snowball-and-losses.md` §1.1.
     Sphere,
 }
 
@@ -97,6 +98,58 @@ impl std::str::FromStr for Shape {
     }
 }
 
+/// The width of the swath of snow a ball picks up
+/// (`docs/snowball-and-losses.md` §1.1); the log's is its length.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Swath {
+    /// The ball's diameter 2r (the default): π r² = π r0² + b x, as for the
+    /// log, and each turn adds a shell.
+    #[default]
+    Diameter,
+    /// A fixed width w, m: (4π/3)(r³ − r0³) = b w x.
+    Fixed(Meters),
+    /// The chord 2√(2rb − b²) that the layer's top cuts from a ball pressed
+    /// through it to the ground (b ≤ r): 4π r² dr = 2√(2rb − b²) b dx.
+    Chord,
+}
+
+impl Swath {
+    /// p of w ∝ r^p at large r (r ≫ b for the chord, w → 2√(2rb)): 1 for
+    /// the diameter, 0 for a fixed width, ½ for the chord. The terminal
+    /// fractions depend on it (`docs/snowball-and-losses.md` §1.3).
+    pub fn power(self) -> f64 {
+        match self {
+            Swath::Diameter => 1.0,
+            Swath::Fixed(_) => 0.0,
+            Swath::Chord => 0.5,
+        }
+    }
+}
+
+/// The swath of a ball as a scenario file and the parameter table give it:
+/// a width in metres, or the word `chord`; absent for the diameter 2r.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum SwathWidth {
+    /// A fixed width, m.
+    Metres(f64),
+    /// The contact chord ([`Swath::Chord`]).
+    Chord(ChordWord),
+}
+
+/// The one word of [`SwathWidth::Chord`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ChordWord {
+    /// `chord`.
+    Chord,
+}
+
+impl ChordWord {
+    /// The word, as `--swath-width` takes it.
+    pub const ID: &'static str = "chord";
+}
+
 /// A body of a scenario: its shape, and the quantities its size and growth
 /// depend on, SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,9 +164,9 @@ pub struct Body {
     pub r0: Meters,
     /// Snow depth b, m.
     pub snow_depth: Meters,
-    /// A ball's fixed swath width w, m; `None` for its natural swath 2r (and
-    /// always for the log, whose swath is its length).
-    pub swath_width: Option<Meters>,
+    /// A ball's swath ([`Swath::Diameter`] for the log, whose swath is its
+    /// length whatever this says).
+    pub swath: Swath,
 }
 
 impl Body {
@@ -137,13 +190,63 @@ impl Body {
 
     /// Radius after rolling a distance `x`: `π r² = π r0² + b x` (eq. (8)) for
     /// the log and for the ball with its natural swath 2r; for a ball with a
-    /// fixed swath w, `(4π/3)(r³ − r0³) = b w x` (`docs/snowball-and-losses.md` §1.1).
+    /// fixed swath w, `(4π/3)(r³ − r0³) = b w x`; for the chord, the root of
+    /// [`Body::chord_distance`] (`docs/snowball-and-losses.md` §1.1).
     pub fn radius_at(&self, x: Meters) -> Meters {
         let (r0, b) = (self.r0, self.snow_depth);
-        match self.swath_width {
-            None => (r0 * r0 + b * x / PI).sqrt(),
-            Some(w) => (r0 * r0 * r0 + 3.0 * b * w * x / (4.0 * PI)).cbrt(),
+        match self.ball_swath() {
+            Swath::Diameter => (r0 * r0 + b * x / PI).sqrt(),
+            Swath::Fixed(w) => (r0 * r0 * r0 + 3.0 * b * w * x / (4.0 * PI)).cbrt(),
+            Swath::Chord => self.chord_radius(x),
         }
+    }
+
+    /// The swath that sets the growth: the ball's own, the log's length
+    /// (which follows the area law as [`Swath::Diameter`] does).
+    fn ball_swath(&self) -> Swath {
+        match self.shape {
+            Shape::Cylinder => Swath::Diameter,
+            Shape::Sphere => self.swath,
+        }
+    }
+
+    /// The distance a ball on the chord swath rolls while its radius grows
+    /// from r0 to `r` (b ≤ r0 ≤ r), m: with u = b(2r − b) and s = √u,
+    /// `x = (π/(4b⁴)) [F(s) − F(s0)]`, `F(s) = (2/5)s⁵ + (4/3)b²s³ + 2b⁴s`
+    /// (`docs/snowball-and-losses.md` §1.1), written as (s − s0) times a sum
+    /// of positive terms so that it does not cancel near r0.
+    pub fn chord_distance(&self, r: Meters) -> Meters {
+        let (r0, b) = (self.r0, self.snow_depth);
+        let (s, s0) = ((b * (2.0 * r - b)).sqrt(), (b * (2.0 * r0 - b)).sqrt());
+        let ds = 2.0 * b * (r - r0) / (s + s0);
+        let (s2, s02) = (s * s, s0 * s0);
+        let quartic = s2 * s2 + s2 * s * s0 + s2 * s02 + s * s0 * s02 + s02 * s02;
+        let b2 = b * b;
+        let sum = 0.4 * quartic + 4.0 * b2 * (s2 + s * s0 + s02) / 3.0 + 2.0 * b2 * b2;
+        PI * ds * sum / (4.0 * b2 * b2)
+    }
+
+    /// r(x) on the chord swath: Newton's method on [`Body::chord_distance`],
+    /// which is increasing and convex in r, from a start above the root
+    /// (F(s) > (2/5)s⁵), so that the iterates fall monotonically to it.
+    fn chord_radius(&self, x: Meters) -> Meters {
+        let (r0, b) = (self.r0, self.snow_depth);
+        if b == 0.0 || x <= 0.0 {
+            return r0;
+        }
+        let s0 = (b * (2.0 * r0 - b)).sqrt();
+        let f0 = 0.4 * s0.powi(5) + 4.0 * b * b * s0.powi(3) / 3.0 + 2.0 * b.powi(4) * s0;
+        let s = (2.5 * (4.0 * b.powi(4) * x / PI + f0)).powf(0.2);
+        let mut r = (s * s / b + b) / 2.0;
+        for _ in 0..200 {
+            let slope = 4.0 * PI * r * r / (b * self.swath(r));
+            let step = (self.chord_distance(r) - x) / slope;
+            r -= step;
+            if step.abs() <= 2.0 * f64::EPSILON * r {
+                break;
+            }
+        }
+        r.max(r0)
     }
 
     /// Mass after rolling `x`, kg: `m = m0 + ρ b l x` (= π ρ l r², eq. (8)) for
@@ -151,19 +254,23 @@ impl Body {
     /// swath w.
     pub fn mass_at(&self, x: Meters) -> Kilograms {
         let (rho, b) = (self.density, self.snow_depth);
-        match (self.shape, self.swath_width) {
+        match (self.shape, self.swath) {
             (Shape::Cylinder, _) => self.initial_mass() + rho * b * self.length * x,
-            (Shape::Sphere, Some(w)) => self.initial_mass() + rho * b * w * x,
-            (Shape::Sphere, None) => self.mass_of_radius(self.radius_at(x)),
+            (Shape::Sphere, Swath::Fixed(w)) => self.initial_mass() + rho * b * w * x,
+            (Shape::Sphere, _) => self.mass_of_radius(self.radius_at(x)),
         }
     }
 
     /// The width of the swath of snow picked up at radius `r`, m: the log's
-    /// length, a ball's fixed width w, else its diameter 2r.
+    /// length, a ball's fixed width w, its chord 2√(2rb − b²), else its
+    /// diameter 2r.
     pub fn swath(&self, r: Meters) -> Meters {
-        match self.shape {
-            Shape::Cylinder => self.length,
-            Shape::Sphere => self.swath_width.unwrap_or(2.0 * r),
+        let b = self.snow_depth;
+        match (self.shape, self.swath) {
+            (Shape::Cylinder, _) => self.length,
+            (Shape::Sphere, Swath::Diameter) => 2.0 * r,
+            (Shape::Sphere, Swath::Fixed(w)) => w,
+            (Shape::Sphere, Swath::Chord) => 2.0 * (b * (2.0 * r - b)).max(0.0).sqrt(),
         }
     }
 
@@ -190,9 +297,15 @@ impl Body {
             };
         }
         let r = self.radius_at(x);
-        let (dr_dx, bend) = match self.swath_width {
-            None => (b / (2.0 * PI * r), 1.0),
-            Some(w) => (b * w / (4.0 * PI * r * r), 2.0),
+        // r″ = −bend r′²/r.
+        let (dr_dx, bend) = match self.ball_swath() {
+            Swath::Diameter => (b / (2.0 * PI * r), 1.0),
+            Swath::Fixed(w) => (b * w / (4.0 * PI * r * r), 2.0),
+            Swath::Chord => {
+                // r′ = b w/(4πr²), w′ = 4b/w: r″ = r′²(2/r − 4b/w²)·(−1).
+                let w = self.swath(r);
+                (b * w / (4.0 * PI * r * r), 2.0 - 4.0 * b * r / (w * w))
+            }
         };
         Growth {
             r,
@@ -214,9 +327,10 @@ pub struct Growth {
     /// M, kg.
     pub mass: Kilograms,
     /// r′ = dr/dx: b/(2πr) on the area law, b w/(4πr²) for a ball with a
-    /// fixed swath w.
+    /// fixed swath w or the chord w = 2√(2rb − b²).
     pub dr_dx: f64,
-    /// r″ = d²r/dx², 1/m: −r′²/r on the area law, −2r′²/r for a fixed swath.
+    /// r″ = d²r/dx², 1/m: −r′²/r on the area law, −2r′²/r for a fixed swath,
+    /// −r′²(2/r − 4b/w²) for the chord.
     pub d2r_dx2: f64,
     /// λ = (dM/dx)/M = n r′/r (M ∝ rⁿ), 1/m.
     pub lambda: f64,
@@ -226,24 +340,45 @@ pub struct Growth {
 mod tests {
     use super::*;
 
-    fn bodies() -> [Body; 3] {
+    fn bodies() -> [Body; 4] {
         let log = Body {
             shape: Shape::Cylinder,
             density: 400.0,
             length: 1.0,
             r0: 0.1,
             snow_depth: 0.01,
-            swath_width: None,
+            swath: Swath::Diameter,
         };
         let ball = Body {
             shape: Shape::Sphere,
             ..log
         };
         let ball_w = Body {
-            swath_width: Some(0.05),
+            swath: Swath::Fixed(0.05),
             ..ball
         };
-        [log, ball, ball_w]
+        let ball_chord = Body {
+            swath: Swath::Chord,
+            ..ball
+        };
+        [log, ball, ball_w, ball_chord]
+    }
+
+    /// The chord's r(x) is the inverse of its distance law: x(r(x)) = x to
+    /// rounding (1e-12 relative: Newton stops at a step of 2 ulp in r, and
+    /// x(r) has condition number (dx/dr) r/x ≤ 5/2 + 1 there), from 1 mm to
+    /// 10⁸ m; and the chord is the geometry's, w² = 4(r² − (r − b)²).
+    #[test]
+    fn chord_radius_inverts_its_distance_law() {
+        let ball = bodies()[3];
+        for x in [1e-3, 0.5, 5.0, 50.0, 1e4, 1e8] {
+            let r = ball.radius_at(x);
+            let back = ball.chord_distance(r);
+            assert!((back / x - 1.0).abs() < 1e-12, "x = {x}: {back}");
+            let (w, b) = (ball.swath(r), ball.snow_depth);
+            let depth = r - b;
+            assert!((w * w / (4.0 * (r * r - depth * depth)) - 1.0).abs() < 1e-12);
+        }
     }
 
     /// The snow picked up per metre rolled is ρ b times the swath: the

@@ -149,7 +149,7 @@ pub use models::{
 };
 pub use number::format_number;
 pub use params::{Given, Param, RecordedSampling, Settings, Value, PARAMS};
-pub use scenario::{Scenario, ScenarioFile, Shape};
+pub use scenario::{ChordWord, Scenario, ScenarioFile, Shape, Swath, SwathWidth};
 pub use trajectory::{
     Collected, LedgerRow, OnHop, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop,
     StopReason, Trajectory, TurnState, DEFAULT_MAX_ROWS,

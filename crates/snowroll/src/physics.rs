@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use crate::scenario::{Scenario, Shape};
+use crate::scenario::{Scenario, Shape, Swath};
 use crate::units::{Joules, Kilograms, Meters, MetersPerSecond};
 
 pub use crate::body::Growth;
@@ -49,24 +49,47 @@ fn ball_potential_energy(s: &Scenario, x: Meters) -> Joules {
     let r = radius_at(s, x);
     let m0 = s.initial_mass();
     // r³ − r0³ from the growth law, r − r0 from it without cancellation.
-    let r3_minus = match s.swath_width() {
-        None => (b * x / PI) / (r + r0) * (r * r + r * r0 + r0 * r0),
-        Some(w) => 3.0 * b * w * x / (4.0 * PI),
+    let r3_minus = match s.swath() {
+        Swath::Diameter => (b * x / PI) / (r + r0) * (r * r + r * r0 + r0 * r0),
+        Swath::Fixed(w) => 3.0 * b * w * x / (4.0 * PI),
+        Swath::Chord => (r - r0) * (r * r + r * r0 + r0 * r0),
     };
     let r_minus = r3_minus / (r * r + r * r0 + r0 * r0);
     let dm = 4.0 * PI * rho * r3_minus / 3.0;
     // M r − M0 r0 = (4/3)πρ (r⁴ − r0⁴).
     let r4_minus = r_minus * (r * r * r + r * r * r0 + r * r0 * r0 + r0 * r0 * r0);
     let lift = 4.0 * PI * rho * r4_minus / 3.0 + 0.5 * b * dm;
-    let integral = match s.swath_width() {
+    let integral = match s.swath() {
         // ∫ M dx = 8π²ρ (r⁵ − r0⁵)/(15 b), with r − r0 = (b x/π)/(r + r0).
-        None => {
+        Swath::Diameter => {
             let sum5 = r.powi(4) + r.powi(3) * r0 + r * r * r0 * r0 + r * r0.powi(3) + r0.powi(4);
             8.0 * PI * rho * x * sum5 / (15.0 * (r + r0))
         }
-        Some(w) => m0 * x + rho * b * w * x * x / 2.0,
+        Swath::Fixed(w) => m0 * x + rho * b * w * x * x / 2.0,
+        Swath::Chord => chord_mass_integral(s, r),
     };
     s.g_normal() * lift - s.g_along() * integral
+}
+
+/// ∫₀ˣ M dx′ for a ball on the chord swath that has grown to `r`, kg m
+/// (`docs/snowball-and-losses.md` §1.1): with s = √(b(2ρ − b)),
+/// ρ = (s² + b²)/(2b) and dx/dρ = 2πρ²/(b s),
+/// `∫ M dx = (π²ρ_d/(12 b⁷)) ∫ (s² + b²)⁵ ds` from s0 to s, expanded by
+/// the binomial theorem; each `s^m − s0^m` is (s − s0) times a sum of
+/// positive terms, so that nothing cancels near the start.
+pub(crate) fn chord_mass_integral(s: &Scenario, r: Meters) -> f64 {
+    let (rho, b, r0) = (s.density(), s.snow_depth(), s.initial_radius());
+    let (sr, s0) = ((b * (2.0 * r - b)).sqrt(), (b * (2.0 * r0 - b)).sqrt());
+    let ds = 2.0 * b * (r - r0) / (sr + s0);
+    const BINOMIAL: [f64; 6] = [1.0, 5.0, 10.0, 10.0, 5.0, 1.0];
+    let mut sum = 0.0;
+    for (j, c) in BINOMIAL.iter().enumerate() {
+        let m = 2 * j as i32 + 1;
+        // (s^m − s0^m)/(s − s0) = Σ s^i s0^(m−1−i).
+        let quotient: f64 = (0..m).map(|i| sr.powi(i) * s0.powi(m - 1 - i)).sum();
+        sum += c * b.powi(10 - 2 * j as i32) * quotient / f64::from(m);
+    }
+    PI * PI * rho * ds * sum / (12.0 * b.powi(7))
 }
 
 /// Potential energy of body plus collected snow, relative to the start; for

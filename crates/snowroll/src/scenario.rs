@@ -35,10 +35,10 @@ pub struct Scenario {
     l: Meters,
     v0: MetersPerSecond,
     shape: Shape,
-    swath_width: Option<Meters>,
+    swath: Swath,
 }
 
-pub use crate::body::Shape;
+pub use crate::body::{ChordWord, Shape, Swath, SwathWidth};
 
 /// The user-facing form of a [`Scenario`], in the project's one parameter
 /// vocabulary: each field is named as the command line's long flag in
@@ -75,12 +75,13 @@ pub struct ScenarioFile {
     /// The body: `cylinder` (the log) or `sphere` (the snowball). Default
     /// `cylinder`. The length applies to the cylinder only.
     pub shape: Shape,
-    /// Width w of the swath of snow a ball picks up, m, > 0; `None` (the
-    /// default) = the ball's diameter 2r, which grows with it
+    /// Width w of the swath of snow a ball picks up, m, > 0, or `chord` (the
+    /// contact chord 2√(2rb − b²), b ≤ r0); `None` (the default) = the
+    /// ball's diameter 2r, which grows with it
     /// (`docs/snowball-and-losses.md` §1.1). Only for `shape = sphere`: a
     /// log's swath is its length.
     #[serde(alias = "swath-width", skip_serializing_if = "Option::is_none")]
-    pub swath_width: Option<f64>,
+    pub swath_width: Option<SwathWidth>,
 }
 
 impl Default for ScenarioFile {
@@ -269,23 +270,7 @@ impl Scenario {
             l: check("length (m)", file.length, |l| l > 0.0, "length > 0 m")?,
             v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
-            swath_width: match (file.shape, file.swath_width) {
-                (_, None) => None,
-                (Shape::Sphere, Some(w)) => Some(check(
-                    "swath_width (m)",
-                    w,
-                    |w| w > 0.0,
-                    "swath_width > 0 m",
-                )?),
-                (Shape::Cylinder, Some(w)) => {
-                    return Err(ParamError::InvalidParameter {
-                        name: "swath_width (m)",
-                        value: w,
-                        expected: "no swath width for shape = cylinder (a log's swath is its \
-                                   length); give --shape sphere or drop --swath-width",
-                    })
-                }
-            },
+            swath: swath_of(&file)?,
         })
     }
 
@@ -330,14 +315,22 @@ impl Scenario {
         self.shape
     }
     /// The fixed swath width w of a ball, m; `None` for the ball's natural
-    /// swath 2r, and always for the cylinder (its swath is its length).
+    /// swath 2r and for the chord, and always for the cylinder (its swath is
+    /// its length).
     pub fn swath_width(&self) -> Option<Meters> {
-        self.swath_width
+        match self.swath {
+            Swath::Fixed(w) => Some(w),
+            Swath::Diameter | Swath::Chord => None,
+        }
+    }
+    /// The ball's swath ([`Swath::Diameter`] for the cylinder).
+    pub fn swath(&self) -> Swath {
+        self.swath
     }
     /// Whether r(x) follows the area law π r² = π r0² + b x (eq. (8)): the
     /// log, and the ball with its natural swath 2r.
     pub fn follows_area_law(&self) -> bool {
-        self.swath_width.is_none()
+        self.swath == Swath::Diameter
     }
     /// Initial mass, kg: m0 = π ρ l r0² for the log (eq. (37)),
     /// (4/3) π ρ r0³ for the ball.
@@ -354,8 +347,43 @@ impl Scenario {
             length: self.l,
             r0: self.r0,
             snow_depth: self.b,
-            swath_width: self.swath_width,
+            swath: self.swath,
         }
+    }
+}
+
+/// The ball's swath of a scenario file, checked: a width w > 0, or the
+/// chord, which needs the layer no deeper than the ball's radius
+/// (b ≤ r0); none for the log.
+fn swath_of(file: &ScenarioFile) -> Result<Swath, ParamError> {
+    const NAME: &str = "swath_width (m)";
+    match (file.shape, file.swath_width) {
+        (_, None) => Ok(Swath::Diameter),
+        (Shape::Sphere, Some(SwathWidth::Metres(w))) => Ok(Swath::Fixed(check(
+            NAME,
+            w,
+            |w| w > 0.0,
+            "swath_width > 0 m, or chord",
+        )?)),
+        (Shape::Sphere, Some(SwathWidth::Chord(_))) if file.snow_depth > file.r0 => {
+            Err(ParamError::InvalidParameter {
+                name: "snow_depth (m)",
+                value: file.snow_depth,
+                expected: "snow_depth <= r0 with swath_width = chord (the chord 2 sqrt(2 r b - b^2) is where the \
+                           layer's top cuts a ball resting on the ground under it); give a \
+                           larger --r0, a smaller --snow-depth or another --swath-width",
+            })
+        }
+        (Shape::Sphere, Some(SwathWidth::Chord(_))) => Ok(Swath::Chord),
+        (Shape::Cylinder, Some(w)) => Err(ParamError::InvalidParameter {
+            name: NAME,
+            value: match w {
+                SwathWidth::Metres(w) => w,
+                SwathWidth::Chord(_) => f64::NAN,
+            },
+            expected: "no swath width for shape = cylinder (a log's swath is its \
+                       length); give --shape sphere or drop --swath-width",
+        }),
     }
 }
 
@@ -377,7 +405,11 @@ impl From<Scenario> for ScenarioFile {
             length: s.l,
             v0: s.v0,
             shape: s.shape,
-            swath_width: s.swath_width,
+            swath_width: match s.swath {
+                Swath::Diameter => None,
+                Swath::Fixed(w) => Some(SwathWidth::Metres(w)),
+                Swath::Chord => Some(SwathWidth::Chord(ChordWord::Chord)),
+            },
         }
     }
 }
@@ -398,7 +430,7 @@ impl Default for Scenario {
             l: f.length,
             v0: f.v0,
             shape: f.shape,
-            swath_width: f.swath_width,
+            swath: Swath::Diameter,
         }
     }
 }

@@ -10,8 +10,8 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use snowroll::losses::{terminal_time_constant, terminal_velocity};
 use snowroll::{
-    LedgerRow, Losses, ModelKind, ParamError, Sampling, Scenario, ScenarioFile, Shape, SimError,
-    SimOptions, StopReason, Trajectory,
+    ChordWord, LedgerRow, Losses, ModelKind, ParamError, Sampling, Scenario, ScenarioFile, Shape,
+    SimError, SimOptions, StopReason, SwathWidth, Trajectory,
 };
 
 /// Closed forms evaluated along a DOP853 run at rtol 1e-12, atol 1e-14:
@@ -220,12 +220,13 @@ fn rolling_resistance_and_compaction_of_the_ball() {
         compaction_energy: 4.0,
         ..Losses::default()
     };
-    for swath_width in [None, Some(0.05)] {
+    for width in [None, Some(0.05)] {
+        let swath_width = width.map(SwathWidth::Metres);
         let s = scenario(ScenarioFile { swath_width, ..f });
         let traj = run(ModelKind::TorqueCm, &s, l, 30.0);
         assert!(traj.samples.last().unwrap().x_m > 10.0);
         for (p, row) in traj.samples.iter().zip(&traj.ledger) {
-            let picked = match swath_width {
+            let picked = match width {
                 Some(w) => f.density * f.snow_depth * w * p.x_m,
                 None => {
                     let r = (f.r0 * f.r0 + f.snow_depth * p.x_m / PI).sqrt();
@@ -356,8 +357,9 @@ fn torque_cm_model_defect_matches_the_closed_form() {
 /// `energy` (eq. (14)) is an energy balance: with all three losses its
 /// W_model stays 0, so the forces the ledger computes from their
 /// definitions are those the equation of motion took in (§2.1) — for the
-/// log, and for the ball on either growth law (its frontal area π r², its
-/// N and dM/dx).
+/// log, and for the ball on each growth law (its frontal area π r², its
+/// N and dM/dx; on the chord also its potential energy's ∫ M dx, a closed
+/// form of its own).
 #[test]
 fn energy_model_with_all_losses_has_no_model_defect() {
     let s = Scenario::default();
@@ -378,7 +380,11 @@ fn energy_model_with_all_losses_has_no_model_defect() {
         (ModelKind::Energy, s),
         (ModelKind::Snowless, s),
         (ModelKind::Energy, ball(None)),
-        (ModelKind::Energy, ball(Some(0.03))),
+        (ModelKind::Energy, ball(Some(SwathWidth::Metres(0.03)))),
+        (
+            ModelKind::Energy,
+            ball(Some(SwathWidth::Chord(ChordWord::Chord))),
+        ),
         (ModelKind::Snowless, ball(None)),
     ] {
         let traj = run(kind, &s, l, 100.0);
@@ -440,7 +446,7 @@ fn random_case() -> impl Strategy<Value = (Scenario, Losses, f64)> {
                 r0,
                 v0,
                 shape,
-                swath_width,
+                swath_width: swath_width.map(SwathWidth::Metres),
                 ..ScenarioFile::default()
             });
             let l = Losses {

@@ -1,6 +1,7 @@
 //! Every integration test of `snowroll` in one binary (one link instead of
 //! one per file); each file is a module, named as before.
 
+mod chord;
 mod circular;
 mod collision;
 mod contact;

@@ -8,7 +8,8 @@ use std::f64::consts::PI;
 use snowroll::integrate::Tolerances;
 use snowroll::physics::mechanical_energy;
 use snowroll::{
-    Derivation, ModelKind, Sampling, Scenario, ScenarioFile, Shape, SimOptions, Trajectory,
+    Derivation, ModelKind, Sampling, Scenario, ScenarioFile, Shape, SimOptions, SwathWidth,
+    Trajectory,
 };
 
 fn ball(alpha_deg: f64, b: f64, r0: f64, swath_width: Option<f64>) -> Scenario {
@@ -17,7 +18,7 @@ fn ball(alpha_deg: f64, b: f64, r0: f64, swath_width: Option<f64>) -> Scenario {
         snow_depth: b,
         r0,
         shape: Shape::Sphere,
-        swath_width,
+        swath_width: swath_width.map(SwathWidth::Metres),
         ..ScenarioFile::default()
     })
     .unwrap()

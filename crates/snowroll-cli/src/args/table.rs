@@ -37,6 +37,7 @@ fn given_of(params: impl Iterator<Item = &'static Param>, m: &clap::ArgMatches, 
             Kind::Flag => m.get_flag(p.key).then_some(Value::Flag(true)),
             Kind::Count | Kind::OptionalCount => m.get_one::<u64>(p.key).map(|n| Value::Count(*n)),
             Kind::Choice(_) => m.get_one::<String>(p.key).map(|w| Value::Word(w.clone())),
+            Kind::OptionalRealOr(_) => m.get_one::<Value>(p.key).cloned(),
             _ => m.get_one::<f64>(p.key).map(|x| Value::Real(*x)),
         };
         if let Some(v) = value {
@@ -62,6 +63,21 @@ fn param_arg(p: &'static Param) -> Arg {
             .action(ArgAction::Set)
             .ignore_case(true)
             .value_parser(PossibleValuesParser::new(c.possible_values())),
+        Kind::OptionalRealOr(word) => arg
+            .value_name(p.value_name)
+            .action(ArgAction::Set)
+            .allow_negative_numbers(true)
+            .value_parser(clap::builder::ValueParser::new(
+                move |text: &str| -> Result<Value, String> {
+                    if text.trim().eq_ignore_ascii_case(word) {
+                        return Ok(Value::Word(word.to_string()));
+                    }
+                    text.trim()
+                        .parse::<f64>()
+                        .map(Value::Real)
+                        .map_err(|_| format!("expected a number or {word}"))
+                },
+            )),
         Kind::Real | Kind::OptionalReal | Kind::Reals | Kind::Text => arg
             .value_name(p.value_name)
             .action(ArgAction::Set)

@@ -390,6 +390,15 @@ def _text(name: str, value: Any) -> Optional[str]:
     raise TypeError(f"{name}: expected a str, got {type(value).__name__}")
 
 
+def _number_or_text(name: str, value: Any) -> Any:
+    """``None``, a ``str`` (the word the parameter takes besides a number,
+    ``chord`` for ``swath_width``; the native module refuses any other) or a
+    finite number, as :func:`_number` checks it."""
+    if isinstance(value, str):
+        return value
+    return _number(name, value)
+
+
 def _flag(name: str, value: Any) -> bool:
     """A bool (Python's or numpy's); ``TypeError`` naming the keyword otherwise."""
     if isinstance(value, (bool, _np.bool_)):
@@ -407,6 +416,7 @@ _PARAM = {p["key"]: p for p in PARAMS}
 _CHECK_OF_KIND = {
     "real": _number,
     "optional_real": _number,
+    "optional_real_or": _number_or_text,
     "count": _count,
     "optional_count": _count,
     "flag": _flag,
@@ -419,6 +429,7 @@ _CHECK_OF_KIND = {
 _TYPE_OF_KIND = {
     "real": "Optional[float]",
     "optional_real": "Optional[float]",
+    "optional_real_or": "Optional[Union[float, str]]",
     "count": "Optional[int]",
     "optional_count": "Optional[int]",
     "flag": "bool",

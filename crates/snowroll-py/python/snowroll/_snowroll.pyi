@@ -7,7 +7,7 @@ Every keyword left ``None`` takes the library's default, the same as the
 CLI's.
 """
 
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 __version__: str
 
@@ -27,7 +27,7 @@ def simulate(
     length: Optional[float] = None,
     v0: Optional[float] = None,
     shape: Optional[str] = None,
-    swath_width: Optional[float] = None,
+    swath_width: Optional[Union[float, str]] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     turns: Optional[int] = None,
@@ -76,7 +76,7 @@ def turns(
     length: Optional[float] = None,
     v0: Optional[float] = None,
     shape: Optional[str] = None,
-    swath_width: Optional[float] = None,
+    swath_width: Optional[Union[float, str]] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     rtol: Optional[float] = None,

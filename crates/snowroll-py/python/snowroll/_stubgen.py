@@ -22,7 +22,7 @@ Every keyword left ``None`` takes the library's default, the same as the
 CLI's.
 """
 
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 __version__: str
 

@@ -173,7 +173,7 @@ impl ModelKind {
     /// # Errors
     /// [`ParamError::ShapeNotSupported`] naming the model and why: a turn
     /// model with a ball; Loney's closed form with a ball of fixed swath
-    /// width (it needs the area law π r² = π r0² + b x).
+    /// width or on the chord (it needs the area law π r² = π r0² + b x).
     pub fn check_shape(self, s: &Scenario) -> Result<(), ParamError> {
         let reason = match (self, s.shape()) {
             (_, Shape::Cylinder) => return Ok(()),
@@ -185,6 +185,10 @@ impl ModelKind {
             (ModelKind::Loney, Shape::Sphere) if s.swath_width().is_some() => {
                 "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
                  2r; with a fixed --swath-width integrate torque-cm instead"
+            }
+            (ModelKind::Loney, Shape::Sphere) if !s.follows_area_law() => {
+                "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
+                 2r; with --swath-width chord integrate torque-cm instead"
             }
             _ => return Ok(()),
         };
@@ -210,7 +214,7 @@ impl ModelKind {
             Some(
                 derivation
                     .balance()
-                    .terminal_fraction(scenario.shape(), 0.0),
+                    .terminal_fraction(scenario.shape(), scenario.swath().power()),
             )
         }
     }

@@ -169,10 +169,24 @@ impl std::fmt::Display for ValidityWarning {
     }
 }
 
+/// The warning for a ball's fixed swath `w` wider than its diameter 2 r0
+/// at the start (`docs/snowball-and-losses.md` §1.1).
+fn wider_than_the_ball(w: f64, r0: f64) -> String {
+    format!(
+        "swath_width = {} m is wider than the ball's diameter 2 r0 = {} m at the start: the \
+         ball picks up snow beyond its own width until r reaches w/2 = {} m (give a width at \
+         most 2 r0, or chord or the default 2r)",
+        crate::number::format_number(w),
+        crate::number::format_number(2.0 * r0),
+        crate::number::format_number(w / 2.0)
+    )
+}
+
 /// The warnings for running `kind` on `scenario`: b/r0 beyond the model's
 /// range ([`ModelKind::validity`]), and, for the first-order turn model
 /// started from rest, a slope on which it and the exact geometry disagree
-/// about stalling in the first turn. Empty when the run is in range.
+/// about stalling in the first turn; a ball's fixed swath wider than its
+/// diameter 2 r0 at the start. Empty when the run is in range.
 ///
 /// ```
 /// use snowroll::{validity_warnings, ModelKind, Scenario, ScenarioFile};
@@ -221,6 +235,9 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
         )),
         _ => {}
     }
+    if let Some(w) = scenario.swath_width().filter(|w| *w > 2.0 * r0) {
+        warn(wider_than_the_ball(w, r0));
+    }
     if kind == ModelKind::Turns && scenario.initial_speed() <= 0.0 {
         let alpha = scenario.slope_angle();
         let first = first_turn_stall_slope(TurnVariant::Paper, r0, b);
@@ -257,6 +274,39 @@ mod tests {
     /// tan α* = 2b/(π r0) + 3b²/(4π r0²); the log's, eq. (14):
     /// tan α* = (3 b r0 + b²)/(2π r0²). Each from the run's own body, not
     /// the log's for both. Tolerance 1e-12 rad: both are closed forms.
+    /// A fixed swath wider than the ball's diameter at the start warns
+    /// (w = 0.25 m > 2 r0 = 0.2 m); 2 r0 itself, a narrower width, the
+    /// default 2r and the chord do not. Fed 0.2 in place of 0.25 it fails.
+    #[test]
+    fn swath_wider_than_the_ball_warns() {
+        use crate::scenario::{ChordWord, ScenarioFile, SwathWidth};
+        let warnings = |swath_width| {
+            let s = Scenario::new(ScenarioFile {
+                shape: Shape::Sphere,
+                swath_width,
+                ..ScenarioFile::default()
+            })
+            .unwrap();
+            validity_warnings(ModelKind::TorqueCm, &s)
+        };
+        let wide = warnings(Some(SwathWidth::Metres(0.25)));
+        assert_eq!(wide.len(), 1);
+        assert!(
+            wide[0].message.contains("swath_width = 0.25 m")
+                && wide[0].message.contains("2 r0 = 0.2 m"),
+            "{}",
+            wide[0].message
+        );
+        for ok in [
+            None,
+            Some(SwathWidth::Metres(0.2)),
+            Some(SwathWidth::Metres(0.05)),
+            Some(SwathWidth::Chord(ChordWord::Chord)),
+        ] {
+            assert!(warnings(ok).is_empty(), "{ok:?}");
+        }
+    }
+
     #[test]
     fn stall_threshold_follows_the_body() {
         use crate::scenario::ScenarioFile;

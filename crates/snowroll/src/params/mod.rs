@@ -33,7 +33,7 @@ use crate::trajectory::{CollisionModel, OnHop, SimOptions};
 pub use given::Given;
 pub use sampling::{RecordedSampling, UnknownSampling};
 pub use table::PARAMS;
-pub use value::{Value, WrongKind};
+pub use value::{RealOrWord, Value, WrongKind};
 
 /// The kind of value a parameter takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -42,6 +42,9 @@ pub enum Kind {
     Real,
     /// A real number, or none (the feature it sets is off).
     OptionalReal,
+    /// A real number, this one word (any case), or none: `swath_width`'s
+    /// width in metres or `chord`.
+    OptionalRealOr(&'static str),
     /// A whole number, at least 0 (the range says more).
     Count,
     /// A whole number, or none.
@@ -296,6 +299,17 @@ impl Param {
     pub fn set(&self, settings: &mut Settings, value: Value) -> Result<(), ParamError> {
         let value = match (self.kind, value) {
             (Kind::Choice(c), Value::Word(w)) => Value::Word(parse_choice(self.key, c, &w)?),
+            (Kind::OptionalRealOr(word), Value::Word(w)) => {
+                if w.trim().eq_ignore_ascii_case(word) {
+                    Value::Word(word.to_string())
+                } else {
+                    return Err(ParamError::UnknownChoice {
+                        key: self.key,
+                        given: w,
+                        expected: format!("a number or {word}"),
+                    });
+                }
+            }
             (_, v) => v,
         };
         (self.set)(settings, value).map_err(|WrongKind| ParamError::WrongKind {
@@ -331,6 +345,7 @@ impl Param {
         match self.kind {
             Kind::Real => "a number",
             Kind::OptionalReal => "a number or none",
+            Kind::OptionalRealOr(_) => "a number, its word or none",
             Kind::Count | Kind::OptionalCount => "a whole number",
             Kind::Flag => "true or false",
             Kind::Choice(_) => "one of its words",
@@ -381,6 +396,10 @@ impl Param {
         };
         Ok(match self.kind {
             Kind::Real | Kind::OptionalReal => Value::Real(number(text)?),
+            Kind::OptionalRealOr(word) if text.eq_ignore_ascii_case(word) => {
+                Value::Word(word.to_string())
+            }
+            Kind::OptionalRealOr(_) => Value::Real(number(text)?),
             Kind::Count | Kind::OptionalCount => Value::Count(
                 text.parse()
                     .map_err(|_| format!("`{key} = {text}` is not a whole number"))?,
@@ -471,7 +490,7 @@ mod tests {
     fn each_setter_touches_its_own_field() {
         for p in PARAMS.iter().filter(|p| p.settable()) {
             let changed = match p.kind {
-                Kind::Real | Kind::OptionalReal => Value::Real(0.123),
+                Kind::Real | Kind::OptionalReal | Kind::OptionalRealOr(_) => Value::Real(0.123),
                 Kind::Count | Kind::OptionalCount => Value::Count(7),
                 Kind::Flag => Value::Flag(true),
                 Kind::Choice(c) => Value::Word(c.ids()[1].to_string()),
@@ -505,7 +524,7 @@ mod tests {
         use crate::scenario::Scenario;
         for p in PARAMS.iter().filter(|p| p.settable()) {
             let bad = match p.kind {
-                Kind::Real | Kind::OptionalReal => Value::Real(f64::NAN),
+                Kind::Real | Kind::OptionalReal | Kind::OptionalRealOr(_) => Value::Real(f64::NAN),
                 Kind::Count | Kind::OptionalCount => Value::Count(0),
                 _ => continue,
             };

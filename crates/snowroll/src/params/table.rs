@@ -6,7 +6,7 @@ use super::{
     Applies, Choice, Group, Kind, Param, Presence, RecordedSampling, Scope, Section, Value,
     WrongKind,
 };
-use crate::scenario::Shape;
+use crate::scenario::{ChordWord, Shape, SwathWidth};
 use crate::trajectory::{CollisionModel, OnHop, Sampling};
 
 /// The row every field of which is the most common choice: a real number
@@ -155,19 +155,31 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "swath_width",
         unit: "m",
-        value_name: "M",
-        kind: Kind::OptionalReal,
+        value_name: "M|chord",
+        kind: Kind::OptionalRealOr(ChordWord::ID),
         applies: Applies::Sphere,
-        range: "swath_width > 0 m",
-        help: "Width w of the swath of snow a sphere picks up, in m (w > 0; sphere only)",
+        range: "swath_width > 0 m, or chord",
+        help: "Width w of the swath of snow a sphere picks up, in m (w > 0), or chord: the \
+               contact chord 2 sqrt(2 r b - b^2) of a ball pressed through the layer (b <= r0; \
+               sphere only)",
         default_note: Some(
             "none = the ball's diameter 2r, which grows with it, so that pi r^2 = pi r0^2 + b x \
              as for the log",
         ),
         json: Presence::WhenSet,
         csv: (Section::Extra, Presence::WhenSet),
-        get: |s| Value::of_option(s.scenario.swath_width),
-        set: |s, v| v.optional_real().map(|x| s.scenario.swath_width = x),
+        get: |s| match s.scenario.swath_width {
+            None => Value::None,
+            Some(SwathWidth::Metres(w)) => Value::Real(w),
+            Some(SwathWidth::Chord(_)) => Value::Word(ChordWord::ID.into()),
+        },
+        set: |s, v| {
+            s.scenario.swath_width = match v {
+                Value::Word(w) if w == ChordWord::ID => Some(SwathWidth::Chord(ChordWord::Chord)),
+                v => v.optional_real()?.map(SwathWidth::Metres),
+            };
+            Ok(())
+        },
         ..BASE
     },
     Param {

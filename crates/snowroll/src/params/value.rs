@@ -65,6 +65,26 @@ impl Value {
     }
 }
 
+/// A number or a word, as a config file or a JSON output gives a parameter
+/// of kind [`Kind::OptionalRealOr`](super::Kind::OptionalRealOr).
+#[derive(Debug, Clone, PartialEq, serde::Deserialize)]
+#[serde(untagged)]
+pub enum RealOrWord {
+    /// A number.
+    Real(f64),
+    /// A word (the parameter's setter checks it).
+    Word(String),
+}
+
+impl From<RealOrWord> for Value {
+    fn from(v: RealOrWord) -> Value {
+        match v {
+            RealOrWord::Real(x) => Value::Real(x),
+            RealOrWord::Word(w) => Value::Word(w),
+        }
+    }
+}
+
 impl Serialize for Value {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         match self {

@@ -1,7 +1,7 @@
 //! [`Balance`]: each derivation of §2 written for a body of any shape,
 //! I = k M r², M ∝ rⁿ (`docs/snowball-and-losses.md` §1.2). The ball's
 //! coefficients on the area law and its terminal values follow from it, and
-//! a ball with a fixed swath width is integrated from it directly.
+//! a ball with a fixed swath width or the chord is integrated from it directly.
 
 use super::rhs::losses_per_mass;
 use super::Coefficients;
@@ -100,7 +100,7 @@ impl Balance {
 
     /// The late-time acceleration over g sin α of a body of `shape` whose
     /// swath grows like r^p (p = 1 for the ball's natural swath 2r, 0 for a
-    /// fixed width or the log's length):
+    /// fixed width or the log's length, ½ for the chord at r ≫ b):
     /// `a∞/G = 1/[(1 + k)(1 + 2Σ/(n − p))]` (`docs/snowball-and-losses.md` §1.3).
     pub fn terminal_fraction(&self, shape: Shape, swath_power: f64) -> f64 {
         let (k, n) = (shape.inertia_factor(), shape.mass_exponent());

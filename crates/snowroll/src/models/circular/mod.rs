@@ -17,8 +17,8 @@
 //! with 2/3 replaced by 1/(1 + k) = 5/7, other coefficients
 //! ([`Derivation::coefficients_for`]) and one more term,
 //! `− c₃ b³ v²/(π³ r⁴)` ([`Coefficients::drag_b3`], zero for the log). A
-//! ball with a fixed swath width grows by another law and is integrated from
-//! the balance itself.
+//! ball with a fixed swath width or on the contact chord grows by another law
+//! and is integrated from the balance itself.
 //!
 //! The module is split by role: this file holds the coefficient table
 //! ([`Derivation`], [`Coefficients`]); `balance.rs` the derivations for a

@@ -1,7 +1,8 @@
 //! The right-hand side of the circular models: the common form bound to one
 //! scenario on the area law π r² = π r0² + b x (eq. (8)), the losses per
 //! unit mass (`docs/snowball-and-losses.md` §2.1), and the [`Balance`]
-//! itself where r(x) follows another law (the ball with a fixed swath).
+//! itself where r(x) follows another law (the ball with a fixed swath or the
+//! contact chord).
 
 use std::f64::consts::PI;
 
@@ -109,7 +110,8 @@ pub(super) struct LossesPerMass {
 }
 
 /// The acceleration of one model on one scenario: the common form on the
-/// area law, or the [`Balance`] itself for a ball with a fixed swath width.
+/// area law, or the [`Balance`] itself for a ball with a fixed swath width or
+/// the chord.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Acceleration {
     /// π r² = π r0² + b x: the log, and the ball with its natural swath.
@@ -130,7 +132,7 @@ impl Acceleration {
 
     /// The acceleration of `derivation` run with `c` on `s` with the losses
     /// `l`: the common form where r(x) follows the area law, else the balance
-    /// (the ball with a fixed swath).
+    /// (the ball with a fixed swath or the chord).
     pub(super) fn of(derivation: Derivation, c: &Coefficients, s: &Scenario, l: &Losses) -> Self {
         if s.follows_area_law() {
             Self::Area(AreaLaw::new(c, s, l))
