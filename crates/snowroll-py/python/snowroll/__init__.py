@@ -35,7 +35,7 @@ from . import _snowroll
 
 __version__: str = _snowroll.__version__
 
-__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "__version__"]
+__all__ = ["simulate", "turns", "models", "sweep", "dask", "Result", "TurnResult", "SweepResult", "__version__"]
 
 
 class _Columns:
@@ -540,3 +540,8 @@ def models(
     return _snowroll.models(
         snow_depth=_number("snow_depth", snow_depth), r0=_number("r0", r0)
     )
+
+
+# `snowroll.dask.sweep`: a sweep as a dask.dataframe (imports dask only when
+# called). Last, since it uses the functions above.
+from . import dask  # noqa: E402
