@@ -238,3 +238,25 @@ SHARDS=2 OUT="$tmp/out2" bash examples/slurm-sweep.sh merge
 same_rows "$tmp/out2/sweep.csv" "$tmp/whole.csv"
 
 echo "test-slurm: 2 passed, 0 failed"
+
+# Timings for bench/README.md (not a test): SLURM_BENCH="GRID FLAGS" runs
+# that grid as 1 task on 1 CPU and as 2 tasks on 1 CPU each, then 16 tasks of
+# a 16-point grid (the fixed cost of a task), and times each from sbatch to
+# the last task's end, and the merge.
+bench_array() { # $1 name, $2 shards, $3 grid flags
+    local dir=$tmp/bench-$1 t0 job
+    mkdir "$dir"
+    t0=$(date +%s.%N)
+    job=$(cd "$dir" && GRID_FLAGS=$3 SHARDS=$2 OUT=$dir sbatch --parsable \
+        --array=0-$(($2 - 1)) --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
+    wait_job "$job" 3600 "$(seq -s ' ' 0 $(($2 - 1)))" COMPLETED
+    echo "test-slurm bench: $1: $2 tasks, $(awk "BEGIN { printf \"%.2f\", $(date +%s.%N) - $t0 }") s from sbatch to the end"
+    t0=$(date +%s.%N)
+    GRID_FLAGS=$3 SHARDS=$2 OUT=$dir bash examples/slurm-sweep.sh merge
+    echo "test-slurm bench: $1: merge $(awk "BEGIN { printf \"%.2f\", $(date +%s.%N) - $t0 }") s for $(grep -vc '^#' "$dir/sweep.csv") lines"
+}
+if [ -n "${SLURM_BENCH:-}" ]; then
+    bench_array one 1 "$SLURM_BENCH"
+    bench_array two 2 "$SLURM_BENCH"
+    bench_array tiny 16 "--model torque-cm --alpha-deg 1:89:16 --t-end 100"
+fi
