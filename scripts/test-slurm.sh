@@ -10,7 +10,7 @@
 #   1. submits the example as a job array of 4 tasks (`sbatch --array=0-3`),
 #      waits for them, merges, and checks the merged file against the same
 #      sweep run in one process;
-#   2. runs the same grid as 2 tasks, cancels one mid-run (`scancel`) once its
+#   2. runs a slower grid as 2 tasks, cancels one mid-run (`scancel`) once its
 #      FILE.partial holds rows, resubmits that array index (the example passes
 #      --resume, and snowroll refuses a partial file without it), merges and
 #      checks again.
@@ -47,10 +47,14 @@ export PATH=$PATH:/usr/sbin:/sbin
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
 
-# The grid of the test: 80,000 trajectories through the ODE solver, a few
-# seconds per shard on one CPU (slow enough to cancel a task mid-run); rows
-# go to FILE.partial 200 at a time.
-export GRID_FLAGS="--model torque-cm,torque-contact,energy,quasi-circular --alpha-deg 1:89:200 --snow-depth 0.0001:0.1:100 --t-end 100 --method ode --chunk-rows 200"
+# The grid of the array test: 80,000 trajectories through the ODE solver,
+# about a second of CPU in all on an idle machine (13 us each). The grid of
+# the cancel test: the same points at rtol 1e-12, about 25 us each, so each
+# of its two tasks runs for about 1 s on an idle CPU (3-5 s on a loaded
+# one), long enough to cancel it mid-run (here it was cancelled within the
+# first tenth); its rows go to FILE.partial 200 at a time.
+export GRID_FLAGS="--model torque-cm,torque-contact,energy,quasi-circular --alpha-deg 1:89:200 --snow-depth 0.0001:0.1:100 --t-end 100 --method ode"
+cancel_grid="--model torque-cm,torque-contact,energy,quasi-circular --alpha-deg 1:89:200 --snow-depth 0.0001:0.1:100 --t-end 100 --method ode --rtol 1e-12 --chunk-rows 200"
 export SNOWROLL=$cli
 
 tmp=$(mktemp -d /tmp/snowroll-slurm.XXXXXX)
@@ -187,12 +191,14 @@ same_rows() {
         diff <(grep -v '^# command: ' "$1") <(grep -v '^# command: ' "$2") | head -5 >&2 || true
         exit 1
     fi
-    echo "test-slurm: $1 = $2 ($(grep -vc '^#' "$1") lines after the # header; # command: aside)"
+    echo "test-slurm: $1 = $2 ($(($(grep -vc '^#' "$1") - 1)) rows; # command: aside)"
 }
 
-# The reference: the whole grid in one process.
+# The references: each grid whole, in one process.
 # shellcheck disable=SC2086
 "$cli" sweep $GRID_FLAGS --quiet --output "$tmp/whole.csv"
+# shellcheck disable=SC2086
+"$cli" sweep $cancel_grid --quiet --output "$tmp/whole-cancel.csv"
 
 # 1. Four tasks, one CPU each (two at a time on the two CPUs).
 mkdir "$tmp/out4"
@@ -203,9 +209,10 @@ wait_job "$job" 120 "0 1 2 3" COMPLETED
 SHARDS=4 OUT="$tmp/out4" bash examples/slurm-sweep.sh merge
 same_rows "$tmp/out4/sweep.csv" "$tmp/whole.csv"
 
-# 2. Two tasks; task 1 cancelled once its partial file holds rows, then
+# 2. Two tasks of the cancel grid; task 1 cancelled once its partial file holds rows, then
 # resubmitted.
 mkdir "$tmp/out2"
+export GRID_FLAGS=$cancel_grid
 job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" sbatch --parsable --array=0-1 \
     --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
 echo "test-slurm: submitted job array $job (2 tasks)"
@@ -214,7 +221,7 @@ rows=0
 for _ in $(seq 600); do
     [ -e "$partial" ] && rows=$(grep -vc '^#' "$partial" || true)
     [ "$rows" -gt 1 ] && break
-    sleep 0.05
+    sleep 0.02
 done
 if [ "$rows" -le 1 ]; then
     echo "test-slurm: task ${job}_1 wrote no rows to $partial in 30 s" >&2
@@ -235,7 +242,7 @@ echo "test-slurm: resubmitted task 1 as job $job"
 wait_job "$job" 120 "1" COMPLETED
 [ ! -e "$partial" ] || { echo "test-slurm: $partial left behind" >&2; exit 1; }
 SHARDS=2 OUT="$tmp/out2" bash examples/slurm-sweep.sh merge
-same_rows "$tmp/out2/sweep.csv" "$tmp/whole.csv"
+same_rows "$tmp/out2/sweep.csv" "$tmp/whole-cancel.csv"
 
 echo "test-slurm: 2 passed, 0 failed"
 
