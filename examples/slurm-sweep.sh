@@ -14,7 +14,10 @@
 # duplicated or unfinished shard.
 #
 # Environment: SHARDS (default 16), OUT (output directory, default .),
-# SNOWROLL (the program, default snowroll on PATH).
+# SNOWROLL (the program, default snowroll on PATH), GRID_FLAGS (the grid's
+# flags as one string, split at spaces, instead of the grid below; the test
+# scripts/test-slurm.sh uses it for a smaller grid). sbatch passes the
+# environment of the submitting shell on to the tasks.
 #SBATCH --job-name=snowroll-sweep
 #SBATCH --cpus-per-task=2
 #SBATCH --time=01:00:00
@@ -28,6 +31,7 @@ SNOWROLL="${SNOWROLL:-snowroll}"
 # The grid: every axis of the sweep, as on the command line.
 GRID=(--model torque-cm,torque-contact,energy,quasi-circular
     --alpha-deg 1:89:2000 --snow-depth 0.0001:0.1:500 --t-end 100)
+if [[ -n "${GRID_FLAGS:-}" ]]; then read -ra GRID <<<"$GRID_FLAGS"; fi
 
 if [[ "${1:-}" == "merge" ]]; then
     files=()

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Python package's tests (issue 13): a virtual environment in the cargo
 # target directory ($CARGO_TARGET_DIR when set, else target/),
-# pinned maturin, pytest and numpy, the wheel built ONCE from
+# pinned maturin, pytest and numpy (and dask, pandas and pyarrow), the wheel built ONCE from
 # crates/snowroll-py and installed, then pytest against the release CLI
 # (crates/snowroll-py/tests compare every value with the CLI's to the bit).
 # Needs python3 (>= 3.9) with the venv module.
@@ -23,6 +23,11 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
     "maturin==1.16.0" "pytest==8.4.2" "numpy==2.3.4"
+# Dask (scheduler, worker processes, dask.dataframe) with pandas and pyarrow,
+# so that the tests on a real LocalCluster and of snowroll.dask run (issue
+# 24); pip does nothing when they are installed.
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
+    "dask[distributed,dataframe]==2025.9.1" "pandas==2.3.3" "pyarrow==21.0.0"
 
 # The CLI the tests compare with, from the same sources: $SNOWROLL_CLI when
 # set (scripts/test.sh passes the one `cargo test` just built), else the

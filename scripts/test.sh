@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The project's test command (README): every Rust test of the workspace, the
-# Python package's tests (scripts/test-python.sh), then `snowroll paper
+# Python package's tests (scripts/test-python.sh), the Slurm job array of
+# examples/slurm-sweep.sh on a one-node cluster (scripts/test-slurm.sh), then `snowroll paper
 # --strict` (fails when any verdict differs from the one the claims table
 # expects) and the browser test of the report it writes (installs
 # Debian's chromium first if it is missing; needs root or sudo for that), then
@@ -22,6 +23,11 @@ cli=$target/debug/snowroll
 
 # The Python package: one wheel, pytest against that CLI.
 SNOWROLL_CLI=$cli bash scripts/test-python.sh
+
+# examples/slurm-sweep.sh on a one-node Slurm cluster started here (installs
+# Debian's slurm-wlm and munge first if missing; needs root or sudo, else it
+# says so and skips).
+bash scripts/test-slurm.sh "$cli"
 
 report_dir=$(mktemp -d)
 trap 'rm -rf "$report_dir"' EXIT

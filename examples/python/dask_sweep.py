@@ -9,7 +9,9 @@ in grid order, are exactly the rows of the whole sweep run at once (this
 script checks it on a small grid first). On a real cluster, point `Client`
 at its scheduler instead of starting a local one; with Ray, replace
 `client.submit(run_shard, ...)` by a `@ray.remote` function and
-`client.gather` by `ray.get`.
+`client.gather` by `ray.get`. The package does this sharding itself as a
+`dask.dataframe`, one partition per shard: `snowroll.dask.sweep(grid,
+client, shards=n)` (then `.compute()`, `.to_parquet(...)`).
 """
 
 import sys

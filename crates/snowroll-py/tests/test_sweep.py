@@ -206,12 +206,15 @@ def test_dask_example_core_merges_shards_into_the_single_run(shards):
 def test_dask_example_on_a_local_dask_cluster():
     pytest.importorskip(
         "dask.distributed",
-        reason="dask is not installed (scripts/test-python.sh installs maturin, pytest and numpy only)",
+        reason="dask is not installed (scripts/test-python.sh installs it)",
     )
     from dask.distributed import Client, LocalCluster
 
     example = load_dask_example()
-    with LocalCluster(n_workers=1, threads_per_worker=2, processes=False) as cluster, Client(cluster) as client:
+    # Two worker processes, as the example runs them.
+    with LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster, Client(cluster) as client:
         merged = example.check_merge(client, example.SMALL_GRID, 3)
     assert len(merged) == merged.grid_len
 

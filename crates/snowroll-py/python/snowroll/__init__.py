@@ -39,7 +39,7 @@ __version__: str = _snowroll.__version__
 #: may hold before it raises ``MemoryError``.
 MAX_MEMORY: int = _snowroll.MAX_MEMORY
 
-__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "sweep_chunks", "MAX_MEMORY", "__version__"]
+__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
 
 
 class _Columns:
@@ -605,3 +605,8 @@ def models(
     return _snowroll.models(
         snow_depth=_number("snow_depth", snow_depth), r0=_number("r0", r0)
     )
+
+
+# `snowroll.dask.sweep`: a sweep as a dask.dataframe (imports dask only when
+# called). Last, since it uses the functions above.
+from . import dask  # noqa: E402
