@@ -7,7 +7,8 @@
 //! | a read-only file | refused, even for root: the shell's `>` would refuse it too |
 //! | a file with several hard links | refused: replacing it would break the links, writing in place would not survive a crash |
 //! | a symbolic link | followed; its target is treated as above (replaced atomically in the target's directory) |
-//! | a device, FIFO, socket, or a handle in `/proc` (`/dev/stdout`, `/proc/self/fd/N`) | written through in place, as the shell's `>` does: no temporary file, no rename |
+//! | the file standard output writes to (`/dev/stdout`, `/proc/self/fd/1`, the file of `>`) | written through descriptor 1, at its position, like `-o -` |
+//! | a device, FIFO, socket, or another handle in `/proc` (`/dev/fd/3`, `/proc/self/fd/N`) | appended in place, never truncated: no temporary file, no rename |
 //! | a directory | refused: "is a directory" |
 //! | `-` | stdout |
 //!
@@ -99,9 +100,11 @@ impl Sink {
         match resolve(path).with_context(|| format!("cannot write {shown}"))? {
             Destination::Stdout => Ok(Sink::stdout()),
             Destination::Through => {
+                // Appended, never truncated: a handle such as `/dev/fd/3`
+                // or `/proc/self/fd/N` opens the file the shell opened, and
+                // what it already wrote there stays (issue 20, item 1).
                 let file = OpenOptions::new()
-                    .write(true)
-                    .truncate(true)
+                    .append(true)
                     .open(path)
                     .with_context(|| format!("cannot write {shown}"))?;
                 Ok(Sink::Through {
@@ -213,6 +216,19 @@ fn is_pseudo(dir: &Path) -> bool {
         .unwrap_or(false)
 }
 
+/// Whether `path` (after links) is the file this process's standard output
+/// writes to (same device and inode): `/dev/stdout`, `/proc/self/fd/1`, or
+/// the very file the shell's `>` or `>>` opened. Such a path is written
+/// through descriptor 1 itself, at its position, so that what the shell
+/// writes before and after stays in order (issue 20, item 1: reopening it
+/// with truncation lost `HEAD` and a `>>` log).
+fn is_our_stdout(path: &Path) -> bool {
+    let (Ok(target), Ok(out)) = (fs::metadata(path), rustix::fs::fstat(io::stdout())) else {
+        return false;
+    };
+    target.dev() == out.st_dev && target.ino() == out.st_ino
+}
+
 /// What `path` names, following symbolic links one at a time so that a
 /// link's target, not the link, is replaced.
 fn resolve(path: &Path) -> Result<Destination> {
@@ -224,6 +240,9 @@ fn resolve(path: &Path) -> Result<Destination> {
     }
     if path.as_os_str().as_encoded_bytes().ends_with(b"/") {
         bail!("is a directory name (it ends with /), not a file name");
+    }
+    if is_our_stdout(path) {
+        return Ok(Destination::Stdout);
     }
     let mut p = path.to_path_buf();
     for _ in 0..MAX_LINKS {

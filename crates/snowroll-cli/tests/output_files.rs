@@ -509,3 +509,33 @@ fn regression_7_an_interrupted_paper_leaves_the_old_report_and_no_temporary_dire
     assert!(temporaries(dir.path()).is_empty());
     assert_eq!(fs::read(out.join("claims.json")).unwrap(), before);
 }
+
+/// Issue 20, item 1: a path naming an open descriptor (`/dev/stdout`,
+/// `/dev/fd/N`) is written at the descriptor's position, never truncated:
+/// a `>>` log keeps its old lines, and what the shell writes before and
+/// after `-o /dev/stdout` stays in order.
+#[test]
+fn a_path_naming_an_open_descriptor_appends_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let bin = assert_cmd::cargo::cargo_bin!("snowroll");
+    let run = "simulate --model loney --times 1,2";
+    let script = format!(
+        "echo old > log.csv; {b} {run} -o /dev/stdout >> log.csv; \
+         {{ echo HEAD; {b} {run} -o /dev/stdout; echo TAIL; }} > f.csv; \
+         {{ echo HEAD3 >&3; {b} {run} -o /dev/fd/3; }} 3> g.csv; \
+         {b} {run} > alone.csv",
+        b = bin.display()
+    );
+    let status = Process::new("bash")
+        .arg("-c")
+        .arg(&script)
+        .current_dir(dir.path())
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let read = |name: &str| fs::read_to_string(dir.path().join(name)).unwrap();
+    let alone = read("alone.csv");
+    assert_eq!(read("log.csv"), format!("old\n{alone}"));
+    assert_eq!(read("f.csv"), format!("HEAD\n{alone}TAIL\n"));
+    assert_eq!(read("g.csv"), format!("HEAD3\n{alone}"));
+}

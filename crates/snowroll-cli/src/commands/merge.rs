@@ -54,7 +54,11 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let mut files: Vec<RunFile> = (args.inputs.iter())
         .map(|p| RunFile::input(p, "input shard"))
         .collect();
-    files.extend(args.output.as_deref().map(|p| RunFile::output(p, "-o output")));
+    files.extend(
+        args.output
+            .as_deref()
+            .map(|p| RunFile::output(p, "-o output")),
+    );
     refuse_clashes(&files)?;
     let mut shards = args
         .inputs

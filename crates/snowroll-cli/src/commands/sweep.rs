@@ -44,7 +44,8 @@ const SYNC_EVERY: Duration = Duration::from_secs(10);
 
 /// Parses the grid, runs it (or this shard of it), writes the rows.
 pub fn run(args: &SweepArgs) -> Result<()> {
-    let partial = (args.output.as_deref().and_then(replaced_target)).map(|target| partial_path(&target));
+    let partial =
+        (args.output.as_deref().and_then(replaced_target)).map(|target| partial_path(&target));
     refuse_clashes(&run_files(args, partial.as_deref()))?;
     let (args, command) = with_config(args)?;
     let args = &args;

@@ -28,7 +28,7 @@ pub(crate) const TOLERATE_NON_FINITE: bool = false;
 /// item 4 (rows parsed against the schema and their grid point), another
 /// branch's work, is merged; then this is `false`. The first campaign of the
 /// readers found it (`merge` of a shard whose `alpha_deg` was `nan`).
-pub(crate) const TOLERATE_UNCHECKED_MERGE: bool = true;
+pub(crate) const TOLERATE_UNCHECKED_MERGE: bool = false;
 
 /// Whether a sweep may write a non-finite cell (counted, not a failure): an
 /// open finding of the readers' campaign (seed 2027), `alpha_deg =
