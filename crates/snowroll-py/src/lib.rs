@@ -1,7 +1,7 @@
 //! The native half of the `snowroll` Python package (`snowroll._snowroll`).
 //!
 //! A thin binding: every number comes from the `snowroll` library, which this
-//! crate calls exactly as the command line does (the same [`ScenarioFile`]
+//! crate calls exactly as the command line does (the same [`ScenarioFile`](snowroll::ScenarioFile)
 //! defaults, the same [`SimOptions`], the same [`RunParams`]), so a run from
 //! Python equals the CLI's run with the same parameters to the last bit. The
 //! keyword names are the one parameter vocabulary of the project: the CLI's

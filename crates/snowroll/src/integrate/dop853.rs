@@ -207,7 +207,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
 /// [`Termination::Stopped`]).
 ///
 /// # Errors
-/// [`ParamError::InvalidParameter`] for bad tolerances or a start or end
+/// [`ParamError::InvalidParameter`](crate::ParamError::InvalidParameter) for bad tolerances or a start or end
 /// time that is not finite (or `t_end < t0`),
 /// [`SimError::StepSizeTooSmall`] when the step underflows (a singularity),
 /// [`SimError::NonFiniteState`] when the state is or becomes non-finite, and
