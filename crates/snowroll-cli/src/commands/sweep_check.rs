@@ -23,7 +23,7 @@ use super::sweep_grid::{grid_of, is_grid_key, recorded_method};
 use crate::args::sweep_axes;
 
 /// Longest header line read (an axis may be a long list).
-const MAX_HEADER_LINE: u64 = 16 << 20;
+const MAX_HEADER_LINE: u64 = crate::bounded::MAX_HEADER;
 /// Most header lines: a sweep writes one per axis and a few more.
 const MAX_HEADER_LINES: usize = 256;
 /// Start of the first header line, before the version.
@@ -204,7 +204,10 @@ fn header_lines(input: &mut impl BufRead, shown: &str) -> Result<(Vec<String>, S
         let line_no = lines.len() + 1;
         if n == 0 || buf.last() != Some(&b'\n') {
             if n as u64 > MAX_HEADER_LINE {
-                bail!("{shown}: line {line_no} is longer than {MAX_HEADER_LINE} bytes");
+                bail!(
+                    "{shown}: line {line_no} is longer than {} MiB, the most snowroll reads of a sweep file's header (an endless file such as /dev/zero, or not a sweep file?)",
+                    MAX_HEADER_LINE >> 20
+                );
             }
             bail!("{shown}: ends inside its header (line {line_no}): not a complete sweep file");
         }
@@ -307,7 +310,10 @@ pub fn check_rows(
         }
         if buf.last() != Some(&b'\n') {
             if n as u64 > MAX_ROW_LINE {
-                bail!("{shown}: line {line} is longer than {MAX_ROW_LINE} bytes");
+                bail!(
+                    "{shown}: line {line} is longer than {} MiB, the most snowroll reads of one sweep row",
+                    MAX_ROW_LINE >> 20
+                );
             }
             bail!(
                 "{shown}: line {line}, its last, is cut short (an interrupted sweep? finish it \
