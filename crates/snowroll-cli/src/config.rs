@@ -29,7 +29,7 @@ use snowroll_io::Format;
 
 use crate::args::{OutputArgs, ParamArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 use crate::bounded::{self, Bounded, MAX_HEADER, MAX_SETTINGS_FILE};
-use crate::readback;
+mod readback;
 
 /// The keys of a config file: every long flag of `simulate` and `turns`
 /// except `--config` itself, in snake_case; the flag's own spelling and the

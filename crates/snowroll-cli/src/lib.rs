@@ -26,7 +26,6 @@ mod commands;
 mod config;
 pub mod console;
 mod outdir;
-mod readback;
 mod scratch;
 mod shell;
 mod sink;

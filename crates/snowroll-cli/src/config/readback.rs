@@ -19,7 +19,7 @@ use serde::Deserializer;
 use serde_json::Map;
 use snowroll::{Param, RecordedSampling};
 
-use crate::config::{ConfigFile, Origin};
+use super::{ConfigFile, Origin};
 
 /// The keys an output records that are not settings of a run: they are
 /// read back as the output's provenance, not as config keys.
