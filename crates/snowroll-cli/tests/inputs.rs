@@ -6,20 +6,9 @@
 
 use std::fs;
 use std::path::Path;
-use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
-fn bin() -> &'static Path {
-    assert_cmd::cargo::cargo_bin!("snowroll")
-}
-
-fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(bin())
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap()
-}
+use crate::support::run_in;
 
 fn ok(dir: &Path, args: &[&str]) -> String {
     let out = run_in(dir, args);

@@ -12,4 +12,5 @@ mod paper;
 mod reproduce;
 mod resume_merge;
 mod streaming;
+mod support;
 mod sweep;

@@ -12,17 +12,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn bin() -> &'static Path {
-    assert_cmd::cargo::cargo_bin!("snowroll")
-}
-
-fn run_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(bin())
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap()
-}
+use crate::support::{bin, run_in};
 
 fn ok_in(dir: &Path, args: &[&str]) {
     let out = run_in(dir, args);
