@@ -2,9 +2,11 @@
 # The Python package's tests (issue 13): a virtual environment in the cargo
 # target directory ($CARGO_TARGET_DIR when set, else target/),
 # pinned maturin, pytest and numpy (and dask, pandas and pyarrow), the wheel built ONCE from
-# crates/snowroll-py and installed, then pytest against the release CLI
+# crates/snowroll-py and installed, then pytest against the CLI ($SNOWROLL_CLI,
+# else the release build)
 # (crates/snowroll-py/tests compare every value with the CLI's to the bit).
-# Needs python3 (>= 3.9) with the venv module.
+# Needs python3 (>= 3.9) with the venv module. `--setup` stops after the
+# environment is installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -28,6 +30,11 @@ fi
 # 24); pip does nothing when they are installed.
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
     "dask[distributed,dataframe]==2025.9.1" "pandas==2.3.3" "pyarrow==21.0.0"
+# `--setup`: only the environment (scripts/test.sh runs this while cargo
+# compiles, so that pip's downloads overlap the build).
+if [ "${1:-}" = "--setup" ]; then
+    exit 0
+fi
 
 # The CLI the tests compare with, from the same sources: $SNOWROLL_CLI when
 # set (scripts/test.sh passes the one `cargo test` just built), else the
@@ -38,9 +45,10 @@ if [ -z "$cli" ]; then
     cli=$target/release/snowroll
 fi
 
-# One wheel, built once per run and reused by every test.
+# One wheel, built once per run and reused by every test (profile pywheel
+# of Cargo.toml: the test profile's settings).
 rm -f "$wheels"/snowroll-*.whl
-"$venv/bin/maturin" build --release --quiet -m crates/snowroll-py/Cargo.toml \
+"$venv/bin/maturin" build --profile pywheel --quiet -m crates/snowroll-py/Cargo.toml \
     --interpreter "$venv/bin/python" --out "$wheels"
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
     --force-reinstall --no-deps "$wheels"/snowroll-*.whl
