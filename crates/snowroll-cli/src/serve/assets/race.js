@@ -1,0 +1,113 @@
+// The race: every run of the page on one slope, side by side, each body
+// rolling to its x(t) as the server computed it (no physics here: positions
+// are the samples, interpolated in time for drawing). Hops, slips and stalls
+// are marked where the run stopped for them.
+'use strict';
+
+const Race = (function () {
+  const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'stall', stuck: 'stuck' };
+  let frame = null;
+
+  // The sample index at or before time t (samples ascend in t).
+  function before(samples, t) {
+    let lo = 0, hi = samples.length - 1;
+    if (t >= samples[hi].t_s) return hi;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (samples[mid].t_s <= t) lo = mid; else hi = mid;
+    }
+    return lo;
+  }
+
+  // The drawn state of a run at time t: x, r and the turn angle.
+  function at(samples, t) {
+    const i = before(samples, t);
+    const a = samples[i], b = samples[Math.min(i + 1, samples.length - 1)];
+    const f = b.t_s > a.t_s ? Math.min(1, Math.max(0, (t - a.t_s) / (b.t_s - a.t_s))) : 0;
+    const mix = (p, q) => p + (q - p) * f;
+    const x = mix(a.x_m, b.x_m), r = mix(a.r_m, b.r_m);
+    const angle = a.theta_rad !== undefined ? mix(a.theta_rad, b.theta_rad) : x / r;
+    return { x, r, angle };
+  }
+
+  function draw(ctx, w, h, runs, alpha, t) {
+    ctx.clearRect(0, 0, w, h);
+    const margin = 30;
+    const cos = Math.cos(alpha), sin = Math.sin(alpha);
+    const length = Math.min((w - 2 * margin) / cos, (h - 2 * margin - 40) / Math.max(sin, 1e-3));
+    const x0 = margin, y0 = margin + 20;
+    const xMax = Math.max(1e-9, ...runs.map((r) => r.stop.x_m));
+    const rMax = Math.max(...runs.map((r) => Math.max(...[r.samples[0], r.samples[r.samples.length - 1]].map((s) => s.r_m))));
+    const lane = Math.min(40, (h - y0 - length * sin) / Math.max(1, runs.length) + 14);
+    // Slope surface, under the last lane.
+    ctx.strokeStyle = '#8c959f';
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    ctx.moveTo(x0, y0 + runs.length * lane);
+    ctx.lineTo(x0 + length * cos, y0 + runs.length * lane + length * sin);
+    ctx.stroke();
+    ctx.font = '12px system-ui, sans-serif';
+    runs.forEach((run, k) => {
+      const s = at(run.samples, Math.min(t, run.stop.t_s));
+      const along = (s.x / xMax) * length;
+      const rad = Math.max(3, (s.r / rMax) * (lane / 2 - 2));
+      // Each run on its own lane, parallel to the slope.
+      const base = { x: x0, y: y0 + k * lane };
+      const cx = base.x + along * cos + sin * rad, cy = base.y + along * sin - cos * rad + lane / 2;
+      ctx.strokeStyle = '#d0d7de';
+      ctx.lineWidth = 1;
+      ctx.beginPath();
+      ctx.moveTo(base.x, base.y + lane / 2);
+      ctx.lineTo(base.x + length * cos, base.y + lane / 2 + length * sin);
+      ctx.stroke();
+      ctx.fillStyle = run.color;
+      ctx.beginPath();
+      ctx.arc(cx, cy, rad, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.strokeStyle = '#fff';
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.moveTo(cx, cy);
+      ctx.lineTo(cx + rad * Math.cos(s.angle), cy + rad * Math.sin(s.angle));
+      ctx.stroke();
+      ctx.fillStyle = '#1c2733';
+      ctx.fillText(run.label, base.x, base.y + 4);
+      const mark = MARKS[run.stop.reason];
+      if (mark && t >= run.stop.t_s) {
+        ctx.fillStyle = '#b42318';
+        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - 2);
+      }
+    });
+  }
+
+  // Plays `runs` ({label, color, samples, stop}) on `canvas` at slope angle
+  // alpha (radians); `clock` shows the time. The race lasts at most 8 s.
+  function start(canvas, clock, runs, alpha) {
+    if (frame !== null) cancelAnimationFrame(frame);
+    frame = null;
+    const ctx = canvas.getContext('2d');
+    const ratio = window.devicePixelRatio || 1;
+    const w = canvas.clientWidth || 900, h = canvas.clientHeight || 300;
+    canvas.width = Math.round(w * ratio);
+    canvas.height = Math.round(h * ratio);
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    const ok = runs.filter((r) => r.samples && r.samples.length > 0);
+    if (ok.length === 0) {
+      ctx.clearRect(0, 0, w, h);
+      clock.textContent = 'no run to race';
+      return;
+    }
+    const tEnd = Math.max(...ok.map((r) => r.stop.t_s));
+    const speed = Math.max(1, tEnd / 8);
+    const t0 = performance.now();
+    function step(now) {
+      const t = Math.min(tEnd, ((now - t0) / 1000) * speed);
+      draw(ctx, w, h, ok, alpha, t);
+      clock.textContent = 't = ' + t.toFixed(2) + ' s of ' + tEnd.toPrecision(4) + ' s (' + speed.toPrecision(3) + '× real time)';
+      frame = t < tEnd ? requestAnimationFrame(step) : null;
+    }
+    frame = requestAnimationFrame(step);
+  }
+
+  return { start, MARKS };
+})();
