@@ -30,36 +30,37 @@ const Race = (function () {
     return { x, r, angle };
   }
 
+  const LANE = 30;
+
+  // The range of r over the runs, for the bodies' drawn sizes.
+  function radii(runs) {
+    const rs = runs.flatMap((r) => [r.samples[0].r_m, r.samples[r.samples.length - 1].r_m]);
+    return [Math.min(...rs), Math.max(...rs)];
+  }
+
   function draw(ctx, w, h, runs, alpha, t) {
     ctx.clearRect(0, 0, w, h);
-    const margin = 30;
+    const margin = 20, labelRoom = 170, n = runs.length;
     const cos = Math.cos(alpha), sin = Math.sin(alpha);
-    const length = Math.min((w - 2 * margin) / cos, (h - 2 * margin - 40) / Math.max(sin, 1e-3));
-    const x0 = margin, y0 = margin + 20;
+    const x0 = margin, y0 = margin + 14;
+    const length = Math.min((w - 2 * margin - labelRoom) / cos, (h - y0 - n * LANE - margin) / Math.max(sin, 1e-3));
     const xMax = Math.max(1e-9, ...runs.map((r) => r.stop.x_m));
-    const rMax = Math.max(...runs.map((r) => Math.max(...[r.samples[0], r.samples[r.samples.length - 1]].map((s) => s.r_m))));
-    const lane = Math.min(40, (h - y0 - length * sin) / Math.max(1, runs.length) + 14);
-    // Slope surface, under the last lane.
-    ctx.strokeStyle = '#8c959f';
-    ctx.lineWidth = 2;
-    ctx.beginPath();
-    ctx.moveTo(x0, y0 + runs.length * lane);
-    ctx.lineTo(x0 + length * cos, y0 + runs.length * lane + length * sin);
-    ctx.stroke();
+    const [rMin, rMax] = radii(runs);
     ctx.font = '12px system-ui, sans-serif';
     runs.forEach((run, k) => {
       const s = at(run.samples, Math.min(t, run.stop.t_s));
       const along = (s.x / xMax) * length;
-      const rad = Math.max(3, (s.r / rMax) * (lane / 2 - 2));
-      // Each run on its own lane, parallel to the slope.
-      const base = { x: x0, y: y0 + k * lane };
-      const cx = base.x + along * cos + sin * rad, cy = base.y + along * sin - cos * rad + lane / 2;
-      ctx.strokeStyle = '#d0d7de';
-      ctx.lineWidth = 1;
+      // From 5 px at the smallest radius to the lane's half-width at the largest.
+      const rad = 5 + (LANE / 2 - 7) * (rMax > rMin ? (s.r - rMin) / (rMax - rMin) : 0);
+      // Each run on its own lane, parallel to the slope; the surface under it.
+      const bx = x0, by = y0 + (k + 1) * LANE;
+      ctx.strokeStyle = k === n - 1 ? '#57606a' : '#d0d7de';
+      ctx.lineWidth = k === n - 1 ? 2 : 1;
       ctx.beginPath();
-      ctx.moveTo(base.x, base.y + lane / 2);
-      ctx.lineTo(base.x + length * cos, base.y + lane / 2 + length * sin);
+      ctx.moveTo(bx, by);
+      ctx.lineTo(bx + length * cos, by + length * sin);
       ctx.stroke();
+      const cx = bx + along * cos + sin * rad, cy = by + along * sin - cos * rad;
       ctx.fillStyle = run.color;
       ctx.beginPath();
       ctx.arc(cx, cy, rad, 0, 2 * Math.PI);
@@ -71,11 +72,11 @@ const Race = (function () {
       ctx.lineTo(cx + rad * Math.cos(s.angle), cy + rad * Math.sin(s.angle));
       ctx.stroke();
       ctx.fillStyle = '#1c2733';
-      ctx.fillText(run.label, base.x, base.y + 4);
+      ctx.fillText(run.label, bx + length * cos + 8, by + length * sin);
       const mark = MARKS[run.stop.reason];
       if (mark && t >= run.stop.t_s) {
         ctx.fillStyle = '#b42318';
-        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - 2);
+        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - rad);
       }
     });
   }
@@ -87,11 +88,12 @@ const Race = (function () {
     frame = null;
     const ctx = canvas.getContext('2d');
     const ratio = window.devicePixelRatio || 1;
+    const ok = runs.filter((r) => r.samples && r.samples.length > 0);
+    canvas.style.height = Math.max(220, 160 + ok.length * LANE) + 'px';
     const w = canvas.clientWidth || 900, h = canvas.clientHeight || 300;
     canvas.width = Math.round(w * ratio);
     canvas.height = Math.round(h * ratio);
     ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
-    const ok = runs.filter((r) => r.samples && r.samples.length > 0);
     if (ok.length === 0) {
       ctx.clearRect(0, 0, w, h);
       clock.textContent = 'no run to race';
