@@ -539,3 +539,36 @@ fn a_host_that_is_not_loopback_is_warned_about() {
     assert!(!out.status.success());
     assert!(cli_error(&out).contains("is not an IP address"));
 }
+
+#[test]
+fn open_without_xdg_open_says_so() {
+    // No xdg-open on this PATH: the page's address is printed to open by hand.
+    let empty = tempfile::tempdir().unwrap();
+    let mut child = Command::new(bin())
+        .args(["serve", "--port", "0", "--open"])
+        .env("PATH", empty.path())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut url = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut url)
+        .unwrap();
+    let mut note = String::new();
+    BufReader::new(child.stderr.take().unwrap())
+        .read_line(&mut note)
+        .unwrap();
+    let _ = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status();
+    assert!(child.wait().unwrap().success());
+    let addr = url
+        .split_whitespace()
+        .find(|w| w.starts_with("http://"))
+        .unwrap();
+    assert!(
+        note.contains("no xdg-open") && note.contains(addr),
+        "{note}"
+    );
+}

@@ -126,7 +126,9 @@ fn open_browser(url: &str) {
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
         .spawn();
-    if let Err(e) = spawned {
-        report!("note: --open: xdg-open failed ({e}); open {url} in a browser");
+    match spawned {
+        // Reaped when it ends (xdg-open returns once the browser is asked).
+        Ok(mut child) => drop(thread::spawn(move || child.wait())),
+        Err(e) => report!("note: --open: xdg-open failed ({e}); open {url} in a browser"),
     }
 }
