@@ -99,8 +99,9 @@ pub fn pairs(query: &str) -> Result<Vec<(String, String)>, Refused> {
     for part in query.split('&').filter(|p| !p.is_empty()) {
         let (k, v) = part.split_once('=').unwrap_or((part, ""));
         let (Some(k), Some(v)) = (decode(k), decode(v)) else {
+            let shown: String = part.chars().take(100).collect();
             return Err(Refused::Bad(format!(
-                "`{part}` is not URL-encoded text (a bad %-escape, or not UTF-8)"
+                "`{shown}` is not URL-encoded text (a bad %-escape, or not UTF-8)"
             )));
         };
         if out.iter().any(|(seen, _)| *seen == k) {
@@ -232,5 +233,46 @@ pub fn value_json(v: &Value) -> serde_json::Value {
         Value::Flag(b) => serde_json::json!(b),
         Value::Word(w) => serde_json::json!(w),
         Value::Reals(xs) => serde_json::json!(xs),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decode_reads_percent_escapes_and_plus() {
+        assert_eq!(decode("0.5%2C1%2c2").as_deref(), Some("0.5,1,2"));
+        assert_eq!(decode("a+b").as_deref(), Some("a b"));
+        assert_eq!(decode("%C3%A9").as_deref(), Some("é"));
+        // A bad escape, a cut one, bytes that are not UTF-8.
+        assert_eq!(decode("%zz"), None);
+        assert_eq!(decode("1%2"), None);
+        assert_eq!(decode("%FF"), None);
+    }
+
+    #[test]
+    fn command_line_maps_keys_to_the_tables_flags() {
+        let r = command_line(
+            Endpoint::Simulate,
+            "model=energy&alpha_deg=12&ledger=true&x_end=",
+        )
+        .unwrap();
+        assert_eq!(
+            r.args,
+            [
+                "simulate",
+                "--model=energy",
+                "--alpha-deg=12",
+                "--ledger",
+                "--format=json"
+            ]
+        );
+        assert!(!r.csv);
+        // g sin(12 degrees) with the default g, 9.81 m/s^2; to rounding.
+        let expected = 9.81 * 12f64.to_radians().sin();
+        assert!((r.g_along.unwrap() - expected).abs() < 1e-12);
+        let bad = command_line(Endpoint::Simulate, "model=energy&alpha_deg=1%zz");
+        assert!(matches!(bad, Err(Refused::Bad(m)) if m.contains("not URL-encoded")));
     }
 }
