@@ -30,7 +30,7 @@ const Race = (function () {
     return { x, r, angle };
   }
 
-  const LANE = 30;
+  const LANE = 30, MARGIN = 20, TOP = 34, LABEL_ROOM = 170;
 
   // The range of r over the runs, for the bodies' drawn sizes.
   function radii(runs) {
@@ -40,10 +40,10 @@ const Race = (function () {
 
   function draw(ctx, w, h, runs, alpha, t) {
     ctx.clearRect(0, 0, w, h);
-    const margin = 20, labelRoom = 170, n = runs.length;
+    const n = runs.length;
     const cos = Math.cos(alpha), sin = Math.sin(alpha);
-    const x0 = margin, y0 = margin + 14;
-    const length = Math.min((w - 2 * margin - labelRoom) / cos, (h - y0 - n * LANE - margin) / Math.max(sin, 1e-3));
+    const x0 = MARGIN, y0 = TOP;
+    const length = Math.min((w - 2 * MARGIN - LABEL_ROOM) / cos, (h - y0 - n * LANE - MARGIN) / Math.max(sin, 1e-3));
     const xMax = Math.max(1e-9, ...runs.map((r) => r.stop.x_m));
     const [rMin, rMax] = radii(runs);
     ctx.font = '12px system-ui, sans-serif';
@@ -78,6 +78,14 @@ const Race = (function () {
         ctx.fillStyle = '#b42318';
         ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - rad);
       }
+      // A run that goes on through a hop (on_hop = continue): the first
+      // sample whose normal force the server gave as <= 0, once passed.
+      const off = run.firstHop;
+      if (off && t >= off.t_s && run.stop.reason !== 'hop') {
+        const hx = bx + (off.x_m / xMax) * length * cos, hy = by + (off.x_m / xMax) * length * sin;
+        ctx.fillStyle = '#b42318';
+        ctx.fillText('✕ hop', hx, hy - LANE / 2);
+      }
     });
   }
 
@@ -89,7 +97,11 @@ const Race = (function () {
     const ctx = canvas.getContext('2d');
     const ratio = window.devicePixelRatio || 1;
     const ok = runs.filter((r) => r.samples && r.samples.length > 0);
-    canvas.style.height = Math.max(220, 160 + ok.length * LANE) + 'px';
+    // Tall enough for the slope at its true angle across the width, within
+    // 220 to 560 px.
+    const wide = canvas.clientWidth || 900;
+    const drop = (wide - 2 * MARGIN - LABEL_ROOM) * Math.tan(alpha);
+    canvas.style.height = Math.round(Math.min(560, Math.max(220, TOP + ok.length * LANE + MARGIN + drop))) + 'px';
     const w = canvas.clientWidth || 900, h = canvas.clientHeight || 300;
     canvas.width = Math.round(w * ratio);
     canvas.height = Math.round(h * ratio);
@@ -99,6 +111,7 @@ const Race = (function () {
       clock.textContent = 'no run to race';
       return;
     }
+    for (const r of ok) r.firstHop = r.samples.find((s) => s.normal_n !== undefined && s.normal_n <= 0);
     const tEnd = Math.max(...ok.map((r) => r.stop.t_s));
     const speed = Math.max(1, tEnd / 8);
     const t0 = performance.now();
