@@ -4,7 +4,8 @@
 # examples/slurm-sweep.sh on a one-node cluster (scripts/test-slurm.sh), then `snowroll paper
 # --strict` (fails when any verdict differs from the one the claims table
 # expects) and the browser test of the report it writes (installs
-# Debian's chromium first if it is missing; needs root or sudo for that), then
+# Debian's chromium first if it is missing; needs root or sudo for that) and
+# of `snowroll serve`'s page (.ci/serve-browser-test.sh), then
 # scripts/check-guide.py (links of the docs, the user guide's examples).
 # The Python environment is installed while cargo compiles, and the Slurm
 # test runs beside the report's; each one's output is shown when it ends.
@@ -58,8 +59,12 @@ bash .ci/browser-test.sh "$report_dir"
 # Keep the screenshots as artifacts of the run.
 mkdir -p target/browser-test
 cp "$report_dir"/browser-*.png target/browser-test/ 2>/dev/null || true
+# `snowroll serve`: the page in the same browser; the slider's move, the
+# plots and the readout against the API (the binary above has the feature:
+# `cargo test --all-features` built it).
+bash .ci/serve-browser-test.sh "$cli" target/browser-test
 echo "browser test artifacts: target/browser-test/"
-echo "browser: 1 passed, 0 failed"
+echo "browser: 2 passed, 0 failed"
 
 slurm_status=0
 wait "$slurm" || slurm_status=$?

@@ -27,6 +27,8 @@ mod config;
 pub mod console;
 mod outdir;
 mod scratch;
+#[cfg(feature = "serve")]
+mod serve;
 mod shell;
 mod sink;
 
@@ -142,7 +144,13 @@ pub fn install_signal_handlers() -> std::io::Result<()> {
     std::thread::Builder::new()
         .name("signals".to_string())
         .spawn(move || {
-            if let Some(signal) = signals.forever().next() {
+            for signal in signals.forever() {
+                // `snowroll serve` stops its workers and ends with success;
+                // a second signal ends it at once (registered above).
+                #[cfg(feature = "serve")]
+                if serve::stop_on_signal() {
+                    continue;
+                }
                 scratch::remove_all_and_exit(128 + signal);
             }
         })?;

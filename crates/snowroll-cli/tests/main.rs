@@ -11,6 +11,8 @@ mod output_files;
 mod paper;
 mod reproduce;
 mod resume_merge;
+#[cfg(feature = "serve")]
+mod serve;
 mod streaming;
 mod support;
 mod sweep;

@@ -76,6 +76,31 @@ pub enum Command {
     /// Join the CSV files of `snowroll sweep --shard i/N` into one, in grid
     /// order, checking that every shard is there exactly once.
     Merge(MergeArgs),
+    /// Serve the classroom explorer: a local web page with a slider for every
+    /// parameter, live plots and a race of the models, and its JSON API
+    /// (`/api/simulate`, `/api/turns`, `/api/models`, `/api/params`).
+    #[cfg(feature = "serve")]
+    Serve(ServeArgs),
+}
+
+/// Default port of `snowroll serve`.
+#[cfg(feature = "serve")]
+pub const SERVE_PORT_DEFAULT: u16 = 8000;
+
+/// Flags of `snowroll serve`.
+#[cfg(feature = "serve")]
+#[derive(Debug, Clone, PartialEq, clap::Args)]
+pub struct ServeArgs {
+    /// Port to listen on (0: any free port; the URL printed names it).
+    #[arg(long, value_name = "PORT", default_value_t = SERVE_PORT_DEFAULT)]
+    pub port: u16,
+    /// Address to listen on. Anything but a loopback address (127.0.0.1,
+    /// ::1) serves other machines too, with a warning.
+    #[arg(long, value_name = "IP", default_value = "127.0.0.1")]
+    pub host: String,
+    /// Open the page in a browser (with xdg-open, where there is one).
+    #[arg(long)]
+    pub open: bool,
 }
 
 /// Where `snowroll paper` writes when `--out` is not given.

@@ -29,5 +29,7 @@ pub fn run(args: Args) -> Result<()> {
         Command::Paper(a) => paper::run(&a),
         Command::Sweep(a) => sweep::run(&a),
         Command::Merge(a) => merge::run(&a),
+        #[cfg(feature = "serve")]
+        Command::Serve(a) => crate::serve::run(&a),
     }
 }

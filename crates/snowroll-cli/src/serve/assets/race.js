@@ -1,0 +1,128 @@
+// The race: every run of the page on one slope, side by side, each body
+// rolling to its x(t) as the server computed it (no physics here: positions
+// are the samples, interpolated in time for drawing). Hops, slips and stalls
+// are marked where the run stopped for them.
+'use strict';
+
+const Race = (function () {
+  const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'stall', stuck: 'stuck' };
+  let frame = null;
+
+  // The sample index at or before time t (samples ascend in t).
+  function before(samples, t) {
+    let lo = 0, hi = samples.length - 1;
+    if (t >= samples[hi].t_s) return hi;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (samples[mid].t_s <= t) lo = mid; else hi = mid;
+    }
+    return lo;
+  }
+
+  // The drawn state of a run at time t: x, r and the turn angle.
+  function at(samples, t) {
+    const i = before(samples, t);
+    const a = samples[i], b = samples[Math.min(i + 1, samples.length - 1)];
+    const f = b.t_s > a.t_s ? Math.min(1, Math.max(0, (t - a.t_s) / (b.t_s - a.t_s))) : 0;
+    const mix = (p, q) => p + (q - p) * f;
+    const x = mix(a.x_m, b.x_m), r = mix(a.r_m, b.r_m);
+    const angle = a.theta_rad !== undefined ? mix(a.theta_rad, b.theta_rad) : x / r;
+    return { x, r, angle };
+  }
+
+  const LANE = 30, MARGIN = 20, TOP = 34, LABEL_ROOM = 170;
+
+  // The range of r over the runs, for the bodies' drawn sizes.
+  function radii(runs) {
+    const rs = runs.flatMap((r) => [r.samples[0].r_m, r.samples[r.samples.length - 1].r_m]);
+    return [Math.min(...rs), Math.max(...rs)];
+  }
+
+  function draw(ctx, w, h, runs, alpha, t) {
+    ctx.clearRect(0, 0, w, h);
+    const n = runs.length;
+    const cos = Math.cos(alpha), sin = Math.sin(alpha);
+    const x0 = MARGIN, y0 = TOP;
+    const length = Math.min((w - 2 * MARGIN - LABEL_ROOM) / cos, (h - y0 - n * LANE - MARGIN) / Math.max(sin, 1e-3));
+    const xMax = Math.max(1e-9, ...runs.map((r) => r.stop.x_m));
+    const [rMin, rMax] = radii(runs);
+    ctx.font = '12px system-ui, sans-serif';
+    runs.forEach((run, k) => {
+      const s = at(run.samples, Math.min(t, run.stop.t_s));
+      const along = (s.x / xMax) * length;
+      // From 5 px at the smallest radius to the lane's half-width at the largest.
+      const rad = 5 + (LANE / 2 - 7) * (rMax > rMin ? (s.r - rMin) / (rMax - rMin) : 0);
+      // Each run on its own lane, parallel to the slope; the surface under it.
+      const bx = x0, by = y0 + (k + 1) * LANE;
+      ctx.strokeStyle = k === n - 1 ? '#57606a' : '#d0d7de';
+      ctx.lineWidth = k === n - 1 ? 2 : 1;
+      ctx.beginPath();
+      ctx.moveTo(bx, by);
+      ctx.lineTo(bx + length * cos, by + length * sin);
+      ctx.stroke();
+      const cx = bx + along * cos + sin * rad, cy = by + along * sin - cos * rad;
+      ctx.fillStyle = run.color;
+      ctx.beginPath();
+      ctx.arc(cx, cy, rad, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.strokeStyle = '#fff';
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.moveTo(cx, cy);
+      ctx.lineTo(cx + rad * Math.cos(s.angle), cy + rad * Math.sin(s.angle));
+      ctx.stroke();
+      ctx.fillStyle = '#1c2733';
+      ctx.fillText(run.label, bx + length * cos + 8, by + length * sin);
+      const mark = MARKS[run.stop.reason];
+      if (mark && t >= run.stop.t_s) {
+        ctx.fillStyle = '#b42318';
+        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - rad);
+      }
+      // A run that goes on through a hop (on_hop = continue): the first
+      // sample whose normal force the server gave as <= 0, once passed.
+      const off = run.firstHop;
+      if (off && t >= off.t_s && run.stop.reason !== 'hop') {
+        const hx = bx + (off.x_m / xMax) * length * cos, hy = by + (off.x_m / xMax) * length * sin;
+        ctx.fillStyle = '#b42318';
+        ctx.fillText('✕ hop', hx, hy - LANE / 2);
+      }
+    });
+  }
+
+  // Plays `runs` ({label, color, samples, stop}) on `canvas` at slope angle
+  // alpha (radians); `clock` shows the time. The race lasts at most 8 s.
+  function start(canvas, clock, runs, alpha) {
+    if (frame !== null) cancelAnimationFrame(frame);
+    frame = null;
+    const ctx = canvas.getContext('2d');
+    const ratio = window.devicePixelRatio || 1;
+    const ok = runs.filter((r) => r.samples && r.samples.length > 0);
+    // Tall enough for the slope at its true angle across the width, within
+    // 220 to 560 px.
+    const wide = canvas.clientWidth || 900;
+    const drop = (wide - 2 * MARGIN - LABEL_ROOM) * Math.tan(alpha);
+    canvas.style.height = Math.round(Math.min(560, Math.max(220, TOP + ok.length * LANE + MARGIN + drop))) + 'px';
+    const w = canvas.clientWidth || 900, h = canvas.clientHeight || 300;
+    canvas.width = Math.round(w * ratio);
+    canvas.height = Math.round(h * ratio);
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    if (ok.length === 0) {
+      ctx.clearRect(0, 0, w, h);
+      clock.textContent = 'no run to race';
+      return;
+    }
+    for (const r of ok) r.firstHop = r.samples.find((s) => s.normal_n !== undefined && s.normal_n <= 0);
+    const tEnd = Math.max(...ok.map((r) => r.stop.t_s));
+    const speed = Math.max(1, tEnd / 8);
+    const t0 = performance.now();
+    function step(now) {
+      const t = Math.min(tEnd, ((now - t0) / 1000) * speed);
+      draw(ctx, w, h, ok, alpha, t);
+      clock.textContent = 't = ' + t.toFixed(2) + ' s of ' + tEnd.toPrecision(4) + ' s (' + speed.toPrecision(3) + '× real time)';
+      frame = t < tEnd ? requestAnimationFrame(step) : null;
+    }
+    frame = requestAnimationFrame(step);
+  }
+
+  return { start, MARKS };
+})();
