@@ -1,6 +1,8 @@
 """Trajectories per second of a large sweep through snowroll.dask.sweep on a
-LocalCluster of 1 and 2 worker processes (one thread each), and the fixed
-cost of a shard (the same small grid in 1 shard and in 64).
+LocalCluster of 1, 2 and 4 worker processes (one thread each; on a 2-core
+machine 4 workers share the 2 cores), and the fixed cost of a shard (the
+same small grid in 1 shard and in 64). Each line ends with the load average
+at its end: the machine may be shared, so compare the ratios within one run.
 
     python bench/dask_scaling.py [ALPHA_COUNT]
 
@@ -10,6 +12,7 @@ transfer of the rows to the client. Needs the snowroll package, dask[dataframe,
 distributed] and pandas (scripts/test-python.sh's venv has them).
 """
 
+import os
 import sys
 import time
 
@@ -25,6 +28,10 @@ def grid(alpha_count):
     }
 
 
+def load():
+    return "load " + " ".join(f"{x:.2f}" for x in os.getloadavg())
+
+
 def timed(frame):
     t0 = time.perf_counter()
     rows = int(frame.map_partitions(len).compute().sum())
@@ -37,7 +44,7 @@ def main():
     alpha_count = int(sys.argv[1]) if len(sys.argv) > 1 else 500
     big = grid(alpha_count)
     tiny = {"model": "torque-cm", "alpha_deg": "1:89:64", "t_end": 100}
-    for workers in (1, 2):
+    for workers in (1, 2, 4):
         with LocalCluster(
             n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None
         ) as cluster, Client(cluster) as client:
@@ -46,14 +53,14 @@ def main():
                 rows, seconds = timed(snowroll.dask.sweep(big, shards=shards))
                 print(
                     f"{workers} worker(s), {shards} shards: {rows} trajectories in "
-                    f"{seconds:.2f} s, {rows / seconds:,.0f} per second"
+                    f"{seconds:.2f} s, {rows / seconds:,.0f} per second ({load()})"
                 )
             _, one = timed(snowroll.dask.sweep(tiny, shards=1))
             _, many = timed(snowroll.dask.sweep(tiny, shards=64))
             print(
                 f"{workers} worker(s): 64 rows in 1 shard {one * 1e3:.0f} ms, in 64 shards "
                 f"{many * 1e3:.0f} ms: {(many - one) / 63 * workers * 1e3:.1f} ms per extra shard "
-                "and worker"
+                f"and worker ({load()})"
             )
 
 

@@ -8,16 +8,17 @@
 # slurmctld and slurmd, all with a generated configuration in a temporary
 # directory: nothing under /etc is used or changed), then
 #   1. submits the example as a job array of 4 tasks (`sbatch --array=0-3`),
-#      waits for them, merges, and checks the merged file against the same
-#      sweep run in one process;
+#      waits for them, merges, and checks that the merged file is the same
+#      bytes as the sweep run in one process;
 #   2. runs a slower grid as 2 tasks, cancels one mid-run (`scancel`) once its
 #      FILE.partial holds rows, resubmits that array index (the example passes
 #      --resume, and snowroll refuses a partial file without it), merges and
 #      checks again.
-# "The same bytes" means every line, `#` header included, except the
-# `# command:` line, which records how each file was made (`snowroll merge
-# ...` against `snowroll sweep ...`). The cluster is torn down on exit, also
-# on failure. Skips (exit 0, saying why) only without root and sudo, or
+# "The same bytes" means the whole file, `#` header included: merge records
+# the command line of the one-process sweep its shards make up, so the
+# reference is that sweep written to the merged file's path (OUT=. in the
+# merge's directory, --output ./sweep.csv in the reference's). The cluster is
+# torn down on exit, also on failure. Skips (exit 0, saying why) only without root and sudo, or
 # without apt-get.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -184,21 +185,23 @@ wait_job() {
     done
 }
 
-# Compares two sweep files, `# command:` line aside.
-same_rows() {
-    if ! cmp -s <(grep -v '^# command: ' "$1") <(grep -v '^# command: ' "$2"); then
+# Checks that two sweep files are the same bytes.
+same_bytes() {
+    if ! cmp "$1" "$2" >&2; then
         echo "test-slurm: $1 and $2 differ:" >&2
-        diff <(grep -v '^# command: ' "$1") <(grep -v '^# command: ' "$2") | head -5 >&2 || true
+        diff "$1" "$2" | head -5 >&2 || true
         exit 1
     fi
-    echo "test-slurm: $1 = $2 ($(($(grep -vc '^#' "$1") - 1)) rows; # command: aside)"
+    echo "test-slurm: $1 = $2 ($(($(grep -vc '^#' "$1") - 1)) rows, every byte)"
 }
 
-# The references: each grid whole, in one process.
+# The references: each grid whole, in one process, written to ./sweep.csv
+# in a directory of its own, the path the merges below write to.
+mkdir "$tmp/whole" "$tmp/whole-cancel"
 # shellcheck disable=SC2086
-"$cli" sweep $GRID_FLAGS --quiet --output "$tmp/whole.csv"
+(cd "$tmp/whole" && "$cli" sweep $GRID_FLAGS --quiet --output ./sweep.csv)
 # shellcheck disable=SC2086
-"$cli" sweep $cancel_grid --quiet --output "$tmp/whole-cancel.csv"
+(cd "$tmp/whole-cancel" && "$cli" sweep $cancel_grid --quiet --output ./sweep.csv)
 
 # 1. Four tasks, one CPU each (two at a time on the two CPUs).
 mkdir "$tmp/out4"
@@ -206,8 +209,8 @@ job=$(cd "$tmp/out4" && SHARDS=4 OUT="$tmp/out4" sbatch --parsable --array=0-3 \
     --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
 echo "test-slurm: submitted job array $job (4 tasks)"
 wait_job "$job" 120 "0 1 2 3" COMPLETED
-SHARDS=4 OUT="$tmp/out4" bash examples/slurm-sweep.sh merge
-same_rows "$tmp/out4/sweep.csv" "$tmp/whole.csv"
+(cd "$tmp/out4" && SHARDS=4 OUT=. bash "$root/examples/slurm-sweep.sh" merge)
+same_bytes "$tmp/out4/sweep.csv" "$tmp/whole/sweep.csv"
 
 # 2. Two tasks of the cancel grid; task 1 cancelled once its partial file holds rows, then
 # resubmitted.
@@ -241,15 +244,27 @@ job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" sbatch --parsable --array=1 \
 echo "test-slurm: resubmitted task 1 as job $job"
 wait_job "$job" 120 "1" COMPLETED
 [ ! -e "$partial" ] || { echo "test-slurm: $partial left behind" >&2; exit 1; }
-SHARDS=2 OUT="$tmp/out2" bash examples/slurm-sweep.sh merge
-same_rows "$tmp/out2/sweep.csv" "$tmp/whole-cancel.csv"
+(cd "$tmp/out2" && SHARDS=2 OUT=. bash "$root/examples/slurm-sweep.sh" merge)
+same_bytes "$tmp/out2/sweep.csv" "$tmp/whole-cancel/sweep.csv"
 
 echo "test-slurm: 2 passed, 0 failed"
 
 # Timings for bench/README.md (not a test): SLURM_BENCH="GRID FLAGS" runs
-# that grid as 1 task on 1 CPU and as 2 tasks on 1 CPU each, then 16 tasks of
-# a 16-point grid (the fixed cost of a task), and times each from sbatch to
-# the last task's end, and the merge.
+# that grid in one process with 1, 2 and 4 threads, then as 1, 2 and 4 tasks
+# of 1 CPU each (the node has 2 CPUs: Slurm runs the 4 tasks two at a time),
+# then 16 tasks of a 16-point grid (the fixed cost of a task); it times each
+# task array from sbatch to the last task's end, and its merge, and prints
+# the load average beside each figure (the machine may be shared).
+elapsed() { awk "BEGIN { printf \"%.2f\", $(date +%s.%N) - $1 }"; }
+load() { cut -d' ' -f1-3 /proc/loadavg; }
+bench_process() { # $1 threads, $2 grid flags
+    local TIMEFORMAT="%R s wall, %U s user + %S s system" took
+    # shellcheck disable=SC2086
+    took=$( { time RAYON_NUM_THREADS=$1 "$cli" sweep $2 --quiet \
+        --output "$tmp/bench-process.csv" 2>"$tmp/bench-process.err"; } 2>&1)
+    echo "test-slurm bench: one process, $1 thread(s): $took (load $(load))"
+    rm -f "$tmp/bench-process.csv"
+}
 bench_array() { # $1 name, $2 shards, $3 grid flags
     local dir=$tmp/bench-$1 t0 job
     mkdir "$dir"
@@ -257,13 +272,16 @@ bench_array() { # $1 name, $2 shards, $3 grid flags
     job=$(cd "$dir" && GRID_FLAGS=$3 SHARDS=$2 OUT=$dir sbatch --parsable \
         --array=0-$(($2 - 1)) --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
     wait_job "$job" 3600 "$(seq -s ' ' 0 $(($2 - 1)))" COMPLETED
-    echo "test-slurm bench: $1: $2 tasks, $(awk "BEGIN { printf \"%.2f\", $(date +%s.%N) - $t0 }") s from sbatch to the end"
+    echo "test-slurm bench: $1: $2 tasks, $(elapsed "$t0") s from sbatch to the end (load $(load))"
     t0=$(date +%s.%N)
     GRID_FLAGS=$3 SHARDS=$2 OUT=$dir bash examples/slurm-sweep.sh merge
-    echo "test-slurm bench: $1: merge $(awk "BEGIN { printf \"%.2f\", $(date +%s.%N) - $t0 }") s for $(grep -vc '^#' "$dir/sweep.csv") lines"
+    echo "test-slurm bench: $1: merge $(elapsed "$t0") s for $(grep -vc '^#' "$dir/sweep.csv") lines (load $(load))"
+    rm -f "$dir"/sweep*.csv
 }
 if [ -n "${SLURM_BENCH:-}" ]; then
+    for threads in 1 2 4; do bench_process "$threads" "$SLURM_BENCH"; done
     bench_array one 1 "$SLURM_BENCH"
     bench_array two 2 "$SLURM_BENCH"
+    bench_array four 4 "$SLURM_BENCH"
     bench_array tiny 16 "--model torque-cm --alpha-deg 1:89:16 --t-end 100"
 fi

@@ -7,6 +7,7 @@ mod determinism;
 mod fuzz_findings;
 mod guards;
 mod inputs;
+mod merge_bytes;
 mod output_files;
 mod paper;
 mod reproduce;

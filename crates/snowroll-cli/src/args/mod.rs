@@ -75,6 +75,10 @@ pub enum Command {
     Sweep(Box<SweepArgs>),
     /// Join the CSV files of `snowroll sweep --shard i/N` into one, in grid
     /// order, checking that every shard is there exactly once.
+    ///
+    /// The result is the file the whole sweep run in one process writes to
+    /// the same -o path, byte for byte: its `# command:` line is that
+    /// sweep's (shard 0's command line without --shard, with this -o).
     Merge(MergeArgs),
     /// Serve the classroom explorer: a local web page with a slider for every
     /// parameter, live plots and a race of the models, and its JSON API
@@ -381,7 +385,7 @@ pub struct MergeArgs {
     #[arg(required = true, value_name = "SHARD.csv")]
     pub inputs: Vec<PathBuf>,
 
-    /// Write to this file instead of stdout
+    /// Write to this file instead of stdout; Parquet for a FILE ending in .parquet (in a build with `--features parquet`), as `sweep` writes
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
 }

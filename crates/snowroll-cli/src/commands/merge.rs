@@ -7,20 +7,27 @@
 //! shard 0..N is there exactly once and that their rows tile the grid; then,
 //! while copying, that each file holds exactly its rows, in order, each line
 //! complete, each row parsed against the schema and equal in its parameters
-//! to the grid point its index names. The result is the uninterrupted
-//! sweep's file but for its command line.
+//! to the grid point its index names.
+//!
+//! The result is the file the whole sweep run in one process would have
+//! written to the same `-o` path, byte for byte, its command line included:
+//! that of shard 0 without its `--shard`, the output replaced by this one
+//! ([`one_process`]). Like that sweep, it writes Parquet to a FILE ending in
+//! `.parquet` (in a build with the `parquet` feature), else CSV.
 
 use std::fs::File;
 use std::io::{BufReader, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
+use clap::Parser;
 use snowroll::sweep::shard_range;
 
-use super::sweep::{COMMAND_KEY, SHARD_KEY};
+use super::sweep::{command_line, format_of, COMMAND_KEY, SHARD_KEY};
 use super::sweep_check::{check_rows, Recorded};
-use crate::args::{MergeArgs, OutputArgs};
+use crate::args::{Args, Command, MergeArgs, OutputArgs, SweepArgs, SweepFormat};
 use crate::clash::{refuse_clashes, RunFile};
+use crate::shell::shell_words;
 use crate::sink::Sink;
 
 /// One shard file, its header read.
@@ -69,6 +76,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     check_tiling(&shards)?;
     let points = shards[0].recorded.grid.len();
 
+    let sweep = one_process(&shards[0], args.output.as_deref())?;
     let out = OutputArgs {
         format: None,
         output: args.output.clone(),
@@ -76,14 +84,11 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     };
     let mut sink = Sink::open(&out)?;
     let name = sink.name();
-    let mut command = String::from("snowroll merge");
-    for p in &args.inputs {
-        command.push_str(&format!(" {}", p.display()));
-    }
+    let format = format_of(&sweep, matches!(sink, Sink::Replace { .. }))?;
     let mut header = String::new();
     for line in &shards[0].recorded.header {
         if line.starts_with(COMMAND_KEY) {
-            header.push_str(&format!("{COMMAND_KEY}{command}"));
+            header.push_str(&format!("{COMMAND_KEY}{}", command_line(&sweep)));
         } else if line.starts_with(SHARD_KEY) {
             header.push_str(&format!("{SHARD_KEY}0/1, rows 0..{points}"));
         } else {
@@ -91,13 +96,84 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         }
         header.push('\n');
     }
-    sink.write_all(header.as_bytes())
-        .with_context(|| format!("writing {name}"))?;
-    for s in &mut shards {
-        copy_rows(s, &mut sink)?;
+    match format {
+        SweepFormat::Csv => {
+            sink.write_all(header.as_bytes())
+                .with_context(|| format!("writing {name}"))?;
+            for s in &mut shards {
+                copy_rows(s, &mut sink, &name)?;
+            }
+        }
+        SweepFormat::Parquet => sink = to_parquet(&mut shards, &header, sink)?,
     }
     sink.commit().with_context(|| format!("writing {name}"))?;
     Ok(())
+}
+
+/// The sweep that the shards make up, run in one process writing to
+/// `output`: the command line `first` records (shard 0's), parsed, without
+/// its `--shard` and `--resume`, and with `output` for its `--output`.
+/// Every shard was checked to record the same grid and settings, so this
+/// sweep writes the rows of them all; its command line ([`command_line`])
+/// is the merged file's.
+///
+/// # Errors
+/// A command line that is not one of `snowroll sweep` (an edited header),
+/// named with the file.
+fn one_process(first: &Shard, output: Option<&Path>) -> Result<SweepArgs> {
+    let shown = first.path.display();
+    let line = (first.recorded.header.iter())
+        .find_map(|l| l.strip_prefix(COMMAND_KEY))
+        .ok_or_else(|| anyhow!("{shown}: its header has no `{}` line", COMMAND_KEY.trim()))?;
+    let bad = |why: String| anyhow!("{shown}: its command line `{line}` {why}");
+    let words = shell_words(line).map_err(|e| bad(format!("cannot be split into words: {e}")))?;
+    let parsed = Args::try_parse_from(&words).map_err(|e| {
+        let why = e.to_string();
+        bad(format!(
+            "does not parse: {}",
+            why.lines().next().unwrap_or_default()
+        ))
+    })?;
+    let Command::Sweep(mut sweep) = parsed.command else {
+        return Err(bad("is not a `snowroll sweep` command".into()));
+    };
+    sweep.shard = None;
+    sweep.resume = false;
+    sweep.output = output.map(Path::to_path_buf);
+    Ok(*sweep)
+}
+
+/// Writes `header` and the shards' rows as Parquet through `sink` (a
+/// regular file), the way `sweep` does: the CSV first, to a temporary file
+/// beside the output, then converted ([`super::parquet::write`]).
+#[cfg(feature = "parquet")]
+fn to_parquet(shards: &mut [Shard], header: &str, sink: Sink) -> Result<Sink> {
+    use crate::scratch::Scratch;
+    use crate::sink::parent_or_dot;
+    let Sink::Replace { target, .. } = &sink else {
+        bail!("Parquet output needs -o FILE (a regular file)");
+    };
+    let name = sink.name();
+    let (scratch, file) = Scratch::file_in(parent_or_dot(target), 0o600)
+        .with_context(|| format!("cannot write {name}"))?;
+    let csv_name = format!("the CSV for {name} ({})", scratch.path().display());
+    let mut csv = std::io::BufWriter::new(file);
+    csv.write_all(header.as_bytes())
+        .with_context(|| format!("writing {csv_name}"))?;
+    for s in shards.iter_mut() {
+        copy_rows(s, &mut csv, &csv_name)?;
+    }
+    csv.flush().with_context(|| format!("writing {csv_name}"))?;
+    let rows = File::open(scratch.path()).with_context(|| format!("reading {csv_name}"))?;
+    let sink = super::parquet::write(BufReader::new(rows), header, sink)
+        .with_context(|| format!("writing {name}"))?;
+    drop(scratch);
+    Ok(sink)
+}
+
+#[cfg(not(feature = "parquet"))]
+fn to_parquet(_: &mut [Shard], _: &str, _: Sink) -> Result<Sink> {
+    bail!("this snowroll was built without Parquet")
 }
 
 /// Checks, from the headers, that the shards (sorted by shard) are of one
@@ -166,11 +242,10 @@ fn check_tiling(shards: &[Shard]) -> Result<()> {
     Ok(())
 }
 
-/// Copies the rows of `s`, each checked ([`check_rows`]), and checks that
-/// they are all of its shard's rows.
-fn copy_rows(s: &mut Shard, out: &mut Sink) -> Result<()> {
+/// Copies the rows of `s` to `out` (`name` in messages), each checked
+/// ([`check_rows`]), and checks that they are all of its shard's rows.
+fn copy_rows(s: &mut Shard, out: &mut impl Write, name: &str) -> Result<()> {
     let shown = s.path.display().to_string();
-    let name = out.name();
     let rows = s.recorded.rows.clone();
     let end = check_rows(
         &mut s.reader,

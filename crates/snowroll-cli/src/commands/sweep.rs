@@ -91,7 +91,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
 /// The output format: `--format`, else Parquet for a FILE ending in
 /// `.parquet`, else CSV; refused when Parquet is asked of a build without
 /// it or of a stream (`to_file`: the output is a regular file).
-fn format_of(args: &SweepArgs, to_file: bool) -> Result<SweepFormat> {
+pub fn format_of(args: &SweepArgs, to_file: bool) -> Result<SweepFormat> {
     let format = args.format.unwrap_or_else(|| {
         let parquet = args
             .output
@@ -323,17 +323,13 @@ pub fn parse_shard(text: &str) -> Result<(u64, u64)> {
     Ok((i, n))
 }
 
-/// The `#` lines and the column names: everything a resumed run or a merge
-/// checks, plus the command line (which they do not): `recorded`, the one a
-/// `--config` file holds, when the run is that file's own; else `args`'.
-fn header(
-    args: &SweepArgs,
-    recorded: Option<&str>,
-    grid: &Grid,
-    shard: u64,
-    shards: u64,
-    range: &Range<u64>,
-) -> String {
+/// The command line a sweep with `args` records (`# command:`): `snowroll
+/// sweep`, then `--grid`, the axes, `--output`, `--method`, `--format` and
+/// `--shard` as given, each word quoted for a shell ([`shell_word`]), in
+/// this order whatever order they were typed in. `--resume`, `--quiet`,
+/// `--plot` and `--chunk-rows` are not recorded: the rows do not depend on
+/// them. `snowroll merge` writes the one of the sweep its shards make up.
+pub fn command_line(args: &SweepArgs) -> String {
     let mut command = String::from("snowroll sweep");
     if let Some(path) = &args.grid {
         command.push_str(&format!(
@@ -366,9 +362,21 @@ fn header(
     if let Some(s) = &args.shard {
         command.push_str(&format!(" --shard {}", shell_word(s)));
     }
-    if let Some(recorded) = recorded {
-        command = recorded.to_string();
-    }
+    command
+}
+
+/// The `#` lines and the column names: everything a resumed run or a merge
+/// checks, plus the command line (which they do not): `recorded`, the one a
+/// `--config` file holds, when the run is that file's own; else `args`'.
+fn header(
+    args: &SweepArgs,
+    recorded: Option<&str>,
+    grid: &Grid,
+    shard: u64,
+    shards: u64,
+    range: &Range<u64>,
+) -> String {
+    let command = recorded.map_or_else(|| command_line(args), str::to_string);
     let models: Vec<&str> = grid.models().iter().map(|m| m.id()).collect();
     let mut h = format!("# snowroll sweep, version {VERSION}\n{COMMAND_KEY}{command}\n");
     h.push_str(&format!("# model: {}\n", models.join(",")));
