@@ -10,7 +10,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{colour_slots, PALETTE};
 use super::ticks::AxisTicks;
-use super::{Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE};
+use super::{
+    Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE, NO_DATA,
+};
 
 /// The embedded font (DejaVu Sans, Bitstream Vera licence, see
 /// `assets/fonts/DejaVuSans-LICENSE.txt`).
@@ -72,6 +74,14 @@ impl Chart {
             y0 = y0.min(y);
             y1 = y1.max(y);
         }
+        if x0 > x1 {
+            // No point: empty axes over a unit range (a decade on a log axis).
+            let unit = |axis: &Axis| match axis.scale {
+                Scale::Linear => 0.0..1.0,
+                Scale::Log => 1.0..10.0,
+            };
+            return (unit(&self.x), unit(&self.y));
+        }
         (pad(&self.x, x0, x1), pad(&self.y, y0, y1))
     }
 
@@ -81,41 +91,7 @@ impl Chart {
     /// # Errors
     /// [`PlotError`] when the chart is invalid or drawing fails.
     pub fn render_svg(&self, provenance: &Provenance) -> Result<String, PlotError> {
-        self.validate()?;
-        register_embedded_font()?;
-        let mut svg = String::new();
-        let (w, h) = FIGURE_SIZE;
-        let k = SVG_OVERSAMPLE;
-        {
-            let root = SVGBackend::with_string(&mut svg, (w * k, h * k)).into_drawing_area();
-            self.draw(&root, provenance, f64::from(k), Part::Body)?;
-            root.present().map_err(|e| self.backend(e))?;
-        }
-        // The legend, drawn on its own canvas of the same size, goes into
-        // the figure as one group the browser test can find.
-        let mut legend = String::new();
-        {
-            let root = SVGBackend::with_string(&mut legend, (w * k, h * k)).into_drawing_area();
-            self.draw(&root, provenance, f64::from(k), Part::Legend)?;
-            root.present().map_err(|e| self.backend(e))?;
-        }
-        let svg = with_legend_group(&svg, &legend);
-        // Shown at FIGURE_SIZE, drawn in the oversampled viewBox; lines
-        // join and end round.
-        let svg = svg
-            .replacen(
-                &format!("width=\"{}\" height=\"{}\"", w * k, h * k),
-                &format!("width=\"{w}\" height=\"{h}\""),
-                1,
-            )
-            .replace(
-                "<polyline fill=\"none\"",
-                "<polyline fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"",
-            );
-        Ok(with_provenance_comment(
-            svg,
-            &[&self.name, &self.title, &provenance.line()],
-        ))
+        render_panels_svg(std::slice::from_ref(self), provenance)
     }
 
     /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
@@ -124,36 +100,7 @@ impl Chart {
     /// # Errors
     /// [`PlotError`] when the chart is invalid, drawing or encoding fails.
     pub fn render_png(&self, provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
-        self.validate()?;
-        register_embedded_font()?;
-        let (w, h) = png_size();
-        let mut rgb = vec![0_u8; w as usize * h as usize * 3];
-        {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-            self.draw(&root, provenance, PNG_SCALE, Part::Body)?;
-            self.draw(&root, provenance, PNG_SCALE, Part::Legend)?;
-            root.present().map_err(|e| self.backend(e))?;
-        }
-        let png_err = |e: png::EncodingError| PlotError::Png {
-            chart: self.name.clone(),
-            reason: e.to_string(),
-        };
-        let mut out = Vec::new();
-        {
-            let mut enc = png::Encoder::new(&mut out, w, h);
-            enc.set_color(png::ColorType::Rgb);
-            enc.set_depth(png::BitDepth::Eight);
-            enc.add_itxt_chunk("Software".into(), provenance.software.clone())
-                .map_err(png_err)?;
-            enc.add_itxt_chunk("Title".into(), self.title.clone())
-                .map_err(png_err)?;
-            enc.add_itxt_chunk("Comment".into(), provenance.line())
-                .map_err(png_err)?;
-            let mut writer = enc.write_header().map_err(png_err)?;
-            writer.write_image_data(&rgb).map_err(png_err)?;
-            writer.finish().map_err(png_err)?;
-        }
-        Ok(out)
+        render_panels_png(std::slice::from_ref(self), provenance)
     }
 
     fn backend(&self, e: impl fmt::Display) -> PlotError {
@@ -267,6 +214,15 @@ impl Chart {
         {
             self.draw_series(&mut chart, (i, PALETTE[slot % PALETTE.len()]), s, scale)?;
         }
+        if self.is_empty() {
+            // Nothing to draw: say so in the middle of the empty axes.
+            let plot = chart.plotting_area().strip_coord_spec();
+            let (pw, ph) = plot.dim_in_pixel();
+            let note = TextStyle::from(font(22.0).color(&RGBColor(90, 90, 90)))
+                .pos(Pos::new(HPos::Center, VPos::Center));
+            plot.draw_text(NO_DATA, &note, ((pw / 2) as i32, (ph / 2) as i32))
+                .map_err(|e| self.backend(e))?;
+        }
         Ok(())
     }
 
@@ -342,6 +298,125 @@ impl Chart {
         .map_err(|e| self.backend(e))?;
         Ok(())
     }
+}
+
+/// Renders `charts` as one SVG document, one panel of [`FIGURE_SIZE`]
+/// each, the first at the top: each with its title, axes, curves and legend
+/// column, the footer naming `provenance` under the last (and the first
+/// chart's name and title in the comment). One chart is the figure
+/// [`Chart::render_svg`] draws.
+///
+/// # Errors
+/// [`PlotError`] when a chart is invalid, there is none, or drawing fails.
+pub fn render_panels_svg(charts: &[Chart], provenance: &Provenance) -> Result<String, PlotError> {
+    let first = first_valid(charts)?;
+    register_embedded_font()?;
+    let n = charts.len() as u32;
+    let (w, h) = FIGURE_SIZE;
+    let k = SVG_OVERSAMPLE;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (w * k, h * k * n)).into_drawing_area();
+        draw_panels(charts, &root, provenance, f64::from(k), Part::Body)?;
+        root.present().map_err(|e| first.backend(e))?;
+    }
+    // The legends, drawn on a canvas of their own of the same size, go into
+    // the figure as one group the browser test can find.
+    let mut legend = String::new();
+    {
+        let root = SVGBackend::with_string(&mut legend, (w * k, h * k * n)).into_drawing_area();
+        draw_panels(charts, &root, provenance, f64::from(k), Part::Legend)?;
+        root.present().map_err(|e| first.backend(e))?;
+    }
+    let svg = with_legend_group(&svg, &legend);
+    // Shown at FIGURE_SIZE a panel, drawn in the oversampled viewBox;
+    // lines join and end round.
+    let svg = svg
+        .replacen(
+            &format!("width=\"{}\" height=\"{}\"", w * k, h * k * n),
+            &format!("width=\"{w}\" height=\"{}\"", h * n),
+            1,
+        )
+        .replace(
+            "<polyline fill=\"none\"",
+            "<polyline fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"",
+        );
+    Ok(with_provenance_comment(
+        svg,
+        &[&first.name, &first.title, &provenance.line()],
+    ))
+}
+
+/// Renders `charts` as one PNG image, panels stacked as in
+/// [`render_panels_svg`], [`PNG_SCALE`] times their size, recording
+/// `provenance` in `iTXt` chunks (`Software`, `Title`, `Comment`).
+///
+/// # Errors
+/// [`PlotError`] when a chart is invalid, there is none, drawing or encoding fails.
+pub fn render_panels_png(charts: &[Chart], provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
+    let first = first_valid(charts)?;
+    register_embedded_font()?;
+    let (w, h) = png_size();
+    let h = h * charts.len() as u32;
+    let mut rgb = vec![0_u8; w as usize * h as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+        draw_panels(charts, &root, provenance, PNG_SCALE, Part::Body)?;
+        draw_panels(charts, &root, provenance, PNG_SCALE, Part::Legend)?;
+        root.present().map_err(|e| first.backend(e))?;
+    }
+    let png_err = |e: png::EncodingError| PlotError::Png {
+        chart: first.name.clone(),
+        reason: e.to_string(),
+    };
+    let mut out = Vec::new();
+    {
+        let mut enc = png::Encoder::new(&mut out, w, h);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        enc.add_itxt_chunk("Software".into(), provenance.software.clone())
+            .map_err(png_err)?;
+        enc.add_itxt_chunk("Title".into(), first.title.clone())
+            .map_err(png_err)?;
+        enc.add_itxt_chunk("Comment".into(), provenance.line())
+            .map_err(png_err)?;
+        let mut writer = enc.write_header().map_err(png_err)?;
+        writer.write_image_data(&rgb).map_err(png_err)?;
+        writer.finish().map_err(png_err)?;
+    }
+    Ok(out)
+}
+
+/// The first of `charts`, once every one is valid.
+fn first_valid(charts: &[Chart]) -> Result<&Chart, PlotError> {
+    for c in charts {
+        c.validate()?;
+    }
+    charts.first().ok_or_else(|| PlotError::NoDrawablePoints {
+        chart: "figure".to_string(),
+    })
+}
+
+/// Draws `part` of each of `charts` in its band of `root`, one above the
+/// other; the footer with `provenance` under the last only.
+fn draw_panels<DB: DrawingBackend>(
+    charts: &[Chart],
+    root: &DrawingArea<DB, Shift>,
+    provenance: &Provenance,
+    scale: f64,
+    part: Part,
+) -> Result<(), PlotError> {
+    let bands = root.split_evenly((charts.len(), 1));
+    let none = Provenance::default();
+    for (i, (chart, band)) in charts.iter().zip(&bands).enumerate() {
+        let footer = if i + 1 == charts.len() {
+            provenance
+        } else {
+            &none
+        };
+        chart.draw(band, footer, scale, part)?;
+    }
+    Ok(())
 }
 
 /// Which part of a figure [`Chart::draw`] draws.
