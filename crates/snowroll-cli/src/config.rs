@@ -377,11 +377,13 @@ impl OutputArgs {
             format,
             output,
             config,
+            plot,
         } = self;
         OutputArgs {
             format: format.or(file.format),
             output: output.or_else(|| file.output.clone()),
             config,
+            plot,
         }
     }
 }

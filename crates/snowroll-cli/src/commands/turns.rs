@@ -11,6 +11,9 @@ use snowroll::{
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
+use snowroll_report::run_plot::{turn_panels, TurnCurves};
+
+use super::figure::{self, KeepTurns};
 use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::{TurnsArgs, TURNS_DEFAULT, TURNS_T_END_S};
 use crate::config;
@@ -32,6 +35,12 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         None => flags,
     };
     inputs::refuse_own_files(&args.output)?;
+    let plot = args
+        .output
+        .plot
+        .as_deref()
+        .map(|p| figure::plot_format(p).map(|f| (p, f)))
+        .transpose()?;
     let choices = turn_models();
     let model = inputs::model(&args.scenario, &choices)?;
     if !model.is_turn_model() {
@@ -76,7 +85,13 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as each turn ends; the stop, the notes and the summary are
     // written last.
-    let end = match run_turns_into(model, &scenario, &opts, &mut writer) {
+    let mut keep = KeepTurns {
+        inner: &mut writer,
+        kept: plot.map(|_| Vec::new()),
+    };
+    let run = run_turns_into(model, &scenario, &opts, &mut keep);
+    let kept = keep.kept.take();
+    let end = match run {
         Ok(end) => end,
         Err(SimError::Sink(e)) if !is_non_finite(&e) => {
             return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))
@@ -99,6 +114,12 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         report!("note: {note}");
     }
     report!("{}", summary(&end).trim_end());
+    if let (Some((path, format)), Some(rows)) = (plot, kept) {
+        let run = TurnCurves { model, rows: &rows };
+        let panels = turn_panels(&[run], scenario.g_along());
+        let prov = figure::provenance(&[model], &args.scenario.params.given);
+        figure::write(path, format, &panels, &prov)?;
+    }
     Ok(())
 }
 
