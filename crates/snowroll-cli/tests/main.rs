@@ -9,6 +9,7 @@ mod guards;
 mod inputs;
 mod output_files;
 mod paper;
+mod plot;
 mod reproduce;
 mod resume_merge;
 mod streaming;

@@ -444,7 +444,10 @@ _SCOPES = {"simulate": ("shared", "sampling", "turns"), "turns": ("turns", "shar
 
 def _keywords(function: str) -> List[Dict[str, Any]]:
     """The table's parameters that ``function`` takes, in its keyword order:
-    for turns() the turn count first, as its main setting."""
+    for turns() the turn count first, as its main setting; for models() the
+    scenario and the losses (the flags of ``snowroll models``)."""
+    if function == "models":
+        return [p for p in PARAMS if p["scope"] == "shared" and p["group"] in ("scenario", "losses")]
     scopes = _SCOPES[function]
     return sorted(
         (p for p in PARAMS if p["scope"] in scopes),
@@ -457,11 +460,11 @@ def _checked(function: str, params: Mapping[str, Any]) -> Dict[str, Any]:
     an unknown keyword or a wrong type raises ``TypeError`` and an
     out-of-range count ``ValueError``, each naming the keyword (the native
     module would raise ``TypeError`` or ``OverflowError`` without it)."""
-    allowed = _SCOPES[function]
+    allowed = {p["key"] for p in _keywords(function)}
     out = {}
     for k, v in params.items():
         p = _PARAM.get(k)
-        if p is None or p["scope"] not in allowed:
+        if p is None or k not in allowed:
             raise TypeError(f"{function}() got an unexpected keyword argument {k!r}")
         out[k] = _CHECK_OF_KIND[p["kind"]](k, v)
     return out
@@ -588,23 +591,35 @@ for _f, _model in ((simulate, "torque-cm"), (turns, "turns")):
     _f.__signature__ = _signature(_f.__name__, _model)  # type: ignore[attr-defined]
 
 
-def models(
-    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
-) -> List[Dict[str, Any]]:
+def models(**params: Any) -> List[Dict[str, Any]]:
     """Every model (the CLI's ``snowroll models``), one dict each.
 
     Keys: ``id``, ``alias`` (e.g. ``eq4``), ``equation`` (the note's equation
     number), ``description``, ``terminal_fraction`` (late-time acceleration
     over g sin alpha, e.g. 2/3 for eq. (4) with no snow, or ``None``),
     ``stall_slope_deg`` (the slope below which the model started from rest
-    does not roll on, fn. 7, for ``snow_depth`` and ``r0``, by default the
-    default scenario's 0.01 m and 0.1 m; ``None`` when it always rolls),
-    ``stall_kind`` (``"does-not-start"`` or ``"stalls-in-first-turn"``),
-    ``validity`` (order in b/r kept, largest b/r0 without a warning, statement).
+    does not roll on, fn. 7, for the body, snow and losses of the keywords,
+    by default the log of the default scenario without losses; ``None`` when
+    it always rolls, or does not take that body or those losses: the turn
+    models take the log only, and no losses), ``stall_kind``
+    (``"does-not-start"`` or ``"stalls-in-first-turn"``), ``validity``
+    (order in b/r kept, largest b/r0 without a warning, statement).
     """
-    return _snowroll.models(
-        snow_depth=_number("snow_depth", snow_depth), r0=_number("r0", r0)
-    )
+    return _snowroll.models(**_checked("models", params))
+
+
+models.__doc__ = (models.__doc__ or "") + _param_doc("models")
+models.__signature__ = _inspect.Signature(  # type: ignore[attr-defined]
+    [
+        _inspect.Parameter(
+            p["key"],
+            _inspect.Parameter.KEYWORD_ONLY,
+            default=False if p["kind"] == "flag" else None,
+            annotation=_TYPE_OF_KIND[p["kind"]],
+        )
+        for p in _keywords("models")
+    ]
+)
 
 
 # `snowroll.dask.sweep`: a sweep as a dask.dataframe (imports dask only when
