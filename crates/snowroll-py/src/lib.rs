@@ -169,12 +169,7 @@ fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
             Scope::Record => "record",
         };
         d.set_item("scope", scope)?;
-        let group = match p.group {
-            snowroll::params::Group::Scenario => "scenario",
-            snowroll::params::Group::Run => "run",
-            snowroll::params::Group::Losses => "losses",
-        };
-        d.set_item("group", group)?;
+        d.set_item("group", format!("{:?}", p.group).to_lowercase())?;
         d.set_item("applies", p.applies.to_string())?;
         d.set_item("aliases", p.aliases.to_vec())?;
         list.append(d)?;

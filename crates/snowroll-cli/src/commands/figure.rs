@@ -45,6 +45,18 @@ pub fn plot_format(path: &Path) -> Result<PlotFormat> {
     }
 }
 
+/// The figure `out` asks for (`--plot`), with its format, checked before
+/// the run; `None` without `--plot`.
+///
+/// # Errors
+/// A name that does not end in `.svg` or `.png`.
+pub fn planned(out: &OutputArgs) -> Result<Option<(&Path, PlotFormat)>> {
+    out.plot
+        .as_deref()
+        .map(|p| plot_format(p).map(|f| (p, f)))
+        .transpose()
+}
+
 /// Who drew the figure: the program, the models and every parameter flag
 /// given (the rest are the defaults, which the run's output records).
 pub fn provenance(models: &[ModelKind], given: &Given) -> Provenance {

@@ -27,12 +27,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         None => flags,
     };
     inputs::refuse_own_files(&args.output)?;
-    let plot = args
-        .output
-        .plot
-        .as_deref()
-        .map(|p| figure::plot_format(p).map(|f| (p, f)))
-        .transpose()?;
+    let plot = figure::planned(&args.output)?;
     let (model, scenario, opts) = prepare(&args)?;
     let runner = model.build();
     let format = inputs::format(&args.output)?;

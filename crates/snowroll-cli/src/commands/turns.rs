@@ -6,8 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, Sampling,
-    SimError, StopReason, TurnRunEnd, TurnSummary,
+    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, ModelKind,
+    Sampling, SimError, StopReason, TurnRunEnd, TurnSummary,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -35,26 +35,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         None => flags,
     };
     inputs::refuse_own_files(&args.output)?;
-    let plot = args
-        .output
-        .plot
-        .as_deref()
-        .map(|p| figure::plot_format(p).map(|f| (p, f)))
-        .transpose()?;
-    let choices = turn_models();
-    let model = inputs::model(&args.scenario, &choices)?;
-    if !model.is_turn_model() {
-        bail!(
-            "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
-            id_list(&choices),
-            choices
-                .iter()
-                .map(|k| k.alias())
-                .collect::<Vec<_>>()
-                .join(", "),
-            model.id()
-        );
-    }
+    let plot = figure::planned(&args.output)?;
+    let model = turn_model(&args)?;
     let scenario = inputs::scenario(&args.scenario)?;
     let wanted = args.turns.unwrap_or(TURNS_DEFAULT);
     // Only the turn ends are recorded, whatever the sampling.
@@ -115,12 +97,30 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     }
     report!("{}", summary(&end).trim_end());
     if let (Some((path, format)), Some(rows)) = (plot, kept) {
-        let run = TurnCurves { model, rows: &rows };
-        let panels = turn_panels(&[run], scenario.g_along());
+        let panels = turn_panels(&[TurnCurves { model, rows: &rows }], scenario.g_along());
         let prov = figure::provenance(&[model], &args.scenario.params.given);
         figure::write(path, format, &panels, &prov)?;
     }
     Ok(())
+}
+
+/// The turn model asked for; any other model is refused, naming the turn models.
+fn turn_model(args: &TurnsArgs) -> Result<ModelKind> {
+    let choices = turn_models();
+    let model = inputs::model(&args.scenario, &choices)?;
+    if !model.is_turn_model() {
+        bail!(
+            "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
+            id_list(&choices),
+            choices
+                .iter()
+                .map(|k| k.alias())
+                .collect::<Vec<_>>()
+                .join(", "),
+            model.id()
+        );
+    }
+    Ok(model)
 }
 
 /// One line for stderr when the run ended before the turns asked for.

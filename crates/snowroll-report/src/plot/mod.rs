@@ -17,14 +17,13 @@
 
 mod legend;
 mod map;
+mod panels;
 mod render;
 mod ticks;
 
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
-pub use render::{
-    png_size, register_embedded_font, render_panels_png, render_panels_svg, FIGURE_SIZE, PNG_SCALE,
-    SVG_OVERSAMPLE,
-};
+pub use panels::{render_panels_png, render_panels_svg};
+pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
 
