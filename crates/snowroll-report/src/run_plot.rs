@@ -146,9 +146,12 @@ fn ledger_panel(run: &RunCurves<'_>) -> Chart {
     chart
 }
 
+/// A per-turn acceleration of a turn row, m/s².
+type OfRow = fn(&TurnRow) -> f64;
+
 /// How each per-turn quantity of the first panel of [`turn_panels`] is
-/// drawn: name, style, value of a row over g sin α.
-const TURN_ACCELERATIONS: [(&str, Style, fn(&TurnRow) -> f64); 4] = [
+/// drawn: name, style, the acceleration of a row.
+const TURN_ACCELERATIONS: [(&str, Style, OfRow); 4] = [
     ("mean in the turn", Style::Line, |r| r.mean_a_turn_m_s2),
     ("mean with its collision", Style::Dashed, |r| {
         r.mean_a_with_collision_m_s2

@@ -218,7 +218,8 @@ impl Chart {
             // Nothing to draw: say so in the middle of the empty axes.
             let plot = chart.plotting_area().strip_coord_spec();
             let (pw, ph) = plot.dim_in_pixel();
-            let note = TextStyle::from(font(22.0).color(&RGBColor(90, 90, 90)))
+            let note = font(22.0)
+                .color(&RGBColor(90, 90, 90))
                 .pos(Pos::new(HPos::Center, VPos::Center));
             plot.draw_text(NO_DATA, &note, ((pw / 2) as i32, (ph / 2) as i32))
                 .map_err(|e| self.backend(e))?;
