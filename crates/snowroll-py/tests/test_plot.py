@@ -92,3 +92,14 @@ def test_without_matplotlib_the_message_says_how_to_install_it(monkeypatch):
     monkeypatch.setattr(builtins, "__import__", no_matplotlib)
     with pytest.raises(ImportError, match="pip install matplotlib"):
         snowroll.simulate(t_end=1).plot()
+
+
+def test_several_models_stack_in_one_frame_with_a_model_column():
+    pd = pytest.importorskip("pandas")
+    rs = snowroll.simulate(model=["eq4", "eq14"], times=[0.0, 1.0, 2.0])
+    frame = rs.to_pandas()
+    assert list(frame.columns[:2]) == ["model", "t_s"]
+    assert frame["model"].tolist() == ["torque-cm"] * 3 + ["energy"] * 3
+    energy = frame[frame["model"] == "energy"]
+    assert np.array_equal(energy["v_m_s"].to_numpy(), rs[1].v_m_s)
+    assert isinstance(frame, pd.DataFrame)
