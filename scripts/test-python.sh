@@ -25,6 +25,10 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
     "maturin==1.16.0" "pytest==8.4.2" "numpy==2.3.4"
+# matplotlib for the tests of result.plot() (issue 22; not a dependency of
+# the package).
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check \
+    "matplotlib==3.10.7"
 # Dask (scheduler, worker processes, dask.dataframe) with pandas and pyarrow,
 # so that the tests on a real LocalCluster and of snowroll.dask run (issue
 # 24); pip does nothing when they are installed.

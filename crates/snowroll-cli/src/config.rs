@@ -34,8 +34,8 @@ mod readback;
 /// The keys of a config file: every long flag of `simulate` and `turns`
 /// except `--config` itself, in snake_case; the flag's own spelling and the
 /// parameter names of earlier outputs are aliases. The parameters are those
-/// of the table ([`snowroll::params`]); `model`, `format` and `output` are
-/// the command's own.
+/// of the table ([`snowroll::params`]); `model`, `format`, `output` and
+/// `plot` are the command's own.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ConfigFile {
     model: Option<ModelKind>,
@@ -43,6 +43,7 @@ pub struct ConfigFile {
     given: Given,
     format: Option<Format>,
     output: Option<PathBuf>,
+    plot: Option<PathBuf>,
 }
 
 /// Every key a config file may have, with its aliases (for the message
@@ -59,7 +60,7 @@ fn known_keys() -> &'static [&'static str] {
                     .map(|n| &*Box::leak(n.into_boxed_str())),
             );
         }
-        keys.extend(["format", "output"]);
+        keys.extend(["format", "output", "plot"]);
         keys
     })
 }
@@ -75,6 +76,7 @@ enum Key {
     Model,
     Format,
     Output,
+    Plot,
     Param(&'static Param),
 }
 
@@ -91,6 +93,7 @@ impl<'de> DeserializeSeed<'de> for KeySeed {
             "model" => Key::Model,
             "format" => Key::Format,
             "output" => Key::Output,
+            "plot" => Key::Plot,
             k => Key::Param(
                 Param::find(k)
                     .filter(|p| p.settable())
@@ -143,6 +146,7 @@ impl<'de> Visitor<'de> for ConfigVisitor {
                 Key::Model => file.model = Some(map.next_value::<AnyCase<ModelKind>>()?.0),
                 Key::Format => file.format = Some(map.next_value::<AnyCase<Format>>()?.0),
                 Key::Output => file.output = Some(map.next_value()?),
+                Key::Plot => file.plot = Some(map.next_value()?),
                 Key::Param(p) if file.given.get(p).is_some() => {
                     return Err(A::Error::duplicate_field(p.key))
                 }
@@ -377,11 +381,13 @@ impl OutputArgs {
             format,
             output,
             config,
+            plot,
         } = self;
         OutputArgs {
             format: format.or(file.format),
             output: output.or_else(|| file.output.clone()),
             config,
+            plot: plot.or_else(|| file.plot.clone()),
         }
     }
 }

@@ -10,6 +10,7 @@ mod inputs;
 mod merge_bytes;
 mod output_files;
 mod paper;
+mod plot;
 mod reproduce;
 mod resume_merge;
 #[cfg(feature = "serve")]

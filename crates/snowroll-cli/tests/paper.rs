@@ -230,3 +230,25 @@ fn paper_strict_fails_on_an_unexpected_verdict_but_still_writes_the_report() {
         .stderr(predicate::str::contains("--strict").and(predicate::str::contains("inconclusive")));
     assert!(out.join("report.html").is_file());
 }
+
+/// Issue 22, item 5: at 85° no turn of the turn model completes, and the
+/// figures of per-turn means had nothing to draw: `paper` failed on an
+/// empty chart. It now succeeds, and each such figure says so. (1°, and
+/// snow as deep as the radius, run in `scripts/paper-extremes.sh`: each
+/// `paper` takes most of a minute in a debug build.)
+#[test]
+fn regression_22_paper_succeeds_at_a_steep_slope_with_empty_figures() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report");
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--turns", "10", "--alpha-deg", "85"])
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .success();
+    let means = fs::read_to_string(out.join("figures/turns-long-run-means.svg")).unwrap();
+    assert!(means.contains(snowroll_report::plot::NO_DATA));
+    // The figures with data carry no such note.
+    let speed = fs::read_to_string(out.join("figures/speed-all-models.svg")).unwrap();
+    assert!(!speed.contains(snowroll_report::plot::NO_DATA));
+}

@@ -87,7 +87,11 @@ fn sim_error(e: SimError) -> PyErr {
 /// parameter of `scopes`, its value converted to the parameter's kind;
 /// `None` leaves the default. `function` names the call in the message for
 /// an unknown keyword, as Python itself would.
-fn given(function: &str, scopes: &[Scope], kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Given> {
+pub(crate) fn given(
+    function: &str,
+    scopes: &[Scope],
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Given> {
     let mut given = Given::new();
     let Some(kwargs) = kwargs else {
         return Ok(given);
@@ -131,7 +135,8 @@ fn inputs(given: &Given, base: Settings) -> PyResult<(Scenario, SimOptions)> {
 
 /// The parameter table, one dict per parameter: `key`, `kind`, `choices`,
 /// `unit`, `range`, `help`, `default` (the value, `None` when off),
-/// `default_text` (as `--help` shows it), `scope`, `applies`, `aliases`.
+/// `default_text` (as `--help` shows it), `scope`, `group` (`scenario`,
+/// `run`, `losses`), `applies`, `aliases`.
 /// The Python layer builds its keyword checks, signatures, docstrings and
 /// stub from it.
 fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
@@ -164,6 +169,7 @@ fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
             Scope::Record => "record",
         };
         d.set_item("scope", scope)?;
+        d.set_item("group", format!("{:?}", p.group).to_lowercase())?;
         d.set_item("applies", p.applies.to_string())?;
         d.set_item("aliases", p.aliases.to_vec())?;
         list.append(d)?;

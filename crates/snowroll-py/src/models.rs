@@ -3,29 +3,45 @@
 
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use snowroll::{ModelKind, Scenario, ScenarioFile};
+use snowroll::params::{Group, Scope};
+use snowroll::{Given, ModelKind, Scenario, Settings};
 
-use crate::{record, value_error};
+use crate::{given, record, value_error};
+
+/// The keywords of `models()`: the table's shared parameters of the
+/// scenario and the losses (`snowroll models`' flags); any other is a
+/// `TypeError`, as Python raises for an unknown keyword.
+fn body_given(params: Option<&Bound<'_, PyDict>>) -> PyResult<Given> {
+    let all = given("models", &[Scope::Shared], params)?;
+    let mut out = Given::new();
+    for (p, v) in all.iter() {
+        if !matches!(p.group, Group::Scenario | Group::Losses) {
+            return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                "models() got an unexpected keyword argument '{}'",
+                p.key
+            )));
+        }
+        out.insert(p, v.clone());
+    }
+    Ok(out)
+}
 
 /// Every model: id, alias, equation, description, terminal fraction
-/// a_inf/(g sin alpha), stall slope (degrees) and stall kind for the given
-/// snow depth and radius (default: the default scenario's), validity.
+/// a_inf/(g sin alpha), stall slope (degrees) and stall kind for the body,
+/// slope and losses of the keywords (the scenario and loss parameters of the
+/// table, as `snowroll models` takes them; the defaults where none is
+/// given: the log without losses), validity.
 #[pyfunction]
-#[pyo3(signature = (*, snow_depth = None, r0 = None))]
+#[pyo3(signature = (**params))]
 pub(crate) fn models<'py>(
     py: Python<'py>,
-    snow_depth: Option<f64>,
-    r0: Option<f64>,
+    params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyList>> {
-    let d = ScenarioFile::default();
-    // Validates b and r0 as a scenario does.
-    let scenario = Scenario::new(ScenarioFile {
-        snow_depth: snow_depth.unwrap_or(d.snow_depth),
-        r0: r0.unwrap_or(d.r0),
-        ..d
-    })
-    .map_err(value_error)?;
-    let (b, r0) = (scenario.snow_depth(), scenario.initial_radius());
+    let given = body_given(params)?;
+    let settings = given.apply(Settings::default()).map_err(value_error)?;
+    let (file, losses) = (settings.scenario, settings.options.losses);
+    losses.validate().map_err(value_error)?;
+    let scenario = Scenario::new(file).map_err(value_error)?;
     let list = PyList::empty(py);
     for kind in ModelKind::ALL {
         let row = PyDict::new(py);
@@ -36,7 +52,7 @@ pub(crate) fn models<'py>(
         row.set_item("terminal_fraction", kind.terminal_fraction())?;
         let shapes: Vec<&str> = kind.shapes().iter().map(|s| s.id()).collect();
         row.set_item("shapes", shapes)?;
-        let stall = kind.stall_threshold(b, r0);
+        let stall = kind.stall_threshold_listed(&scenario, &losses);
         row.set_item("stall_slope_deg", stall.map(|t| t.slope.to_degrees()))?;
         let stall_kind = match stall {
             Some(t) => Some(record(py, &t.kind)?),

@@ -69,6 +69,41 @@ def test_models_listing():
         snowroll.models(r0=-1)
 
 
+# The ball's stall slope of eq. (14) from its closed form to the float's
+# last bits: both are one arctangent of the same sum.
+BALL_STALL_TOL = 1e-12
+
+
+@pytest.mark.parametrize("b, r0", [(0.01, 0.1), (0.03, 0.2), (0.002, 0.05)])
+def test_models_stall_slope_of_the_ball_is_the_closed_form(b, r0):
+    """Issue 22: models() takes the body keywords. The energy model's ball
+    (swath 2r) does not start below tan a* = 2b/(pi r0) + 3b^2/(4 pi r0^2);
+    the log of the same b, r0 has another threshold."""
+    want = math.degrees(math.atan(2 * b / (math.pi * r0) + 3 * b * b / (4 * math.pi * r0 * r0)))
+    ball = {m["id"]: m for m in snowroll.models(shape="sphere", snow_depth=b, r0=r0)}
+    log = {m["id"]: m for m in snowroll.models(snow_depth=b, r0=r0)}
+    assert ball["energy"]["stall_slope_deg"] == pytest.approx(want, rel=BALL_STALL_TOL)
+    assert log["energy"]["stall_slope_deg"] != pytest.approx(want, rel=1e-3)
+    # The turn models take the log only: no stall slope for a ball.
+    assert ball["turns"]["stall_slope_deg"] is None
+    assert log["turns"]["stall_slope_deg"] is not None
+
+
+def test_models_takes_the_losses_and_refuses_other_keywords():
+    """Rolling resistance raises every circular model's stall slope; the
+    turn models take no losses, so they list none; a run keyword (t_end) or
+    an unknown one is a TypeError naming it."""
+    plain = {m["id"]: m for m in snowroll.models()}
+    lossy = {m["id"]: m for m in snowroll.models(rolling_resistance=0.05)}
+    assert lossy["energy"]["stall_slope_deg"] > plain["energy"]["stall_slope_deg"]
+    assert lossy["turns"]["stall_slope_deg"] is None
+    for bad in ({"t_end": 5.0}, {"slope": 3.0}):
+        with pytest.raises(TypeError, match=next(iter(bad))):
+            snowroll.models(**bad)
+    with pytest.raises(TypeError, match="shape"):
+        snowroll.models(shape=3)
+
+
 def test_turns_summary():
     t = snowroll.turns(turns=20)
     assert len(t) == 20 and t.turn.tolist() == list(range(20))

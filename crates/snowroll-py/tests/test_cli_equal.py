@@ -163,3 +163,16 @@ def test_models_equal_cli(cli):
     for a, b in zip(ours, listed):
         for key in ("alias", "equation", "description", "terminal_fraction", "stall_slope_deg", "stall_kind", "validity"):
             assert a[key] == b[key], (a["id"], key)
+
+
+def test_models_with_a_body_and_losses_equal_cli(cli):
+    """Issue 22: models() takes the flags of `snowroll models` and lists the
+    same stall slopes, to the bit."""
+    flags = ["--shape", "sphere", "--snow-depth", "0.02", "--r0", "0.15", "--rolling-resistance", "0.01"]
+    stdout, _ = run_cli(cli, "models", "--format", "json", *flags)
+    listed = json.loads(stdout)["models"]
+    ours = snowroll.models(shape="sphere", snow_depth=0.02, r0=0.15, rolling_resistance=0.01)
+    assert any(m["stall_slope_deg"] is not None for m in ours)
+    for a, b in zip(ours, listed):
+        assert a["stall_slope_deg"] == b["stall_slope_deg"], a["id"]
+        assert a["stall_kind"] == b["stall_kind"], a["id"]

@@ -52,6 +52,7 @@ mod markup;
 pub mod notation;
 mod paper;
 pub mod plot;
+pub mod run_plot;
 mod snowball;
 
 pub use animation::{Animation, Frame};

@@ -168,33 +168,66 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
 /// The chart of the ledger figure: each term of [`TERMS`] and their sum as
 /// shares of the released energy, against time; `rows` are (t in s, ledger).
 fn ledger_chart(rows: &[(f64, &LedgerRow)]) -> Chart {
-    let share = |f: &dyn Fn(&LedgerRow) -> f64| -> Vec<(f64, f64)> {
-        rows.iter()
-            .map(|(t, l)| (*t, f(l) / l.released_j))
-            .collect()
-    };
     let mut chart = Chart::new(
         "losses-ledger-shares",
         "Where the released energy goes: the log of eq. (4) with all three losses",
         Axis::log("time t", "s").column("t_s"),
         Axis::linear("share of the potential energy released", "1").column("share"),
     );
-    for term in &TERMS {
+    for series in ledger_series(rows, false) {
+        chart = chart.with_series(series);
+    }
+    chart
+}
+
+/// The terms of the ledger a turn model adds (§3.2): the collisions'
+/// losses, and the energy the note's collision creates (drawn negative: it
+/// is subtracted in the balance).
+const COLLISION_TERMS: [Term; 2] = [
+    Term {
+        name: "collisions",
+        of: |l| l.collision_j,
+        style: Style::LongDashed,
+        marker: Some(Marker::Circle),
+    },
+    Term {
+        name: "created by the collisions (−)",
+        of: |l| -l.created_j,
+        style: Style::Dotted,
+        marker: Some(Marker::Triangle),
+    },
+];
+
+/// Each term of [`TERMS`] (and of [`COLLISION_TERMS`] when `collisions`)
+/// as a share of the released energy against time, then their sum
+/// ([`SUM_NAME`], markers); `rows` are (t in s, ledger).
+pub(super) fn ledger_series(rows: &[(f64, &LedgerRow)], collisions: bool) -> Vec<Series> {
+    let terms: Vec<&Term> = TERMS
+        .iter()
+        .chain(COLLISION_TERMS.iter().filter(|_| collisions))
+        .collect();
+    let share = |f: &dyn Fn(&LedgerRow) -> f64| -> Vec<(f64, f64)> {
+        rows.iter()
+            .map(|(t, l)| (*t, f(l) / l.released_j))
+            .collect()
+    };
+    let mut out = Vec::with_capacity(terms.len() + 1);
+    for term in &terms {
         let mut series = Series::new(term.name, share(&term.of)).style(term.style);
         if let Some(m) = term.marker {
             series = series.marker(m);
         }
-        chart = chart.with_series(series);
+        out.push(series);
     }
-    chart = chart.with_series(
+    out.push(
         Series::new(
             SUM_NAME,
-            share(&|l| TERMS.iter().map(|term| (term.of)(l)).sum()),
+            share(&|l| terms.iter().map(|term| (term.of)(l)).sum()),
         )
         .style(Style::Markers)
         .marker(Marker::Circle),
     );
-    chart
+    out
 }
 
 /// End of the speed figure's runs, s (as the other figures against time).

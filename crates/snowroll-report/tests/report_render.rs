@@ -11,7 +11,7 @@ use std::path::Path;
 
 use snowroll::{ModelKind, Sampling, Scenario, ScenarioFile, SimOptions, Trajectory};
 use snowroll_io::VERSION;
-use snowroll_report::plot::{png_size, Axis, Chart, PlotError, Provenance, Series, Style};
+use snowroll_report::plot::{png_size, Axis, Chart, PlotError, Provenance, Series, Style, NO_DATA};
 use snowroll_report::{
     figure_csv, Animation, Claim, ClaimId, ClaimResult, Criterion, Figure, Metadata, Report,
     ReportError, Tolerance, Verdict,
@@ -221,14 +221,54 @@ fn a_chart_missing_a_unit_or_data_is_refused() {
             ..
         })
     ));
+}
+
+/// A scenario in which a quantity never arises (no turn completed at 85°,
+/// say) gives a chart with no series or no point an axis can show: it is
+/// drawn as empty axes that say so, in both formats, not refused.
+#[test]
+fn a_chart_with_nothing_to_draw_says_so() {
     let empty = Chart::new("c", "T", Axis::linear("x", "m"), Axis::linear("y", "m"));
-    assert!(matches!(empty.validate(), Err(PlotError::NoSeries { .. })));
     let nothing_positive = Chart::new("c", "T", Axis::linear("x", "m"), Axis::log("y", "m"))
         .with_series(Series::new("s", vec![(1.0, 0.0), (2.0, -1.0)]));
-    assert!(matches!(
-        nothing_positive.validate(),
-        Err(PlotError::NoDrawablePoints { .. })
-    ));
+    let nan = Chart::new("c", "T", Axis::linear("x", "m"), Axis::linear("y", "m")).with_series(
+        Series::new("s", vec![(f64::NAN, 1.0), (1.0, f64::INFINITY)]),
+    );
+    for chart in [&empty, &nothing_positive, &nan] {
+        assert!(chart.is_empty());
+        let svg = chart.render_svg(&provenance()).unwrap();
+        assert!(svg.contains(NO_DATA), "no note in {svg}");
+        // Nothing plotted: no curve and no marker.
+        // (The legend's keys are lines too: only the plot is searched.)
+        let body = svg.split("<g class=\"legend\">").next().unwrap();
+        let drawn = body
+            .split("<polyline")
+            .skip(1)
+            .filter(|p| {
+                // A curve is 2 px wide (8 in the 4× viewBox), an axis or tick 1.
+                let attr = |k: &str| {
+                    let from = p.find(&format!("{k}=\"")).unwrap() + k.len() + 2;
+                    p[from..].split('"').next().unwrap().trim().to_string()
+                };
+                attr("stroke-width") == "8" && !attr("points").is_empty()
+            })
+            .count();
+        assert_eq!(drawn, 0, "a curve in {svg}");
+        assert!(!body.contains("<circle"));
+        assert!(chart
+            .render_png(&provenance())
+            .unwrap()
+            .starts_with(b"\x89PNG"));
+    }
+    // A chart with one drawable point is not empty, and carries no note.
+    let one = Chart::new("c", "T", Axis::linear("x", "m"), Axis::log("y", "m"))
+        .with_series(Series::new("s", vec![(1.0, 0.0), (2.0, 3.0)]));
+    assert!(!one.is_empty());
+    assert!(!one.render_svg(&provenance()).unwrap().contains(NO_DATA));
+}
+
+#[test]
+fn a_chart_with_a_bad_name_is_refused() {
     let bad_name = Chart::new("A b", "T", Axis::linear("x", "m"), Axis::linear("y", "m"))
         .with_series(Series::new("s", vec![(1.0, 1.0)]));
     assert!(matches!(

@@ -199,6 +199,10 @@ pub struct OutputArgs {
     /// Read settings from this file (one --config only); flags on the command line override it. A TOML file with one key per long flag (`alpha-deg = 25` or `alpha_deg = 25`), or a JSON or CSV output of snowroll, which reproduces that run
     #[arg(long, value_name = "FILE")]
     pub config: Option<PathBuf>,
+
+    /// Also draw the run as a figure (config key `plot`), SVG or PNG by the name's ending (.svg, .png): simulate: a/(g sin alpha), v and x against t, N and |F|/N, and the energy ledger as shares when the run records one (--ledger, or losses); turns: the per-turn means and extremes of a/(g sin alpha), the speed at each turn's start, the least N/(M g) of each turn. One curve per model. Written in full, then renamed into place
+    #[arg(long, value_name = "FILE.svg|FILE.png")]
+    pub plot: Option<PathBuf>,
 }
 
 /// Refuses a second `--config`: every other flag may be repeated (the last

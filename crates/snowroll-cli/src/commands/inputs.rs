@@ -87,8 +87,8 @@ pub fn format(out: &OutputArgs) -> Result<Format> {
     }
 }
 
-/// Refuses an output (`-o`, or the config's `output`) that is the run's
-/// `--config` file, however spelt.
+/// Refuses an output (`-o`, or the config's `output`, and `--plot`) that
+/// is the run's `--config` file or the other output, however spelt.
 pub fn refuse_own_files(out: &OutputArgs) -> Result<()> {
     let mut files = Vec::new();
     if let Some(config) = &out.config {
@@ -96,6 +96,9 @@ pub fn refuse_own_files(out: &OutputArgs) -> Result<()> {
     }
     if let Some(output) = &out.output {
         files.push(RunFile::output(output, "-o output"));
+    }
+    if let Some(plot) = &out.plot {
+        files.push(RunFile::output(plot, "--plot figure"));
     }
     refuse_clashes(&files)
 }

@@ -81,6 +81,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         format: None,
         output: args.output.clone(),
         config: None,
+        plot: None,
     };
     let mut sink = Sink::open(&out)?;
     let name = sink.name();

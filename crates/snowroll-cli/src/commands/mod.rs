@@ -1,6 +1,7 @@
 //! One module per subcommand; [`run`] dispatches. `inputs` turns the flags
 //! that `simulate` and `turns` share into library types.
 
+mod figure;
 mod inputs;
 mod merge;
 mod models;

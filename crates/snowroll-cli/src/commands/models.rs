@@ -80,14 +80,8 @@ fn listing(args: &ModelsArgs) -> Result<Listing> {
                 Ok(s) if shapes.contains(&Shape::Sphere) => kind.terminal_fraction_on(s),
                 _ => None,
             };
-            // A model that does not take this body (the turn models and a
-            // ball) or these losses (the turn models take none) has no
-            // stall slope for them.
-            let takes =
-                shapes.contains(&scenario.shape()) && !(kind.is_turn_model() && losses.any());
-            let stall = takes
-                .then(|| kind.stall_threshold_in(&scenario, &losses))
-                .flatten();
+            // None for a body or losses the model does not take.
+            let stall = kind.stall_threshold_listed(&scenario, &losses);
             Row {
                 id: kind.id(),
                 alias: kind.alias(),

@@ -7,6 +7,10 @@ use snowroll::{
 };
 use snowroll_io::{RunParams, TrajectoryWriter};
 
+use snowroll::trajectory::Collected;
+use snowroll_report::run_plot::{run_panels, RunCurves};
+
+use super::figure::{self, Keep};
 use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::SimulateArgs;
 use crate::config;
@@ -23,6 +27,7 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         None => flags,
     };
     inputs::refuse_own_files(&args.output)?;
+    let plot = figure::planned(&args.output)?;
     let (model, scenario, opts) = prepare(&args)?;
     let runner = model.build();
     let format = inputs::format(&args.output)?;
@@ -43,7 +48,13 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     let mut writer = TrajectoryWriter::new(&mut sink, format, model, &params)
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as they are computed; the stop and the notes are written last.
-    let end = match runner.simulate_into(&scenario, &opts, &mut writer) {
+    let mut keep = Keep {
+        inner: &mut writer,
+        kept: plot.map(|_| Collected::default()),
+    };
+    let run = runner.simulate_into(&scenario, &opts, &mut keep);
+    let kept = keep.kept.take();
+    let end = match run {
         Ok(end) => end,
         Err(SimError::Sink(e)) if !is_non_finite(&e) => {
             return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))
@@ -69,6 +80,16 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
         .with_context(|| format!("writing {name}"))?;
     for note in &params.notes {
         report!("note: {note}");
+    }
+    if let (Some((path, format)), Some(kept)) = (plot, kept) {
+        let run = RunCurves {
+            model,
+            samples: &kept.samples,
+            ledger: &kept.ledger,
+        };
+        let panels = run_panels(&[run], scenario.g_along());
+        let prov = figure::provenance(&[model], &args.scenario.params.given);
+        figure::write(path, format, &panels, &prov)?;
     }
     Ok(())
 }

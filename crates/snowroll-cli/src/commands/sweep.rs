@@ -66,6 +66,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         format: None,
         output: args.output.clone(),
         config: None,
+        plot: None,
     };
     let sink = Sink::open(&out)?;
     let partial_path = match &sink {

@@ -106,6 +106,7 @@ pub fn draw(plan: Plan, grid: &Grid, csv: impl Read, path: &Path) -> Result<()> 
         format: None,
         output: Some(path.to_path_buf()),
         config: None,
+        plot: None,
     })?;
     let name = sink.name();
     std::io::Write::write_all(&mut sink, svg.as_bytes())

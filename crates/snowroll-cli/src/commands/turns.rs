@@ -6,11 +6,14 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, Sampling,
-    SimError, StopReason, TurnRunEnd, TurnSummary,
+    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, ModelKind,
+    Sampling, SimError, StopReason, TurnRunEnd, TurnSummary,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
+use snowroll_report::run_plot::{turn_panels, TurnCurves};
+
+use super::figure::{self, KeepTurns};
 use super::inputs::{self, id_list, is_non_finite, turn_models};
 use crate::args::{TurnsArgs, TURNS_DEFAULT, TURNS_T_END_S};
 use crate::config;
@@ -32,20 +35,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         None => flags,
     };
     inputs::refuse_own_files(&args.output)?;
-    let choices = turn_models();
-    let model = inputs::model(&args.scenario, &choices)?;
-    if !model.is_turn_model() {
-        bail!(
-            "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
-            id_list(&choices),
-            choices
-                .iter()
-                .map(|k| k.alias())
-                .collect::<Vec<_>>()
-                .join(", "),
-            model.id()
-        );
-    }
+    let plot = figure::planned(&args.output)?;
+    let model = turn_model(&args)?;
     let scenario = inputs::scenario(&args.scenario)?;
     let wanted = args.turns.unwrap_or(TURNS_DEFAULT);
     // Only the turn ends are recorded, whatever the sampling.
@@ -76,7 +67,13 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as each turn ends; the stop, the notes and the summary are
     // written last.
-    let end = match run_turns_into(model, &scenario, &opts, &mut writer) {
+    let mut keep = KeepTurns {
+        inner: &mut writer,
+        kept: plot.map(|_| Vec::new()),
+    };
+    let run = run_turns_into(model, &scenario, &opts, &mut keep);
+    let kept = keep.kept.take();
+    let end = match run {
         Ok(end) => end,
         Err(SimError::Sink(e)) if !is_non_finite(&e) => {
             return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))
@@ -99,7 +96,31 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         report!("note: {note}");
     }
     report!("{}", summary(&end).trim_end());
+    if let (Some((path, format)), Some(rows)) = (plot, kept) {
+        let panels = turn_panels(&[TurnCurves { model, rows: &rows }], scenario.g_along());
+        let prov = figure::provenance(&[model], &args.scenario.params.given);
+        figure::write(path, format, &panels, &prov)?;
+    }
     Ok(())
+}
+
+/// The turn model asked for; any other model is refused, naming the turn models.
+fn turn_model(args: &TurnsArgs) -> Result<ModelKind> {
+    let choices = turn_models();
+    let model = inputs::model(&args.scenario, &choices)?;
+    if !model.is_turn_model() {
+        bail!(
+            "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
+            id_list(&choices),
+            choices
+                .iter()
+                .map(|k| k.alias())
+                .collect::<Vec<_>>()
+                .join(", "),
+            model.id()
+        );
+    }
+    Ok(model)
 }
 
 /// One line for stderr when the run ended before the turns asked for.

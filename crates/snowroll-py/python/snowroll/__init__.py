@@ -27,11 +27,11 @@ from __future__ import annotations
 import inspect as _inspect
 import numbers as _numbers
 import warnings as _warnings
-from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as _np
 
-from . import _snowroll
+from . import _plot, _snowroll
 
 __version__: str = _snowroll.__version__
 
@@ -39,7 +39,7 @@ __version__: str = _snowroll.__version__
 #: may hold before it raises ``MemoryError``.
 MAX_MEMORY: int = _snowroll.MAX_MEMORY
 
-__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
+__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "Results", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
 
 
 class _Columns:
@@ -167,6 +167,13 @@ class Result(_Columns):
             f"stop {self.stop['reason']} at t_s = {self.stop['t_s']}>"
         )
 
+    def plot(self) -> Any:
+        """The run drawn as the CLI's ``simulate --plot`` draws it (needs
+        matplotlib, not a dependency): a/(g sin alpha), v, x, N and |F|/N
+        against t, and the energy ledger as shares when the run recorded it.
+        Returns the ``matplotlib.figure.Figure`` (``.savefig(path)``)."""
+        return _plot.plot_runs([self])
+
 
 class TurnResult(_Columns):
     """One row per turn: what :func:`turns` returns.
@@ -197,6 +204,42 @@ class TurnResult(_Columns):
             f"<snowroll.TurnResult {self.model} ({self.equation}): {len(self)} turns, "
             f"stop {self.stop['reason']}>"
         )
+
+    def plot(self) -> Any:
+        """The turns drawn as the CLI's ``turns --plot`` draws them (needs
+        matplotlib, not a dependency): per turn the means and extremes of
+        a/(g sin alpha), the start speed and the least N/(M g). Returns the
+        ``matplotlib.figure.Figure``."""
+        return _plot.plot_turns([self])
+
+
+class Results(list):  # type: ignore[type-arg]
+    """Several models' results of one scenario, in the order asked for: what
+    :func:`simulate` and :func:`turns` return for a list of models. A list of
+    :class:`Result` or :class:`TurnResult`; :meth:`plot` draws them in one
+    figure, one curve per model; :meth:`to_pandas` stacks their rows with a
+    ``model`` column first."""
+
+    def plot(self) -> Any:
+        """One figure, one curve per model in each panel (needs matplotlib)."""
+        if self and isinstance(self[0], TurnResult):
+            return _plot.plot_turns(self)
+        return _plot.plot_runs(self)
+
+    def to_pandas(self) -> Any:
+        """The rows of every result, in order, with a ``model`` column first
+        (needs pandas). Columns a model lacks (a turn model's ``turn``) are
+        missing values in the others' rows."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("to_pandas() needs pandas: pip install pandas") from e
+        frames = []
+        for r in self:
+            frame = r.to_pandas()
+            frame.insert(0, "model", pd.array([r.model] * len(frame), dtype="string"))
+            frames.append(frame)
+        return pd.concat(frames, ignore_index=True)
 
 
 class SweepResult(_Columns):
@@ -444,7 +487,10 @@ _SCOPES = {"simulate": ("shared", "sampling", "turns"), "turns": ("turns", "shar
 
 def _keywords(function: str) -> List[Dict[str, Any]]:
     """The table's parameters that ``function`` takes, in its keyword order:
-    for turns() the turn count first, as its main setting."""
+    for turns() the turn count first, as its main setting; for models() the
+    scenario and the losses (the flags of ``snowroll models``)."""
+    if function == "models":
+        return [p for p in PARAMS if p["scope"] == "shared" and p["group"] in ("scenario", "losses")]
     scopes = _SCOPES[function]
     return sorted(
         (p for p in PARAMS if p["scope"] in scopes),
@@ -457,11 +503,11 @@ def _checked(function: str, params: Mapping[str, Any]) -> Dict[str, Any]:
     an unknown keyword or a wrong type raises ``TypeError`` and an
     out-of-range count ``ValueError``, each naming the keyword (the native
     module would raise ``TypeError`` or ``OverflowError`` without it)."""
-    allowed = _SCOPES[function]
+    allowed = {p["key"] for p in _keywords(function)}
     out = {}
     for k, v in params.items():
         p = _PARAM.get(k)
-        if p is None or p["scope"] not in allowed:
+        if p is None or k not in allowed:
             raise TypeError(f"{function}() got an unexpected keyword argument {k!r}")
         out[k] = _CHECK_OF_KIND[p["kind"]](k, v)
     return out
@@ -481,7 +527,9 @@ def _param_doc(function: str) -> str:
 def _signature(function: str, model_default: str) -> _inspect.Signature:
     """The signature of ``function``: the model, then its keywords from the table."""
     P = _inspect.Parameter
-    params = [P("model", P.POSITIONAL_OR_KEYWORD, default=model_default, annotation=str)]
+    params = [
+        P("model", P.POSITIONAL_OR_KEYWORD, default=model_default, annotation="Union[str, Sequence[str]]")
+    ]
     for p in _keywords(function):
         default = False if p["kind"] == "flag" else None
         params.append(P(p["key"], P.KEYWORD_ONLY, default=default, annotation=_TYPE_OF_KIND[p["kind"]]))
@@ -494,7 +542,19 @@ def _warn(messages: Sequence[str]) -> None:
         _warnings.warn(m, RuntimeWarning, stacklevel=3)
 
 
-def simulate(model: str = "torque-cm", *, max_memory: int = MAX_MEMORY, **params: Any) -> Result:
+def _is_model_list(model: Any) -> bool:
+    """Whether ``model`` asks for several models: a list or tuple of ids
+    (each checked as one model is), not empty."""
+    if isinstance(model, (list, tuple)):
+        if not model:
+            raise ValueError("model: an empty list; give one model id or a list of them")
+        return True
+    return False
+
+
+def simulate(
+    model: Union[str, Sequence[str]] = "torque-cm", *, max_memory: int = MAX_MEMORY, **params: Any
+) -> Union[Result, "Results"]:
     """Integrate one model for one scenario (the CLI's ``snowroll simulate``).
 
     ``model``: an id or equation alias from :func:`models` (case-insensitive):
@@ -516,7 +576,10 @@ def simulate(model: str = "torque-cm", *, max_memory: int = MAX_MEMORY, **params
     closed-form v_t^2 = 2 M g sin alpha/(rho_a C_d A).
 
     Returns a :class:`Result`: columns as numpy arrays (``r.v_m_s`` or
-    ``r["v_m_s"]``), ``r.stop``, ``r.params``, ``r.version``, ``r.to_pandas()``.
+    ``r["v_m_s"]``), ``r.stop``, ``r.params``, ``r.version``, ``r.to_pandas()``,
+    ``r.plot()``. A list of models (``model=["eq4", "eq6"]``) runs each on
+    the same keywords and returns :class:`Results`, one :class:`Result` per
+    model in that order (``.plot()``: one figure, a curve per model).
     Validity warnings of the model (b/r0 beyond its range) are issued as
     ``RuntimeWarning`` and kept in ``r.warnings``.
 
@@ -528,6 +591,8 @@ def simulate(model: str = "torque-cm", *, max_memory: int = MAX_MEMORY, **params
     Raises ``ValueError`` for bad parameters (the library's message) and
     ``RuntimeError`` when the integration fails.
     """
+    if _is_model_list(model):
+        return Results(simulate(m, max_memory=max_memory, **params) for m in model)
     raw = _snowroll.simulate(
         _text("model", model),
         max_memory=_count("max_memory", max_memory),
@@ -538,7 +603,9 @@ def simulate(model: str = "torque-cm", *, max_memory: int = MAX_MEMORY, **params
     return result
 
 
-def turns(model: str = "turns", *, max_memory: int = MAX_MEMORY, **params: Any) -> TurnResult:
+def turns(
+    model: Union[str, Sequence[str]] = "turns", *, max_memory: int = MAX_MEMORY, **params: Any
+) -> Union[TurnResult, "Results"]:
     """Run a turn model of the note's §3 for ``turns`` full turns (default 100);
     one row per turn (the CLI's ``snowroll turns``).
 
@@ -561,6 +628,9 @@ def turns(model: str = "turns", *, max_memory: int = MAX_MEMORY, **params: Any) 
     earlier collisions removed, ``created_j`` what the note's eq. (89)
     created by lifting the log by b for free).
 
+    A list of models (``model=["turns", "turns-exact"]``) returns
+    :class:`Results`, one :class:`TurnResult` each.
+
     Returns a :class:`TurnResult`: one numpy array per column and ``summary``,
     the long-run means of a/(g sin alpha) whose value the note's
     eqs. (77)-(79) estimate as 4/9.
@@ -573,6 +643,8 @@ def turns(model: str = "turns", *, max_memory: int = MAX_MEMORY, **params: Any) 
     Raises ``ValueError`` for bad parameters or a model that is not a turn
     model, ``RuntimeError`` when the integration fails.
     """
+    if _is_model_list(model):
+        return Results(turns(m, max_memory=max_memory, **params) for m in model)
     raw = _snowroll.turns(
         _text("model", model),
         max_memory=_count("max_memory", max_memory),
@@ -588,23 +660,35 @@ for _f, _model in ((simulate, "torque-cm"), (turns, "turns")):
     _f.__signature__ = _signature(_f.__name__, _model)  # type: ignore[attr-defined]
 
 
-def models(
-    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
-) -> List[Dict[str, Any]]:
+def models(**params: Any) -> List[Dict[str, Any]]:
     """Every model (the CLI's ``snowroll models``), one dict each.
 
     Keys: ``id``, ``alias`` (e.g. ``eq4``), ``equation`` (the note's equation
     number), ``description``, ``terminal_fraction`` (late-time acceleration
     over g sin alpha, e.g. 2/3 for eq. (4) with no snow, or ``None``),
     ``stall_slope_deg`` (the slope below which the model started from rest
-    does not roll on, fn. 7, for ``snow_depth`` and ``r0``, by default the
-    default scenario's 0.01 m and 0.1 m; ``None`` when it always rolls),
-    ``stall_kind`` (``"does-not-start"`` or ``"stalls-in-first-turn"``),
-    ``validity`` (order in b/r kept, largest b/r0 without a warning, statement).
+    does not roll on, fn. 7, for the body, snow and losses of the keywords,
+    by default the log of the default scenario without losses; ``None`` when
+    it always rolls, or does not take that body or those losses: the turn
+    models take the log only, and no losses), ``stall_kind``
+    (``"does-not-start"`` or ``"stalls-in-first-turn"``), ``validity``
+    (order in b/r kept, largest b/r0 without a warning, statement).
     """
-    return _snowroll.models(
-        snow_depth=_number("snow_depth", snow_depth), r0=_number("r0", r0)
-    )
+    return _snowroll.models(**_checked("models", params))
+
+
+models.__doc__ = (models.__doc__ or "") + _param_doc("models")
+models.__signature__ = _inspect.Signature(  # type: ignore[attr-defined]
+    [
+        _inspect.Parameter(
+            p["key"],
+            _inspect.Parameter.KEYWORD_ONLY,
+            default=False if p["kind"] == "flag" else None,
+            annotation=_TYPE_OF_KIND[p["kind"]],
+        )
+        for p in _keywords("models")
+    ]
+)
 
 
 # `snowroll.dask.sweep`: a sweep as a dask.dataframe (imports dask only when

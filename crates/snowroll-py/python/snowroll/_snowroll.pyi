@@ -104,17 +104,33 @@ def turns(
     turn end, before its collision.
     """
 
+def models(
+    *,
+    alpha_deg: Optional[float] = None,
+    snow_depth: Optional[float] = None,
+    r0: Optional[float] = None,
+    g: Optional[float] = None,
+    density: Optional[float] = None,
+    length: Optional[float] = None,
+    v0: Optional[float] = None,
+    shape: Optional[str] = None,
+    swath_width: Optional[Union[float, str]] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    rolling_resistance: Optional[float] = None,
+    compaction_energy: Optional[float] = None,
+    ledger: bool = False,
+    terminal_tol: Optional[float] = None,
+) -> List[Dict[str, Any]]:
+    """Every model: ``id``, ``alias``, ``equation``, ``description``,
+    ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
+    and ``stall_kind`` (fn. 7) for the body, snow and losses of the
+    keywords, ``validity``."""
+
 MAX_MEMORY: int
 
 def grid_len(grid: Dict[str, Any]) -> int:
     """The number of points of ``grid`` (models × axes × settings)."""
-
-def models(
-    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
-) -> List[Dict[str, Any]]:
-    """Every model: ``id``, ``alias``, ``equation``, ``description``,
-    ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
-    and ``stall_kind`` (fn. 7) for ``snow_depth`` and ``r0``, ``validity``."""
 
 def sweep(
     grid: Dict[str, Any],

@@ -66,13 +66,6 @@ MAX_MEMORY: int
 def grid_len(grid: Dict[str, Any]) -> int:
     """The number of points of ``grid`` (models × axes × settings)."""
 
-def models(
-    *, snow_depth: Optional[float] = None, r0: Optional[float] = None
-) -> List[Dict[str, Any]]:
-    """Every model: ``id``, ``alias``, ``equation``, ``description``,
-    ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
-    and ``stall_kind`` (fn. 7) for ``snow_depth`` and ``r0``, ``validity``."""
-
 def sweep(
     grid: Dict[str, Any],
     *,
@@ -107,11 +100,28 @@ def _function(name: str, model_default: str, doc: str) -> List[str]:
     return lines + [doc.rstrip("\n"), ""]
 
 
+_MODELS_DOC = '''    """Every model: ``id``, ``alias``, ``equation``, ``description``,
+    ``terminal_fraction`` (late-time a/(g sin alpha)), ``stall_slope_deg``
+    and ``stall_kind`` (fn. 7) for the body, snow and losses of the
+    keywords, ``validity``."""
+'''
+
+
+def _models() -> List[str]:
+    lines = ["def models(", "    *,"]
+    for p in _keywords("models"):
+        default = "False" if p["kind"] == "flag" else "None"
+        lines.append(f"    {p['key']}: {_TYPE_OF_KIND[p['kind']]} = {default},")
+    lines.append(") -> List[Dict[str, Any]]:")
+    return lines + [_MODELS_DOC.rstrip("\n"), ""]
+
+
 def stub() -> str:
     """The text of ``_snowroll.pyi``."""
     lines = [_HEAD]
     lines += _function("simulate", "torque-cm", _SIMULATE_DOC)
     lines += _function("turns", "turns", _TURNS_DOC)
+    lines += _models()
     return "\n".join(lines) + _TAIL
 
 

@@ -107,6 +107,9 @@ impl Chart {
         area: &DrawingArea<DB, Shift>,
         scale: f64,
     ) -> Result<(), PlotError> {
+        if self.series.is_empty() {
+            return Ok(());
+        }
         let p = |v: f64| (v * scale).round() as i32;
         let (w, _) = area.dim_in_pixel();
         let rows = self.series.len() as f64;

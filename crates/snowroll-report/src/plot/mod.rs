@@ -17,10 +17,12 @@
 
 mod legend;
 mod map;
+mod panels;
 mod render;
 mod ticks;
 
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
+pub use panels::{render_panels_png, render_panels_svg};
 pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
@@ -55,14 +57,8 @@ pub enum PlotError {
         /// Colours in the palette.
         colours: usize,
     },
-    /// The chart has no series.
-    #[error("chart {chart:?} has no series")]
-    NoSeries {
-        /// The chart's name.
-        chart: String,
-    },
-    /// No point of the chart can be drawn on its axes (all non-finite, or
-    /// none positive on a logarithmic axis).
+    /// No cell of a regime map can be drawn. (A [`Chart`] with no point
+    /// is drawn, with the note [`NO_DATA`] over empty axes.)
     #[error("chart {chart:?} has no point that can be drawn on its axes")]
     NoDrawablePoints {
         /// The chart's name.
@@ -224,6 +220,9 @@ pub enum Marker {
     Square,
 }
 
+/// The note drawn in a figure with no point to show ([`Chart::is_empty`]).
+pub const NO_DATA: &str = "no data in this scenario";
+
 /// Markers placed along a line series: this many, spread evenly over its
 /// points, so that a curve hidden under another still shows its marks.
 pub const MARKS_ON_A_LINE: usize = 14;
@@ -355,7 +354,11 @@ impl Chart {
         self
     }
 
-    /// Checks that the chart can be drawn and carries every text a figure needs.
+    /// Checks that the chart can be drawn and carries every text a figure
+    /// needs. A chart with no series, or none of whose points an axis can
+    /// show (a scenario in which the quantity does not arise: no turn
+    /// completed, say), is valid: it is drawn as empty axes with the note
+    /// [`NO_DATA`] ([`Chart::is_empty`]).
     ///
     /// # Errors
     /// [`PlotError`] naming the first problem.
@@ -382,11 +385,6 @@ impl Chart {
                 return Err(self.missing(field));
             }
         }
-        if self.series.is_empty() {
-            return Err(PlotError::NoSeries {
-                chart: self.name.clone(),
-            });
-        }
         let curves = legend::colours_needed(&self.series);
         if curves > legend::PALETTE.len() {
             return Err(PlotError::TooManyColours {
@@ -398,12 +396,14 @@ impl Chart {
         if self.series.iter().any(|s| s.name.trim().is_empty()) {
             return Err(self.missing("series name"));
         }
-        if self.drawable_points().count() == 0 {
-            return Err(PlotError::NoDrawablePoints {
-                chart: self.name.clone(),
-            });
-        }
         Ok(())
+    }
+
+    /// Whether no point of the chart can be drawn (no series, or every
+    /// point non-finite or, on a logarithmic axis, not positive): the
+    /// figure shows [`NO_DATA`] instead of curves.
+    pub fn is_empty(&self) -> bool {
+        self.drawable_points().next().is_none()
     }
 
     fn missing(&self, field: &'static str) -> PlotError {

@@ -10,7 +10,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{colour_slots, PALETTE};
 use super::ticks::AxisTicks;
-use super::{Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE};
+use super::{
+    Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE, NO_DATA,
+};
 
 /// The embedded font (DejaVu Sans, Bitstream Vera licence, see
 /// `assets/fonts/DejaVuSans-LICENSE.txt`).
@@ -72,6 +74,14 @@ impl Chart {
             y0 = y0.min(y);
             y1 = y1.max(y);
         }
+        if x0 > x1 {
+            // No point: empty axes over a unit range (a decade on a log axis).
+            let unit = |axis: &Axis| match axis.scale {
+                Scale::Linear => 0.0..1.0,
+                Scale::Log => 1.0..10.0,
+            };
+            return (unit(&self.x), unit(&self.y));
+        }
         (pad(&self.x, x0, x1), pad(&self.y, y0, y1))
     }
 
@@ -81,41 +91,7 @@ impl Chart {
     /// # Errors
     /// [`PlotError`] when the chart is invalid or drawing fails.
     pub fn render_svg(&self, provenance: &Provenance) -> Result<String, PlotError> {
-        self.validate()?;
-        register_embedded_font()?;
-        let mut svg = String::new();
-        let (w, h) = FIGURE_SIZE;
-        let k = SVG_OVERSAMPLE;
-        {
-            let root = SVGBackend::with_string(&mut svg, (w * k, h * k)).into_drawing_area();
-            self.draw(&root, provenance, f64::from(k), Part::Body)?;
-            root.present().map_err(|e| self.backend(e))?;
-        }
-        // The legend, drawn on its own canvas of the same size, goes into
-        // the figure as one group the browser test can find.
-        let mut legend = String::new();
-        {
-            let root = SVGBackend::with_string(&mut legend, (w * k, h * k)).into_drawing_area();
-            self.draw(&root, provenance, f64::from(k), Part::Legend)?;
-            root.present().map_err(|e| self.backend(e))?;
-        }
-        let svg = with_legend_group(&svg, &legend);
-        // Shown at FIGURE_SIZE, drawn in the oversampled viewBox; lines
-        // join and end round.
-        let svg = svg
-            .replacen(
-                &format!("width=\"{}\" height=\"{}\"", w * k, h * k),
-                &format!("width=\"{w}\" height=\"{h}\""),
-                1,
-            )
-            .replace(
-                "<polyline fill=\"none\"",
-                "<polyline fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"",
-            );
-        Ok(with_provenance_comment(
-            svg,
-            &[&self.name, &self.title, &provenance.line()],
-        ))
+        super::render_panels_svg(std::slice::from_ref(self), provenance)
     }
 
     /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
@@ -124,39 +100,10 @@ impl Chart {
     /// # Errors
     /// [`PlotError`] when the chart is invalid, drawing or encoding fails.
     pub fn render_png(&self, provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
-        self.validate()?;
-        register_embedded_font()?;
-        let (w, h) = png_size();
-        let mut rgb = vec![0_u8; w as usize * h as usize * 3];
-        {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-            self.draw(&root, provenance, PNG_SCALE, Part::Body)?;
-            self.draw(&root, provenance, PNG_SCALE, Part::Legend)?;
-            root.present().map_err(|e| self.backend(e))?;
-        }
-        let png_err = |e: png::EncodingError| PlotError::Png {
-            chart: self.name.clone(),
-            reason: e.to_string(),
-        };
-        let mut out = Vec::new();
-        {
-            let mut enc = png::Encoder::new(&mut out, w, h);
-            enc.set_color(png::ColorType::Rgb);
-            enc.set_depth(png::BitDepth::Eight);
-            enc.add_itxt_chunk("Software".into(), provenance.software.clone())
-                .map_err(png_err)?;
-            enc.add_itxt_chunk("Title".into(), self.title.clone())
-                .map_err(png_err)?;
-            enc.add_itxt_chunk("Comment".into(), provenance.line())
-                .map_err(png_err)?;
-            let mut writer = enc.write_header().map_err(png_err)?;
-            writer.write_image_data(&rgb).map_err(png_err)?;
-            writer.finish().map_err(png_err)?;
-        }
-        Ok(out)
+        super::render_panels_png(std::slice::from_ref(self), provenance)
     }
 
-    fn backend(&self, e: impl fmt::Display) -> PlotError {
+    pub(super) fn backend(&self, e: impl fmt::Display) -> PlotError {
         PlotError::Backend {
             chart: self.name.clone(),
             reason: e.to_string(),
@@ -166,7 +113,7 @@ impl Chart {
     /// Draws `part` of the figure on `root`, every length multiplied by
     /// `scale`: title, axes, series and footer, or the legend column to the
     /// right of the plot.
-    fn draw<DB: DrawingBackend>(
+    pub(super) fn draw<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
         provenance: &Provenance,
@@ -267,6 +214,16 @@ impl Chart {
         {
             self.draw_series(&mut chart, (i, PALETTE[slot % PALETTE.len()]), s, scale)?;
         }
+        if self.is_empty() {
+            // Nothing to draw: say so in the middle of the empty axes.
+            let plot = chart.plotting_area().strip_coord_spec();
+            let (pw, ph) = plot.dim_in_pixel();
+            let note = font(22.0)
+                .color(&RGBColor(90, 90, 90))
+                .pos(Pos::new(HPos::Center, VPos::Center));
+            plot.draw_text(NO_DATA, &note, ((pw / 2) as i32, (ph / 2) as i32))
+                .map_err(|e| self.backend(e))?;
+        }
         Ok(())
     }
 
@@ -346,7 +303,7 @@ impl Chart {
 
 /// Which part of a figure [`Chart::draw`] draws.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Part {
+pub(super) enum Part {
     /// Title, axes, series, footer.
     Body,
     /// The legend column.
@@ -371,7 +328,7 @@ pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> 
 
 /// `svg` with the drawing of `legend` (an SVG document of the same size)
 /// added as its last element, a group `<g class="legend">`.
-fn with_legend_group(svg: &str, legend: &str) -> String {
+pub(super) fn with_legend_group(svg: &str, legend: &str) -> String {
     let body = legend
         .find('>')
         .and_then(|start| legend.rfind("</svg>").map(|end| &legend[start + 1..end]))

@@ -152,6 +152,22 @@ impl ModelKind {
                 kind: StallKind::DoesNotStart,
             })
     }
+
+    /// The stall threshold `snowroll models` and Python's `models()` list
+    /// for `scenario` with `losses`: [`Self::stall_threshold_in`], or `None`
+    /// when the model does not take that body (a turn model and a ball) or
+    /// those losses (the turn models take none).
+    pub fn stall_threshold_listed(
+        self,
+        scenario: &Scenario,
+        losses: &Losses,
+    ) -> Option<StallThreshold> {
+        let takes =
+            self.shapes().contains(&scenario.shape()) && !(self.is_turn_model() && losses.any());
+        takes
+            .then(|| self.stall_threshold_in(scenario, losses))
+            .flatten()
+    }
 }
 
 /// A run outside its model's range of validity, in words.
