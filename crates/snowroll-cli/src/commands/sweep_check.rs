@@ -393,9 +393,9 @@ fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
         .map_err(|e| format!("column {}: {} is not a finite number", e.field, e.value))?;
     // A run that ended has every result and no error; one that failed has
     // an error and no result (`SweepRow::new`).
-    let results = [row.t_s, row.x_m, row.v_m_s, row.a_over_g_sin_alpha];
-    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(Option::is_some);
-    let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(Option::is_none);
+    let results = row.results();
+    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(|r| r.1.is_some());
+    let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(|r| r.1.is_none());
     match (row.error.is_some(), ended, failed) {
         (false, true, _) | (true, _, true) => Ok(row),
         (false, ..) => Err("a result cell is empty, and the error cell too".to_string()),

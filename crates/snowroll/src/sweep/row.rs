@@ -180,6 +180,36 @@ impl SweepRow {
         }
     }
 
+    /// The numeric results, each with its column's name: empty (`None`)
+    /// for a failed run.
+    pub fn results(&self) -> [(&'static str, Option<f64>); 4] {
+        [
+            ("t_s", self.t_s),
+            ("x_m", self.x_m),
+            ("v_m_s", self.v_m_s),
+            ("a_over_g_sin_alpha", self.a_over_g_sin_alpha),
+        ]
+    }
+
+    /// This row, or, when one of its results is not a finite number, the
+    /// row of a failed run whose `error` names it: a sweep never writes
+    /// NaN or an infinity (CSV, Parquet, Python alike).
+    pub(crate) fn finite_or_error(mut self) -> SweepRow {
+        let bad = self
+            .results()
+            .into_iter()
+            .find_map(|(name, v)| v.filter(|x| !x.is_finite()).map(|x| (name, x)));
+        if let Some((name, value)) = bad {
+            self.error = Some(format!(
+                "the run gave {name} = {value}, not a finite number: the scenario is outside \
+                 the range this model can compute"
+            ));
+            (self.stop, self.t_s, self.x_m, self.v_m_s) = (None, None, None, None);
+            (self.a_over_g_sin_alpha, self.turns) = (None, None);
+        }
+        self
+    }
+
     /// Fills in the results from the state at the end of the run.
     pub(crate) fn set_results(
         &mut self,
@@ -206,5 +236,54 @@ pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
         turns.floor() as u64
     } else {
         0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sweep::Grid;
+
+    fn point() -> Point {
+        Grid::new(vec![ModelKind::Energy], vec![]).unwrap().point(0).unwrap()
+    }
+
+    /// A row whose result is not finite becomes the row of a failed run,
+    /// naming the column and the value; a finite row is kept as it is.
+    /// Fed a finite value in place of the infinity, the first check fails.
+    #[test]
+    fn a_non_finite_result_becomes_an_error_row() {
+        let point = point();
+        let sample = Sample {
+            t_s: 0.0,
+            x_m: 0.0,
+            v_m_s: 0.0,
+            a_m_s2: f64::NEG_INFINITY,
+            r_m: 0.1,
+            mass_kg: 1.0,
+            normal_n: 1.0,
+            friction_n: 0.0,
+            friction_ratio: Some(0.0),
+        };
+        let mut row = SweepRow::parameters(&point);
+        row.set_results(&point, StopReason::DoesNotStart, &sample, 0);
+        let failed = row.clone().finite_or_error();
+        let error = failed.error.clone().unwrap_or_default();
+        assert!(error.contains("a_over_g_sin_alpha = -inf"), "{error}");
+        assert!(failed.results().iter().all(|r| r.1.is_none()));
+        assert_eq!((failed.stop, failed.turns), (None, None));
+        assert_eq!(SweepRow::parameters(&point).alpha_deg, failed.alpha_deg);
+        let fine = Sample { a_m_s2: -1.0, ..sample };
+        let mut row = SweepRow::parameters(&point);
+        row.set_results(&point, StopReason::DoesNotStart, &fine, 0);
+        assert_eq!(row.clone().finite_or_error(), row);
+    }
+
+    /// The names [`SweepRow::results`] gives are columns of the sweep.
+    #[test]
+    fn result_names_are_columns() {
+        for (name, _) in SweepRow::parameters(&point()).results() {
+            assert!(SweepRow::COLUMNS.contains(&name), "{name}");
+        }
     }
 }

@@ -49,17 +49,16 @@ pub const FAST_MIN_RTOL: f64 = 1e-12;
 /// [`ParamError`] when `index` is not a point of the grid.
 pub fn run_point(grid: &Grid, index: u64, method: Method) -> Result<SweepRow, ParamError> {
     let point = grid.point(index)?;
-    if method == Method::Auto {
-        if let Some(row) = fast_row(&point) {
-            return Ok(row);
-        }
-    }
-    let traj = point
-        .model
-        .build()
-        .simulate(&point.scenario, &point.options)
-        .map_err(|e| e.to_string());
-    Ok(SweepRow::new(&point, traj.as_ref().map_err(Clone::clone)))
+    let fast = (method == Method::Auto).then(|| fast_row(&point)).flatten();
+    let row = fast.unwrap_or_else(|| {
+        let traj = point
+            .model
+            .build()
+            .simulate(&point.scenario, &point.options)
+            .map_err(|e| e.to_string());
+        SweepRow::new(&point, traj.as_ref().map_err(Clone::clone))
+    });
+    Ok(row.finite_or_error())
 }
 
 /// The row of a circular model from the closed form, or `None` where it
