@@ -166,7 +166,9 @@ pub fn stdout_unusable() -> Option<&'static str> {
         let flags = rustix::fs::fcntl_getfl(&out).ok()?;
         let mode = flags & (OFlags::RDONLY | OFlags::WRONLY | OFlags::RDWR);
         if mode == OFlags::RDONLY {
-            return Some("standard output is open for reading only: nothing written to it would arrive");
+            return Some(
+                "standard output is open for reading only: nothing written to it would arrive",
+            );
         }
         let stat = rustix::fs::fstat(&out).ok()?;
         let device = (

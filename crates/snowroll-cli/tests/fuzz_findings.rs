@@ -99,8 +99,24 @@ fn regression_20_a_subnormal_slope_is_refused_and_no_sweep_writes_a_non_finite_n
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("g.toml"), "alpha_deg = \"4.9e-324:30:3\"\n").unwrap();
     let refused = [
-        &["sweep", "--model", "eq4,energy,turns", "--grid", "g.toml", "-o", "s.csv"][..],
-        &["sweep", "--model", "energy", "--alpha-deg", "4.9e-324:30:3", "-o", "s.csv"],
+        &[
+            "sweep",
+            "--model",
+            "eq4,energy,turns",
+            "--grid",
+            "g.toml",
+            "-o",
+            "s.csv",
+        ][..],
+        &[
+            "sweep",
+            "--model",
+            "energy",
+            "--alpha-deg",
+            "4.9e-324:30:3",
+            "-o",
+            "s.csv",
+        ],
         &["simulate", "--model", "energy", "--alpha-deg", "4.9e-324"],
     ];
     for args in refused {
@@ -112,18 +128,33 @@ fn regression_20_a_subnormal_slope_is_refused_and_no_sweep_writes_a_non_finite_n
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "{args:?}: {err}");
         assert!(
-            err.contains("slope angle alpha (rad)") && err.contains("1e-150") && err.contains("--alpha-deg"),
+            err.contains("slope angle alpha (rad)")
+                && err.contains("1e-150")
+                && err.contains("--alpha-deg"),
             "{args:?}: {err}"
         );
-        assert!(out.stdout.is_empty() && !dir.path().join("s.csv").exists(), "{args:?}");
+        assert!(
+            out.stdout.is_empty() && !dir.path().join("s.csv").exists(),
+            "{args:?}"
+        );
     }
     let out = cargo_bin_cmd!("snowroll")
-        .args(["sweep", "--model", "eq4,energy,turns", "--alpha-deg", "1e-100,1e-50,30"])
+        .args([
+            "sweep",
+            "--model",
+            "eq4,energy,turns",
+            "--alpha-deg",
+            "1e-100,1e-50,30",
+        ])
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
-    let rows: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).skip(1).collect();
+    let rows: Vec<&str> = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .skip(1)
+        .collect();
     assert_eq!(rows.len(), 9, "{text}");
     for row in rows {
         for cell in row.split(',') {

@@ -14,3 +14,4 @@ mod resume_merge;
 mod streaming;
 mod support;
 mod sweep;
+mod sweep_warnings;

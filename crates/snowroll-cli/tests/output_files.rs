@@ -344,8 +344,21 @@ fn regression_7_a_full_or_closed_stdout_is_an_error_not_a_panic() {
 fn stdout_commands(dir: &Path) -> Vec<String> {
     for shard in ["0/2", "1/2"] {
         let name = format!("s{}.csv", &shard[..1]);
-        let sweep = ["sweep", "--model", "eq4", "--alpha-deg", "5:60:4", "--shard", shard];
-        snowroll().current_dir(dir).args(sweep).args(["-o", &name]).assert().success();
+        let sweep = [
+            "sweep",
+            "--model",
+            "eq4",
+            "--alpha-deg",
+            "5:60:4",
+            "--shard",
+            shard,
+        ];
+        snowroll()
+            .current_dir(dir)
+            .args(sweep)
+            .args(["-o", &name])
+            .assert()
+            .success();
     }
     [
         "simulate --model eq4 --t-end 1",
@@ -389,12 +402,18 @@ fn regression_20_a_closed_full_or_read_only_stdout_fails_every_command() {
             let out = through_shell(dir.path(), &command, redirect);
             let err = String::from_utf8(out.stderr).unwrap();
             assert_eq!(out.status.code(), Some(1), "{command} {redirect}: {err}");
-            assert!(err.starts_with("error: ") && err.contains(says), "{command} {redirect}: {err}");
+            assert!(
+                err.starts_with("error: ") && err.contains(says),
+                "{command} {redirect}: {err}"
+            );
             // A closed or read-only stdout is known before any work: `paper`
             // fails before its minute of computing, with no report. A full
             // one is known only by writing, after the report.
             let report = dir.path().join("report");
-            assert_eq!(report.exists(), redirect == ">/dev/full" && command.starts_with("paper"));
+            assert_eq!(
+                report.exists(),
+                redirect == ">/dev/full" && command.starts_with("paper")
+            );
             let _ = fs::remove_dir_all(report);
         }
     }

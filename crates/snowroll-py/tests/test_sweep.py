@@ -13,7 +13,7 @@ import pytest
 import snowroll
 from conftest import run_cli, same_bits
 
-TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error")
+TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error", "warnings")
 
 
 def parse_sweep_csv(text):

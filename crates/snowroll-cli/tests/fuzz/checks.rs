@@ -30,7 +30,6 @@ pub(crate) const TOLERATE_NON_FINITE: bool = false;
 /// readers found it (`merge` of a shard whose `alpha_deg` was `nan`).
 pub(crate) const TOLERATE_UNCHECKED_MERGE: bool = false;
 
-
 /// A file's identity and contents, to see whether a run touched it.
 #[derive(Debug, PartialEq)]
 pub(crate) struct Snapshot {

@@ -4,7 +4,7 @@ use serde::{Deserialize, Serialize};
 
 use super::axis::Param;
 use super::grid::Point;
-use crate::models::{CollisionModel, ModelKind};
+use crate::models::{run_warnings, warning_codes, CollisionModel, ModelKind};
 use crate::scenario::ScenarioFile;
 use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
 
@@ -68,12 +68,17 @@ pub struct SweepRow {
     pub turns: Option<u64>,
     /// Why the run failed; empty when it did not.
     pub error: Option<String>,
+    /// The codes of the warnings a single run of this point gets
+    /// ([`run_warnings`], what `simulate` prints), `;`-separated; empty when
+    /// there is none. They depend on the point only, so a failed run has
+    /// them too.
+    pub warnings: Option<String>,
 }
 
 impl SweepRow {
     /// The column names, in order: the field names (a test checks them
     /// against the serialised header).
-    pub const COLUMNS: [&'static str; 23] = [
+    pub const COLUMNS: [&'static str; 24] = [
         "index",
         "model",
         "alpha_deg",
@@ -97,6 +102,7 @@ impl SweepRow {
         "a_over_g_sin_alpha",
         "turns",
         "error",
+        "warnings",
     ];
 
     /// The row of `point` with its parameters and no results.
@@ -127,6 +133,7 @@ impl SweepRow {
             a_over_g_sin_alpha: None,
             turns: None,
             error: None,
+            warnings: point_warnings(point),
         }
     }
 
@@ -227,6 +234,12 @@ impl SweepRow {
     }
 }
 
+/// The `warnings` cell of `point`: the codes of [`run_warnings`] for its
+/// model, scenario and options, `;`-separated; `None` when there is none.
+pub fn point_warnings(point: &Point) -> Option<String> {
+    warning_codes(&run_warnings(point.model, &point.scenario, &point.options))
+}
+
 /// Full turns of a circular log that rolled `x` without slipping and grew
 /// from `r0` to `r` (eq. (8)): `⌊x/(π (r + r0))⌋`.
 pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
@@ -245,7 +258,10 @@ mod tests {
     use crate::sweep::Grid;
 
     fn point() -> Point {
-        Grid::new(vec![ModelKind::Energy], vec![]).unwrap().point(0).unwrap()
+        Grid::new(vec![ModelKind::Energy], vec![])
+            .unwrap()
+            .point(0)
+            .unwrap()
     }
 
     /// A row whose result is not finite becomes the row of a failed run,
@@ -273,7 +289,10 @@ mod tests {
         assert!(failed.results().iter().all(|r| r.1.is_none()));
         assert_eq!((failed.stop, failed.turns), (None, None));
         assert_eq!(SweepRow::parameters(&point).alpha_deg, failed.alpha_deg);
-        let fine = Sample { a_m_s2: -1.0, ..sample };
+        let fine = Sample {
+            a_m_s2: -1.0,
+            ..sample
+        };
         let mut row = SweepRow::parameters(&point);
         row.set_results(&point, StopReason::DoesNotStart, &fine, 0);
         assert_eq!(row.clone().finite_or_error(), row);
