@@ -288,7 +288,10 @@ mod tests {
         assert!(error.contains("a_over_g_sin_alpha = -inf"), "{error}");
         assert!(failed.results().iter().all(|r| r.1.is_none()));
         assert_eq!((failed.stop, failed.turns), (None, None));
-        assert_eq!(SweepRow::parameters(&point).alpha_deg, failed.alpha_deg);
+        assert_eq!(
+            SweepRow::parameters(&point).alpha_deg.to_bits(),
+            failed.alpha_deg.to_bits()
+        );
         let fine = Sample {
             a_m_s2: -1.0,
             ..sample
