@@ -84,3 +84,82 @@ fn regression_20_a_config_after_megabytes_of_blanks_is_read_at_once() {
         );
     }
 }
+
+/// A sweep whose grid held the subnormal `alpha_deg = 4.9e-324` wrote
+/// `a_over_g_sin_alpha = -inf` (the energy model) and `NaN` (eq. (4)): the
+/// angle became 0 rad, and the acceleration was divided by g sin 0 = 0 (the
+/// fuzzing of the readers, seed 2027). Such a slope is now refused before
+/// anything is written, in a grid file as on the command line and in
+/// `simulate`, naming the angle and the range; the smallest slope allowed
+/// (1e-150 rad, here 1e-100 degrees) sweeps to finite numbers only,
+/// a_over_g_sin_alpha included (about -1.9e100 for the energy model, which
+/// does not start there: a(0) is about -2b/(pi r0) g cos alpha, eq. (14)).
+#[test]
+fn regression_20_a_subnormal_slope_is_refused_and_no_sweep_writes_a_non_finite_number() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("g.toml"), "alpha_deg = \"4.9e-324:30:3\"\n").unwrap();
+    let refused = [
+        &[
+            "sweep",
+            "--model",
+            "eq4,energy,turns",
+            "--grid",
+            "g.toml",
+            "-o",
+            "s.csv",
+        ][..],
+        &[
+            "sweep",
+            "--model",
+            "energy",
+            "--alpha-deg",
+            "4.9e-324:30:3",
+            "-o",
+            "s.csv",
+        ],
+        &["simulate", "--model", "energy", "--alpha-deg", "4.9e-324"],
+    ];
+    for args in refused {
+        let out = cargo_bin_cmd!("snowroll")
+            .current_dir(dir.path())
+            .args(args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {err}");
+        assert!(
+            err.contains("slope angle alpha (rad)")
+                && err.contains("1e-150")
+                && err.contains("--alpha-deg"),
+            "{args:?}: {err}"
+        );
+        assert!(
+            out.stdout.is_empty() && !dir.path().join("s.csv").exists(),
+            "{args:?}"
+        );
+    }
+    let out = cargo_bin_cmd!("snowroll")
+        .args([
+            "sweep",
+            "--model",
+            "eq4,energy,turns",
+            "--alpha-deg",
+            "1e-100,1e-50,30",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let rows: Vec<&str> = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .skip(1)
+        .collect();
+    assert_eq!(rows.len(), 9, "{text}");
+    for row in rows {
+        for cell in row.split(',') {
+            let lower = cell.to_ascii_lowercase();
+            assert!(!lower.contains("nan") && !lower.contains("inf"), "{row}");
+        }
+    }
+}

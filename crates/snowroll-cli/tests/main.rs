@@ -18,3 +18,4 @@ mod serve;
 mod streaming;
 mod support;
 mod sweep;
+mod sweep_warnings;

@@ -339,6 +339,89 @@ fn regression_7_a_full_or_closed_stdout_is_an_error_not_a_panic() {
     }
 }
 
+/// Every command that writes to stdout, with the files it needs in `dir`
+/// (two shards for `merge`).
+fn stdout_commands(dir: &Path) -> Vec<String> {
+    for shard in ["0/2", "1/2"] {
+        let name = format!("s{}.csv", &shard[..1]);
+        let sweep = [
+            "sweep",
+            "--model",
+            "eq4",
+            "--alpha-deg",
+            "5:60:4",
+            "--shard",
+            shard,
+        ];
+        snowroll()
+            .current_dir(dir)
+            .args(sweep)
+            .args(["-o", &name])
+            .assert()
+            .success();
+    }
+    [
+        "simulate --model eq4 --t-end 1",
+        "simulate --model eq4 --t-end 1 -o -",
+        "simulate --model eq4 --t-end 1 -o /dev/stdout",
+        "turns --model turns --turns 3",
+        "turns --model turns --turns 3 --format json -o -",
+        "sweep --model eq4 --alpha-deg 5:60:4",
+        "sweep --model eq4 --alpha-deg 5:60:4 -o -",
+        "merge s0.csv s1.csv",
+        "merge s0.csv s1.csv -o -",
+        "models",
+        "paper --quiet --out report",
+    ]
+    .map(String::from)
+    .to_vec()
+}
+
+/// `snowroll COMMAND` through `sh -c` in `dir` with the redirection `redirect`.
+fn through_shell(dir: &Path, command: &str, redirect: &str) -> std::process::Output {
+    Process::new("sh")
+        .current_dir(dir)
+        .arg("-c")
+        .arg(format!("\"$0\" {command} {redirect}"))
+        .arg(bin())
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn regression_20_a_closed_full_or_read_only_stdout_fails_every_command() {
+    let dir = tempfile::tempdir().unwrap();
+    // Each redirection, and what the error must say.
+    let cases = [
+        (">&-", "standard output is closed"),
+        (">/dev/full", "No space left on device"),
+        ("1</dev/null", "standard output is open for reading only"),
+    ];
+    for command in stdout_commands(dir.path()) {
+        for (redirect, says) in cases {
+            let out = through_shell(dir.path(), &command, redirect);
+            let err = String::from_utf8(out.stderr).unwrap();
+            assert_eq!(out.status.code(), Some(1), "{command} {redirect}: {err}");
+            assert!(
+                err.starts_with("error: ") && err.contains(says),
+                "{command} {redirect}: {err}"
+            );
+            // A closed or read-only stdout is known before any work: `paper`
+            // fails before its minute of computing, with no report. A full
+            // one is known only by writing, after the report.
+            let report = dir.path().join("report");
+            assert_eq!(
+                report.exists(),
+                redirect == ">/dev/full" && command.starts_with("paper")
+            );
+            let _ = fs::remove_dir_all(report);
+        }
+    }
+    // A shell's `> /dev/null` discards the results, as asked: success.
+    let out = through_shell(dir.path(), "simulate --model eq4 --t-end 1", ">/dev/null");
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+}
+
 #[test]
 fn regression_7_head_ends_every_command_quietly() {
     for command in [

@@ -306,7 +306,11 @@ fn regression_20_merge_refuses_garbage_shards() {
     let cases: Vec<(String, String)> = vec![
         (
             edit(3, &|_| "3,GARBAGE\n".into()),
-            format!("{}: 2 cells where a row has 23", line(3)),
+            format!(
+                "{}: 2 cells where a row has {}",
+                line(3),
+                snowroll::sweep::SweepRow::COLUMNS.len()
+            ),
         ),
         (
             edit(5, &|r| {
@@ -322,7 +326,11 @@ fn regression_20_merge_refuses_garbage_shards() {
         ),
         (
             // An error message on a row that has results: no run gives one.
-            edit(7, &|r| r.trim_end().to_string() + "oops\n"),
+            // Text in the error cell, the last but one (the warnings last).
+            edit(7, &|r| {
+                let (head, warnings) = r.trim_end().rsplit_once(',').unwrap();
+                format!("{head}oops,{warnings}\n")
+            }),
             format!("{}: an error cell with results", line(7)),
         ),
         (
@@ -467,6 +475,18 @@ fn regression_20_a_write_error_removes_the_partial_file_the_run_made() {
         .replace("# alpha_deg: 10:40:4\n", "# alpha_deg: 10:40:400\n")
         .replace("# points: 48", "# points: 4800")
         .replace("rows 0..48", "rows 0..4800");
+    // The rows with warnings: 100 times as many in a grid 100 times as fine
+    // in alpha alone (the warnings of these points do not depend on alpha).
+    let warned: u64 = header
+        .lines()
+        .find_map(|l| l.strip_prefix("# warnings: ")?.strip_suffix(" rows"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    let text = text.replace(
+        &format!("# warnings: {warned} rows"),
+        &format!("# warnings: {} rows", 100 * warned),
+    );
     let partial = d.join("out.csv.partial");
     fs::write(&partial, &text).unwrap();
     let mut resume = big.clone();

@@ -252,5 +252,9 @@ fn columns<'py>(py: Python<'py>, rows: &[SweepRow]) -> PyResult<Bound<'py, PyDic
         "error",
         rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
     )?;
+    c.set_item(
+        "warnings",
+        rows.iter().map(|r| r.warnings.clone()).collect::<Vec<_>>(),
+    )?;
     Ok(c)
 }

@@ -13,7 +13,7 @@ import pytest
 import snowroll
 from conftest import run_cli, same_bits
 
-TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error")
+TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error", "warnings")
 
 
 def parse_sweep_csv(text):
@@ -244,3 +244,14 @@ def test_text_columns_are_polars_strings():
     for name in TEXT_COLUMNS:
         assert frame.schema[name] == pl.String, (name, frame.schema[name])
         assert frame[name].to_list() == list(s[name]), name
+
+
+def test_sweep_rows_carry_the_warnings_of_their_points():
+    """b/r0 = 5 is past the thin-snow limit 0.1 (b-over-r0), rtol = 0.5 looser
+    than the claims' 1e-6 (loose-tolerance); b/r0 = 0.1 at rtol 1e-10 has none.
+    Each expectation is computed here from the row's own parameters."""
+    s = snowroll.sweep({"model": "eq4,turns", "snow_depth": [0.01, 0.5], "rtol": [1e-10, 0.5], "t_end": 5})
+    for b, r0, rtol, cell in zip(s.snow_depth, s.r0, s.rtol, s.warnings):
+        want = [c for c, bad in (("b-over-r0", b / r0 > 0.1 * (1 + 1e-12)), ("loose-tolerance", rtol > 1e-6)) if bad]
+        assert (cell.split(";") if cell else []) == want
+    assert sum(w is not None for w in s.warnings) == 6

@@ -141,11 +141,11 @@ pub use models::{
     as_fraction, atol_bound, charged_collision_speed, check_tolerances, check_turn_scale,
     circular_forces, collision_speed, default_atol, first_turn_stall_slope,
     kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, run_turns_into,
-    state_scale, tolerance_warning, validity_warnings, Balance, CircularModel, Coefficients,
-    CollisionModel, ContactForces, ContactRange, Derivation, DragOnlyClosedForm,
-    InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody, TurnCheckpoint,
-    TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable,
-    TurnVariant, Validity, ValidityWarning,
+    run_warnings, state_scale, tolerance_warning, validity_warnings, warning_codes, Balance,
+    CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
+    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, RunWarning,
+    SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd,
+    TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning, WarningCode,
 };
 pub use number::format_number;
 pub use params::{Given, Param, RecordedSampling, Settings, Value, PARAMS};

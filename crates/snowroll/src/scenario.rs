@@ -184,6 +184,14 @@ impl Scenario {
         check_scale("density (kg/m^3)", rho, false, "change --density")?;
         check_scale("log length (m)", l, false, "change --length")?;
         check_scale("initial speed v0 (m/s)", v0, true, "change --v0")?;
+        // The slope component of gravity g sin alpha divides accelerations
+        // (a over g sin alpha): a subnormal alpha_deg (4.9e-324) becomes 0 rad.
+        check_scale(
+            "slope angle alpha (rad)",
+            self.alpha,
+            false,
+            "change --alpha-deg",
+        )?;
         let area = PI * r0 * r0;
         check_scale(
             "initial cross-section pi r0^2 (m^2)",

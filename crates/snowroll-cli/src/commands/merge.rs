@@ -24,7 +24,7 @@ use clap::Parser;
 use snowroll::sweep::shard_range;
 
 use super::sweep::{command_line, format_of, COMMAND_KEY, SHARD_KEY};
-use super::sweep_check::{check_rows, Recorded};
+use super::sweep_check::{check_rows, warnings_text, Recorded, WARNINGS};
 use crate::args::{Args, Command, MergeArgs, OutputArgs, SweepArgs, SweepFormat};
 use crate::clash::{refuse_clashes, RunFile};
 use crate::shell::shell_words;
@@ -92,6 +92,10 @@ pub fn run(args: &MergeArgs) -> Result<()> {
             header.push_str(&format!("{COMMAND_KEY}{}", command_line(&sweep)));
         } else if line.starts_with(SHARD_KEY) {
             header.push_str(&format!("{SHARD_KEY}0/1, rows 0..{points}"));
+        } else if line.starts_with(&format!("# {WARNINGS}: ")) {
+            // Each shard's count is checked against its rows as they are copied.
+            let all = shards.iter().map(|s| s.recorded.warnings).sum();
+            header.push_str(&format!("# {WARNINGS}: {}", warnings_text(all)));
         } else {
             header.push_str(line);
         }
@@ -248,17 +252,25 @@ fn check_tiling(shards: &[Shard]) -> Result<()> {
 fn copy_rows(s: &mut Shard, out: &mut impl Write, name: &str) -> Result<()> {
     let shown = s.path.display().to_string();
     let rows = s.recorded.rows.clone();
+    let mut warned = 0u64;
     let end = check_rows(
         &mut s.reader,
         &s.recorded.grid,
         &rows,
         s.recorded.lines + 1,
         &shown,
-        |line| {
+        |line, row| {
+            warned += u64::from(row.warnings.is_some());
             out.write_all(line)
                 .with_context(|| format!("writing {name}"))
         },
     )?;
+    if end == rows.end && warned != s.recorded.warnings {
+        bail!(
+            "{shown}: its header says {} with warnings, its rows have {warned}",
+            warnings_text(s.recorded.warnings)
+        );
+    }
     if end != rows.end {
         bail!(
             "{shown}: holds rows {}..{end} of its {rows:?}: rows {end}..{} are missing",

@@ -22,7 +22,9 @@ pub fn run(args: &PaperArgs) -> Result<()> {
     // `paper` reads no file, so its one output cannot clash today; it goes
     // through the check every command does, which an input added later needs.
     refuse_clashes(&[RunFile::output(&args.out, "--out report directory")])?;
-    // Check --out before the long computation, so that a bad path fails at once.
+    // Check --out and stdout (where the claims table goes) before the long
+    // computation, so that a bad path or a closed stdout fails at once.
+    console::check_stdout().context("writing the claims table to stdout")?;
     let staged = StagedDir::open(&args.out)?;
     let scenario = scenario_of(args)?;
     let lab = Lab::new(scenario, args.turns);

@@ -39,6 +39,7 @@ pub fn schema() -> Schema {
     }
     fields.push(nullable("turns", DataType::UInt64));
     fields.push(nullable("error", DataType::Utf8));
+    fields.push(nullable("warnings", DataType::Utf8));
     Schema::new(fields)
 }
 
@@ -97,7 +98,7 @@ fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
         };
         columns.push(column);
     }
-    let rest: [ArrayRef; 9] = [
+    let rest: [ArrayRef; 10] = [
         Arc::new(StringArray::from(
             rows.iter().map(|r| r.on_hop.id()).collect::<Vec<_>>(),
         )),
@@ -118,6 +119,9 @@ fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
         )),
         Arc::new(StringArray::from(
             rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
+        )),
+        Arc::new(StringArray::from(
+            rows.iter().map(|r| r.warnings.clone()).collect::<Vec<_>>(),
         )),
     ];
     columns.extend(rest);

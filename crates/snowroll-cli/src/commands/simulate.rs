@@ -2,8 +2,8 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, tolerance_warning, validity_warnings, ModelKind, Sampling,
-    Scenario, SimError, SimOptions, Stop, StopReason, TurnState,
+    default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
+    Stop, StopReason, TurnState,
 };
 use snowroll_io::{RunParams, TrajectoryWriter};
 
@@ -31,11 +31,11 @@ pub fn run(flags: SimulateArgs) -> Result<()> {
     let (model, scenario, opts) = prepare(&args)?;
     let runner = model.build();
     let format = inputs::format(&args.output)?;
-    let mut warnings: Vec<String> = validity_warnings(model, &scenario)
+    // The same checks, in the same order, as a sweep's `warnings` column.
+    let warnings: Vec<String> = run_warnings(model, &scenario, &opts)
         .iter()
         .map(ToString::to_string)
         .collect();
-    warnings.extend(tolerance_warning(model, &scenario, &opts));
     for w in &warnings {
         report!("warning: {w}");
     }

@@ -19,16 +19,18 @@ use std::time::{Duration, Instant};
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use snowroll::sweep::{run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK};
+use snowroll::sweep::{
+    count_warnings, run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK,
+};
 use snowroll_io::VERSION;
 
-use super::sweep_check::Recorded;
+use super::sweep_check::{warnings_text, Recorded, WARNINGS};
 use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid, run_files, with_config};
 use super::sweep_partial::{partial_path, Partial};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
 use crate::clash::refuse_clashes;
-use crate::console;
+use crate::console::{self, report};
 use crate::shell::shell_word;
 use crate::sink::{replaced_target, Sink};
 
@@ -59,8 +61,16 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         None => (0, 1),
     };
     let range = shard_range(grid.len(), shard, shards).map_err(|e| anyhow!("--shard: {e}"))?;
-    let header = header(args, command.as_deref(), &grid, shard, shards, &range);
-    let recorded = Recorded::of_run(&grid, args.method, (shard, shards), range.clone());
+    let warned = count_warnings(&grid, range.clone())?;
+    let header = header(
+        args,
+        command.as_deref(),
+        &grid,
+        (shard, shards),
+        &range,
+        warned,
+    );
+    let recorded = Recorded::of_run(&grid, args.method, (shard, shards), range.clone(), warned);
 
     let out = OutputArgs {
         format: None,
@@ -74,9 +84,10 @@ pub fn run(args: &SweepArgs) -> Result<()> {
         _ => None,
     };
     let format = format_of(args, partial_path.is_some())?;
-    let bar = progress(range.end - range.start, args.quiet);
+    let rows = range.end - range.start;
+    let bar = progress(rows, args.quiet);
     match partial_path {
-        None => to_stream(args, &grid, range, &header, sink, &bar),
+        None => to_stream(args, &grid, range, &header, sink, &bar)?,
         Some(path) => {
             let run = Run {
                 recorded: &recorded,
@@ -84,9 +95,16 @@ pub fn run(args: &SweepArgs) -> Result<()> {
                 format,
                 plot,
             };
-            to_partial(args, &run, sink, &bar, &path)
+            to_partial(args, &run, sink, &bar, &path)?;
         }
     }
+    if warned > 0 {
+        report!(
+            "warning: {warned} of the {rows} rows have warnings, the ones simulate gives for \
+             their points: see their warnings column (codes listed in docs/guide/sweeps.md)"
+        );
+    }
+    Ok(())
 }
 
 /// The output format: `--format`, else Parquet for a FILE ending in
@@ -373,9 +391,9 @@ fn header(
     args: &SweepArgs,
     recorded: Option<&str>,
     grid: &Grid,
-    shard: u64,
-    shards: u64,
+    (shard, shards): (u64, u64),
     range: &Range<u64>,
+    warned: u64,
 ) -> String {
     let command = recorded.map_or_else(|| command_line(args), str::to_string);
     let models: Vec<&str> = grid.models().iter().map(|m| m.id()).collect();
@@ -399,6 +417,7 @@ fn header(
         "{SHARD_KEY}{shard}/{shards}, rows {}..{}\n",
         range.start, range.end
     ));
+    h.push_str(&format!("# {WARNINGS}: {}\n", warnings_text(warned)));
     h.push_str(&SweepRow::COLUMNS.join(","));
     h.push('\n');
     h

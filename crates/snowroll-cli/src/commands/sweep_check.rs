@@ -42,6 +42,8 @@ pub struct Recorded {
     pub shard: (u64, u64),
     /// The grid indices of its rows.
     pub rows: Range<u64>,
+    /// How many of its rows have warnings (its `# warnings: N rows` line).
+    pub warnings: u64,
     /// Bytes of the header, the column line included: the rows start there.
     pub len: u64,
     /// Lines of the header.
@@ -53,13 +55,20 @@ pub struct Recorded {
 
 impl Recorded {
     /// What this program would record for a sweep of `grid`.
-    pub fn of_run(grid: &Grid, method: Method, shard: (u64, u64), rows: Range<u64>) -> Self {
+    pub fn of_run(
+        grid: &Grid,
+        method: Method,
+        shard: (u64, u64),
+        rows: Range<u64>,
+        warnings: u64,
+    ) -> Self {
         Recorded {
             version: VERSION.to_string(),
             grid: grid.clone(),
             method,
             shard,
             rows,
+            warnings,
             len: 0,
             lines: 0,
             header: Vec::new(),
@@ -75,6 +84,7 @@ impl Recorded {
     /// count that is not the grid's, columns that are not [`SweepRow`]'s.
     pub fn read(input: &mut impl BufRead, shown: &str) -> Result<Recorded> {
         let (lines, columns, len) = header_lines(input, shown)?;
+        check_columns(&columns, shown)?;
         let version = lines
             .first()
             .and_then(|l| l.strip_prefix(VERSION_KEY))
@@ -86,7 +96,7 @@ impl Recorded {
                 .strip_prefix("# ")
                 .and_then(|l| l.split_once(": "))
                 .ok_or_else(|| anyhow!("{shown}: line {}: not `# key: value`", k + 1))?;
-            let known = ["command", "points", "shard"].contains(&key) || is_grid_key(key);
+            let known = ["command", "points", "shard", WARNINGS].contains(&key) || is_grid_key(key);
             if !known {
                 bail!("{shown}: line {}: unknown header key {key:?}", k + 1);
             }
@@ -117,7 +127,12 @@ impl Recorded {
         let shard_text = get("shard")?;
         let (shard, rows) = parse_shard_line(shard_text)
             .ok_or_else(|| anyhow!("{shown}: cannot read its shard line {shard_text:?}"))?;
-        check_columns(&columns, shown)?;
+        let warnings = parse_warnings_line(get(WARNINGS)?).ok_or_else(|| {
+            anyhow!(
+                "{shown}: cannot read its warnings line {:?}",
+                get(WARNINGS).unwrap_or_default()
+            )
+        })?;
         let n_lines = lines.len() as u64 + 1;
         let mut header = lines.clone();
         header.push(columns);
@@ -127,6 +142,7 @@ impl Recorded {
             method,
             shard,
             rows,
+            warnings,
             len,
             lines: n_lines,
             header,
@@ -169,6 +185,7 @@ impl Recorded {
                 "shard".to_string(),
                 format!("{i}/{n}, rows {}..{}", rows.start, rows.end),
             ));
+            out.push((WARNINGS.to_string(), warnings_text(self.warnings)));
         }
         out
     }
@@ -239,6 +256,19 @@ fn axis_text(grid: &Grid, axis: Param, default: Value) -> String {
     }
 }
 
+/// The key of the header line that counts the rows with warnings.
+pub const WARNINGS: &str = "warnings";
+
+/// The value of the warnings line: `N rows`.
+pub fn warnings_text(rows: u64) -> String {
+    format!("{rows} rows")
+}
+
+/// `N rows`, the value of the warnings line.
+fn parse_warnings_line(text: &str) -> Option<u64> {
+    text.strip_suffix(" rows")?.parse().ok()
+}
+
 /// `i/N, rows a..b`.
 pub fn parse_shard_line(text: &str) -> Option<((u64, u64), Range<u64>)> {
     let (shard, rows) = text.split_once(", rows ")?;
@@ -256,6 +286,14 @@ pub fn parse_shard_line(text: &str) -> Option<((u64, u64), Range<u64>)> {
 /// Checks the column line against [`SweepRow::COLUMNS`].
 fn check_columns(line: &str, shown: &str) -> Result<()> {
     let names: Vec<&str> = line.split(',').collect();
+    let want = &SweepRow::COLUMNS;
+    if names.len() < want.len() && want.starts_with(&names) {
+        bail!(
+            "{shown}: has no column {} (a sweep of an older snowroll, whose rows cannot be \
+             checked against this one's): run the sweep again",
+            want[names.len()..].join(", ")
+        );
+    }
     for (k, want) in SweepRow::COLUMNS.iter().enumerate() {
         match names.get(k) {
             Some(name) if name == want => {}
@@ -295,7 +333,7 @@ pub fn check_rows(
     rows: &Range<u64>,
     mut line: u64,
     shown: &str,
-    mut each: impl FnMut(&[u8]) -> Result<()>,
+    mut each: impl FnMut(&[u8], &SweepRow) -> Result<()>,
 ) -> Result<u64> {
     let mut next = rows.start;
     let mut buf = Vec::new();
@@ -335,7 +373,7 @@ pub fn check_rows(
             );
         }
         check_point(&row, grid).map_err(|e| anyhow!("{shown}: line {line}: {e}"))?;
-        each(&buf)?;
+        each(&buf, &row)?;
         next += 1;
         line += 1;
     }
@@ -393,9 +431,9 @@ fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
         .map_err(|e| format!("column {}: {} is not a finite number", e.field, e.value))?;
     // A run that ended has every result and no error; one that failed has
     // an error and no result (`SweepRow::new`).
-    let results = [row.t_s, row.x_m, row.v_m_s, row.a_over_g_sin_alpha];
-    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(Option::is_some);
-    let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(Option::is_none);
+    let results = row.results();
+    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(|r| r.1.is_some());
+    let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(|r| r.1.is_none());
     match (row.error.is_some(), ended, failed) {
         (false, true, _) | (true, _, true) => Ok(row),
         (false, ..) => Err("a result cell is empty, and the error cell too".to_string()),
@@ -434,6 +472,14 @@ fn check_point(row: &SweepRow, grid: &Grid) -> Result<(), String> {
     if row.on_hop != want.on_hop {
         let (a, b) = (row.on_hop.id(), want.on_hop.id());
         return Err(differs("on_hop".into(), a.into(), b.into()));
+    }
+    if row.warnings != want.warnings {
+        let text = |w: &Option<String>| w.clone().unwrap_or_else(|| "none".to_string());
+        return Err(differs(
+            "warnings".into(),
+            text(&row.warnings),
+            text(&want.warnings),
+        ));
     }
     for p in Param::ALL {
         let (a, b) = (row.param_value(p), want.param_value(p));

@@ -137,7 +137,10 @@ impl RowWriter {
         } else {
             field(&[]);
         }
-        // The error column is empty: the record ends after its comma.
+        // The error column is empty; the warnings' codes need no quoting
+        // (kebab-case words and `;`).
+        field(&[]);
+        out.extend_from_slice(row.warnings.as_deref().unwrap_or_default().as_bytes());
         out.push(b'\n');
         Ok(())
     }
@@ -242,6 +245,11 @@ mod tests {
                     CollisionModel::Charged,
                     CollisionModel::Pivot,
                 ][j % 3];
+                r.warnings = match j % 3 {
+                    0 => None,
+                    1 => Some("b-over-r0".into()),
+                    _ => Some("b-over-r0;loose-tolerance".into()),
+                };
                 r.error = match j % 4 {
                     0 => None,
                     1 => Some("plain".into()),

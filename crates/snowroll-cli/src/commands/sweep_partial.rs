@@ -139,7 +139,7 @@ impl Partial {
             range,
             self.header_lines + 1,
             &shown,
-            |_| Ok(()),
+            |_, _| Ok(()),
         )
         .map_err(|e| anyhow!("cannot resume: {e}"))?;
         // Only now, the rows before it being sound, is the torn line cut.

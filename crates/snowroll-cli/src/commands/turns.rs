@@ -6,8 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, ModelKind,
-    Sampling, SimError, StopReason, TurnRunEnd, TurnSummary,
+    default_atol, format_number, run_turns_into, run_warnings, ModelKind, Sampling, SimError,
+    StopReason, TurnRunEnd, TurnSummary,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -48,11 +48,11 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     // Everything the model refuses, before any output (nothing reaches stdout).
     model.build().check(&scenario, &opts)?;
     let format = inputs::format(&args.output)?;
-    let mut warnings: Vec<String> = validity_warnings(model, &scenario)
+    // The same checks, in the same order, as a sweep's `warnings` column.
+    let warnings: Vec<String> = run_warnings(model, &scenario, &opts)
         .iter()
         .map(ToString::to_string)
         .collect();
-    warnings.extend(tolerance_warning(model, &scenario, &opts));
     for w in &warnings {
         report!("warning: {w}");
     }

@@ -190,11 +190,6 @@ fn fuzz_the_command_line_and_the_config_file() {
     );
     let _ = writeln!(
         summary,
-        "sweeps writing a non-finite cell (open finding) {}",
-        t.swept_non_finite
-    );
-    let _ = writeln!(
-        summary,
         "slowest case {:.3} s {}",
         t.slowest.as_secs_f64(),
         t.slowest_case

@@ -250,10 +250,12 @@ class SweepResult(_Columns):
     ``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``, ``length``,
     ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``, ``mu``, ``on_hop``,
     ``collision``, ``stop``, ``t_s``, ``x_m``, ``v_m_s``,
-    ``a_over_g_sin_alpha``, ``turns``, ``error``. The numbers are float64
+    ``a_over_g_sin_alpha``, ``turns``, ``error``, ``warnings`` (the codes of
+    the warnings :func:`simulate` gives for the row's point, ``;``-separated,
+    such as ``b-over-r0;loose-tolerance``). The numbers are float64
     arrays with NaN where the CSV cell is empty (``x_end`` or ``mu`` not
     swept, a failed run). The text columns ``model``, ``on_hop``,
-    ``collision``, ``stop`` and ``error`` are numpy object arrays of ``str``,
+    ``collision``, ``stop``, ``error`` and ``warnings`` are numpy object arrays of ``str``,
     ``None`` where the cell is empty (a fixed-width numpy ``str`` array could
     not hold the missing cells); :meth:`to_pandas` makes them ``string``
     columns with ``pd.NA`` there, :meth:`to_polars` ``String`` columns with
@@ -262,7 +264,7 @@ class SweepResult(_Columns):
     """
 
     #: The columns holding text, as object arrays.
-    TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error")
+    TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error", "warnings")
 
     def __init__(self, raw: Dict[str, Any]) -> None:
         cols = raw["columns"]

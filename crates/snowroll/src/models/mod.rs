@@ -13,6 +13,7 @@ mod ode;
 mod tolerance;
 mod turn_by_turn;
 mod validity;
+mod warnings;
 
 pub use circular::{Balance, CircularModel, Coefficients, Derivation};
 pub use closed_form::{
@@ -34,6 +35,7 @@ pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,
     THIN_SNOW_MAX_B_OVER_R0,
 };
+pub use warnings::{run_warnings, warning_codes, RunWarning, WarningCode};
 
 use crate::error::{ParamError, SimError};
 use crate::scenario::{Scenario, Shape};

@@ -9,7 +9,7 @@
 
 use serde::Serialize;
 
-use super::{first_turn_stall_slope, ModelKind, TurnVariant};
+use super::{first_turn_stall_slope, ModelKind, TurnVariant, WarningCode};
 use crate::losses::Losses;
 use crate::scenario::{Scenario, Shape};
 use crate::units::{Meters, Radians};
@@ -175,6 +175,8 @@ impl ModelKind {
 pub struct ValidityWarning {
     /// The model.
     pub model: ModelKind,
+    /// What it is about, as a short code.
+    pub code: WarningCode,
     /// What is wrong, one sentence.
     pub message: String,
 }
@@ -222,19 +224,25 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
     let ratio = b / r0;
     let validity = kind.validity();
     let mut out = Vec::new();
-    let mut warn = |message: String| {
+    let mut warn = |code: WarningCode, message: String| {
         out.push(ValidityWarning {
             model: kind,
+            code,
             message,
         });
     };
     match validity.max_b_over_r0 {
-        Some(max) if kind == ModelKind::Snowless && b > max => warn(format!(
+        Some(max) if kind == ModelKind::Snowless && b > max => warn(
+            WarningCode::SnowIgnored,
+            format!(
             "{} ignores the snow (snow_depth = {} m): it is the b = 0 limit of the other models",
             kind.id(),
             crate::number::format_number(b)
-        )),
-        Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(format!(
+        ),
+        ),
+        Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(
+            WarningCode::BOverR0,
+            format!(
             "{} is used beyond its range: b/r0 = {} > {max}, so the terms it neglects are not small. \
              Its range: {}. {}",
             kind.id(),
@@ -248,11 +256,12 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
                                   (the turn models are the log's)."
                     .to_owned(),
             }
-        )),
+        ),
+        ),
         _ => {}
     }
     if let Some(w) = scenario.swath_width().filter(|w| *w > 2.0 * r0) {
-        warn(wider_than_the_ball(w, r0));
+        warn(WarningCode::WideSwath, wider_than_the_ball(w, r0));
     }
     if kind == ModelKind::Turns && scenario.initial_speed() <= 0.0 {
         let alpha = scenario.slope_angle();
@@ -266,7 +275,9 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
                 } else {
                     ("stalls in", "rolls through")
                 };
-                warn(format!(
+                warn(
+                    WarningCode::Turn0Stall,
+                    format!(
                     "at alpha = {:.4} degrees {} {this} its first turn, but with exact geometry ({}) \
                      the log {other} it (turn-0 stall slopes: {:.4} and {:.4} degrees): the models part ways here",
                     alpha.to_degrees(),
@@ -274,7 +285,8 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
                     ModelKind::TurnsExact.id(),
                     first.to_degrees(),
                     exact.to_degrees()
-                ));
+                ),
+                );
             }
         }
     }

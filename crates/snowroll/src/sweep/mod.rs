@@ -25,5 +25,7 @@ pub use crate::models::{circular_end, ContactCheck, FastEnd, SpeedSquared};
 pub use axis::{Axis, GridError, Param, Values};
 pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
-pub use row::SweepRow;
-pub use run::{run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL};
+pub use row::{point_warnings, SweepRow};
+pub use run::{
+    count_warnings, run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL,
+};

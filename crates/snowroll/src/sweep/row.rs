@@ -4,7 +4,7 @@ use serde::{Deserialize, Serialize};
 
 use super::axis::Param;
 use super::grid::Point;
-use crate::models::{CollisionModel, ModelKind};
+use crate::models::{run_warnings, warning_codes, CollisionModel, ModelKind};
 use crate::scenario::ScenarioFile;
 use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
 
@@ -68,12 +68,17 @@ pub struct SweepRow {
     pub turns: Option<u64>,
     /// Why the run failed; empty when it did not.
     pub error: Option<String>,
+    /// The codes of the warnings a single run of this point gets
+    /// ([`run_warnings`], what `simulate` prints), `;`-separated; empty when
+    /// there is none. They depend on the point only, so a failed run has
+    /// them too.
+    pub warnings: Option<String>,
 }
 
 impl SweepRow {
     /// The column names, in order: the field names (a test checks them
     /// against the serialised header).
-    pub const COLUMNS: [&'static str; 23] = [
+    pub const COLUMNS: [&'static str; 24] = [
         "index",
         "model",
         "alpha_deg",
@@ -97,6 +102,7 @@ impl SweepRow {
         "a_over_g_sin_alpha",
         "turns",
         "error",
+        "warnings",
     ];
 
     /// The row of `point` with its parameters and no results.
@@ -127,6 +133,7 @@ impl SweepRow {
             a_over_g_sin_alpha: None,
             turns: None,
             error: None,
+            warnings: point_warnings(point),
         }
     }
 
@@ -180,6 +187,36 @@ impl SweepRow {
         }
     }
 
+    /// The numeric results, each with its column's name: empty (`None`)
+    /// for a failed run.
+    pub fn results(&self) -> [(&'static str, Option<f64>); 4] {
+        [
+            ("t_s", self.t_s),
+            ("x_m", self.x_m),
+            ("v_m_s", self.v_m_s),
+            ("a_over_g_sin_alpha", self.a_over_g_sin_alpha),
+        ]
+    }
+
+    /// This row, or, when one of its results is not a finite number, the
+    /// row of a failed run whose `error` names it: a sweep never writes
+    /// NaN or an infinity (CSV, Parquet, Python alike).
+    pub(crate) fn finite_or_error(mut self) -> SweepRow {
+        let bad = self
+            .results()
+            .into_iter()
+            .find_map(|(name, v)| v.filter(|x| !x.is_finite()).map(|x| (name, x)));
+        if let Some((name, value)) = bad {
+            self.error = Some(format!(
+                "the run gave {name} = {value}, not a finite number: the scenario is outside \
+                 the range this model can compute"
+            ));
+            (self.stop, self.t_s, self.x_m, self.v_m_s) = (None, None, None, None);
+            (self.a_over_g_sin_alpha, self.turns) = (None, None);
+        }
+        self
+    }
+
     /// Fills in the results from the state at the end of the run.
     pub(crate) fn set_results(
         &mut self,
@@ -197,6 +234,12 @@ impl SweepRow {
     }
 }
 
+/// The `warnings` cell of `point`: the codes of [`run_warnings`] for its
+/// model, scenario and options, `;`-separated; `None` when there is none.
+pub fn point_warnings(point: &Point) -> Option<String> {
+    warning_codes(&run_warnings(point.model, &point.scenario, &point.options))
+}
+
 /// Full turns of a circular log that rolled `x` without slipping and grew
 /// from `r0` to `r` (eq. (8)): `⌊x/(π (r + r0))⌋`.
 pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
@@ -206,5 +249,63 @@ pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
         turns.floor() as u64
     } else {
         0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sweep::Grid;
+
+    fn point() -> Point {
+        Grid::new(vec![ModelKind::Energy], vec![])
+            .unwrap()
+            .point(0)
+            .unwrap()
+    }
+
+    /// A row whose result is not finite becomes the row of a failed run,
+    /// naming the column and the value; a finite row is kept as it is.
+    /// Fed a finite value in place of the infinity, the first check fails.
+    #[test]
+    fn a_non_finite_result_becomes_an_error_row() {
+        let point = point();
+        let sample = Sample {
+            t_s: 0.0,
+            x_m: 0.0,
+            v_m_s: 0.0,
+            a_m_s2: f64::NEG_INFINITY,
+            r_m: 0.1,
+            mass_kg: 1.0,
+            normal_n: 1.0,
+            friction_n: 0.0,
+            friction_ratio: Some(0.0),
+        };
+        let mut row = SweepRow::parameters(&point);
+        row.set_results(&point, StopReason::DoesNotStart, &sample, 0);
+        let failed = row.clone().finite_or_error();
+        let error = failed.error.clone().unwrap_or_default();
+        assert!(error.contains("a_over_g_sin_alpha = -inf"), "{error}");
+        assert!(failed.results().iter().all(|r| r.1.is_none()));
+        assert_eq!((failed.stop, failed.turns), (None, None));
+        assert_eq!(
+            SweepRow::parameters(&point).alpha_deg.to_bits(),
+            failed.alpha_deg.to_bits()
+        );
+        let fine = Sample {
+            a_m_s2: -1.0,
+            ..sample
+        };
+        let mut row = SweepRow::parameters(&point);
+        row.set_results(&point, StopReason::DoesNotStart, &fine, 0);
+        assert_eq!(row.clone().finite_or_error(), row);
+    }
+
+    /// The names [`SweepRow::results`] gives are columns of the sweep.
+    #[test]
+    fn result_names_are_columns() {
+        for (name, _) in SweepRow::parameters(&point()).results() {
+            assert!(SweepRow::COLUMNS.contains(&name), "{name}");
+        }
     }
 }

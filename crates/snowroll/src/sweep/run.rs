@@ -6,8 +6,8 @@ use std::ops::Range;
 use rayon::prelude::*;
 
 use super::grid::{Grid, Point};
-use super::row::circular_turns;
 use super::row::SweepRow;
+use super::row::{circular_turns, point_warnings};
 use crate::error::ParamError;
 use crate::models::{circular_end, circular_forces, ContactCheck, Derivation, ModelKind};
 use crate::physics;
@@ -49,17 +49,16 @@ pub const FAST_MIN_RTOL: f64 = 1e-12;
 /// [`ParamError`] when `index` is not a point of the grid.
 pub fn run_point(grid: &Grid, index: u64, method: Method) -> Result<SweepRow, ParamError> {
     let point = grid.point(index)?;
-    if method == Method::Auto {
-        if let Some(row) = fast_row(&point) {
-            return Ok(row);
-        }
-    }
-    let traj = point
-        .model
-        .build()
-        .simulate(&point.scenario, &point.options)
-        .map_err(|e| e.to_string());
-    Ok(SweepRow::new(&point, traj.as_ref().map_err(Clone::clone)))
+    let fast = (method == Method::Auto).then(|| fast_row(&point)).flatten();
+    let row = fast.unwrap_or_else(|| {
+        let traj = point
+            .model
+            .build()
+            .simulate(&point.scenario, &point.options)
+            .map_err(|e| e.to_string());
+        SweepRow::new(&point, traj.as_ref().map_err(Clone::clone))
+    });
+    Ok(row.finite_or_error())
 }
 
 /// The row of a circular model from the closed form, or `None` where it
@@ -126,6 +125,19 @@ pub fn shard_range(len: u64, shard: u64, shards: u64) -> Result<Range<u64>, Stri
     }
     let cut = |k: u64| (u128::from(len) * u128::from(k) / u128::from(shards)) as u64;
     Ok(cut(shard)..cut(shard + 1))
+}
+
+/// How many of the points of `indices` have warnings ([`point_warnings`]):
+/// the count a sweep's header records, known before any point is run since
+/// the warnings depend on the point only.
+///
+/// # Errors
+/// [`ParamError`] for indices outside the grid.
+pub fn count_warnings(grid: &Grid, indices: Range<u64>) -> Result<u64, ParamError> {
+    indices
+        .into_par_iter()
+        .map(|i| Ok(u64::from(point_warnings(&grid.point(i)?).is_some())))
+        .sum()
 }
 
 /// Computes the rows of `indices` in parallel on the current rayon pool, and
