@@ -7,6 +7,7 @@ use std::fmt;
 use thiserror::Error;
 
 use crate::error::ParamError;
+use crate::number::format_number;
 
 /// A parameter that a sweep can vary. The names are the command line's
 /// (`--alpha-deg`) in snake case (`alpha_deg`), as in config files.
@@ -250,14 +251,21 @@ impl Values {
 }
 
 impl fmt::Display for Values {
-    /// As it would be typed: `a,b,c` or `start:end:count`.
+    /// As it would be typed: `a,b,c` or `start:end:count`, each number as
+    /// every output writes one ([`format_number`]: exponent form outside
+    /// 1e-4..1e9, the shortest text that reads back to the same value).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Values::List(v) => {
-                let items: Vec<String> = v.iter().map(f64::to_string).collect();
+                let items: Vec<String> = v.iter().map(|&x| format_number(x)).collect();
                 f.write_str(&items.join(","))
             }
-            Values::Range { start, end, count } => write!(f, "{start}:{end}:{count}"),
+            Values::Range { start, end, count } => write!(
+                f,
+                "{}:{}:{count}",
+                format_number(*start),
+                format_number(*end)
+            ),
         }
     }
 }
@@ -269,4 +277,29 @@ pub struct Axis {
     pub param: Param,
     /// Its values.
     pub values: Values,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A header's axis line reads back to the values it was written from,
+    /// bit for bit, and a tiny or huge value is in exponent form (issue 20:
+    /// `# alpha_deg: 0.000…0001` had a hundred digits).
+    #[test]
+    fn values_print_in_exponent_form_outside_the_plain_range_and_read_back() {
+        for text in [
+            "1e-100,0.5",
+            "1e-10,0.0001,1e9,2.5e12",
+            "1e-12:1e-6:3",
+            "5:60:12",
+        ] {
+            let values = Values::parse("rtol", text).unwrap();
+            let shown = values.to_string();
+            assert!(shown.len() < 40, "{text} shown as {shown}");
+            assert_eq!(Values::parse("rtol", &shown).unwrap(), values, "{shown}");
+        }
+        let shown = Values::parse("rtol", "1e-100,0.5").unwrap().to_string();
+        assert_eq!(shown, "1e-100,0.5");
+    }
 }
