@@ -134,3 +134,21 @@ fn a_bad_list_is_refused_naming_the_model() {
         "{err}"
     );
 }
+
+#[test]
+fn several_models_output_is_not_read_back_as_one_run() {
+    // Its first block's `#` lines name one model: read back, they would
+    // rerun that model alone, silently.
+    let dir = tempfile::tempdir().unwrap();
+    simulate(dir.path(), "eq4,eq6", "all.csv", &[]);
+    simulate(dir.path(), "eq4,eq6", "all.json", &[]);
+    for name in ["all.csv", "all.json"] {
+        let out = run_in(dir.path(), &["simulate", "--config", name]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success() && out.stdout.is_empty(),
+            "{name}: {err}"
+        );
+        assert!(err.contains(name), "{name}: {err}");
+    }
+}

@@ -204,7 +204,7 @@ pub(crate) fn value_name(v: impl ValueEnum) -> String {
 /// `--config` file.
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 pub struct ScenarioArgs {
-    /// Model id or equation alias, e.g. torque-cm or eq4, any case (`snowroll models` describes them); simulate takes a list ID,ID,... of circular models, each once, and writes one output with a leading `model` column and one figure with a curve per model [default: none, one is required]
+    /// Model id or equation alias, e.g. torque-cm or eq4, any case (`snowroll models` describes them); simulate takes a list ID,ID,... of circular models, each once, and writes one output, its rows led by a model column, and with --plot one figure, a curve per model [default: none, one is required]
     #[arg(long, value_name = "ID[,ID...]", ignore_case = true)]
     pub model: Option<ModelList>,
 
@@ -333,7 +333,7 @@ fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelList
 /// Flags of `snowroll turns`.
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 #[command(
-    mut_arg("model", |a| a.hide_possible_values(true).value_parser(turn_model_parser()).help(
+    mut_arg("model", |a| a.value_name("ID").hide_possible_values(true).value_parser(turn_model_parser()).help(
         "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry), any case; one model [default: none, one is required]"
     )),
     mut_arg("t_end", |a| a.help(with_default(
