@@ -27,7 +27,7 @@ use snowroll::params::{Kind, RealOrWord, Scope};
 use snowroll::{Given, ModelKind, Param, Settings, Value, PARAMS};
 use snowroll_io::Format;
 
-use crate::args::{OutputArgs, ParamArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
+use crate::args::{ModelList, OutputArgs, ParamArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
 use crate::bounded::{self, Bounded, MAX_HEADER, MAX_SETTINGS_FILE};
 mod readback;
 
@@ -366,7 +366,7 @@ impl ScenarioArgs {
     /// These flags, with every one that was not given taken from `file`.
     fn over(self, file: &ConfigFile) -> ScenarioArgs {
         ScenarioArgs {
-            model: self.model.or(file.model),
+            model: self.model.or(file.model.map(ModelList::one)),
             params: ParamArgs {
                 given: self.params.given.or(&file.shared()),
             },
@@ -493,7 +493,10 @@ mod tests {
             ..Default::default()
         };
         let merged = flags.over(file);
-        assert_eq!(merged.scenario.model, Some(ModelKind::Energy));
+        assert_eq!(
+            merged.scenario.model,
+            Some(ModelList::one(ModelKind::Energy))
+        );
         let p = &merged.scenario.params.given;
         assert_eq!(
             p.get(Param::of_key("alpha_deg").unwrap()),
@@ -525,7 +528,10 @@ mod tests {
             ..Default::default()
         };
         let merged = flags.clone().over(file, path).unwrap();
-        assert_eq!(merged.scenario.model, Some(ModelKind::TurnsExact));
+        assert_eq!(
+            merged.scenario.model,
+            Some(ModelList::one(ModelKind::TurnsExact))
+        );
         let r0 = Param::of_key("r0").unwrap();
         assert_eq!(
             merged.scenario.params.given.get(r0),

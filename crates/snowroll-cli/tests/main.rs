@@ -8,6 +8,7 @@ mod fuzz_findings;
 mod guards;
 mod inputs;
 mod merge_bytes;
+mod model_list;
 mod output_files;
 mod paper;
 mod plot;

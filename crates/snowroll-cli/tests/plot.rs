@@ -134,6 +134,84 @@ fn simulate_plot_draws_the_runs_acceleration_speed_and_distance() {
 }
 
 #[test]
+fn a_list_of_three_models_draws_three_curves_in_each_panel() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run_in(
+        dir.path(),
+        &[
+            "simulate",
+            "--model",
+            "eq4,eq6,eq14",
+            "--dt",
+            "0.25",
+            "--t-end",
+            "6",
+            "-o",
+            "all.csv",
+            "--plot",
+            "all.svg",
+        ],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = fs::read_to_string(dir.path().join("all.csv")).unwrap();
+    let svg = fs::read_to_string(dir.path().join("all.svg")).unwrap();
+    let curves = curves(&svg);
+    // Five panels (a/(g sin α), v, x, N, |F|/N), each with one curve of
+    // each model in a colour of its own, models in the order given.
+    for k in 0..5 {
+        assert_eq!(colours_in(&svg, k).len(), 3, "panel {k}");
+    }
+    let v_panel: Vec<&Vec<(f64, f64)>> = curves.iter().filter(|c| panel(c) == 1).collect();
+    assert_eq!(v_panel.len(), 3);
+    // Each v curve draws its own model's rows of the one CSV: the three
+    // share one scale, fixed by the extremes over all of them.
+    let (lo, hi) = v_panel
+        .iter()
+        .flat_map(|c| c.iter().map(|p| p.1))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), y| {
+            (l.min(y), h.max(y))
+        });
+    let v_all = column(&csv, "v_m_s");
+    let v_max = v_all.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let ids = csv
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap().to_string())
+        .collect::<Vec<_>>();
+    for (curve, id) in v_panel
+        .iter()
+        .zip(["torque-cm", "torque-contact", "energy"])
+    {
+        let v: Vec<f64> = v_all
+            .iter()
+            .zip(&ids)
+            .filter(|(_, m)| *m == id)
+            .map(|(v, _)| *v)
+            .collect();
+        assert_eq!(curve.len(), v.len(), "{id}");
+        // From rest (v = 0 at the bottom) to the greatest speed of all (top):
+        // pixel y is linear in v.
+        for (p, v) in curve.iter().zip(&v) {
+            let want = hi + (lo - hi) * v / v_max;
+            assert!(
+                (p.1 - want).abs() < PIXEL_TOL,
+                "{id}: v = {v}: y {} not {want}",
+                p.1
+            );
+        }
+        assert!(
+            svg.contains(&format!(">\n{id}\n</text>")),
+            "no legend entry {id}"
+        );
+    }
+}
+
+#[test]
 fn simulate_plot_with_the_ledger_adds_its_shares_and_png_is_a_png() {
     let dir = tempfile::tempdir().unwrap();
     let out = run_in(

@@ -143,6 +143,51 @@ pub struct PaperArgs {
 /// file says, and its end time, s: the library's defaults of a turn run.
 pub use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
 
+/// Model ids or equation aliases `a,b,c`, any case, as `--model` of
+/// `sweep` reads them (the one parser of a model list).
+///
+/// # Errors
+/// The first id that names no model, with the ids and aliases allowed.
+pub fn parse_models(text: &str) -> Result<Vec<ModelKind>, snowroll::ParamError> {
+    text.split(',').map(str::parse::<ModelKind>).collect()
+}
+
+/// The `--model` of `simulate` and `turns`: one model or several, each
+/// once, in the order given.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ModelList(Vec<ModelKind>);
+
+impl ModelList {
+    /// A list of one model.
+    pub fn one(model: ModelKind) -> Self {
+        Self(vec![model])
+    }
+
+    /// The models, in the order given (never empty).
+    pub fn models(&self) -> &[ModelKind] {
+        &self.0
+    }
+}
+
+impl std::str::FromStr for ModelList {
+    type Err = String;
+
+    /// [`parse_models`], then refuses a model given twice (by id or alias).
+    fn from_str(text: &str) -> Result<Self, String> {
+        let models = parse_models(text).map_err(|e| e.to_string())?;
+        for (i, m) in models.iter().enumerate() {
+            if models[..i].contains(m) {
+                return Err(format!(
+                    "model {} ({}) is given twice in {text:?}; give each model once",
+                    m.id(),
+                    m.alias()
+                ));
+            }
+        }
+        Ok(Self(models))
+    }
+}
+
 /// `help` text with the default value appended, as clap shows it.
 fn with_default(text: &str, default: impl Display) -> String {
     format!("{text} [default: {default}]")
@@ -159,9 +204,9 @@ pub(crate) fn value_name(v: impl ValueEnum) -> String {
 /// `--config` file.
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 pub struct ScenarioArgs {
-    /// Model id or equation alias, e.g. torque-cm or eq4 (`snowroll models` describes them)
-    #[arg(long, value_name = "ID", ignore_case = true)]
-    pub model: Option<ModelKind>,
+    /// Model id or equation alias, e.g. torque-cm or eq4, any case (`snowroll models` describes them); simulate takes a list ID,ID,... of circular models, each once, and writes one output, its rows led by a model column, and with --plot one figure, a curve per model [default: none, one is required]
+    #[arg(long, value_name = "ID[,ID...]", ignore_case = true)]
+    pub model: Option<ModelList>,
 
     /// The scenario, the integrator, the losses: one flag per parameter.
     #[command(flatten)]
@@ -272,8 +317,9 @@ pub struct SimulateArgs {
 }
 
 /// The `--model` of `snowroll turns`: only the turn models are values (so
-/// a typo is matched against them alone), by id or alias, in any case.
-fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind> {
+/// a typo is matched against them alone), by id or alias, in any case; one
+/// model.
+fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelList> {
     use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
     PossibleValuesParser::new(
         ModelKind::ALL
@@ -281,14 +327,14 @@ fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind
             .filter(|k| k.is_turn_model())
             .map(|k| PossibleValue::new(k.id()).alias(k.alias())),
     )
-    .try_map(|name| name.parse::<ModelKind>())
+    .try_map(|name| name.parse::<ModelKind>().map(ModelList::one))
 }
 
 /// Flags of `snowroll turns`.
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 #[command(
-    mut_arg("model", |a| a.hide_possible_values(true).value_parser(turn_model_parser()).help(
-        "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry)"
+    mut_arg("model", |a| a.value_name("ID").hide_possible_values(true).value_parser(turn_model_parser()).help(
+        "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry), any case; one model [default: none, one is required]"
     )),
     mut_arg("t_end", |a| a.help(with_default(
         "Stop at this time, in s (t_end > 0); long enough by default that --turns ends the run",

@@ -4,7 +4,7 @@
 use anyhow::{anyhow, Result};
 use snowroll::{ModelKind, ParamError, Sampling, Scenario, Settings, SimOptions};
 
-use crate::args::{value_name, OutputArgs, ScenarioArgs};
+use crate::args::{value_name, ModelList, OutputArgs, ScenarioArgs};
 use crate::clash::{refuse_clashes, RunFile};
 use snowroll_io::Format;
 
@@ -21,9 +21,10 @@ pub fn id_list(kinds: &[ModelKind]) -> String {
     kinds.iter().map(|k| k.id()).collect::<Vec<_>>().join(", ")
 }
 
-/// The model asked for, or an error saying how to give one of `choices`.
-pub fn model(a: &ScenarioArgs, choices: &[ModelKind]) -> Result<ModelKind> {
-    a.model.ok_or_else(|| {
+/// The models asked for, in the order given, or an error saying how to
+/// give one of `choices`.
+pub fn models<'a>(a: &'a ScenarioArgs, choices: &[ModelKind]) -> Result<&'a [ModelKind]> {
+    a.model.as_ref().map(ModelList::models).ok_or_else(|| {
         anyhow!(
             "no model given: pass --model ID (or set `model` in the config file), ID one of {}",
             id_list(choices)

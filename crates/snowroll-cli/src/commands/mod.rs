@@ -9,6 +9,7 @@ mod paper;
 #[cfg(feature = "parquet")]
 mod parquet;
 mod simulate;
+mod stack;
 mod sweep;
 mod sweep_check;
 mod sweep_csv;

@@ -8,7 +8,7 @@ use std::path::Path;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::ValueEnum;
 use snowroll::sweep::{Axis, Choices, Grid, GridError, Method, Param, Values};
-use snowroll::{CollisionModel, ModelKind, OnHop};
+use snowroll::{CollisionModel, OnHop};
 
 use crate::args::{sweep_axes, SweepArgs};
 use crate::bounded::{self, MAX_SETTINGS_FILE};
@@ -90,11 +90,7 @@ pub fn grid_of(
         axes.push(Axis { param, values });
     }
     let models = match models {
-        Some(text) => text
-            .split(',')
-            .map(|id| id.parse::<ModelKind>())
-            .collect::<Result<Vec<_>, _>>()
-            .context("--model")?,
+        Some(text) => crate::args::parse_models(&text).context("--model")?,
         None => Vec::new(),
     };
     let grid = Grid::new(models, axes).map_err(|e| match e {

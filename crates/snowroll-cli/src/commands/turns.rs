@@ -107,8 +107,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
 /// The turn model asked for; any other model is refused, naming the turn models.
 fn turn_model(args: &TurnsArgs) -> Result<ModelKind> {
     let choices = turn_models();
-    let model = inputs::model(&args.scenario, &choices)?;
-    if !model.is_turn_model() {
+    let models = inputs::models(&args.scenario, &choices)?;
+    if let Some(&model) = models.iter().find(|m| !m.is_turn_model()) {
         bail!(
             "`snowroll turns` needs a turn model, one of {} (aliases {}), not {}",
             id_list(&choices),
@@ -120,7 +120,14 @@ fn turn_model(args: &TurnsArgs) -> Result<ModelKind> {
             model.id()
         );
     }
-    Ok(model)
+    match models {
+        [model] => Ok(*model),
+        _ => bail!(
+            "`snowroll turns` runs one model; --model {} names {}: run each alone",
+            id_list(models).replace(", ", ","),
+            models.len()
+        ),
+    }
 }
 
 /// One line for stderr when the run ended before the turns asked for.

@@ -131,6 +131,14 @@ pub fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
     let mut origin = Origin::Simulate;
     for line in text.lines() {
         let Some(comment) = line.strip_prefix('#') else {
+            // The column header: several models' output leads with `model`.
+            if line.starts_with("model,") {
+                bail!(
+                    "it is the output of several models (`--model a,b,...`, a leading `model` \
+                     column), which reads back as no one run; give one model's output, or its \
+                     settings as flags"
+                );
+            }
             break;
         };
         let Some((key, value)) = comment.split_once(" = ") else {
