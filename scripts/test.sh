@@ -18,7 +18,9 @@ py_setup_log=$(mktemp)
 bash scripts/test-python.sh --setup >"$py_setup_log" 2>&1 &
 py_setup=$!
 # shellcheck disable=SC2064 # expand now: the job and the log of this run
-trap "kill $py_setup 2>/dev/null; rm -f '$py_setup_log'" EXIT
+# (`set +e` first: under `set -e` a failing `kill` of a job already ended
+# would end the trap, and the script, with its status.)
+trap "set +e; kill $py_setup 2>/dev/null; rm -f '$py_setup_log'" EXIT
 
 cargo test --workspace --all-features
 
@@ -52,7 +54,7 @@ bash .ci/install-chromium.sh >/dev/null
 bash scripts/test-slurm.sh "$cli" >"$slurm_log" 2>&1 &
 slurm=$!
 # shellcheck disable=SC2064 # expand now: the job and the files of this run
-trap "kill $slurm 2>/dev/null; wait $slurm 2>/dev/null; rm -rf '$report_dir' '$slurm_log' '$py_setup_log'" EXIT
+trap "set +e; kill $slurm 2>/dev/null; wait $slurm 2>/dev/null; rm -rf '$report_dir' '$slurm_log' '$py_setup_log'" EXIT
 
 "$cli" paper --strict --quiet --out "$report_dir"
 bash .ci/browser-test.sh "$report_dir"
