@@ -145,14 +145,25 @@ pub fn install_signal_handlers() -> std::io::Result<()> {
         .name("signals".to_string())
         .spawn(move || {
             for signal in signals.forever() {
-                // `snowroll serve` stops its workers and ends with success;
-                // a second signal ends it at once (registered above).
-                #[cfg(feature = "serve")]
-                if serve::stop_on_signal() {
+                if serve_stops_on_signal() {
                     continue;
                 }
                 scratch::remove_all_and_exit(128 + signal);
             }
         })?;
     Ok(())
+}
+
+/// Whether a running `snowroll serve` takes this signal: it stops its
+/// workers and ends with success; a second signal ends it at once
+/// (registered in [`install_signal_handlers`]).
+#[cfg(feature = "serve")]
+fn serve_stops_on_signal() -> bool {
+    serve::stop_on_signal()
+}
+
+/// Without the `serve` feature no server takes a signal.
+#[cfg(not(feature = "serve"))]
+fn serve_stops_on_signal() -> bool {
+    false
 }
