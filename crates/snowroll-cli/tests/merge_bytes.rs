@@ -8,7 +8,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use crate::support::{bin, run_in};
+use crate::support::{bin, fails_in, run_in};
 
 /// 48 points: two models, four angles, three speeds, two depths; the
 /// flags in an order other than the one a sweep records them in.
@@ -42,15 +42,6 @@ fn ok_with(dir: &Path, args: &[String], threads: usize) {
         "{args:?}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-}
-
-/// The one `error:` line of a run that must fail with status 1.
-fn fails_in(dir: &Path, args: &[&str]) -> String {
-    let out = run_in(dir, args);
-    let e = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(1), "{args:?}: {e}");
-    assert!(!e.contains("panicked"), "{e}");
-    e
 }
 
 /// [`GRID`] followed by `extra`.

@@ -12,25 +12,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use crate::support::{bin, run_in};
-
-fn ok_in(dir: &Path, args: &[&str]) {
-    let out = run_in(dir, args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
-/// The one `error:` line of a run that must fail with status 1.
-fn fails_in(dir: &Path, args: &[&str]) -> String {
-    let out = run_in(dir, args);
-    let e = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(1), "{args:?}: {e}");
-    assert!(!e.contains("panicked"), "{e}");
-    e
-}
+use crate::support::{bin, fails_in, ok_in};
 
 /// 48 points: two models, four angles, three speeds, two depths.
 const GRID: [&str; 11] = [
