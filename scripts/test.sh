@@ -7,28 +7,75 @@
 # Debian's chromium first if it is missing; needs root or sudo for that) and
 # of `snowroll serve`'s page (.ci/serve-browser-test.sh), then
 # scripts/check-guide.py (links of the docs, the user guide's examples).
-# The Python environment is installed while cargo compiles, and the Slurm
-# test runs beside the report's; each one's output is shown when it ends.
+#
+# On 2 cores the order is chosen so that waiting overlaps work (issue 19,
+# item 4; the whole took 412 s from a fresh clone when each step ran after
+# the other): the Python environment is installed while cargo compiles, the
+# Python wheel is built while the Rust tests run, and the Python tests run
+# beside the report's browser tests and the Slurm test (those mostly wait
+# on a browser or the scheduler). Each job's output is shown when it ends.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# The Python tests' environment is installed (pip, mostly downloads) while
-# cargo compiles; its log is shown only if it fails.
-py_setup_log=$(mktemp)
-bash scripts/test-python.sh --setup >"$py_setup_log" 2>&1 &
-py_setup=$!
-# shellcheck disable=SC2064 # expand now: the job and the log of this run
+# Files of this run and the jobs still running, removed and ended on exit
 # (`set +e` first: under `set -e` a failing `kill` of a job already ended
-# would end the trap, and the script, with its status.)
-trap "set +e; kill $py_setup 2>/dev/null; rm -f '$py_setup_log'" EXIT
+# would end the trap, and the script, with its status).
+files=()
+jobs_running=()
+cleanup() {
+    set +e
+    for job in "${jobs_running[@]}"; do
+        kill "$job" 2>/dev/null
+        wait "$job" 2>/dev/null
+    done
+    rm -rf "${files[@]}"
+}
+trap cleanup EXIT
+
+# Starts `$@` in the background with its output in a file; sets $job, $log.
+start() {
+    log=$(mktemp)
+    files+=("$log")
+    "$@" >"$log" 2>&1 &
+    job=$!
+    jobs_running+=("$job")
+}
+
+# Waits for job $1 (log $2); shows its log when it fails (or always, with
+# `show`) and then, on failure, ends the script naming $3.
+finish() {
+    local status=0 job
+    wait "$1" || status=$?
+    local still=()
+    for job in "${jobs_running[@]}"; do
+        [ "$job" = "$1" ] || still+=("$job")
+    done
+    jobs_running=("${still[@]}")
+    if [ "$status" -ne 0 ] || [ "${4:-}" = show ]; then
+        cat "$2"
+    fi
+    if [ "$status" -ne 0 ]; then
+        echo "test: FAIL: $3 exited $status" >&2
+        exit "$status"
+    fi
+}
+
+# The Python tests' environment is installed (pip, mostly downloads) while
+# cargo compiles.
+start bash scripts/test-python.sh --setup
+py_setup=$job py_setup_log=$log
+
+cargo test --workspace --all-features --no-run
+
+# The wheel (a second cargo build, of crates/snowroll-py) beside the Rust
+# tests (which keep about one and a half of the 2 cores busy).
+finish "$py_setup" "$py_setup_log" "scripts/test-python.sh --setup"
+start bash scripts/test-python.sh --wheel
+wheel=$job wheel_log=$log
 
 cargo test --workspace --all-features
 
-if ! wait "$py_setup"; then
-    cat "$py_setup_log" >&2
-    echo "test: FAIL: setting up the Python tests' environment (scripts/test-python.sh --setup)" >&2
-    exit 1
-fi
+finish "$wheel" "$wheel_log" "scripts/test-python.sh --wheel"
 
 # The program those tests ran (the test profile: the same numbers to the
 # bit as a release build, since Rust never reassociates floating point; no
@@ -40,22 +87,22 @@ case $target in
 esac
 cli=$target/debug/snowroll
 
-# The Python package: one wheel, pytest against that CLI.
-SNOWROLL_CLI=$cli bash scripts/test-python.sh
+# Chromium is installed first (a no-op when it is) so that it and the Slurm
+# test never run apt-get at once.
+bash .ci/install-chromium.sh >/dev/null
+
+# The Python package's tests: pytest against that CLI.
+start env SNOWROLL_CLI="$cli" bash scripts/test-python.sh --tests
+pytest_job=$job pytest_log=$log
 
 # examples/slurm-sweep.sh on a one-node Slurm cluster started here (installs
 # Debian's slurm-wlm and munge first if missing; needs root or sudo, else it
-# says so and skips). It mostly waits on the scheduler, so it runs beside the
-# report and its browser test; Chromium is installed first (a no-op when it
-# is) so that the two never run apt-get at once.
-report_dir=$(mktemp -d)
-slurm_log=$(mktemp)
-bash .ci/install-chromium.sh >/dev/null
-bash scripts/test-slurm.sh "$cli" >"$slurm_log" 2>&1 &
-slurm=$!
-# shellcheck disable=SC2064 # expand now: the job and the files of this run
-trap "set +e; kill $slurm 2>/dev/null; wait $slurm 2>/dev/null; rm -rf '$report_dir' '$slurm_log' '$py_setup_log'" EXIT
+# says so and skips). It mostly waits on the scheduler.
+start bash scripts/test-slurm.sh "$cli"
+slurm=$job slurm_log=$log
 
+report_dir=$(mktemp -d)
+files+=("$report_dir")
 "$cli" paper --strict --quiet --out "$report_dir"
 bash .ci/browser-test.sh "$report_dir"
 # Keep the screenshots as artifacts of the run.
@@ -68,13 +115,8 @@ bash .ci/serve-browser-test.sh "$cli" target/browser-test
 echo "browser test artifacts: target/browser-test/"
 echo "browser: 2 passed, 0 failed"
 
-slurm_status=0
-wait "$slurm" || slurm_status=$?
-cat "$slurm_log"
-if [ "$slurm_status" -ne 0 ]; then
-    echo "test: FAIL: scripts/test-slurm.sh exited $slurm_status" >&2
-    exit "$slurm_status"
-fi
+finish "$pytest_job" "$pytest_log" "scripts/test-python.sh --tests" show
+finish "$slurm" "$slurm_log" "scripts/test-slurm.sh" show
 
 # The user guide: every link of the README and docs/ resolves, and every
 # example of docs/guide/ runs (the Python ones with the wheel just tested).
