@@ -410,6 +410,7 @@ impl SimulateArgs {
             times,
             dt,
             turns: turns.or(file.turns()),
+            method,
             output: output.over(&file),
         }
     }
@@ -426,6 +427,7 @@ impl TurnsArgs {
         let TurnsArgs {
             scenario,
             turns,
+            method,
             output,
         } = self;
         for (key, set) in [
@@ -443,6 +445,7 @@ impl TurnsArgs {
         Ok(TurnsArgs {
             scenario: scenario.over(&file),
             turns: turns.or(file.turns()),
+            method,
             output: output.over(&file),
         })
     }

@@ -144,8 +144,8 @@ pub use models::{
     state_scale, tolerance_warning, validity_warnings, Balance, CircularModel, Coefficients,
     CollisionModel, ContactForces, ContactRange, Derivation, DragOnlyClosedForm,
     InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, SectorBody, TurnCheckpoint,
-    TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable,
-    TurnVariant, Validity, ValidityWarning,
+    TurnDynamics, TurnExtremes, TurnMethod, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary,
+    TurnTable, TurnVariant, Validity, ValidityWarning,
 };
 pub use number::format_number;
 pub use params::{Given, Param, RecordedSampling, Settings, Value, PARAMS};

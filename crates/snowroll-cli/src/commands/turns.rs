@@ -6,8 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_turns_into, tolerance_warning, validity_warnings, Sampling,
-    SimError, StopReason, TurnRunEnd, TurnSummary,
+    default_atol, format_number, tolerance_warning, validity_warnings, Sampling, SimError,
+    StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -57,11 +57,27 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     // Everything the model refuses, before any output (nothing reaches stdout).
     model.build().check(&scenario, &opts)?;
     let format = inputs::format(&args.output)?;
+    let asked = args.method.unwrap_or_default();
+    let turn_model = TurnVariant::of(model)
+        .map(|v| TurnModel::new(v).with_method(asked))
+        .context("a turn model")?;
+    let method = turn_model.method_for(&scenario, &opts);
     let mut warnings: Vec<String> = validity_warnings(model, &scenario)
         .iter()
         .map(ToString::to_string)
         .collect();
-    warnings.extend(tolerance_warning(model, &scenario, &opts));
+    if method == TurnMethod::Ode {
+        // The closed form takes no integrator tolerances.
+        warnings.extend(tolerance_warning(model, &scenario, &opts));
+    }
+    if method != asked {
+        report!(
+            "note: --method {} does not cover this run (--collision pivot, or a start from rest \
+             that may not start); the table is computed by --method {}",
+            asked.id(),
+            method.id()
+        );
+    }
     for w in &warnings {
         report!("warning: {w}");
     }
@@ -76,7 +92,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as each turn ends; the stop, the notes and the summary are
     // written last.
-    let end = match run_turns_into(model, &scenario, &opts, &mut writer) {
+    let end = match turn_model.run_table_into(&scenario, &opts, &mut writer) {
         Ok(end) => end,
         Err(SimError::Sink(e)) if !is_non_finite(&e) => {
             return Err(anyhow::Error::from(SimError::Sink(e)).context(format!("writing {name}")))

@@ -301,7 +301,7 @@ pub struct ContactRange {
 /// The first θ in `(lo, hi]` where `n(θ) ≤ 0`, given `n(lo) > 0 ≥ n(hi)` and
 /// one crossing between them: bisection until `lo` and `hi` are adjacent
 /// doubles (at most ~60 halvings for θ ≤ 2π); the end with `n ≤ 0`.
-fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+pub(super) fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     loop {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
