@@ -410,7 +410,6 @@ impl SimulateArgs {
             times,
             dt,
             turns: turns.or(file.turns()),
-            method,
             output: output.over(&file),
         }
     }

@@ -130,7 +130,7 @@ impl<'a> Orbit<'a> {
         let k = &self.turn.coeffs;
         let (g, c_n, r) = (self.turn.g_along, self.turn.g_normal, self.turn.r);
         let theta = theta1 - u;
-        let (s_half, c_half) = (0.5 * u).sin_cos();
+        let s_half = (0.5 * u).sin();
         let (s_mid, c_mid) = (theta1 - 0.5 * u).sin_cos();
         // cos θ − cos θ₁ = 2 sin(θ₁ − u/2) sin(u/2); sin θ − sin θ₁ = −2 cos(θ₁ − u/2) sin(u/2).
         let d_cos = 2.0 * s_mid * s_half;
