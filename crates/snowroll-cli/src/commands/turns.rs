@@ -6,8 +6,9 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, tolerance_warning, validity_warnings, Sampling, SimError,
-    StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant,
+    default_atol, format_number, tolerance_warning, validity_warnings, ModelKind, Sampling,
+    Scenario, SimError, SimOptions, StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary,
+    TurnVariant,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -57,30 +58,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     // Everything the model refuses, before any output (nothing reaches stdout).
     model.build().check(&scenario, &opts)?;
     let format = inputs::format(&args.output)?;
-    let asked = args.method.unwrap_or_default();
-    let turn_model = TurnVariant::of(model)
-        .map(|v| TurnModel::new(v).with_method(asked))
-        .context("a turn model")?;
-    let method = turn_model.method_for(&scenario, &opts);
-    let mut warnings: Vec<String> = validity_warnings(model, &scenario)
-        .iter()
-        .map(ToString::to_string)
-        .collect();
-    if method == TurnMethod::Ode {
-        // The closed form takes no integrator tolerances.
-        warnings.extend(tolerance_warning(model, &scenario, &opts));
-    }
-    if method != asked {
-        report!(
-            "note: --method {} does not cover this run (--collision pivot, or a start from rest \
-             that may not start); the table is computed by --method {}",
-            asked.id(),
-            method.id()
-        );
-    }
-    for w in &warnings {
-        report!("warning: {w}");
-    }
+    let (turn_model, method) = method(args.method, model, &scenario, &opts)?;
+    let warnings = warnings(model, &scenario, &opts, method);
 
     // Open the destination before the run, so that a bad path fails at once.
     let mut sink = Sink::open(&args.output)?;
@@ -116,6 +95,45 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     }
     report!("{}", summary(&end).trim_end());
     Ok(())
+}
+
+/// The turn model of `model` with the method asked for (closed by
+/// default), and the method that will compute the table: a note on stderr
+/// when the closed form does not cover the run.
+fn method(
+    asked: Option<TurnMethod>,
+    model: ModelKind,
+    scenario: &Scenario,
+    opts: &SimOptions,
+) -> Result<(TurnModel, TurnMethod)> {
+    let asked = asked.unwrap_or_default();
+    let turn_model = TurnVariant::of(model)
+        .map(|v| TurnModel::new(v).with_method(asked))
+        .context("a turn model")?;
+    let method = turn_model.method_for(scenario, opts);
+    if method != asked {
+        report!(
+            "note: --method {} does not cover this run (--collision pivot, or a start from rest \
+             that may not start); the table is computed by --method {}",
+            asked.id(),
+            method.id()
+        );
+    }
+    Ok((turn_model, method))
+}
+
+/// The run's warnings, each also on stderr: the model's range of validity
+/// and, for the integrator only, loose tolerances (the closed form takes none).
+fn warnings(model: ModelKind, s: &Scenario, opts: &SimOptions, method: TurnMethod) -> Vec<String> {
+    let mut warnings: Vec<String> = validity_warnings(model, s)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    warnings.extend(tolerance_warning(model, s, opts).filter(|_| method == TurnMethod::Ode));
+    for w in &warnings {
+        report!("warning: {w}");
+    }
+    warnings
 }
 
 /// One line for stderr when the run ended before the turns asked for.
