@@ -36,6 +36,10 @@ pub(super) const PANEL_TOL: f64 = 1e-14;
 /// Deepest bisection of a panel (2⁻³⁰ of the interval; the integrands of a
 /// turn need a few levels where θ̇ comes close to 0, none elsewhere).
 const MAX_DEPTH: usize = 30;
+/// Most panels of one quadrature: past this (rounding noise larger than
+/// the tolerance, on a scenario at the edge of the ranges) every panel left
+/// is kept as it is, so the work stays bounded.
+const MAX_PANELS: usize = 4096;
 /// Newton steps of [`Orbit::angle_at_time`] (each one quadrature; it
 /// converges quadratically from a start within a few per cent).
 const MAX_NEWTON: usize = 60;
@@ -232,14 +236,17 @@ pub(super) fn adaptive(mut f: impl FnMut(f64) -> f64, a: f64, b: f64) -> f64 {
     stack[0] = (mid, b, 1);
     stack[1] = (a, mid, 1);
     let mut n = 2;
+    let mut panels = 0;
     while n > 0 {
         n -= 1;
+        panels += 1;
         let (lo, hi, depth) = stack[n];
         let (value, err) = kronrod(&mut f, lo, hi);
         // A non-finite panel is not split further: its NaN or infinity
         // reaches the result, and the caller refuses it.
         let own = PANEL_TOL * value.abs();
-        if err <= own.max(share * (hi - lo)) || depth >= MAX_DEPTH || !err.is_finite() {
+        let spent = depth >= MAX_DEPTH || panels >= MAX_PANELS;
+        if err <= own.max(share * (hi - lo)) || spent || !err.is_finite() {
             total += value;
             continue;
         }
