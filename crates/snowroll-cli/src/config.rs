@@ -432,6 +432,7 @@ impl TurnsArgs {
         let TurnsArgs {
             scenario,
             turns,
+            method,
             output,
         } = self;
         for (key, set) in [
@@ -449,6 +450,7 @@ impl TurnsArgs {
         Ok(TurnsArgs {
             scenario: scenario.over(&file),
             turns: turns.or(file.turns()),
+            method,
             output: output.over(&file),
         })
     }

@@ -144,7 +144,7 @@ pub use models::{
     run_warnings, state_scale, tolerance_warning, validity_warnings, warning_codes, Balance,
     CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
     DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, RunWarning,
-    SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd,
+    SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnMethod, TurnModel, TurnRow, TurnRunEnd,
     TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning, WarningCode,
 };
 pub use number::format_number;

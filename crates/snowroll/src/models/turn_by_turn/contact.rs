@@ -16,6 +16,7 @@
 //! energy equation). Exact for the `Exact` variant, first order in b/r for
 //! `Paper`. As b → 0: N = m C, F = m G/3 (App. A).
 
+use super::jet::{Jet, Real};
 use super::{extremes, TurnDynamics};
 use crate::models::contact::ContactForces;
 use crate::units::Radians;
@@ -59,18 +60,32 @@ impl TurnDynamics {
 
     /// `(a, N, F)` at θ on the energy integral of a turn started with
     /// `θ̇(0) = omega0` (θ̇² clamped at 0 past a stall), from `sin θ`, `cos θ`:
-    /// a in m/s², N and F per unit `m_k` in m/s².
-    fn orbit_sc(&self, theta: f64, s: f64, c: f64, omega0: f64) -> (f64, f64, f64) {
+    /// a in m/s², N and F per unit `m_k` in m/s². In any [`Real`]: values
+    /// (`f64`), or values with their derivatives in θ ([`Jet`]) for Newton's
+    /// method on the extremes.
+    fn orbit_sc<T: Real>(&self, theta: T, s: T, c: T, omega0: f64) -> (T, T, T) {
         let k = &self.coeffs;
-        let (i, di) = self.inertia_sc(theta, s, c);
-        let (w, dw) = self.potential_sc(theta, s, c);
-        let w2 = ((1.5 * self.r * self.r * omega0 * omega0 - 2.0 * w) / i).max(0.0);
-        let alpha = (-dw - 0.5 * di * w2) / i;
-        let grown = 1.0 + k.accretion * theta;
-        let normal = grown * self.g_normal + k.e2 * (alpha * (1.0 - c) + w2 * s);
-        let friction =
-            grown * self.g_along - alpha * (self.r * grown - k.e2 * s) - w2 * (k.e1 - k.e2 * c);
-        (self.r * alpha, normal, friction)
+        let (g, c_n, r) = (self.g_along, self.g_normal, self.r);
+        // I and I′ (`inertia_sc`), W and W′ (`potential_sc`), written in T.
+        let i = (theta * k.c1 + 1.5 * r * r) - s * k.c2;
+        let di = -(c * k.c2 - k.c1);
+        let one_minus_cos = -(c - 1.0);
+        let w = -(((theta * r) + theta * theta * (k.e1 / 2.0)) - one_minus_cos * k.e2) * g
+            + (theta * k.e3 - s * k.e2) * c_n;
+        let dw = -((theta * k.e1 + r) - s * k.e2) * g + (-(c * k.e2 - k.e3)) * c_n;
+        let w2 = ((-(w * 2.0) + 1.5 * r * r * omega0 * omega0) / i).at_least_zero();
+        let alpha = (-dw - di * w2 * 0.5) / i;
+        let grown = theta * k.accretion + 1.0;
+        let normal = grown * c_n + (alpha * one_minus_cos + w2 * s) * k.e2;
+        let friction = grown * g - alpha * (grown * r - s * k.e2) - w2 * (-(c * k.e2 - k.e1));
+        (alpha * r, normal, friction)
+    }
+
+    /// [`Self::orbit_sc`] at θ with the first two derivatives in θ.
+    fn orbit_jet(&self, theta: f64, omega0: f64) -> (Jet, Jet, Jet) {
+        let (s, c) = theta.sin_cos();
+        let (js, jc) = Jet::sin_cos(s, c);
+        self.orbit_sc(Jet::variable(theta), js, jc, omega0)
     }
 
     /// `(a, N, F)` at θ on the energy integral ([`Self::orbit_sc`]).
@@ -131,27 +146,27 @@ impl TurnDynamics {
             }
             (s, c) = (s * ch + c * sh, c * ch - s * sh);
         }
-        let refine = |h: &dyn Fn(f64) -> f64, (value, i): (f64, usize)| {
-            extremes::refine_min(h, 0.0, step, FORCE_GRID, i, value, FORCE_THETA_TOL).1
+        let refine = |h: &dyn Fn(f64) -> Jet, (value, i): (f64, usize)| {
+            extremes::refine_min_jet(h, 0.0, step, FORCE_GRID, i, value, FORCE_THETA_TOL).1
         };
         let (a_min, a_max) = if with_a {
             (
-                refine(&|theta| self.orbit(theta, omega0).0, least[0]),
-                -refine(&|theta| -self.orbit(theta, omega0).0, least[1]),
+                refine(&|theta| self.orbit_jet(theta, omega0).0, least[0]),
+                -refine(&|theta| -self.orbit_jet(theta, omega0).0, least[1]),
             )
         } else {
             (f64::NAN, f64::NAN)
         };
         let (n_min, first_zero_normal) = self.normal_minima(omega0, &normal, step);
         let min_normal_over_mg = refine(
-            &|theta| self.orbit(theta, omega0).1 / ((1.0 + mu * theta) * g),
+            &|theta| self.orbit_jet(theta, omega0).1 / ((Jet::variable(theta) * mu + 1.0) * g),
             least[2],
         );
         let max_friction_ratio = (n_min > 0.0).then(|| {
             -refine(
                 &|theta| {
-                    let (_, n, f) = self.orbit(theta, omega0);
-                    -f.abs() / n
+                    let (_, n, f) = self.orbit_jet(theta, omega0);
+                    -(f.abs() / n)
                 },
                 least[3],
             )
@@ -195,8 +210,15 @@ impl TurnDynamics {
             if !local {
                 continue;
             }
-            let (theta_m, n_m) =
-                extremes::refine_min(n_at, 0.0, step, last, i, n_i, FORCE_THETA_TOL);
+            let (theta_m, n_m) = extremes::refine_min_jet(
+                |theta| self.orbit_jet(theta, omega0).1,
+                0.0,
+                step,
+                last,
+                i,
+                n_i,
+                FORCE_THETA_TOL,
+            );
             n_min = n_min.min(n_m);
             if first_zero.is_none() && n_m <= 0.0 {
                 // N > 0 at every grid point up to θ_i (and θ_m ≥ θ_{i−1}).
@@ -301,7 +323,7 @@ pub struct ContactRange {
 /// The first θ in `(lo, hi]` where `n(θ) ≤ 0`, given `n(lo) > 0 ≥ n(hi)` and
 /// one crossing between them: bisection until `lo` and `hi` are adjacent
 /// doubles (at most ~60 halvings for θ ≤ 2π); the end with `n ≤ 0`.
-fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+pub(super) fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     loop {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {

@@ -2,7 +2,10 @@
 //! k kept up to date as the turns go by, its events (turn end, stall,
 //! distance, hop, slip, pivot impact) and its energy ledger.
 
+mod closed;
 mod stepping;
+
+pub(crate) use closed::run_closed;
 
 use std::f64::consts::PI;
 
