@@ -36,9 +36,13 @@ enum Out<W: Write> {
     /// Serialised: JSON, and CSV rows that carry the ledger at each turn
     /// end (`--ledger`, `docs/snowball-and-losses.md` §3.2).
     Body { body: Body<W>, ledger: bool },
-    /// CSV rows without the ledger, formatted here ([`csv_line`]) and
+    /// CSV rows without the ledger, formatted here ([`LineFormatter`]) and
     /// written in blocks of about [`LINES_BLOCK`] bytes.
-    Lines { w: W, lines: Vec<u8> },
+    Lines {
+        w: W,
+        lines: Vec<u8>,
+        format: LineFormatter,
+    },
 }
 
 /// Bytes of formatted CSV rows written at a time.
@@ -69,6 +73,7 @@ impl<W: Write> TurnTableWriter<W> {
                 Out::Lines {
                     w,
                     lines: Vec::with_capacity(LINES_BLOCK + 1024),
+                    format: LineFormatter::default(),
                 }
             }
             Format::Csv => {
@@ -103,8 +108,8 @@ impl<W: Write> TurnTableWriter<W> {
     fn row(&mut self, turn: &TurnRow) -> Result<(), OutputError> {
         let k = self.rows + 1;
         match &mut self.out {
-            Out::Lines { w, lines } => {
-                if !csv_line(turn, lines) {
+            Out::Lines { w, lines, format } => {
+                if !format.line(turn, lines) {
                     // A number not finite: the error names the row and the column.
                     let row = TableRow { turn, ledger: None };
                     check_finite(&row, Some(k))?;
@@ -157,7 +162,7 @@ impl<W: Write> TurnTableWriter<W> {
         notes: &[String],
     ) -> Result<W, OutputError> {
         let body = match self.out {
-            Out::Lines { mut w, lines } => {
+            Out::Lines { mut w, lines, .. } => {
                 w.write_all(&lines)?;
                 Body::Csv(Box::new(
                     csv::WriterBuilder::new().has_headers(false).from_writer(w),
@@ -199,44 +204,77 @@ impl<W: Write> TurnSink for TurnTableWriter<W> {
     }
 }
 
-/// Appends the CSV row of `turn` to `out` in the bytes the `csv` writer gives the serialised [`TableRow`] (floats
-/// by `ryu`, the turn by `itoa`, an undefined ratio as an empty field; a
-/// test holds the two to the byte); false, with nothing appended, when a
-/// number is not finite. Formatted by hand because
-/// this is the hot path of a long table: serde and `csv` took four times as
-/// long per row, and `csv` has no faster way for a fixed record of numbers.
-fn csv_line(turn: &TurnRow, out: &mut Vec<u8>) -> bool {
-    let t = turn;
-    let floats = [
-        t.t_start_s,
-        t.x_start_m,
-        t.v_start_m_s,
-        t.t_end_s,
-        t.v_end_m_s,
-        t.v_after_m_s,
-        t.collision_loss_j,
-        t.mean_a_turn_m_s2,
-        t.min_a_m_s2,
-        t.max_a_m_s2,
-        t.mean_a_with_collision_m_s2,
-        t.min_normal_n,
-        t.min_normal_over_mg,
-    ];
-    if !floats.iter().all(|x| x.is_finite()) || !t.max_friction_ratio.is_none_or(f64::is_finite) {
-        return false;
-    }
-    out.extend_from_slice(itoa::Buffer::new().format(t.turn).as_bytes());
-    let mut number = ryu::Buffer::new();
-    for x in floats {
+/// The CSV rows of a turn table without the ledger, formatted by hand in
+/// the bytes the `csv` writer gives the serialised [`TableRow`] (floats by
+/// `ryu`, the turn by `itoa`, an undefined ratio as an empty field; a test
+/// holds the two to the byte). By hand because this is the hot path of a
+/// long table: serde and `csv` took four times as long per row. A turn
+/// starts when and as fast as the one before ended (`t_start = t_end`,
+/// `v_start = v_after`, the same numbers), so those two are formatted once.
+#[derive(Debug, Clone, Default)]
+struct LineFormatter {
+    /// The bits and text of the last `t_end_s` and `v_after_m_s`.
+    carried: [(Option<u64>, String); 2],
+}
+
+impl LineFormatter {
+    /// Appends the row of `turn` to `out`; false, with nothing appended,
+    /// when a number is not finite.
+    fn line(&mut self, turn: &TurnRow, out: &mut Vec<u8>) -> bool {
+        let t = turn;
+        let floats = [
+            t.t_start_s,
+            t.x_start_m,
+            t.v_start_m_s,
+            t.t_end_s,
+            t.v_end_m_s,
+            t.v_after_m_s,
+            t.collision_loss_j,
+            t.mean_a_turn_m_s2,
+            t.min_a_m_s2,
+            t.max_a_m_s2,
+            t.mean_a_with_collision_m_s2,
+            t.min_normal_n,
+            t.min_normal_over_mg,
+        ];
+        let ratio_finite = t.max_friction_ratio.is_none_or(f64::is_finite);
+        if !floats.iter().all(|x| x.is_finite()) || !ratio_finite {
+            return false;
+        }
+        out.extend_from_slice(itoa::Buffer::new().format(t.turn).as_bytes());
+        let mut number = ryu::Buffer::new();
+        // Columns 0 and 2 (t_start, v_start) may be the carried 3 and 5
+        // (t_end, v_after) of the row before.
+        for (column, x) in floats.into_iter().enumerate() {
+            out.push(b',');
+            let slot = match column {
+                0 | 3 => 0,
+                2 | 5 => 1,
+                _ => {
+                    out.extend_from_slice(number.format_finite(x).as_bytes());
+                    continue;
+                }
+            };
+            let (bits, text) = &mut self.carried[slot];
+            if column < 3 && *bits == Some(x.to_bits()) {
+                out.extend_from_slice(text.as_bytes());
+                continue;
+            }
+            let formatted = number.format_finite(x);
+            out.extend_from_slice(formatted.as_bytes());
+            if column >= 3 {
+                text.clear();
+                text.push_str(formatted);
+                *bits = Some(x.to_bits());
+            }
+        }
         out.push(b',');
-        out.extend_from_slice(number.format_finite(x).as_bytes());
+        if let Some(ratio) = t.max_friction_ratio {
+            out.extend_from_slice(number.format_finite(ratio).as_bytes());
+        }
+        out.push(b'\n');
+        true
     }
-    out.push(b',');
-    if let Some(ratio) = t.max_friction_ratio {
-        out.extend_from_slice(number.format_finite(ratio).as_bytes());
-    }
-    out.push(b'\n');
-    true
 }
 
 /// The `#` lines of the long-run statistics: one per checkpoint.
@@ -343,14 +381,33 @@ mod tests {
     fn hand_formatted_rows_are_the_csv_writers_bytes() {
         let (t, _) = table(3);
         let mut row = t.rows[1];
-        let awkward = [1e-7, 1e21, -0.0, 5e-324, f64::MAX / 8.0, 123456.0, 0.1 + 0.2];
+        let awkward = [
+            1e-7,
+            1e21,
+            -0.0,
+            5e-324,
+            f64::MAX / 8.0,
+            123456.0,
+            0.1 + 0.2,
+        ];
+        // One formatter for all rows, as for a table: each row starts where
+        // the one before ended (the carried text), or not.
+        let mut format = LineFormatter::default();
         for (n, x) in awkward.into_iter().enumerate() {
             row.turn = n as u64 * 1_000_003;
-            row.t_start_s = x;
+            if n % 3 == 0 {
+                (row.t_start_s, row.v_start_m_s) = (row.t_end_s, row.v_after_m_s);
+            } else {
+                row.t_start_s = x;
+            }
+            row.t_end_s = x * 3.0 + 1.0;
+            row.v_after_m_s = -x;
             row.min_a_m_s2 = -x;
             row.min_normal_over_mg = x / 3.0;
             row.max_friction_ratio = (n % 2 == 0).then_some(x * 7.0);
-            let mut by_csv = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
+            let mut by_csv = csv::WriterBuilder::new()
+                .has_headers(false)
+                .from_writer(Vec::new());
             by_csv
                 .serialize(TableRow {
                     turn: &row,
@@ -358,17 +415,17 @@ mod tests {
                 })
                 .unwrap();
             let mut by_hand = Vec::new();
-            assert!(csv_line(&row, &mut by_hand));
+            assert!(format.line(&row, &mut by_hand));
             assert_eq!(
                 String::from_utf8_lossy(&by_hand),
                 String::from_utf8_lossy(&by_csv.into_inner().unwrap())
             );
         }
         row.v_end_m_s = f64::NAN;
-        assert!(!csv_line(&row, &mut Vec::new()));
+        assert!(!format.line(&row, &mut Vec::new()));
         row.v_end_m_s = 1.0;
         row.max_friction_ratio = Some(f64::INFINITY);
-        assert!(!csv_line(&row, &mut Vec::new()));
+        assert!(!format.line(&row, &mut Vec::new()));
     }
 
     /// With `ledger` each row carries the ledger at its turn end, after the

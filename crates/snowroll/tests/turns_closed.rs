@@ -287,3 +287,88 @@ fn one_turn_time_matches_an_independent_quadrature() {
         row.t_end_s
     );
 }
+
+/// The closed form's turns computed ahead in parallel (`system/ahead.rs`,
+/// blocks of 8192 turns): a run of 20 000 turns, three blocks, whose rows
+/// at and around the block boundaries are recomputed here, each from its
+/// own start speed, with formulas written here (eqs. (73), (89), the energy
+/// integral): v_end, v_after, the turn's time by composite Simpson, and the
+/// range of a by dense sampling. And every turn starts when and as fast as
+/// the one before ended, to the bit. Tolerances: v from one square root
+/// (1e-14); the time to 1e-12 of the turn, or the rounding of t_end − t_start
+/// at t ~ 10³ s (4 ulp of t over the turn's duration) if larger; the range
+/// of a within 1e-12 G above the dense sampling's (a refined extreme is a
+/// value of a) and not below it by more than its miss, |a″|h²/8 ~ 1e-9 G.
+/// Fed once a collision with r_k² for 2r_k² in eq. (89): fails at v_after.
+#[test]
+fn turns_computed_ahead_match_each_turn_recomputed_here() {
+    let (r0, b) = (0.1, 0.01);
+    let s = scenario(30.0, b, r0, 0.0);
+    let (g, c) = (s.g_along(), s.g_normal());
+    let closed = table(TurnVariant::Paper, TurnMethod::Closed, &s, &tight(20_000));
+    let rows = &closed.rows;
+    assert_eq!(rows.len(), 20_000);
+    for pair in rows.windows(2) {
+        assert_eq!(pair[1].t_start_s.to_bits(), pair[0].t_end_s.to_bits());
+        assert_eq!(pair[1].v_start_m_s.to_bits(), pair[0].v_after_m_s.to_bits());
+    }
+    for k in [1, 2, 8191, 8192, 8193, 8194, 16384, 16385, 16386, 19_999] {
+        let row = &rows[k];
+        let r = r0 + k as f64 * b;
+        let w0 = row.v_start_m_s / r;
+        let omega2 = |th: f64| {
+            let (i, w) = paper_turn(r, b, g, c, th);
+            (1.5 * r * r * w0 * w0 - 2.0 * w) / i
+        };
+        let v_end = r * omega2(2.0 * PI).sqrt();
+        assert!(
+            (row.v_end_m_s - v_end).abs() < 1e-14 * v_end,
+            "turn {k}: v_end"
+        );
+        let r_next = r + b;
+        let v_after = v_end * (r_next * r_next + 2.0 * r * r) / (3.0 * r * r_next);
+        assert!(
+            (row.v_after_m_s - v_after).abs() < 1e-14 * v_after,
+            "turn {k}: v_after"
+        );
+        let n = 20_000;
+        let h = 2.0 * PI / n as f64;
+        let simpson = (0..=n)
+            .map(|j| {
+                let weight = match j {
+                    0 => 1.0,
+                    j if j == n => 1.0,
+                    j if j % 2 == 1 => 4.0,
+                    _ => 2.0,
+                };
+                weight / omega2(j as f64 * h).sqrt()
+            })
+            .sum::<f64>()
+            * h
+            / 3.0;
+        let dt = row.t_end_s - row.t_start_s;
+        let tol = (1e-12 * simpson).max(4.0 * f64::EPSILON * row.t_end_s);
+        assert!((dt - simpson).abs() < tol, "turn {k}: {dt} vs {simpson}");
+        // a = r(−W′ − ½I′θ̇²)/I, I′ and W′ of eq. (73) written here.
+        let e = b / PI;
+        let a = |th: f64| {
+            let (i, _) = paper_turn(r, b, g, c, th);
+            let di = 2.0 * r * e * (1.0 - th.cos());
+            let dw = -g * (r + e * (th - th.sin())) + c * e * (1.0 - th.cos());
+            r * (-dw - 0.5 * di * omega2(th)) / i
+        };
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for j in 0..=200_000 {
+            let v = a(2.0 * PI * j as f64 / 200_000.0);
+            (lo, hi) = (lo.min(v), hi.max(v));
+        }
+        assert!(
+            row.min_a_m_s2 <= lo + 1e-12 * g && row.min_a_m_s2 >= lo - 1e-9 * g,
+            "turn {k}"
+        );
+        assert!(
+            row.max_a_m_s2 >= hi - 1e-12 * g && row.max_a_m_s2 <= hi + 1e-9 * g,
+            "turn {k}"
+        );
+    }
+}

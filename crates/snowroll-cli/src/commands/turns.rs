@@ -6,9 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError,
-    SimOptions, StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant,
-    WarningCode,
+    default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
+    StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -58,6 +57,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let mut params = RunParams::new(&scenario, &opts);
     params.settings.per_turn = true;
     params.warnings = warnings;
+    params.method = Some(method);
     let mut writer = TurnTableWriter::new(&mut sink, format, model, &params)
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as each turn ends; the stop, the notes and the summary are

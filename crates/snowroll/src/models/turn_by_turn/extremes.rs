@@ -165,25 +165,41 @@ const MAX_NEWTON: usize = 8;
 const NEWTON_STEP_TOL: f64 = 1e-5;
 
 /// [`refine_min`] by Newton's method on `g′ = 0` from the jets `g(θ)`
-/// ([`Jet`]): from grid point `i`, steps `−g′/g″` while `g″ > 0` and the
-/// steps stay within the two neighbouring intervals; once a step is below
+/// ([`Jet`]), given the samples `samples[j] = g(lo + j step)` and the
+/// index `i` of the smallest: from `hint` where it lies within the two
+/// intervals next to `i` (where a like extreme was found before), else from
+/// the vertex of the parabola through the samples around `i`, steps `−g′/g″` while `g″ > 0` and the steps stay
+/// within the two intervals next to `i`; once a step is below
 /// [`NEWTON_STEP_TOL`] the value is the local quadratic's minimum. Where
 /// Newton's method does not apply (g not convex there, a step leaving the
 /// bracket) Brent's method on the values takes over, to `x_tol`. An end of
 /// the grid that `g` increases away from (`g′` pointing inward) is itself
-/// the extreme. Returns `(θ, value)`, the value never above `g_i`.
+/// the extreme. Returns `(θ, value)`, the value never above `samples[i]`.
 pub(super) fn refine_min_jet(
     g: impl Fn(f64) -> Jet,
     lo: f64,
     step: f64,
-    grid: usize,
+    samples: &[f64],
     i: usize,
-    g_i: f64,
+    hint: Option<f64>,
     x_tol: f64,
 ) -> (f64, f64) {
+    let grid = samples.len() - 1;
+    let g_i = samples[i];
     let at = |j: usize| lo + j as f64 * step;
     let (a, b) = (at(i.saturating_sub(1)), at((i + 1).min(grid)));
     let mut x = at(i);
+    if let Some(h) = hint.filter(|h| *h >= a && *h <= b && i > 0 && i < grid) {
+        x = h;
+    } else if i > 0 && i < grid {
+        // The parabola's vertex, within the bracket (a start within
+        // ~h³|g‴/g″| of the minimum, so that Newton needs a step or two).
+        let (before, after) = (samples[i - 1], samples[i + 1]);
+        let curvature = before - 2.0 * g_i + after;
+        if curvature > 0.0 {
+            x += (0.5 * (before - after) / curvature).clamp(-1.0, 1.0) * step;
+        }
+    }
     for n in 0..MAX_NEWTON {
         let j = g(x);
         if n == 0 && ((i == 0 && j.d >= 0.0) || (i == grid && j.d <= 0.0)) {
@@ -195,7 +211,11 @@ pub(super) fn refine_min_jet(
         let dx = -j.d / j.dd;
         if dx.abs() <= NEWTON_STEP_TOL {
             let value = j.v + 0.5 * j.d * dx;
-            return if value < g_i { (x + dx, value) } else { (at(i), g_i) };
+            return if value < g_i {
+                (x + dx, value)
+            } else {
+                (at(i), g_i)
+            };
         }
         let next = x + dx;
         if !(next >= a && next <= b) {

@@ -32,7 +32,14 @@ impl Jet {
 
     /// `(sin θ, cos θ)` as jets from their values.
     pub(super) fn sin_cos(s: f64, c: f64) -> (Self, Self) {
-        (Self { v: s, d: c, dd: -s }, Self { v: c, d: -s, dd: -c })
+        (
+            Self { v: s, d: c, dd: -s },
+            Self {
+                v: c,
+                d: -s,
+                dd: -c,
+            },
+        )
     }
 
     /// |f| (f ≠ 0: the sign of f is kept through the derivatives).
@@ -61,15 +68,30 @@ pub(super) trait Real:
 {
     /// 0 where the value is negative, else itself (θ̇² past a stall).
     fn at_least_zero(self) -> Self;
+    /// 1/f (one division, where a formula divides by f twice).
+    fn recip(self) -> Self;
 }
 
 impl Real for f64 {
     fn at_least_zero(self) -> Self {
         self.max(0.0)
     }
+    fn recip(self) -> Self {
+        1.0 / self
+    }
 }
 
 impl Real for Jet {
+    /// `(1/f)′ = −f′/f²`, `(1/f)″ = (2f′²/f − f″)/f²`.
+    fn recip(self) -> Self {
+        let r = 1.0 / self.v;
+        let r2 = r * r;
+        Self {
+            v: r,
+            d: -self.d * r2,
+            dd: (2.0 * self.d * self.d * r - self.dd) * r2,
+        }
+    }
     fn at_least_zero(self) -> Self {
         if self.v < 0.0 {
             Self {
@@ -132,12 +154,13 @@ impl Div for Jet {
     type Output = Self;
     /// q = f/g: `q′ = (f′ − q g′)/g`, `q″ = (f″ − 2q′g′ − q g″)/g`.
     fn div(self, o: Self) -> Self {
-        let q = self.v / o.v;
-        let dq = (self.d - q * o.d) / o.v;
+        let inv = 1.0 / o.v;
+        let q = self.v * inv;
+        let dq = (self.d - q * o.d) * inv;
         Self {
             v: q,
             d: dq,
-            dd: (self.dd - 2.0 * dq * o.d - q * o.dd) / o.v,
+            dd: (self.dd - 2.0 * dq * o.d - q * o.dd) * inv,
         }
     }
 }
@@ -194,8 +217,21 @@ mod tests {
         let q = u / w;
         let dq = (du * w - u * dw) / (w * w);
         let ddq = (ddu * w - u * ddw) / (w * w) - 2.0 * dw * (du * w - u * dw) / (w * w * w);
-        let want = (q - theta.powi(3), dq - 3.0 * theta * theta, ddq - 6.0 * theta);
+        let want = (
+            q - theta.powi(3),
+            dq - 3.0 * theta * theta,
+            ddq - 6.0 * theta,
+        );
         for (got, want) in [(f.v, want.0), (f.d, want.1), (f.dd, want.2)] {
+            assert!((got - want).abs() < 1e-14, "{got} vs {want}");
+        }
+        let inv = (jc + 3.0).recip();
+        let want_inv = (1.0 / w, -dw / (w * w), (2.0 * dw * dw / w - ddw) / (w * w));
+        for (got, want) in [
+            (inv.v, want_inv.0),
+            (inv.d, want_inv.1),
+            (inv.dd, want_inv.2),
+        ] {
             assert!((got - want).abs() < 1e-14, "{got} vs {want}");
         }
         let neg = (-f).abs();

@@ -46,6 +46,7 @@ mod summary;
 mod system;
 
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
+pub(crate) use contact::Hints;
 pub use contact::{ContactRange, TurnExtremes};
 pub use dynamics::{InTurnCoefficients, TurnDynamics, TurnVariant};
 pub use row::{TurnRow, TurnSink};

@@ -21,8 +21,11 @@
 //! `θ = θ_s − s²`) takes out the inverse square root, so the panels see a
 //! smooth integrand.
 
-use super::TurnDynamics;
-use crate::quadrature::kronrod;
+use std::f64::consts::PI;
+use std::sync::OnceLock;
+
+use super::{TurnDynamics, TWO_PI};
+use crate::quadrature::{gauss_legendre, kronrod};
 
 /// Grid intervals of the stall search over a turn: between grid points E
 /// cannot dip by more than `|E″|max h²/8` (h = 2π/16), so a grid value
@@ -95,6 +98,9 @@ impl<'a> Orbit<'a> {
     /// the minimum of E, and a minimum at or below 0 (or an end at or below
     /// 0) brackets the first zero, which bisection finds to adjacent doubles.
     pub(crate) fn first_stall(&self, theta_max: f64) -> Option<f64> {
+        if self.e0 > 2.0 * self.potential_bound(theta_max) {
+            return None;
+        }
         let h = theta_max / STALL_GRID as f64;
         let m2 = self.curvature_bound();
         let dip = m2 * h * h / 8.0;
@@ -118,6 +124,28 @@ impl<'a> Orbit<'a> {
             e_lo = e_hi;
         }
         None
+    }
+
+    /// An upper bound on W over [0, `theta_max`], J/kg: with
+    /// `W = θ(C e₃ − G r) − θ² G e₁/2 + G e₂(1 − cos θ) − C e₂ sin θ`, the
+    /// last two terms are at most 2|G e₂| + |C e₂|, and the quadratic's
+    /// largest value is at an end or at its vertex. E > 0 throughout when
+    /// `E(0) > 2 ×` this: no stall, with no evaluation of the turn.
+    fn potential_bound(&self, theta_max: f64) -> f64 {
+        let k = &self.turn.coeffs;
+        let (g, c_n, r) = (self.turn.g_along, self.turn.g_normal, self.turn.r);
+        let (lin, quad) = (c_n * k.e3 - g * r, -0.5 * g * k.e1);
+        let p = |x: f64| x * lin + x * x * quad;
+        let mut top = p(0.0).max(p(theta_max));
+        if quad < 0.0 {
+            let vertex = -lin / (2.0 * quad);
+            if vertex > 0.0 && vertex < theta_max {
+                top = top.max(p(vertex));
+            }
+        }
+        // A relative margin for the rounding of the terms.
+        let trig = 2.0 * (g * k.e2).abs() + (c_n * k.e2).abs();
+        (top + trig) + 1e-12 * (top.abs() + trig + (lin.abs() + quad.abs() * theta_max) * theta_max)
     }
 
     /// `√(I/E)` at θ, s/rad.
@@ -156,6 +184,11 @@ impl<'a> Orbit<'a> {
             return 0.0;
         }
         let from_rest = self.e0 <= 0.0;
+        if theta1 == TWO_PI && !from_rest && !stalls {
+            if let Some(t) = self.turn_time() {
+                return t;
+            }
+        }
         let mid = if from_rest || stalls {
             0.5 * theta1
         } else {
@@ -182,6 +215,28 @@ impl<'a> Orbit<'a> {
             adaptive(|x| self.slowness(x), mid, theta1)
         };
         head + tail
+    }
+
+    /// The time of a whole turn, eq. (T3) over [0, 2π], by the fixed
+    /// Gauss–Legendre rules of [`TurnNodes`] (sin and cos of their nodes
+    /// computed once): the 20-point result when the 12-point one agrees
+    /// with it to [`PANEL_TOL`] (the 12-point rule's error is then below
+    /// that, the 20-point one's far below: each converges geometrically at
+    /// the same rate in n); `None`, for the adaptive rule, when they do not
+    /// (an early turn, a slow one near a stall).
+    fn turn_time(&self) -> Option<f64> {
+        let nodes = TurnNodes::get();
+        let sum = |rule: &[Node]| {
+            rule.iter()
+                .map(|n| {
+                    let (i, _) = self.turn.inertia_sc(n.theta, n.sin, n.cos);
+                    n.weight * (i / self.energy_sc(n.theta, n.sin, n.cos)).sqrt()
+                })
+                .sum::<f64>()
+        };
+        let coarse = sum(&nodes.coarse);
+        let fine = sum(&nodes.fine);
+        ((fine - coarse).abs() <= PANEL_TOL * fine.abs()).then_some(fine)
     }
 
     /// The angle θ ∈ [0, `theta_max`] reached at time τ after the turn's
@@ -214,6 +269,49 @@ impl<'a> Orbit<'a> {
             theta = next;
         }
         theta
+    }
+}
+
+/// A node of a rule over one whole turn, with its sine and cosine.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    theta: f64,
+    sin: f64,
+    cos: f64,
+    weight: f64,
+}
+
+/// The 12- and 20-point Gauss–Legendre rules over [0, 2π] of
+/// [`Orbit::turn_time`].
+struct TurnNodes {
+    coarse: Vec<Node>,
+    fine: Vec<Node>,
+}
+
+impl TurnNodes {
+    fn get() -> &'static TurnNodes {
+        static NODES: OnceLock<TurnNodes> = OnceLock::new();
+        NODES.get_or_init(|| {
+            let over_turn = |n| {
+                gauss_legendre(n)
+                    .into_iter()
+                    .map(|(x, w)| {
+                        let theta = PI * (1.0 + x);
+                        let (sin, cos) = theta.sin_cos();
+                        Node {
+                            theta,
+                            sin,
+                            cos,
+                            weight: PI * w,
+                        }
+                    })
+                    .collect()
+            };
+            TurnNodes {
+                coarse: over_turn(12),
+                fine: over_turn(20),
+            }
+        })
     }
 }
 

@@ -82,6 +82,9 @@ pub enum TurnMethod {
 }
 
 impl TurnMethod {
+    /// Every method, the default first.
+    pub const ALL: [TurnMethod; 2] = [TurnMethod::Closed, TurnMethod::Ode];
+
     /// The method's word (`closed`, `ode`).
     pub fn id(self) -> &'static str {
         match self {

@@ -7,6 +7,7 @@
 //! rows are made by the same code; only t and θ̇ at the events differ, by
 //! the integrator's error.
 
+use super::ahead::{self, Ahead, TurnStart};
 use super::*;
 
 use crate::error::SimError;
@@ -42,9 +43,15 @@ impl TurnSystem {
     fn closed_turn(&self, t0: f64, omega0: f64, t_end: f64) -> TurnEnd {
         let orbit = Orbit::new(&self.dynamics, omega0);
         let r = self.dynamics.radius();
+        // This turn as computed ahead, if it was, for this very θ̇(0).
+        let prepared = self
+            .current
+            .filter(|p| p.start.turn == self.turn && p.start.omega0.to_bits() == omega0.to_bits());
         let mut end = (TWO_PI, EVENT_TURN_END);
         let mut candidates = [
-            orbit.first_stall(TWO_PI).map(|th| (th, EVENT_STALL)),
+            prepared
+                .map_or_else(|| orbit.first_stall(TWO_PI), |p| p.stall)
+                .map(|th| (th, EVENT_STALL)),
             self.x_end
                 .map(|x| ((x - self.x_start) / r, EVENT_DISTANCE))
                 .filter(|&(th, _)| th >= 0.0),
@@ -60,7 +67,10 @@ impl TurnSystem {
         }
         let (theta, index) = end;
         let stalls = index == EVENT_STALL;
-        let dt = orbit.time_to(theta, stalls);
+        let dt = match prepared {
+            Some(p) if index == EVENT_TURN_END => p.time,
+            _ => orbit.time_to(theta, stalls),
+        };
         if t0 + dt > t_end {
             let theta_e = orbit.angle_at_time(t_end - t0, theta, stalls);
             return TurnEnd::EndTime {
@@ -91,40 +101,14 @@ pub(crate) fn run_closed<O: RunObserver<TurnSystem, 2>>(
 ) -> Result<RunEnd, SimError> {
     observer.start(system, 0.0, &y0);
     let (mut t, mut y) = (0.0, y0);
-    let termination = loop {
-        if observer.stop_requested() {
-            break Termination::Stopped;
-        }
-        let (index, te, ye) = match system.closed_turn(t, y[1], t_end) {
-            TurnEnd::EndTime { y: ye } => {
-                (t, y) = (t_end, ye);
-                break Termination::EndTime;
+    let ahead = Ahead::of(system).filter(|_| system.turns_limit.is_none_or(|n| n > ahead::BLOCK));
+    let termination = match ahead {
+        Some(ahead) => run_ahead(system, &ahead, (&mut t, &mut y), t_end, observer),
+        None => loop {
+            if let Some(end) = closed_step(system, (&mut t, &mut y), t_end, observer) {
+                break end;
             }
-            TurnEnd::Event { index, t, y } => (index, t, y),
-        };
-        let action = system.on_event(index, te, &ye);
-        let y_after = match action {
-            EventAction::Reset(r) => r,
-            EventAction::Stop | EventAction::Continue => ye,
-        };
-        let record = EventRecord {
-            index,
-            t: te,
-            y_before: ye,
-            y_after,
-            action,
-        };
-        observer.event(system, &record);
-        system.commit_event(index, te, &ye, &y_after);
-        t = te;
-        match action {
-            EventAction::Reset(_) => y = y_after,
-            // The turn models stop at every event but the turn end's reset.
-            EventAction::Stop | EventAction::Continue => {
-                y = ye;
-                break Termination::Event { index };
-            }
-        }
+        },
     };
     let outcome = Outcome {
         t,
@@ -133,4 +117,117 @@ pub(crate) fn run_closed<O: RunObserver<TurnSystem, 2>>(
         stats: Stats::default(),
     };
     end_observed(system, observer, outcome)
+}
+
+/// [`run_closed`]'s turns in blocks of [`ahead::BLOCK`]: while the turns of
+/// one block go through the run in order on this thread, the next block is
+/// prepared on the thread pool ([`Ahead`]), from where the prediction says
+/// this block ends.
+fn run_ahead<O: RunObserver<TurnSystem, 2>>(
+    system: &mut TurnSystem,
+    ahead: &Ahead,
+    (t, y): (&mut f64, &mut [f64; 2]),
+    t_end: f64,
+    observer: &mut O,
+) -> Termination {
+    // Turn 0 was planned by `start`, at its own θ̇(0); the blocks start at turn 1.
+    if let Some(end) = closed_step(system, (t, y), t_end, observer) {
+        return end;
+    }
+    let limit = system.turns_limit.unwrap_or(u64::MAX);
+    let first = TurnStart {
+        turn: system.turn,
+        omega0: y[1],
+        v_start: system.speed_at_start(),
+    };
+    let block = |from: TurnStart| {
+        let count = ahead::BLOCK.min(limit.saturating_sub(from.turn));
+        ahead.starts(from, count)
+    };
+    let mut starts = block(first);
+    let mut ready = ahead.prepare(&starts);
+    loop {
+        // Where this block's prediction ends: the next block's first turn.
+        let next_first = starts.last().and_then(|s| ahead.next_after(s));
+        let block_end = system.turn + ready.len() as u64;
+        let mut next = (Vec::new(), Vec::new());
+        let end = rayon::in_place_scope(|scope| {
+            if let Some(from) = next_first.filter(|s| s.turn < limit) {
+                let next = &mut next;
+                scope.spawn(move |_| {
+                    let starts = block(from);
+                    let prepared = ahead.prepare(&starts);
+                    *next = (starts, prepared);
+                });
+            }
+            system.load_prepared(std::mem::take(&mut ready));
+            loop {
+                if let Some(end) = closed_step(system, (t, y), t_end, observer) {
+                    break Some(end);
+                }
+                if system.turn >= block_end {
+                    break None;
+                }
+            }
+        });
+        match end {
+            Some(end) => return end,
+            None if next.0.is_empty() => {
+                // The prediction stopped (a stuck log): the run finds out itself.
+                loop {
+                    if let Some(end) = closed_step(system, (t, y), t_end, observer) {
+                        return end;
+                    }
+                }
+            }
+            None => (starts, ready) = next,
+        }
+    }
+}
+
+/// One turn of [`run_closed`] from time `t` and state `y`: the event it
+/// ends with goes to the system and the observer, and `(t, y)` move on;
+/// `Some` with why the run ends there, if it does.
+fn closed_step<O: RunObserver<TurnSystem, 2>>(
+    system: &mut TurnSystem,
+    (t, y): (&mut f64, &mut [f64; 2]),
+    t_end: f64,
+    observer: &mut O,
+) -> Option<Termination> {
+    if observer.stop_requested() {
+        return Some(Termination::Stopped);
+    }
+    let (index, te, ye) = match system.closed_turn(*t, y[1], t_end) {
+        TurnEnd::EndTime { y: ye } => {
+            (*t, *y) = (t_end, ye);
+            return Some(Termination::EndTime);
+        }
+        TurnEnd::Event { index, t, y } => (index, t, y),
+    };
+    let action = system.on_event(index, te, &ye);
+    let y_after = match action {
+        EventAction::Reset(r) => r,
+        EventAction::Stop | EventAction::Continue => ye,
+    };
+    let record = EventRecord {
+        index,
+        t: te,
+        y_before: ye,
+        y_after,
+        action,
+    };
+    observer.event(system, &record);
+    system.commit_event(index, te, &ye, &y_after);
+    *t = te;
+    match action {
+        EventAction::Reset(_) => {
+            *y = y_after;
+            None
+        }
+        // The turn models stop at every event but the turn end's reset.
+        EventAction::Stop | EventAction::Continue => {
+            *y = ye;
+            Some(Termination::Event { index })
+        }
+    }
 }
