@@ -226,13 +226,23 @@ impl<'a> Orbit<'a> {
     /// (an early turn, a slow one near a stall).
     fn turn_time(&self) -> Option<f64> {
         let nodes = TurnNodes::get();
-        let sum = |rule: &[Node]| {
-            rule.iter()
-                .map(|n| {
-                    let (i, _) = self.turn.inertia_sc(n.theta, n.sin, n.cos);
-                    n.weight * (i / self.energy_sc(n.theta, n.sin, n.cos)).sqrt()
-                })
-                .sum::<f64>()
+        let k = &self.turn.coeffs;
+        let (g, c_n, r) = (self.turn.g_along, self.turn.g_normal, self.turn.r);
+        // I = 3r²/2 + c₁θ − c₂ sin θ and E = I(0)θ̇₀² − 2W with
+        // W = θ(C e₃ − G r) − θ² G e₁/2 + G e₂(1 − cos θ) − C e₂ sin θ, by node.
+        let (i0, i_th, i_sin) = (1.5 * r * r, k.c1, -k.c2);
+        let (w_th, w_th2, w_vers, w_sin) =
+            (c_n * k.e3 - g * r, -0.5 * g * k.e1, g * k.e2, -c_n * k.e2);
+        let sum = |rule: &Rule| {
+            // Four partial sums: independent additions the processor overlaps.
+            let mut lanes = [0.0; 4];
+            for j in 0..rule.weight.len() {
+                let (th, sn) = (rule.theta[j], rule.sin[j]);
+                let i = i0 + i_th * th + i_sin * sn;
+                let w = w_th * th + w_th2 * rule.theta2[j] + w_vers * rule.versine[j] + w_sin * sn;
+                lanes[j % 4] += rule.weight[j] * (i / (self.e0 - 2.0 * w)).sqrt();
+            }
+            (lanes[0] + lanes[1]) + (lanes[2] + lanes[3])
         };
         let coarse = sum(&nodes.coarse);
         let fine = sum(&nodes.fine);
@@ -272,45 +282,46 @@ impl<'a> Orbit<'a> {
     }
 }
 
-/// A node of a rule over one whole turn, with its sine and cosine.
-#[derive(Debug, Clone, Copy)]
-struct Node {
-    theta: f64,
-    sin: f64,
-    cos: f64,
-    weight: f64,
+/// A rule over one whole turn, node by node: θ, θ², 1 − cos θ, sin θ and
+/// the weight (arrays, so that the sum runs over them in step).
+struct Rule {
+    theta: Vec<f64>,
+    theta2: Vec<f64>,
+    versine: Vec<f64>,
+    sin: Vec<f64>,
+    weight: Vec<f64>,
+}
+
+impl Rule {
+    /// The n-point Gauss–Legendre rule mapped to [0, 2π].
+    fn over_turn(n: usize) -> Self {
+        let (nodes, weights): (Vec<f64>, Vec<f64>) = gauss_legendre(n)
+            .into_iter()
+            .map(|(x, w)| (PI * (1.0 + x), PI * w))
+            .unzip();
+        Rule {
+            theta2: nodes.iter().map(|t| t * t).collect(),
+            versine: nodes.iter().map(|t| 1.0 - t.cos()).collect(),
+            sin: nodes.iter().map(|t| t.sin()).collect(),
+            theta: nodes,
+            weight: weights,
+        }
+    }
 }
 
 /// The 12- and 20-point Gauss–Legendre rules over [0, 2π] of
 /// [`Orbit::turn_time`].
 struct TurnNodes {
-    coarse: Vec<Node>,
-    fine: Vec<Node>,
+    coarse: Rule,
+    fine: Rule,
 }
 
 impl TurnNodes {
     fn get() -> &'static TurnNodes {
         static NODES: OnceLock<TurnNodes> = OnceLock::new();
-        NODES.get_or_init(|| {
-            let over_turn = |n| {
-                gauss_legendre(n)
-                    .into_iter()
-                    .map(|(x, w)| {
-                        let theta = PI * (1.0 + x);
-                        let (sin, cos) = theta.sin_cos();
-                        Node {
-                            theta,
-                            sin,
-                            cos,
-                            weight: PI * w,
-                        }
-                    })
-                    .collect()
-            };
-            TurnNodes {
-                coarse: over_turn(12),
-                fine: over_turn(20),
-            }
+        NODES.get_or_init(|| TurnNodes {
+            coarse: Rule::over_turn(12),
+            fine: Rule::over_turn(20),
         })
     }
 }
