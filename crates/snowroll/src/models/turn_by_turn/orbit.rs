@@ -234,13 +234,18 @@ impl<'a> Orbit<'a> {
         let (w_th, w_th2, w_vers, w_sin) =
             (c_n * k.e3 - g * r, -0.5 * g * k.e1, g * k.e2, -c_n * k.e2);
         let sum = |rule: &Rule| {
-            // Four partial sums: independent additions the processor overlaps.
+            // Four nodes at a time into four partial sums: independent
+            // lanes, which the compiler runs two at a time.
             let mut lanes = [0.0; 4];
-            for j in 0..rule.weight.len() {
-                let (th, sn) = (rule.theta[j], rule.sin[j]);
-                let i = i0 + i_th * th + i_sin * sn;
-                let w = w_th * th + w_th2 * rule.theta2[j] + w_vers * rule.versine[j] + w_sin * sn;
-                lanes[j % 4] += rule.weight[j] * (i / (self.e0 - 2.0 * w)).sqrt();
+            for q in &rule.quads {
+                for l in 0..4 {
+                    let i = i0 + i_th * q.theta[l] + i_sin * q.sin[l];
+                    let pot = w_th * q.theta[l]
+                        + w_th2 * q.theta2[l]
+                        + w_vers * q.versine[l]
+                        + w_sin * q.sin[l];
+                    lanes[l] += q.weight[l] * (i / (self.e0 - 2.0 * pot)).sqrt();
+                }
             }
             (lanes[0] + lanes[1]) + (lanes[2] + lanes[3])
         };
@@ -282,30 +287,43 @@ impl<'a> Orbit<'a> {
     }
 }
 
-/// A rule over one whole turn, node by node: θ, θ², 1 − cos θ, sin θ and
-/// the weight (arrays, so that the sum runs over them in step).
+/// Four nodes of a rule over one whole turn: θ, θ², 1 − cos θ, sin θ and
+/// the weights.
+#[derive(Debug, Clone, Copy, Default)]
+struct Quad {
+    theta: [f64; 4],
+    theta2: [f64; 4],
+    versine: [f64; 4],
+    sin: [f64; 4],
+    weight: [f64; 4],
+}
+
+/// A rule over one whole turn, four nodes at a time (a node count that is
+/// not a multiple of four is padded with nodes of weight 0).
 struct Rule {
-    theta: Vec<f64>,
-    theta2: Vec<f64>,
-    versine: Vec<f64>,
-    sin: Vec<f64>,
-    weight: Vec<f64>,
+    quads: Vec<Quad>,
 }
 
 impl Rule {
     /// The n-point Gauss–Legendre rule mapped to [0, 2π].
     fn over_turn(n: usize) -> Self {
-        let (nodes, weights): (Vec<f64>, Vec<f64>) = gauss_legendre(n)
-            .into_iter()
-            .map(|(x, w)| (PI * (1.0 + x), PI * w))
-            .unzip();
-        Rule {
-            theta2: nodes.iter().map(|t| t * t).collect(),
-            versine: nodes.iter().map(|t| 1.0 - t.cos()).collect(),
-            sin: nodes.iter().map(|t| t.sin()).collect(),
-            theta: nodes,
-            weight: weights,
-        }
+        let rule = gauss_legendre(n);
+        let quads = rule
+            .chunks(4)
+            .map(|nodes| {
+                let mut q = Quad::default();
+                for (l, &(x, w)) in nodes.iter().enumerate() {
+                    let theta = PI * (1.0 + x);
+                    q.theta[l] = theta;
+                    q.theta2[l] = theta * theta;
+                    q.versine[l] = 1.0 - theta.cos();
+                    q.sin[l] = theta.sin();
+                    q.weight[l] = PI * w;
+                }
+                q
+            })
+            .collect();
+        Rule { quads }
     }
 }
 
