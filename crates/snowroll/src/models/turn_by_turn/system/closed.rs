@@ -144,14 +144,25 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
         let count = ahead::BLOCK.min(limit.saturating_sub(from.turn));
         ahead.starts(from, count)
     };
+    // This thread runs the turns in order and helps with the next block once
+    // done; the pool has the other cores (a pool of every core would put
+    // one more thread than cores at work, its spinning taking time from this one).
+    let workers = rayon::current_num_threads().saturating_sub(1).max(1);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(workers)
+        .build()
+        .ok();
     let mut starts = block(first);
-    let mut ready = ahead.prepare(&starts);
+    let mut ready = match &pool {
+        Some(pool) => pool.install(|| ahead.prepare(&starts)),
+        None => ahead.prepare(&starts),
+    };
     loop {
         // Where this block's prediction ends: the next block's first turn.
         let next_first = starts.last().and_then(|s| ahead.next_after(s));
         let block_end = system.turn + ready.len() as u64;
         let mut next = (Vec::new(), Vec::new());
-        let end = rayon::in_place_scope(|scope| {
+        let end = in_place_scope(pool.as_ref(), |scope| {
             if let Some(from) = next_first.filter(|s| s.turn < limit) {
                 let next = &mut next;
                 scope.spawn(move |_| {
@@ -182,6 +193,18 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
             }
             None => (starts, ready) = next,
         }
+    }
+}
+
+/// `op` in a scope of `pool` (of rayon's global pool without one) that
+/// this thread takes part in.
+fn in_place_scope<'scope, R>(
+    pool: Option<&rayon::ThreadPool>,
+    op: impl FnOnce(&rayon::Scope<'scope>) -> R,
+) -> R {
+    match pool {
+        Some(pool) => pool.in_place_scope(op),
+        None => rayon::in_place_scope(op),
     }
 }
 
