@@ -238,13 +238,13 @@ impl<'a> Orbit<'a> {
             // lanes, which the compiler runs two at a time.
             let mut lanes = [0.0; 4];
             for q in &rule.quads {
-                for l in 0..4 {
+                for (l, lane) in lanes.iter_mut().enumerate() {
                     let i = i0 + i_th * q.theta[l] + i_sin * q.sin[l];
                     let pot = w_th * q.theta[l]
                         + w_th2 * q.theta2[l]
                         + w_vers * q.versine[l]
                         + w_sin * q.sin[l];
-                    lanes[l] += q.weight[l] * (i / (self.e0 - 2.0 * pot)).sqrt();
+                    *lane += q.weight[l] * (i / (self.e0 - 2.0 * pot)).sqrt();
                 }
             }
             (lanes[0] + lanes[1]) + (lanes[2] + lanes[3])
