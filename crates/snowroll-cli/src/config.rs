@@ -24,7 +24,7 @@ use std::sync::OnceLock;
 use serde::de::{DeserializeSeed, Error as _, MapAccess, Visitor};
 use serde::{Deserialize, Deserializer};
 use snowroll::params::{Kind, RealOrWord, Scope};
-use snowroll::{Given, ModelKind, Param, Settings, Value, PARAMS};
+use snowroll::{Given, ModelKind, Param, Settings, TurnMethod, Value, PARAMS};
 use snowroll_io::Format;
 
 use crate::args::{ModelList, OutputArgs, ParamArgs, ScenarioArgs, SimulateArgs, TurnsArgs};
@@ -44,6 +44,9 @@ pub struct ConfigFile {
     format: Option<Format>,
     output: Option<PathBuf>,
     plot: Option<PathBuf>,
+    /// How a turn table is computed (`snowroll turns --method`; a turn
+    /// table records it).
+    method: Option<TurnMethod>,
 }
 
 /// Every key a config file may have, with its aliases (for the message
@@ -60,7 +63,7 @@ fn known_keys() -> &'static [&'static str] {
                     .map(|n| &*Box::leak(n.into_boxed_str())),
             );
         }
-        keys.extend(["format", "output", "plot"]);
+        keys.extend(["format", "output", "plot", "method"]);
         keys
     })
 }
@@ -77,6 +80,7 @@ enum Key {
     Format,
     Output,
     Plot,
+    Method,
     Param(&'static Param),
 }
 
@@ -94,6 +98,7 @@ impl<'de> DeserializeSeed<'de> for KeySeed {
             "format" => Key::Format,
             "output" => Key::Output,
             "plot" => Key::Plot,
+            "method" => Key::Method,
             k => Key::Param(
                 Param::find(k)
                     .filter(|p| p.settable())
@@ -147,6 +152,7 @@ impl<'de> Visitor<'de> for ConfigVisitor {
                 Key::Format => file.format = Some(map.next_value::<AnyCase<Format>>()?.0),
                 Key::Output => file.output = Some(map.next_value()?),
                 Key::Plot => file.plot = Some(map.next_value()?),
+                Key::Method => file.method = Some(map.next_value::<AnyCase<TurnMethod>>()?.0),
                 Key::Param(p) if file.given.get(p).is_some() => {
                     return Err(A::Error::duplicate_field(p.key))
                 }
@@ -168,6 +174,21 @@ impl<'de> Deserialize<'de> for AnyCase<ModelKind> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let name = String::deserialize(d)?;
         name.parse().map(AnyCase).map_err(D::Error::custom)
+    }
+}
+
+impl<'de> Deserialize<'de> for AnyCase<TurnMethod> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        TurnMethod::ALL
+            .into_iter()
+            .find(|m| m.id().eq_ignore_ascii_case(name.trim()))
+            .map(AnyCase)
+            .ok_or_else(|| {
+                D::Error::custom(format!(
+                    "unknown method `{name}`, expected `closed` or `ode`"
+                ))
+            })
     }
 }
 
@@ -432,6 +453,7 @@ impl TurnsArgs {
         let TurnsArgs {
             scenario,
             turns,
+            method,
             output,
         } = self;
         for (key, set) in [
@@ -449,6 +471,7 @@ impl TurnsArgs {
         Ok(TurnsArgs {
             scenario: scenario.over(&file),
             turns: turns.or(file.turns()),
+            method: method.or(file.method),
             output: output.over(&file),
         })
     }
@@ -631,10 +654,15 @@ mod tests {
         flags.sort_unstable();
         flags.dedup();
         assert_eq!(keys, flags);
-        // `turns` has every flag of `simulate` but the sampling.
+        // `turns` has every flag of `simulate` but the sampling, and how the
+        // table is computed.
         let mut sampling_free = long_flags("simulate");
         sampling_free.retain(|f| f != "times" && f != "dt");
-        assert_eq!(long_flags("turns"), sampling_free);
+        sampling_free.push("method".into());
+        sampling_free.sort_unstable();
+        let mut turns = long_flags("turns");
+        turns.sort_unstable();
+        assert_eq!(turns, sampling_free);
     }
 
     /// The format is told from the first byte that is not white space and

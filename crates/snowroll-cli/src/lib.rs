@@ -31,6 +31,7 @@ mod scratch;
 mod serve;
 mod shell;
 mod sink;
+mod writeback;
 
 use std::ffi::OsString;
 

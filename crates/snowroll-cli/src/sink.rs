@@ -32,6 +32,7 @@ use rustix::io::Errno;
 use crate::args::OutputArgs;
 use crate::console::{self, note_broken_pipe};
 use crate::scratch::{clean_stale, plain, Scratch};
+use crate::writeback::EarlyWriteback;
 
 /// Symbolic links followed before giving up, as Linux's `ELOOP` limit.
 const MAX_LINKS: usize = 40;
@@ -61,8 +62,8 @@ pub enum Sink {
     },
     /// A temporary file, renamed over `target` on commit.
     Replace {
-        /// The temporary file, open for writing.
-        file: BufWriter<File>,
+        /// The temporary file, open for writing, synced as it grows.
+        file: BufWriter<EarlyWriteback>,
         /// Its name and lock; removes it unless renamed.
         scratch: Scratch,
         /// The regular file (or place for one) that it will replace.
@@ -116,7 +117,7 @@ impl Sink {
                 let (scratch, file) = temporary_beside(&target, existing.as_ref())
                     .with_context(|| format!("cannot write {shown}"))?;
                 Ok(Sink::Replace {
-                    file: BufWriter::new(file),
+                    file: BufWriter::new(EarlyWriteback::new(file)),
                     scratch,
                     target,
                     path: path.to_path_buf(),
@@ -137,6 +138,7 @@ impl Sink {
                 ..
             } => {
                 let file = file.into_inner().map_err(|e| plain(e.into_error()))?;
+                let file = file.finish().map_err(plain)?;
                 file.sync_all().map_err(plain)?;
                 scratch.rename_to(&target)?;
                 // Make the rename itself durable; a failure here cannot undo it.

@@ -14,7 +14,7 @@ use snowroll::format_number;
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile};
 use snowroll::trajectory::{SimOptions, Stop, StopReason};
-use snowroll::{Losses, Settings};
+use snowroll::{Losses, Settings, TurnMethod};
 
 mod error;
 mod finite;
@@ -57,6 +57,9 @@ pub struct RunParams {
     /// only once the run ended, so the writers put them at the end, after the
     /// stop, not among the parameters.
     pub notes: Vec<String>,
+    /// How a turn table was computed (`snowroll turns --method`), recorded
+    /// after the parameters as `method`; `None` for other outputs.
+    pub method: Option<TurnMethod>,
 }
 
 impl RunParams {
@@ -70,6 +73,7 @@ impl RunParams {
             },
             warnings: Vec::new(),
             notes: Vec::new(),
+            method: None,
         }
     }
 
@@ -96,6 +100,7 @@ impl RunParams {
             .into_iter()
             .map(|(k, v)| (k.to_string(), v))
             .collect();
+        lines.extend(self.method.map(|m| ("method".into(), m.id().into())));
         lines.extend(self.warnings.iter().map(|w| ("warning".into(), w.clone())));
         lines
     }
@@ -108,6 +113,9 @@ impl Serialize for RunParams {
         use serde::ser::SerializeMap;
         let mut map = serializer.serialize_map(None)?;
         self.settings.serialize_record(&mut map)?;
+        if let Some(m) = self.method {
+            map.serialize_entry("method", m.id())?;
+        }
         if !self.warnings.is_empty() {
             map.serialize_entry("warnings", &self.warnings)?;
         }

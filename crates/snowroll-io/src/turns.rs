@@ -25,14 +25,28 @@ use snowroll::SinkError;
 /// [`TurnModel::run_table_into`](snowroll::TurnModel::run_table_into), then
 /// call [`finish`](Self::finish) with the run's end.
 pub struct TurnTableWriter<W: Write> {
-    body: Body<W>,
+    out: Out<W>,
     rows: u64,
-    /// Whether the rows carry the ledger at each turn end (`--ledger`,
-    /// `docs/snowball-and-losses.md` §3.2).
-    ledger: bool,
     /// The ledger of the row that comes next ([`TurnSink::ledger`]).
     pending_ledger: Option<LedgerRow>,
 }
+
+/// Where the rows go.
+enum Out<W: Write> {
+    /// Serialised: JSON, and CSV rows that carry the ledger at each turn
+    /// end (`--ledger`, `docs/snowball-and-losses.md` §3.2).
+    Body { body: Body<W>, ledger: bool },
+    /// CSV rows without the ledger, formatted here ([`LineFormatter`]) and
+    /// written in blocks of about [`LINES_BLOCK`] bytes.
+    Lines {
+        w: W,
+        lines: Vec<u8>,
+        format: LineFormatter,
+    },
+}
+
+/// Bytes of formatted CSV rows written at a time.
+const LINES_BLOCK: usize = 1 << 16;
 
 impl<W: Write> TurnTableWriter<W> {
     /// Writes the opening (version, `model`, `params`, and for CSV the
@@ -47,20 +61,39 @@ impl<W: Write> TurnTableWriter<W> {
         params: &RunParams,
     ) -> Result<Self, OutputError> {
         let ledger = params.losses().is_some_and(|l| l.records_ledger());
-        let body = match format {
+        let out = match format {
+            Format::Csv if !ledger => {
+                write_csv_header(&mut w, model, params)?;
+                // The column header as `csv` writes it.
+                let mut header = csv::WriterBuilder::new()
+                    .has_headers(false)
+                    .from_writer(Vec::new());
+                header.write_record(TableRow::columns(false))?;
+                w.write_all(&header.into_inner().map_err(|e| e.into_error())?)?;
+                Out::Lines {
+                    w,
+                    lines: Vec::with_capacity(LINES_BLOCK + 1024),
+                    format: LineFormatter::default(),
+                }
+            }
             Format::Csv => {
                 write_csv_header(&mut w, model, params)?;
-                Body::csv(w, TableRow::columns(ledger))?
+                Out::Body {
+                    body: Body::csv(w, TableRow::columns(ledger))?,
+                    ledger,
+                }
             }
             Format::Json => {
                 write_json_opening(&mut w, model, params, "turns")?;
-                Body::Json(w)
+                Out::Body {
+                    body: Body::Json(w),
+                    ledger,
+                }
             }
         };
         Ok(Self {
-            body,
+            out,
             rows: 0,
-            ledger,
             pending_ledger: None,
         })
     }
@@ -74,19 +107,40 @@ impl<W: Write> TurnTableWriter<W> {
     /// of it is written ([`OutputError::NonFinite`]).
     fn row(&mut self, turn: &TurnRow) -> Result<(), OutputError> {
         let k = self.rows + 1;
-        let ledger = match self.ledger {
-            true => Some(
-                self.pending_ledger
-                    .take()
-                    .ok_or(OutputError::MissingLedger { row: k })?,
-            ),
-            false => None,
-        };
-        let row = &TableRow {
-            turn,
-            ledger: ledger.as_ref(),
-        };
-        self.body.put(k, row)?;
+        match &mut self.out {
+            Out::Lines { w, lines, format } => {
+                if !format.line(turn, lines) {
+                    // A number not finite: the error names the row and the column.
+                    let row = TableRow { turn, ledger: None };
+                    check_finite(&row, Some(k))?;
+                    // (Not reached: both refuse the same numbers.)
+                    let mut by_csv = csv::WriterBuilder::new()
+                        .has_headers(false)
+                        .from_writer(std::mem::take(lines));
+                    by_csv.serialize(row)?;
+                    *lines = by_csv.into_inner().map_err(|e| e.into_error())?;
+                }
+                if lines.len() >= LINES_BLOCK {
+                    w.write_all(lines)?;
+                    lines.clear();
+                }
+            }
+            Out::Body { body, ledger } => {
+                let ledger = match ledger {
+                    true => Some(
+                        self.pending_ledger
+                            .take()
+                            .ok_or(OutputError::MissingLedger { row: k })?,
+                    ),
+                    false => None,
+                };
+                let row = &TableRow {
+                    turn,
+                    ledger: ledger.as_ref(),
+                };
+                body.put(k, row)?;
+            }
+        }
         self.rows += 1;
         Ok(())
     }
@@ -107,7 +161,16 @@ impl<W: Write> TurnTableWriter<W> {
         summary: &TurnSummary,
         notes: &[String],
     ) -> Result<W, OutputError> {
-        let mut w = match self.body {
+        let body = match self.out {
+            Out::Lines { mut w, lines, .. } => {
+                w.write_all(&lines)?;
+                Body::Csv(Box::new(
+                    csv::WriterBuilder::new().has_headers(false).from_writer(w),
+                ))
+            }
+            Out::Body { body, .. } => body,
+        };
+        let mut w = match body {
             Body::Csv(csv) => {
                 let mut w = (*csv).into_inner().map_err(|e| e.into_error())?;
                 write_csv_stop(&mut w, stop, notes)?;
@@ -138,6 +201,79 @@ impl<W: Write> TurnSink for TurnTableWriter<W> {
     fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
         self.pending_ledger = Some(*row);
         Ok(())
+    }
+}
+
+/// The CSV rows of a turn table without the ledger, formatted by hand in
+/// the bytes the `csv` writer gives the serialised [`TableRow`] (floats by
+/// `ryu`, the turn by `itoa`, an undefined ratio as an empty field; a test
+/// holds the two to the byte). By hand because this is the hot path of a
+/// long table: serde and `csv` took four times as long per row. A turn
+/// starts when and as fast as the one before ended (`t_start = t_end`,
+/// `v_start = v_after`, the same numbers), so those two are formatted once.
+#[derive(Debug, Clone, Default)]
+struct LineFormatter {
+    /// The bits and text of the last `t_end_s` and `v_after_m_s`.
+    carried: [(Option<u64>, String); 2],
+}
+
+impl LineFormatter {
+    /// Appends the row of `turn` to `out`; false, with nothing appended,
+    /// when a number is not finite.
+    fn line(&mut self, turn: &TurnRow, out: &mut Vec<u8>) -> bool {
+        let t = turn;
+        let floats = [
+            t.t_start_s,
+            t.x_start_m,
+            t.v_start_m_s,
+            t.t_end_s,
+            t.v_end_m_s,
+            t.v_after_m_s,
+            t.collision_loss_j,
+            t.mean_a_turn_m_s2,
+            t.min_a_m_s2,
+            t.max_a_m_s2,
+            t.mean_a_with_collision_m_s2,
+            t.min_normal_n,
+            t.min_normal_over_mg,
+        ];
+        let ratio_finite = t.max_friction_ratio.is_none_or(f64::is_finite);
+        if !floats.iter().all(|x| x.is_finite()) || !ratio_finite {
+            return false;
+        }
+        out.extend_from_slice(itoa::Buffer::new().format(t.turn).as_bytes());
+        let mut number = ryu::Buffer::new();
+        // Columns 0 and 2 (t_start, v_start) may be the carried 3 and 5
+        // (t_end, v_after) of the row before.
+        for (column, x) in floats.into_iter().enumerate() {
+            out.push(b',');
+            let slot = match column {
+                0 | 3 => 0,
+                2 | 5 => 1,
+                _ => {
+                    out.extend_from_slice(number.format_finite(x).as_bytes());
+                    continue;
+                }
+            };
+            let (bits, text) = &mut self.carried[slot];
+            if column < 3 && *bits == Some(x.to_bits()) {
+                out.extend_from_slice(text.as_bytes());
+                continue;
+            }
+            let formatted = number.format_finite(x);
+            out.extend_from_slice(formatted.as_bytes());
+            if column >= 3 {
+                text.clear();
+                text.push_str(formatted);
+                *bits = Some(x.to_bits());
+            }
+        }
+        out.push(b',');
+        if let Some(ratio) = t.max_friction_ratio {
+            out.extend_from_slice(number.format_finite(ratio).as_bytes());
+        }
+        out.push(b'\n');
+        true
     }
 }
 
@@ -234,6 +370,62 @@ mod tests {
         let body: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).collect();
         assert_eq!(body[0], TableRow::columns(false).join(","));
         assert_eq!(body.len(), 1 + 3);
+    }
+
+    /// The hand-formatted rows are the bytes the `csv` writer gives the
+    /// serialised row, for awkward numbers (exponents, integers, negative
+    /// zero, subnormals, extremes) and an undefined ratio; a non-finite
+    /// number is refused. Checked once against a formatter that put the
+    /// columns in another order, which this test failed.
+    #[test]
+    fn hand_formatted_rows_are_the_csv_writers_bytes() {
+        let (t, _) = table(3);
+        let mut row = t.rows[1];
+        let awkward = [
+            1e-7,
+            1e21,
+            -0.0,
+            5e-324,
+            f64::MAX / 8.0,
+            123456.0,
+            0.1 + 0.2,
+        ];
+        // One formatter for all rows, as for a table: each row starts where
+        // the one before ended (the carried text), or not.
+        let mut format = LineFormatter::default();
+        for (n, x) in awkward.into_iter().enumerate() {
+            row.turn = n as u64 * 1_000_003;
+            if n % 3 == 0 {
+                (row.t_start_s, row.v_start_m_s) = (row.t_end_s, row.v_after_m_s);
+            } else {
+                row.t_start_s = x;
+            }
+            row.t_end_s = x * 3.0 + 1.0;
+            row.v_after_m_s = -x;
+            row.min_a_m_s2 = -x;
+            row.min_normal_over_mg = x / 3.0;
+            row.max_friction_ratio = (n % 2 == 0).then_some(x * 7.0);
+            let mut by_csv = csv::WriterBuilder::new()
+                .has_headers(false)
+                .from_writer(Vec::new());
+            by_csv
+                .serialize(TableRow {
+                    turn: &row,
+                    ledger: None,
+                })
+                .unwrap();
+            let mut by_hand = Vec::new();
+            assert!(format.line(&row, &mut by_hand));
+            assert_eq!(
+                String::from_utf8_lossy(&by_hand),
+                String::from_utf8_lossy(&by_csv.into_inner().unwrap())
+            );
+        }
+        row.v_end_m_s = f64::NAN;
+        assert!(!format.line(&row, &mut Vec::new()));
+        row.v_end_m_s = 1.0;
+        row.max_friction_ratio = Some(f64::INFINITY);
+        assert!(!format.line(&row, &mut Vec::new()));
     }
 
     /// With `ledger` each row carries the ledger at its turn end, after the

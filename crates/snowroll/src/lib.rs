@@ -144,8 +144,9 @@ pub use models::{
     run_warnings, state_scale, tolerance_warning, validity_warnings, warning_codes, Balance,
     CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
     DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, RunWarning,
-    SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnModel, TurnRow, TurnRunEnd,
-    TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning, WarningCode,
+    SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnMethod, TurnModel, TurnRow,
+    TurnRunEnd, TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
+    WarningCode,
 };
 pub use number::format_number;
 pub use params::{Given, Param, RecordedSampling, Settings, Value, PARAMS};

@@ -16,4 +16,5 @@ mod sweep;
 mod sweep_regime;
 mod turn_ledger;
 mod turns;
+mod turns_closed;
 mod turns_reference;

@@ -353,6 +353,10 @@ pub struct TurnsArgs {
     )]
     pub turns: Option<u64>,
 
+    /// How the table is computed: closed (each turn from its energy integral: time by quadrature, stall, hop and slip angles by root finding; --rtol, --atol and --max-steps do not apply) or ode (DOP853 with events, the cross-check). closed falls back to ode for what it does not cover, --collision pivot and a start from rest where the log may not start, and says so on stderr (docs/turn-model.md, "The closed-form path") [default: closed]
+    #[arg(long, value_name = "METHOD")]
+    pub method: Option<snowroll::TurnMethod>,
+
     /// Format, destination, config file.
     #[command(flatten)]
     pub output: OutputArgs,

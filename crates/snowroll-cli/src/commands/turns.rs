@@ -6,8 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_turns_into, run_warnings, ModelKind, Sampling, SimError,
-    StopReason, TurnRunEnd, TurnSummary,
+    default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
+    StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -48,14 +48,8 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     // Everything the model refuses, before any output (nothing reaches stdout).
     model.build().check(&scenario, &opts)?;
     let format = inputs::format(&args.output)?;
-    // The same checks, in the same order, as a sweep's `warnings` column.
-    let warnings: Vec<String> = run_warnings(model, &scenario, &opts)
-        .iter()
-        .map(ToString::to_string)
-        .collect();
-    for w in &warnings {
-        report!("warning: {w}");
-    }
+    let (turn_model, method) = method(args.method, model, &scenario, &opts)?;
+    let warnings = warnings(model, &scenario, &opts, method);
 
     // Open the destination before the run, so that a bad path fails at once.
     let mut sink = Sink::open(&args.output)?;
@@ -63,6 +57,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     let mut params = RunParams::new(&scenario, &opts);
     params.settings.per_turn = true;
     params.warnings = warnings;
+    params.method = Some(method);
     let mut writer = TurnTableWriter::new(&mut sink, format, model, &params)
         .with_context(|| format!("writing {name}"))?;
     // Rows go out as each turn ends; the stop, the notes and the summary are
@@ -71,7 +66,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
         inner: &mut writer,
         kept: plot.map(|_| Vec::new()),
     };
-    let run = run_turns_into(model, &scenario, &opts, &mut keep);
+    let run = turn_model.run_table_into(&scenario, &opts, &mut keep);
     let kept = keep.kept.take();
     let end = match run {
         Ok(end) => end,
@@ -128,6 +123,46 @@ fn turn_model(args: &TurnsArgs) -> Result<ModelKind> {
             models.len()
         ),
     }
+}
+
+/// The turn model of `model` with the method asked for (closed by
+/// default), and the method that will compute the table: a note on stderr
+/// when the closed form does not cover the run.
+fn method(
+    asked: Option<TurnMethod>,
+    model: ModelKind,
+    scenario: &Scenario,
+    opts: &SimOptions,
+) -> Result<(TurnModel, TurnMethod)> {
+    let asked = asked.unwrap_or_default();
+    let turn_model = TurnVariant::of(model)
+        .map(|v| TurnModel::new(v).with_method(asked))
+        .context("a turn model")?;
+    let method = turn_model.method_for(scenario, opts);
+    if method != asked {
+        report!(
+            "note: --method {} does not cover this run (--collision pivot, or a start from rest \
+             that may not start); the table is computed by --method {}",
+            asked.id(),
+            method.id()
+        );
+    }
+    Ok((turn_model, method))
+}
+
+/// The run's warnings (the checks of a sweep's `warnings` column), each
+/// also on stderr; the closed form takes no tolerances, so loose ones are
+/// no warning for it.
+fn warnings(model: ModelKind, s: &Scenario, opts: &SimOptions, method: TurnMethod) -> Vec<String> {
+    let warnings: Vec<String> = run_warnings(model, s, opts)
+        .iter()
+        .filter(|w| method == TurnMethod::Ode || w.code != WarningCode::LooseTolerance)
+        .map(ToString::to_string)
+        .collect();
+    for w in &warnings {
+        report!("warning: {w}");
+    }
+    warnings
 }
 
 /// One line for stderr when the run ended before the turns asked for.

@@ -162,6 +162,8 @@ pub fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
                 continue;
             }
             k if RECORD_ONLY.contains(&k) || k == "stop" => continue,
+            // How a turn table was computed: read back as `--method`.
+            "method" => serde_json::Value::String(value.into()),
             _ if value == "none" => continue,
             // A key of the table, read as its kind; any other key goes on as
             // a number, for the config reader to name as unknown.

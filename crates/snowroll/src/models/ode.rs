@@ -9,7 +9,9 @@
 //! (`turn_by_turn/observer.rs`) is the other.
 
 use crate::error::{SimError, SinkError};
-use crate::integrate::{integrate, DenseStep, EventRecord, Observer, OdeSystem, Termination};
+use crate::integrate::{
+    integrate, DenseStep, EventRecord, Observer, OdeSystem, Outcome, Termination,
+};
 use crate::trajectory::{
     LedgerRow, RunEnd, Sample, SampleSink, Sampling, SimOptions, Stop, StopReason, TurnState,
 };
@@ -269,6 +271,20 @@ pub(crate) fn run_observed<const N: usize, M: OdeModel<N>, O: RunObserver<M, N>>
     observer: &mut O,
 ) -> Result<RunEnd, SimError> {
     let outcome = integrate(system, 0.0, y0, opts.t_end, &opts.tolerances, observer)?;
+    end_observed(system, observer, outcome)
+}
+
+/// How a run observed by `observer` ended at `outcome` (of the integrator,
+/// or of a path that computes the same events without it): the observer's
+/// last word, its sink's failure, or the stop.
+///
+/// # Errors
+/// [`SimError::Sink`] when the observer's sink failed.
+pub(crate) fn end_observed<const N: usize, M: OdeModel<N>, O: RunObserver<M, N>>(
+    system: &M,
+    observer: &mut O,
+    outcome: Outcome<N>,
+) -> Result<RunEnd, SimError> {
     observer.finish(system, outcome.t, &outcome.y);
     if let Some(e) = observer.budget().failed.take() {
         return Err(SimError::Sink(e));

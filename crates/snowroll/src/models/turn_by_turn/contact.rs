@@ -16,6 +16,7 @@
 //! energy equation). Exact for the `Exact` variant, first order in b/r for
 //! `Paper`. As b → 0: N = m C, F = m G/3 (App. A).
 
+use super::jet::{Jet, Real};
 use super::{extremes, TurnDynamics};
 use crate::models::contact::ContactForces;
 use crate::units::Radians;
@@ -25,6 +26,15 @@ use crate::units::Radians;
 /// (N ≈ C + (G/2) sin θ, §4.2), so 32 intervals of 0.2 rad leave margin for
 /// the skewed early turns.
 const FORCE_GRID: usize = 32;
+/// Grid intervals over a turn whose θ̇² varies by less than
+/// [`SMOOTH_SPREAD`] of its start value ([`TurnDynamics::is_smooth_turn`]):
+/// a, N and F are then within that fraction of their late-turn forms
+/// `A + B cos θ + C sin θ` (§4.2), one minimum and one maximum per turn
+/// each, and 16 intervals of 0.39 rad bracket them as 32 do.
+const SMOOTH_GRID: usize = 16;
+/// Largest variation of `I θ̇²` over a turn, as a fraction of its start
+/// value, for [`SMOOTH_GRID`].
+const SMOOTH_SPREAD: f64 = 0.05;
 /// Absolute tolerance in θ of the refined extremes, rad (the value at the
 /// extreme is then off by ~f″ · 1e-16).
 const FORCE_THETA_TOL: f64 = 1e-8;
@@ -59,18 +69,33 @@ impl TurnDynamics {
 
     /// `(a, N, F)` at θ on the energy integral of a turn started with
     /// `θ̇(0) = omega0` (θ̇² clamped at 0 past a stall), from `sin θ`, `cos θ`:
-    /// a in m/s², N and F per unit `m_k` in m/s².
-    fn orbit_sc(&self, theta: f64, s: f64, c: f64, omega0: f64) -> (f64, f64, f64) {
+    /// a in m/s², N and F per unit `m_k` in m/s². In any [`Real`]: values
+    /// (`f64`), or values with their derivatives in θ ([`Jet`]) for Newton's
+    /// method on the extremes.
+    fn orbit_sc<T: Real>(&self, theta: T, s: T, c: T, omega0: f64) -> (T, T, T) {
         let k = &self.coeffs;
-        let (i, di) = self.inertia_sc(theta, s, c);
-        let (w, dw) = self.potential_sc(theta, s, c);
-        let w2 = ((1.5 * self.r * self.r * omega0 * omega0 - 2.0 * w) / i).max(0.0);
-        let alpha = (-dw - 0.5 * di * w2) / i;
-        let grown = 1.0 + k.accretion * theta;
-        let normal = grown * self.g_normal + k.e2 * (alpha * (1.0 - c) + w2 * s);
-        let friction =
-            grown * self.g_along - alpha * (self.r * grown - k.e2 * s) - w2 * (k.e1 - k.e2 * c);
-        (self.r * alpha, normal, friction)
+        let (g, c_n, r) = (self.g_along, self.g_normal, self.r);
+        // I and I′ (`inertia_sc`), W and W′ (`potential_sc`), written in T.
+        let i = (theta * k.c1 + 1.5 * r * r) - s * k.c2;
+        let di = -(c * k.c2 - k.c1);
+        let one_minus_cos = -(c - 1.0);
+        let w = -(((theta * r) + theta * theta * (k.e1 / 2.0)) - one_minus_cos * k.e2) * g
+            + (theta * k.e3 - s * k.e2) * c_n;
+        let dw = -((theta * k.e1 + r) - s * k.e2) * g + (-(c * k.e2 - k.e3)) * c_n;
+        let inv_i = i.recip();
+        let w2 = ((-(w * 2.0) + 1.5 * r * r * omega0 * omega0) * inv_i).at_least_zero();
+        let alpha = (-dw - di * w2 * 0.5) * inv_i;
+        let grown = theta * k.accretion + 1.0;
+        let normal = grown * c_n + (alpha * one_minus_cos + w2 * s) * k.e2;
+        let friction = grown * g - alpha * (grown * r - s * k.e2) - w2 * (-(c * k.e2 - k.e1));
+        (alpha * r, normal, friction)
+    }
+
+    /// [`Self::orbit_sc`] at θ with the first two derivatives in θ.
+    fn orbit_jet(&self, theta: f64, omega0: f64) -> (Jet, Jet, Jet) {
+        let (s, c) = theta.sin_cos();
+        let (js, jc) = Jet::sin_cos(s, c);
+        self.orbit_sc(Jet::variable(theta), js, jc, omega0)
     }
 
     /// `(a, N, F)` at θ on the energy integral ([`Self::orbit_sc`]).
@@ -84,7 +109,8 @@ impl TurnDynamics {
     /// |F|/N, and where N first reaches 0. The ratio is undefined (`None`)
     /// if N reaches 0.
     pub fn contact_range(&self, omega0: f64, theta_max: Radians) -> ContactRange {
-        self.scan(omega0, theta_max, false).contact
+        self.scan(omega0, theta_max, false, &mut Hints::default())
+            .contact
     }
 
     /// The first θ in [0, `theta_max`] where N reaches 0 on the energy
@@ -100,7 +126,18 @@ impl TurnDynamics {
     /// [`Self::acceleration_range`] (the same values, to the refinement's
     /// tolerance), from one grid: what each row of the turn table needs.
     pub fn turn_extremes(&self, omega0: f64) -> TurnExtremes {
-        self.scan(omega0, std::f64::consts::TAU, true)
+        self.scan(omega0, std::f64::consts::TAU, true, &mut Hints::default())
+    }
+
+    /// [`Self::turn_extremes`] with Newton's method started where `hints`
+    /// says the extremes of the turn before were (consecutive turns have
+    /// theirs within ~1/k² rad of each other late in a run, one Newton step
+    /// instead of two or three), and `hints` updated. A hint outside the
+    /// grid interval next to this turn's sampled extreme is not used; the
+    /// values are those of [`Self::turn_extremes`] to the refinement's
+    /// accuracy, a few ulp.
+    pub(crate) fn turn_extremes_hinted(&self, omega0: f64, hints: &mut Hints) -> TurnExtremes {
+        self.scan(omega0, std::f64::consts::TAU, true, hints)
     }
 
     /// One grid of [`FORCE_GRID`] intervals over [0, `theta_max`] samples a,
@@ -110,50 +147,70 @@ impl TurnDynamics {
     /// `sin_cos` per evaluation. The extremes of a are refined only if `with_a`.
     /// N is refined at every local minimum of its samples
     /// ([`Self::normal_minima`]), which also gives where N first reaches 0.
-    fn scan(&self, omega0: f64, theta_max: Radians, with_a: bool) -> TurnExtremes {
+    fn scan(
+        &self,
+        omega0: f64,
+        theta_max: Radians,
+        with_a: bool,
+        hints: &mut Hints,
+    ) -> TurnExtremes {
         let mu = self.coeffs.accretion;
         let g = self.g_along.hypot(self.g_normal);
-        let step = theta_max / FORCE_GRID as f64;
+        let grid = if self.is_smooth_turn(omega0, theta_max) {
+            SMOOTH_GRID
+        } else {
+            FORCE_GRID
+        };
+        let step = theta_max / grid as f64;
         let (sh, ch) = step.sin_cos();
-        let (mut s, mut c) = (0.0, 1.0);
-        let mut normal = [0.0; FORCE_GRID + 1];
-        // Smallest sampled value and its grid index of a, −a, N/(M g), −|F|/N.
-        let mut least = [(f64::INFINITY, 0usize); 4];
-        for (i, n_i) in normal.iter_mut().enumerate() {
+        let mut sin_cos = [(0.0, 1.0); FORCE_GRID + 1];
+        for i in 1..=grid {
+            let (s, c) = sin_cos[i - 1];
+            sin_cos[i] = (s * ch + c * sh, c * ch - s * sh);
+        }
+        // Samples of a, −a, N, N/(M g), −|F|/N (each refined at its
+        // smallest), in a loop without a dependence between its passes (the
+        // compiler runs two points at once).
+        let mut samples = [[0.0; FORCE_GRID + 1]; 5];
+        for (i, &(s, c)) in sin_cos.iter().enumerate().take(grid + 1) {
             let theta = i as f64 * step;
             let (a, n, f) = self.orbit_sc(theta, s, c, omega0);
-            *n_i = n;
-            let values = [a, -a, n / ((1.0 + mu * theta) * g), -f.abs() / n];
-            for (slot, value) in least.iter_mut().zip(values) {
-                if value < slot.0 {
-                    *slot = (value, i);
-                }
+            let values = [a, -a, n, n / ((1.0 + mu * theta) * g), -f.abs() / n];
+            for (row, value) in samples.iter_mut().zip(values) {
+                row[i] = value;
             }
-            (s, c) = (s * ch + c * sh, c * ch - s * sh);
         }
-        let refine = |h: &dyn Fn(f64) -> f64, (value, i): (f64, usize)| {
-            extremes::refine_min(h, 0.0, step, FORCE_GRID, i, value, FORCE_THETA_TOL).1
+        let [a_s, neg_a_s, normal, mg_s, neg_ratio_s] = samples.each_ref().map(|r| &r[..=grid]);
+        let refine = |h: &dyn Fn(f64) -> Jet, values: &[f64], hint: &mut Option<f64>| {
+            let i = least(values);
+            let (theta, value) =
+                extremes::refine_min_jet(h, 0.0, step, values, i, *hint, FORCE_THETA_TOL);
+            *hint = Some(theta);
+            value
         };
+        let [h_min, h_max, h_normal, h_mg, h_ratio] = &mut hints.theta;
         let (a_min, a_max) = if with_a {
             (
-                refine(&|theta| self.orbit(theta, omega0).0, least[0]),
-                -refine(&|theta| -self.orbit(theta, omega0).0, least[1]),
+                refine(&|theta| self.orbit_jet(theta, omega0).0, a_s, h_min),
+                -refine(&|theta| -self.orbit_jet(theta, omega0).0, neg_a_s, h_max),
             )
         } else {
             (f64::NAN, f64::NAN)
         };
-        let (n_min, first_zero_normal) = self.normal_minima(omega0, &normal, step);
+        let (n_min, first_zero_normal) = self.normal_minima(omega0, normal, step, h_normal);
         let min_normal_over_mg = refine(
-            &|theta| self.orbit(theta, omega0).1 / ((1.0 + mu * theta) * g),
-            least[2],
+            &|theta| self.orbit_jet(theta, omega0).1 / ((Jet::variable(theta) * mu + 1.0) * g),
+            mg_s,
+            h_mg,
         );
         let max_friction_ratio = (n_min > 0.0).then(|| {
             -refine(
                 &|theta| {
-                    let (_, n, f) = self.orbit(theta, omega0);
-                    -f.abs() / n
+                    let (_, n, f) = self.orbit_jet(theta, omega0);
+                    -(f.abs() / n)
                 },
-                least[3],
+                neg_ratio_s,
+                h_ratio,
             )
         });
         TurnExtremes {
@@ -168,6 +225,17 @@ impl TurnDynamics {
         }
     }
 
+    /// Whether `I θ̇²` (= `I(0)θ̇₀² − 2W`, eq. (T1)) varies over [0,
+    /// `theta_max`] by less than [`SMOOTH_SPREAD`] of its start value, by a
+    /// bound on |W| term by term.
+    fn is_smooth_turn(&self, omega0: f64, theta_max: Radians) -> bool {
+        let k = &self.coeffs;
+        let (g, c_n, r, t) = (self.g_along.abs(), self.g_normal.abs(), self.r, theta_max);
+        let w_bound = g * (r * t + k.e1.abs() * t * t / 2.0 + 2.0 * k.e2.abs())
+            + c_n * (k.e3.abs() * t + k.e2.abs());
+        2.0 * w_bound < SMOOTH_SPREAD * 1.5 * r * r * omega0 * omega0
+    }
+
     /// From the samples `normal[i]` of N at θ = i `step` on the energy
     /// integral: the smallest N and the first θ where N ≤ 0, if any.
     ///
@@ -178,7 +246,13 @@ impl TurnDynamics {
     /// with N ≤ 0 closes a bracket whose other end (the last grid point
     /// before it) has N > 0; bisection then narrows it until the two ends
     /// are adjacent doubles, and the end with N ≤ 0 is the hop.
-    fn normal_minima(&self, omega0: f64, normal: &[f64], step: f64) -> (f64, Option<Radians>) {
+    fn normal_minima(
+        &self,
+        omega0: f64,
+        normal: &[f64],
+        step: f64,
+        hint: &mut Option<f64>,
+    ) -> (f64, Option<Radians>) {
         let n_at = |theta: f64| self.orbit(theta, omega0).1;
         let last = normal.len() - 1;
         let (mut n_min, mut first_zero) = (f64::INFINITY, None);
@@ -195,8 +269,16 @@ impl TurnDynamics {
             if !local {
                 continue;
             }
-            let (theta_m, n_m) =
-                extremes::refine_min(n_at, 0.0, step, last, i, n_i, FORCE_THETA_TOL);
+            let (theta_m, n_m) = extremes::refine_min_jet(
+                |theta| self.orbit_jet(theta, omega0).1,
+                0.0,
+                step,
+                normal,
+                i,
+                *hint,
+                FORCE_THETA_TOL,
+            );
+            *hint = Some(theta_m);
             n_min = n_min.min(n_m);
             if first_zero.is_none() && n_m <= 0.0 {
                 // N > 0 at every grid point up to θ_i (and θ_m ≥ θ_{i−1}).
@@ -273,6 +355,14 @@ impl TurnDynamics {
     }
 }
 
+/// Where the extremes of the last turn were found: the starts of Newton's
+/// method for the next ([`TurnDynamics::turn_extremes_hinted`]), for the
+/// smallest and largest a, the smallest N, N/(M g) and the largest |F|/N.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Hints {
+    theta: [Option<Radians>; 5],
+}
+
 /// Extremes of a, N and |F|/N over a whole turn, [`TurnDynamics::turn_extremes`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TurnExtremes {
@@ -298,10 +388,21 @@ pub struct ContactRange {
     pub first_zero_normal: Option<Radians>,
 }
 
+/// The index of the smallest of `values` (the first of equal ones).
+fn least(values: &[f64]) -> usize {
+    let mut best = 0;
+    for (i, &v) in values.iter().enumerate() {
+        if v < values[best] {
+            best = i;
+        }
+    }
+    best
+}
+
 /// The first θ in `(lo, hi]` where `n(θ) ≤ 0`, given `n(lo) > 0 ≥ n(hi)` and
 /// one crossing between them: bisection until `lo` and `hi` are adjacent
 /// doubles (at most ~60 halvings for θ ≤ 2π); the end with `n ≤ 0`.
-fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+pub(super) fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     loop {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {
@@ -348,6 +449,48 @@ mod tests {
             let want = c + 0.5 * g * f64::sin(theta);
             assert!((n - want).abs() < 1e-2, "θ = {theta}: {n} vs {want}");
         }
+    }
+
+    /// Hints only move where Newton's method starts: with the hints of the
+    /// turn before, with hints far off (wrong ends of the turn) and with
+    /// none, a late turn's extremes agree to a few ulp (1e-14 of g; the
+    /// refinement's own error is ~1e-16 g). Also an early turn (32 grid
+    /// intervals) with the late turn's hints.
+    #[test]
+    fn hinted_extremes_equal_the_unhinted() {
+        let g = 9.81;
+        let (sa, ca) = 30f64.to_radians().sin_cos();
+        let late = |r: f64| TurnDynamics::new(TurnVariant::Paper, r, 0.01, g * sa, g * ca);
+        let fields = |e: &TurnExtremes| {
+            let c = &e.contact;
+            [
+                e.a_min,
+                e.a_max,
+                c.min_normal_per_mk,
+                c.min_normal_over_mg,
+                c.max_friction_ratio.unwrap_or(f64::NAN),
+            ]
+        };
+        let same = |a: &TurnExtremes, b: &TurnExtremes| {
+            for (x, y) in fields(a).into_iter().zip(fields(b)) {
+                assert!((x - y).abs() < 1e-14 * g, "{x} vs {y}");
+            }
+        };
+        let (turn, omega0) = (late(5.0), 27.0);
+        let plain = turn.turn_extremes(omega0);
+        let mut hints = Hints::default();
+        late(4.99).turn_extremes_hinted(omega0 * 1.001, &mut hints);
+        same(&plain, &turn.turn_extremes_hinted(omega0, &mut hints));
+        let far = [Some(6.0), Some(3.0), Some(0.1), Some(6.2), Some(0.5)];
+        same(
+            &plain,
+            &turn.turn_extremes_hinted(omega0, &mut Hints { theta: far }),
+        );
+        let early = late(0.12);
+        same(
+            &early.turn_extremes(2.0),
+            &early.turn_extremes_hinted(2.0, &mut hints),
+        );
     }
 
     /// The one-grid scan against a dense sampling of the public, separately

@@ -1,7 +1,10 @@
 //! The smallest and largest value of a smooth function over one turn, for
 //! the range of the acceleration within a turn: a coarse grid brackets each
 //! extreme, Brent's method (parabolic steps with golden-section fallback,
-//! Brent 1973, ch. 5) refines it.
+//! Brent 1973, ch. 5) refines it, or Newton's method where the function
+//! comes with its derivatives ([`refine_min_jet`]).
+
+use super::jet::Jet;
 
 /// Golden-section fraction `(3 − √5)/2`.
 const GOLDEN: f64 = 0.381_966_011_250_105_1;
@@ -151,6 +154,80 @@ pub(super) fn refine_min(
                 (at(i), g_i)
             }
         }
+    }
+}
+
+/// Newton steps of [`refine_min_jet`] before it leaves the minimum to
+/// Brent's method (from a grid point it needs three or four).
+const MAX_NEWTON: usize = 8;
+/// Newton's step below which [`refine_min_jet`] stops, rad: the minimum of
+/// the local quadratic, `g − g′²/(2g″)`, is then off by ~|g‴| · 1e-15/6.
+const NEWTON_STEP_TOL: f64 = 1e-5;
+
+/// [`refine_min`] by Newton's method on `g′ = 0` from the jets `g(θ)`
+/// ([`Jet`]), given the samples `samples[j] = g(lo + j step)` and the
+/// index `i` of the smallest: from `hint` where it lies within the two
+/// intervals next to `i` (where a like extreme was found before), else from
+/// the vertex of the parabola through the samples around `i`, steps `−g′/g″` while `g″ > 0` and the steps stay
+/// within the two intervals next to `i`; once a step is below
+/// [`NEWTON_STEP_TOL`] the value is the local quadratic's minimum. Where
+/// Newton's method does not apply (g not convex there, a step leaving the
+/// bracket) Brent's method on the values takes over, to `x_tol`. An end of
+/// the grid that `g` increases away from (`g′` pointing inward) is itself
+/// the extreme. Returns `(θ, value)`, the value never above `samples[i]`.
+pub(super) fn refine_min_jet(
+    g: impl Fn(f64) -> Jet,
+    lo: f64,
+    step: f64,
+    samples: &[f64],
+    i: usize,
+    hint: Option<f64>,
+    x_tol: f64,
+) -> (f64, f64) {
+    let grid = samples.len() - 1;
+    let g_i = samples[i];
+    let at = |j: usize| lo + j as f64 * step;
+    let (a, b) = (at(i.saturating_sub(1)), at((i + 1).min(grid)));
+    let mut x = at(i);
+    if let Some(h) = hint.filter(|h| *h >= a && *h <= b && i > 0 && i < grid) {
+        x = h;
+    } else if i > 0 && i < grid {
+        // The parabola's vertex, within the bracket (a start within
+        // ~h³|g‴/g″| of the minimum, so that Newton needs a step or two).
+        let (before, after) = (samples[i - 1], samples[i + 1]);
+        let curvature = before - 2.0 * g_i + after;
+        if curvature > 0.0 {
+            x += (0.5 * (before - after) / curvature).clamp(-1.0, 1.0) * step;
+        }
+    }
+    for n in 0..MAX_NEWTON {
+        let j = g(x);
+        if n == 0 && ((i == 0 && j.d >= 0.0) || (i == grid && j.d <= 0.0)) {
+            return (x, g_i);
+        }
+        if j.dd.is_nan() || j.dd <= 0.0 {
+            break;
+        }
+        let dx = -j.d / j.dd;
+        if dx.abs() <= NEWTON_STEP_TOL {
+            let value = j.v + 0.5 * j.d * dx;
+            return if value < g_i {
+                (x + dx, value)
+            } else {
+                (at(i), g_i)
+            };
+        }
+        let next = x + dx;
+        if !(next >= a && next <= b) {
+            break;
+        }
+        x = next;
+    }
+    let (x, gx) = brent_min(|x| g(x).v, a, b, x_tol);
+    if gx < g_i {
+        (x, gx)
+    } else {
+        (at(i), g_i)
     }
 }
 

@@ -36,7 +36,9 @@ mod collision;
 mod contact;
 mod dynamics;
 mod extremes;
+mod jet;
 mod observer;
+mod orbit;
 mod row;
 mod runner;
 mod stall;
@@ -44,14 +46,15 @@ mod summary;
 mod system;
 
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
+pub(crate) use contact::Hints;
 pub use contact::{ContactRange, TurnExtremes};
 pub use dynamics::{InTurnCoefficients, TurnDynamics, TurnVariant};
 pub use row::{TurnRow, TurnSink};
-pub use runner::{run_turns, run_turns_into, TurnModel, TurnRunEnd, TurnTable};
+pub use runner::{run_turns, run_turns_into, TurnMethod, TurnModel, TurnRunEnd, TurnTable};
 pub use stall::first_turn_stall_slope;
 use summary::SummaryBuilder;
 pub use summary::{TurnCheckpoint, TurnSummary};
-pub(crate) use system::{TurnSystem, EVENT_TURN_END};
+pub(crate) use system::{run_closed, TurnSystem, EVENT_TURN_END};
 
 use std::f64::consts::PI;
 

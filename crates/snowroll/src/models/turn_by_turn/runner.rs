@@ -4,8 +4,8 @@
 
 use super::observer::TableObserver;
 use super::{
-    check_turn_losses, check_turn_scale, SummaryBuilder, TurnRow, TurnSink, TurnSummary,
-    TurnSystem, TurnVariant,
+    check_turn_losses, check_turn_scale, run_closed, SummaryBuilder, TurnRow, TurnSink,
+    TurnSummary, TurnSystem, TurnVariant,
 };
 use crate::error::{ParamError, SimError, SinkError};
 use crate::integrate::Stats;
@@ -58,17 +58,73 @@ pub struct TurnTable {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct TurnModel {
     variant: TurnVariant,
+    method: TurnMethod,
+}
+
+/// How the per-turn table of a turn model is computed
+/// (`docs/turn-model.md`, "The closed-form path"). Both give the same
+/// table to the integrator's error (a test holds them to 1e-12 relative at
+/// the integrator's tightest tolerance); the samples of
+/// [`Model::simulate`](crate::Model::simulate) always come from the integrator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum TurnMethod {
+    /// Each turn from its energy integral: θ̇(θ) in closed form, the time by
+    /// quadrature, the stall, hop and slip angles by root finding, the
+    /// collision algebraically. Runs it does not cover go to the
+    /// integrator: `--collision pivot`, and a start from rest where the log
+    /// does not surely start ([`TurnModel::method_for`] says which ran).
+    #[default]
+    Closed,
+    /// DOP853 with events and the collision as a reset (rtol, atol and
+    /// max_steps apply).
+    Ode,
+}
+
+impl TurnMethod {
+    /// Every method, the default first.
+    pub const ALL: [TurnMethod; 2] = [TurnMethod::Closed, TurnMethod::Ode];
+
+    /// The method's word (`closed`, `ode`).
+    pub fn id(self) -> &'static str {
+        match self {
+            TurnMethod::Closed => "closed",
+            TurnMethod::Ode => "ode",
+        }
+    }
 }
 
 impl TurnModel {
-    /// The model with the mass properties of `variant`.
+    /// The model with the mass properties of `variant`, its table computed
+    /// in closed form where that covers the run ([`TurnMethod::Closed`]).
     pub fn new(variant: TurnVariant) -> Self {
-        Self { variant }
+        Self {
+            variant,
+            method: TurnMethod::Closed,
+        }
+    }
+
+    /// The same model with its table computed by `method`.
+    pub fn with_method(self, method: TurnMethod) -> Self {
+        Self { method, ..self }
     }
 
     /// Its variant.
     pub fn variant(&self) -> TurnVariant {
         self.variant
+    }
+
+    /// The method that computes the table of a run of `scenario` under
+    /// `opts`: the one asked for, except that [`TurnMethod::Closed`] falls
+    /// back to [`TurnMethod::Ode`] for what it does not cover.
+    pub fn method_for(&self, scenario: &Scenario, opts: &SimOptions) -> TurnMethod {
+        let system = TurnSystem::new(self.variant, scenario, opts);
+        match self.method {
+            TurnMethod::Closed if system.closed_form_covers(&Self::initial_state(scenario)) => {
+                TurnMethod::Closed
+            }
+            _ => TurnMethod::Ode,
+        }
     }
 
     /// The initial state `[θ, θ̇] = [0, v0/r0]`.
@@ -166,7 +222,11 @@ impl TurnModel {
                 stats: Stats::default(),
             });
         }
-        let end = run_observed(&mut system, y0, opts, &mut observer)?;
+        let end = if self.method == TurnMethod::Closed && system.closed_form_covers(&y0) {
+            run_closed(&mut system, y0, opts.t_end, &mut observer)?
+        } else {
+            run_observed(&mut system, y0, opts, &mut observer)?
+        };
         Ok(TurnRunEnd {
             model: self.variant.kind(),
             stop: end.stop,

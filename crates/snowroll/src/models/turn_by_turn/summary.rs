@@ -104,6 +104,7 @@ impl TurnSummary {
 }
 
 /// Whether `k` is one of 1, 2, 5, 10, 20, 50, …
+#[cfg(test)]
 fn is_decade_checkpoint(k: u64) -> bool {
     let mut decade = 1u64;
     loop {
@@ -117,8 +118,29 @@ fn is_decade_checkpoint(k: u64) -> bool {
     }
 }
 
+/// The smallest turn count 1, 2, 5, 10, 20, … not below `k` (`u64::MAX`
+/// past the last one that fits).
+fn next_decade_checkpoint(k: u64) -> u64 {
+    let mut decade = 1u64;
+    loop {
+        for m in [1, 2, 5] {
+            match decade.checked_mul(m) {
+                Some(c) if c >= k => return c,
+                Some(_) => {}
+                None => return u64::MAX,
+            }
+        }
+        match decade.checked_mul(10) {
+            Some(d) => decade = d,
+            None => return u64::MAX,
+        }
+    }
+}
+
 /// The state of the run where a window starts (turn `first`), and the
-/// extremes of a over the turns seen since.
+/// extremes of a over its segment: the turns from `first` to the next
+/// window's start (a window's extremes are those of its segment and of
+/// every later one, folded at a checkpoint, so a row updates one segment).
 #[derive(Debug, Clone, Copy)]
 struct WindowStart {
     first: u64,
@@ -148,6 +170,9 @@ pub(crate) struct SummaryBuilder {
     starts: Vec<WindowStart>,
     last: Option<TurnRow>,
     checkpoints: Vec<TurnCheckpoint>,
+    /// The smallest checkpoint turn count (1, 2, 5, 10, …) not below
+    /// `turns` ([`next_decade_checkpoint`]), kept so that a row costs O(1).
+    next_check: u64,
 }
 
 impl SummaryBuilder {
@@ -160,13 +185,14 @@ impl SummaryBuilder {
             starts: Vec::new(),
             last: None,
             checkpoints: Vec::new(),
+            next_check: 1,
         }
     }
 
     /// Adds turn `self.turns` (rows come in order from k = 0).
     pub(crate) fn push(&mut self, row: &TurnRow) {
         let k = self.turns;
-        if k == 0 || is_decade_checkpoint(k) || self.wanted.is_some_and(|n| n / 10 == k) {
+        if k == 0 || k == self.next_check || self.wanted.is_some_and(|n| n / 10 == k) {
             self.starts.push(WindowStart {
                 first: k,
                 gain_before: self.gain,
@@ -176,14 +202,17 @@ impl SummaryBuilder {
                 max_a: f64::NEG_INFINITY,
             });
         }
-        for w in &mut self.starts {
+        if let Some(w) = self.starts.last_mut() {
             w.min_a = w.min_a.min(row.min_a_m_s2);
             w.max_a = w.max_a.max(row.max_a_m_s2);
         }
         self.gain += row.v_end_m_s - row.v_start_m_s;
         self.turns = k + 1;
         self.last = Some(*row);
-        if is_decade_checkpoint(self.turns) {
+        if self.turns > self.next_check {
+            self.next_check = next_decade_checkpoint(self.turns);
+        }
+        if self.turns == self.next_check {
             self.checkpoint();
         }
     }
@@ -210,6 +239,14 @@ impl SummaryBuilder {
             .unwrap_or(all);
         let (mean_turn, mean_with) = window(all);
         let (w_turn, w_with) = window(decade);
+        // The decade window's extremes: its segment's and every later one's.
+        let (min_a, max_a) = self
+            .starts
+            .iter()
+            .filter(|w| w.first >= decade.first)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), w| {
+                (lo.min(w.min_a), hi.max(w.max_a))
+            });
         self.checkpoints.push(TurnCheckpoint {
             turns: self.turns,
             mean_a_turn_over_g: mean_turn,
@@ -217,8 +254,8 @@ impl SummaryBuilder {
             window_first_turn: decade.first,
             window_mean_a_turn_over_g: w_turn,
             window_mean_a_with_collision_over_g: w_with,
-            window_min_a_over_g: decade.min_a / g,
-            window_max_a_over_g: decade.max_a / g,
+            window_min_a_over_g: min_a / g,
+            window_max_a_over_g: max_a / g,
         });
     }
 
@@ -264,6 +301,12 @@ mod tests {
 
     #[test]
     fn decade_checkpoints_are_recognised() {
+        for k in 0..=100_000 {
+            let next = next_decade_checkpoint(k);
+            assert!(next >= k && is_decade_checkpoint(next), "{k}: {next}");
+            assert!((k..next).all(|j| !is_decade_checkpoint(j)), "{k}: {next}");
+        }
+        assert_eq!(next_decade_checkpoint(u64::MAX), u64::MAX);
         let found: Vec<u64> = (0..=1000).filter(|&k| is_decade_checkpoint(k)).collect();
         assert_eq!(found, [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000]);
         assert!(is_decade_checkpoint(5_000_000_000_000_000_000));

@@ -2,7 +2,11 @@
 //! k kept up to date as the turns go by, its events (turn end, stall,
 //! distance, hop, slip, pivot impact) and its energy ledger.
 
+mod ahead;
+mod closed;
 mod stepping;
+
+pub(crate) use closed::run_closed;
 
 use std::f64::consts::PI;
 
@@ -73,6 +77,13 @@ pub(crate) struct TurnSystem {
     planned: Option<(f64, TurnExtremes)>,
     /// The energy ledger, when the run records one.
     ledger: Option<TurnLedger>,
+    /// The speed at the start of this turn as its row reports it, m/s.
+    v_start: f64,
+    /// Turns of the closed-form path computed ahead ([`ahead`]), in order,
+    /// those not yet reached.
+    ahead: std::collections::VecDeque<ahead::Prepared>,
+    /// This turn as computed ahead, when it was for its `θ̇(0)`.
+    current: Option<ahead::Prepared>,
 }
 
 /// The energy bookkeeping of a turn run (`docs/snowball-and-losses.md`
@@ -121,6 +132,9 @@ impl TurnSystem {
             hop_theta: None,
             planned: None,
             ledger: None,
+            v_start: 0.0,
+            ahead: std::collections::VecDeque::new(),
+            current: None,
         };
         system.enter_turn(0);
         if opts.losses.records_ledger() {
@@ -226,7 +240,11 @@ impl TurnSystem {
         self.x_start = 2.0 * PI * kf * self.r0 + kf * (kf - 1.0) * PI * self.b + self.pivot_shift;
         self.mass = PI * self.rho_l * r * r;
         self.dynamics = TurnDynamics::new(self.variant, r, self.b, self.g_along, self.g_normal);
-        self.impact = PivotImpact::new(r, self.b);
+        // The impact geometry (two inverse trigonometric functions) only
+        // where the collision uses it.
+        if self.collision == CollisionModel::Pivot {
+            self.impact = PivotImpact::new(r, self.b);
+        }
         self.pivoting = false;
     }
 
@@ -328,6 +346,19 @@ impl TurnSystem {
     /// `v_start/r_k`, equal to `omega0` but for rounding, so that the table
     /// can reuse the extremes found on the way ([`Self::turn_extremes`]).
     fn plan_turn(&mut self, omega0: f64, v_start: f64) {
+        self.v_start = v_start;
+        self.current = self.take_prepared(omega0, v_start);
+        if let Some(p) = self.current {
+            // Computed ahead by the same functions as below, for this θ̇(0).
+            self.slip_theta = p.slip;
+            self.planned = Some((v_start / self.dynamics.radius(), p.extremes));
+            self.hop_theta = if self.stop_on_hop {
+                p.extremes.contact.first_zero_normal
+            } else {
+                None
+            };
+            return;
+        }
         let theta_max = match self.collision {
             CollisionModel::Pivot => self.impact.theta_c,
             _ => TWO_PI,
@@ -343,6 +374,30 @@ impl TurnSystem {
             self.hop_theta = extremes.contact.first_zero_normal;
             self.planned = Some((omega_table, extremes));
         }
+    }
+
+    /// The turns computed ahead of the run, in order, from the current one on.
+    pub(super) fn load_prepared(&mut self, prepared: Vec<ahead::Prepared>) {
+        self.ahead = prepared.into();
+    }
+
+    /// The current turn's entry among those computed ahead, if it was
+    /// computed for this very start (`θ̇(0)` and `v_start` to the bit).
+    fn take_prepared(&mut self, omega0: f64, v_start: f64) -> Option<ahead::Prepared> {
+        while self.ahead.front().is_some_and(|p| p.start.turn < self.turn) {
+            self.ahead.pop_front();
+        }
+        let p = self.ahead.front().copied()?;
+        (p.start.turn == self.turn
+            && p.start.omega0.to_bits() == omega0.to_bits()
+            && p.start.v_start.to_bits() == v_start.to_bits()
+            && self.collision != CollisionModel::Pivot)
+            .then_some(p)
+    }
+
+    /// The speed at the start of this turn as its row reports it, m/s.
+    pub(super) fn speed_at_start(&self) -> f64 {
+        self.v_start
     }
 
     /// The extremes of a turn started with `θ̇(0) = omega0` while rolling:

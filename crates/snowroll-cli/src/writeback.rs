@@ -1,0 +1,126 @@
+//! A file that goes to disk while it is being written: a long output (a
+//! million-turn table is 270 MB) would otherwise sit in the page cache
+//! until the `fsync` of [`Sink::commit`](crate::sink::Sink::commit), which
+//! then waits for all of it at the end. Every [`STRIDE`] bytes a thread of
+//! its own syncs what has been written so far, while the program goes on
+//! computing; the final `fsync` then waits for the last stride only.
+//!
+//! The thread syncs through a second descriptor of the same open file: an
+//! error it meets is kept and returned by [`EarlyWriteback::finish`] (the
+//! kernel reports a write-back error once per open file, so the final
+//! `fsync` would not see it again).
+
+use std::fs::File;
+use std::io::{self, Write};
+use std::sync::mpsc::{channel, Sender};
+use std::thread::{self, JoinHandle};
+
+/// Bytes written between two background syncs.
+const STRIDE: u64 = 32 << 20;
+
+/// A file whose written bytes are synced in the background every [`STRIDE`].
+#[derive(Debug)]
+pub struct EarlyWriteback {
+    file: File,
+    /// Bytes written since the last request to sync.
+    since: u64,
+    /// The syncing thread, started at the first full stride: its requests
+    /// and its first error.
+    syncer: Option<(Sender<()>, JoinHandle<io::Result<()>>)>,
+}
+
+impl EarlyWriteback {
+    /// Wraps `file`.
+    pub fn new(file: File) -> Self {
+        Self {
+            file,
+            since: 0,
+            syncer: None,
+        }
+    }
+
+    /// Asks for a sync of what has been written so far (starting the thread
+    /// the first time); a file that cannot be shared is left to the final sync.
+    fn request(&mut self) {
+        if self.syncer.is_none() {
+            let Ok(copy) = self.file.try_clone() else {
+                return;
+            };
+            let (tx, rx) = channel::<()>();
+            let handle = thread::spawn(move || {
+                // Requests that came in while a sync ran are served by the next.
+                while rx.recv().is_ok() {
+                    while rx.try_recv().is_ok() {}
+                    copy.sync_data()?;
+                }
+                Ok(())
+            });
+            self.syncer = Some((tx, handle));
+        }
+        if let Some((tx, _)) = &self.syncer {
+            // A send fails only after the thread ended with an error, which
+            // `finish` returns.
+            let _ = tx.send(());
+        }
+    }
+
+    /// Stops the syncing thread and returns the file, or the first error
+    /// the thread met.
+    ///
+    /// # Errors
+    /// The background sync's error.
+    pub fn finish(self) -> io::Result<File> {
+        if let Some((tx, handle)) = self.syncer {
+            drop(tx);
+            handle
+                .join()
+                .map_err(|_| io::Error::other("the background sync of the output failed"))??;
+        }
+        Ok(self.file)
+    }
+}
+
+impl Write for EarlyWriteback {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        let n = self.file.write(buf)?;
+        self.since += n as u64;
+        if self.since >= STRIDE {
+            self.since = 0;
+            self.request();
+        }
+        Ok(n)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.file.flush()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Read;
+
+    /// What goes through arrives whole, across several strides (so the
+    /// thread syncs while bytes are still being written), and `finish`
+    /// returns the file at its end.
+    #[test]
+    fn bytes_arrive_whole_across_strides() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out");
+        let mut w = EarlyWriteback::new(File::create(&path).unwrap());
+        let block: Vec<u8> = (0..=255u8).cycle().take(1 << 20).collect();
+        let blocks = (2 * STRIDE as usize) / block.len() + 3;
+        for _ in 0..blocks {
+            w.write_all(&block).unwrap();
+        }
+        assert!(w.syncer.is_some(), "a stride was passed: the thread runs");
+        let mut file = w.finish().unwrap();
+        file.sync_all().unwrap();
+        let mut back = Vec::new();
+        File::open(&path).unwrap().read_to_end(&mut back).unwrap();
+        assert_eq!(back.len(), blocks * block.len());
+        assert!(back.chunks(block.len()).all(|c| c == block.as_slice()));
+        drop(file.write_all(b"")); // still a usable file
+    }
+}
