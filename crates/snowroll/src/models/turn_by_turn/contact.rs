@@ -30,8 +30,9 @@ const FORCE_GRID: usize = 32;
 /// [`SMOOTH_SPREAD`] of its start value ([`TurnDynamics::is_smooth_turn`]):
 /// a, N and F are then within that fraction of their late-turn forms
 /// `A + B cos θ + C sin θ` (§4.2), one minimum and one maximum per turn
-/// each, and 16 intervals of 0.39 rad bracket them as 32 do.
-const SMOOTH_GRID: usize = 16;
+/// each, π apart, and 8 intervals of 0.79 rad bracket them as 32 do (the
+/// refinement then searches the two intervals around the best sample).
+const SMOOTH_GRID: usize = 8;
 /// Largest variation of `I θ̇²` over a turn, as a fraction of its start
 /// value, for [`SMOOTH_GRID`].
 const SMOOTH_SPREAD: f64 = 0.05;
