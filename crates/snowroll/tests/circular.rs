@@ -6,21 +6,12 @@ use std::f64::consts::PI;
 use proptest::prelude::*;
 use snowroll::integrate::Tolerances;
 use snowroll::physics::{mechanical_energy, potential_energy};
-use snowroll::{
-    Derivation, DragOnlyClosedForm, ModelKind, Sampling, Scenario, ScenarioFile, SimOptions,
-    StopReason, Trajectory,
-};
 
-fn scenario(alpha_deg: f64, b: f64, r0: f64, v0: f64) -> Scenario {
-    Scenario::new(ScenarioFile {
-        alpha_deg,
-        snow_depth: b,
-        r0,
-        v0,
-        ..ScenarioFile::default()
-    })
-    .unwrap()
-}
+use crate::support::scenario;
+use snowroll::{
+    Derivation, DragOnlyClosedForm, ModelKind, Sampling, Scenario, SimOptions, StopReason,
+    Trajectory,
+};
 
 fn run(kind: ModelKind, s: &Scenario, opts: &SimOptions) -> Trajectory {
     kind.build().simulate(s, opts).unwrap()

@@ -12,6 +12,7 @@ mod loney;
 mod losses;
 mod sphere;
 mod streaming;
+mod support;
 mod sweep;
 mod sweep_regime;
 mod turn_ledger;

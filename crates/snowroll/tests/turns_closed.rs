@@ -6,9 +6,11 @@
 use std::f64::consts::PI;
 
 use snowroll::integrate::Tolerances;
+
+use crate::support::scenario;
 use snowroll::{
-    CollisionModel, Losses, OnHop, Scenario, ScenarioFile, SimOptions, StopReason, TurnMethod,
-    TurnModel, TurnRow, TurnTable, TurnVariant,
+    CollisionModel, Losses, OnHop, Scenario, SimOptions, StopReason, TurnMethod, TurnModel,
+    TurnRow, TurnTable, TurnVariant,
 };
 
 /// Closed form against DOP853 at rtol 1e-15 (the smallest it takes): the
@@ -19,17 +21,6 @@ const METHODS_TOL: f64 = 1e-12;
 /// One turn's time against the quadrature here: both are good to ~1e-15;
 /// this leaves room for rounding in the sums of either.
 const ONE_TURN_TOL: f64 = 1e-13;
-
-fn scenario(alpha_deg: f64, b: f64, r0: f64, v0: f64) -> Scenario {
-    Scenario::new(ScenarioFile {
-        alpha_deg,
-        snow_depth: b,
-        r0,
-        v0,
-        ..ScenarioFile::default()
-    })
-    .unwrap()
-}
 
 fn tight(turns: u64) -> SimOptions {
     SimOptions {
