@@ -151,6 +151,16 @@ impl TurnDynamics {
         )
     }
 
+    /// W per unit `m_k` term by term, `W = a θ + b θ² + c (1 − cos θ) + d sin θ`
+    /// with `(a, b, c, d) = (C e₃ − G r, −G e₁/2, G e₂, −C e₂)` (the common
+    /// in-turn form, eqs. (73), (76)): for bounds on W over a turn and for
+    /// sums over fixed nodes whose sin and cos are known.
+    pub(super) fn potential_terms(&self) -> [f64; 4] {
+        let k = &self.coeffs;
+        let (g, c_n, r) = (self.g_along, self.g_normal, self.r);
+        [c_n * k.e3 - g * r, -0.5 * g * k.e1, g * k.e2, -c_n * k.e2]
+    }
+
     /// `dW/dθ` alone (the right-hand side needs no more).
     pub(super) fn potential_slope_sc(&self, theta: f64, sin: f64, cos: f64) -> f64 {
         let k = &self.coeffs;

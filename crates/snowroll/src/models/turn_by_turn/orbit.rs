@@ -132,9 +132,7 @@ impl<'a> Orbit<'a> {
     /// largest value is at an end or at its vertex. E > 0 throughout when
     /// `E(0) > 2 ×` this: no stall, with no evaluation of the turn.
     fn potential_bound(&self, theta_max: f64) -> f64 {
-        let k = &self.turn.coeffs;
-        let (g, c_n, r) = (self.turn.g_along, self.turn.g_normal, self.turn.r);
-        let (lin, quad) = (c_n * k.e3 - g * r, -0.5 * g * k.e1);
+        let [lin, quad, vers, sin] = self.turn.potential_terms();
         let p = |x: f64| x * lin + x * x * quad;
         let mut top = p(0.0).max(p(theta_max));
         if quad < 0.0 {
@@ -144,7 +142,7 @@ impl<'a> Orbit<'a> {
             }
         }
         // A relative margin for the rounding of the terms.
-        let trig = 2.0 * (g * k.e2).abs() + (c_n * k.e2).abs();
+        let trig = 2.0 * vers.abs() + sin.abs();
         (top + trig) + 1e-12 * (top.abs() + trig + (lin.abs() + quad.abs() * theta_max) * theta_max)
     }
 
@@ -226,13 +224,11 @@ impl<'a> Orbit<'a> {
     /// (an early turn, a slow one near a stall).
     fn turn_time(&self) -> Option<f64> {
         let nodes = TurnNodes::get();
-        let k = &self.turn.coeffs;
-        let (g, c_n, r) = (self.turn.g_along, self.turn.g_normal, self.turn.r);
-        // I = 3r²/2 + c₁θ − c₂ sin θ and E = I(0)θ̇₀² − 2W with
-        // W = θ(C e₃ − G r) − θ² G e₁/2 + G e₂(1 − cos θ) − C e₂ sin θ, by node.
+        let (k, r) = (&self.turn.coeffs, self.turn.r);
+        // I = 3r²/2 + c₁θ − c₂ sin θ and E = I(0)θ̇₀² − 2W, W term by term
+        // ([`TurnDynamics::potential_terms`]), by node.
         let (i0, i_th, i_sin) = (1.5 * r * r, k.c1, -k.c2);
-        let (w_th, w_th2, w_vers, w_sin) =
-            (c_n * k.e3 - g * r, -0.5 * g * k.e1, g * k.e2, -c_n * k.e2);
+        let [w_th, w_th2, w_vers, w_sin] = self.turn.potential_terms();
         let sum = |rule: &Rule| {
             // Four nodes at a time into four partial sums: independent
             // lanes, which the compiler runs two at a time.
