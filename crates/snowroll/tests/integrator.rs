@@ -697,7 +697,7 @@ impl OdeSystem<1> for Counter {
     fn on_event(&self, _index: usize, _t: f64, _y: &[f64; 1]) -> EventAction<1> {
         EventAction::Continue
     }
-    fn commit_event(&mut self, _index: usize, _t: f64, _before: &[f64; 1], _after: &[f64; 1]) {
+    fn commit_event(&mut self, _event: &EventRecord<1>) {
         self.passed += 1;
     }
 }
@@ -791,7 +791,7 @@ impl OdeSystem<2> for BouncingBall {
     fn on_event(&self, _index: usize, _t: f64, y: &[f64; 2]) -> EventAction<2> {
         EventAction::Reset([0.0, -self.restitution * y[1]])
     }
-    fn commit_event(&mut self, _index: usize, _t: f64, _before: &[f64; 2], _after: &[f64; 2]) {
+    fn commit_event(&mut self, _event: &EventRecord<2>) {
         self.commits += 1;
     }
 }

@@ -461,7 +461,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                     action,
                 };
                 observer.event(&*self.system, &record);
-                self.system.commit_event(i, te, &ye, &y_after);
+                self.system.commit_event(&record);
                 match action {
                     EventAction::Continue => {}
                     EventAction::Stop => {

@@ -154,8 +154,9 @@ pub trait OdeSystem<const N: usize> {
     }
 
     /// Called after the observer has seen the event, to update the system
-    /// (e.g. the turn number after a collision).
-    fn commit_event(&mut self, _index: usize, _t: f64, _y_before: &[f64; N], _y_after: &[f64; N]) {}
+    /// (e.g. the turn number after a collision); `event` carries the action
+    /// [`Self::on_event`] chose.
+    fn commit_event(&mut self, _event: &EventRecord<N>) {}
 }
 
 /// A located event.

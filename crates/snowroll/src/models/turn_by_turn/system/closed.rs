@@ -240,7 +240,7 @@ fn closed_step<O: RunObserver<TurnSystem, 2>>(
         action,
     };
     observer.event(system, &record);
-    system.commit_event(index, te, &ye, &y_after);
+    system.commit_event(&record);
     *t = te;
     match action {
         EventAction::Reset(_) => {

@@ -3,7 +3,7 @@
 
 use super::*;
 
-use crate::integrate::{Direction, EventAction, OdeSystem};
+use crate::integrate::{Direction, EventAction, EventRecord, OdeSystem};
 use crate::models::contact::ContactForces;
 use crate::models::ode::OdeModel;
 use crate::trajectory::{LedgerRow, Sample, StopReason, TurnState};
@@ -72,10 +72,15 @@ impl OdeSystem<2> for TurnSystem {
         outcome.map_or(EventAction::Stop, EventAction::Reset)
     }
 
-    fn commit_event(&mut self, index: usize, _t: f64, y_before: &[f64; 2], y_after: &[f64; 2]) {
-        let outcome = match index {
-            EVENT_TURN_END => self.turn_end_outcome(y_before[1]),
-            EVENT_IMPACT => self.impact_outcome(y_before[1]),
+    fn commit_event(&mut self, event: &EventRecord<2>) {
+        let (index, y_before, y_after) = (event.index, &event.y_before, &event.y_after);
+        // `on_event` resets exactly where the outcome is a new state: that
+        // state is taken from its action, the outcome found again only for
+        // the reason of a stop.
+        let outcome = match (index, event.action) {
+            (EVENT_TURN_END | EVENT_IMPACT, EventAction::Reset(y)) => Ok(y),
+            (EVENT_TURN_END, _) => self.turn_end_outcome(y_before[1]),
+            (EVENT_IMPACT, _) => self.impact_outcome(y_before[1]),
             _ => return,
         };
         match (index, outcome) {
