@@ -16,8 +16,11 @@
 //! energy equation). Exact for the `Exact` variant, first order in b/r for
 //! `Paper`. As b → 0: N = m C, F = m G/3 (App. A).
 
+use std::cell::Cell;
+use std::sync::OnceLock;
+
 use super::jet::{Jet, Real};
-use super::{extremes, TurnDynamics};
+use super::{extremes, TurnDynamics, TWO_PI};
 use crate::models::contact::ContactForces;
 use crate::units::Radians;
 
@@ -43,7 +46,7 @@ const FORCE_THETA_TOL: f64 = 1e-8;
 impl TurnDynamics {
     /// `(N, F)` per unit `m_k` at `(θ, θ̇)`, m/s² (module doc, `docs/contact-forces.md` §3).
     pub fn contact_per_mass(&self, theta: Radians, omega: f64) -> (f64, f64) {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = super::sin_cos(theta);
         self.contact_per_mass_sc(theta, s, c, omega * omega)
     }
 
@@ -73,6 +76,7 @@ impl TurnDynamics {
     /// a in m/s², N and F per unit `m_k` in m/s². In any [`Real`]: values
     /// (`f64`), or values with their derivatives in θ ([`Jet`]) for Newton's
     /// method on the extremes.
+    #[inline(always)]
     fn orbit_sc<T: Real>(&self, theta: T, s: T, c: T, omega0: f64) -> (T, T, T) {
         let k = &self.coeffs;
         let (g, c_n, r) = (self.g_along, self.g_normal, self.r);
@@ -92,7 +96,9 @@ impl TurnDynamics {
         (alpha * r, normal, friction)
     }
 
-    /// [`Self::orbit_sc`] at θ with the first two derivatives in θ.
+    /// [`Self::orbit_sc`] at θ with the first two derivatives in θ (inlined,
+    /// so that a caller that uses one of the three computes only that one).
+    #[inline(always)]
     fn orbit_jet(&self, theta: f64, omega0: f64) -> (Jet, Jet, Jet) {
         let (s, c) = theta.sin_cos();
         let (js, jc) = Jet::sin_cos(s, c);
@@ -148,7 +154,24 @@ impl TurnDynamics {
     /// `sin_cos` per evaluation. The extremes of a are refined only if `with_a`.
     /// N is refined at every local minimum of its samples
     /// ([`Self::normal_minima`]), which also gives where N first reaches 0.
+    /// [`SMOOTH_GRID`] intervals where the turn is smooth.
     fn scan(
+        &self,
+        omega0: f64,
+        theta_max: Radians,
+        with_a: bool,
+        hints: &mut Hints,
+    ) -> TurnExtremes {
+        if self.is_smooth_turn(omega0, theta_max) {
+            self.scan_on::<{ SMOOTH_GRID + 1 }>(omega0, theta_max, with_a, hints)
+        } else {
+            self.scan_on::<{ FORCE_GRID + 1 }>(omega0, theta_max, with_a, hints)
+        }
+    }
+
+    /// [`Self::scan`] on a grid of `POINTS` points (its arrays on the stack,
+    /// of that size).
+    fn scan_on<const POINTS: usize>(
         &self,
         omega0: f64,
         theta_max: Radians,
@@ -157,23 +180,18 @@ impl TurnDynamics {
     ) -> TurnExtremes {
         let mu = self.coeffs.accretion;
         let g = self.g_along.hypot(self.g_normal);
-        let grid = if self.is_smooth_turn(omega0, theta_max) {
-            SMOOTH_GRID
-        } else {
-            FORCE_GRID
-        };
-        let step = theta_max / grid as f64;
-        let (sh, ch) = step.sin_cos();
-        let mut sin_cos = [(0.0, 1.0); FORCE_GRID + 1];
-        for i in 1..=grid {
+        let step = theta_max / (POINTS - 1) as f64;
+        let (sh, ch) = grid_rotation(step);
+        let mut sin_cos = [(0.0, 1.0); POINTS];
+        for i in 1..POINTS {
             let (s, c) = sin_cos[i - 1];
             sin_cos[i] = (s * ch + c * sh, c * ch - s * sh);
         }
         // Samples of a, −a, N, N/(M g), −|F|/N (each refined at its
         // smallest), in a loop without a dependence between its passes (the
         // compiler runs two points at once).
-        let mut samples = [[0.0; FORCE_GRID + 1]; 5];
-        for (i, &(s, c)) in sin_cos.iter().enumerate().take(grid + 1) {
+        let mut samples = [[0.0; POINTS]; 5];
+        for (i, &(s, c)) in sin_cos.iter().enumerate() {
             let theta = i as f64 * step;
             let (a, n, f) = self.orbit_sc(theta, s, c, omega0);
             let values = [a, -a, n, n / ((1.0 + mu * theta) * g), -f.abs() / n];
@@ -181,37 +199,67 @@ impl TurnDynamics {
                 row[i] = value;
             }
         }
-        let [a_s, neg_a_s, normal, mg_s, neg_ratio_s] = samples.each_ref().map(|r| &r[..=grid]);
-        let refine = |h: &dyn Fn(f64) -> Jet, values: &[f64], hint: &mut Option<f64>| {
+        let [a_s, neg_a_s, normal, mg_s, neg_ratio_s] = &samples;
+        // Generic in `h`, so that each function's evaluation is compiled
+        // with only the parts of (a, N, F) it uses.
+        fn refine(
+            h: impl Fn(f64) -> Jet,
+            values: &[f64],
+            step: f64,
+            (hint, known): (&mut Option<f64>, Option<(f64, Jet)>),
+        ) -> f64 {
             let i = least(values);
-            let (theta, value) =
-                extremes::refine_min_jet(h, 0.0, step, values, i, *hint, FORCE_THETA_TOL);
+            let (theta, value) = extremes::refine_min_jet(
+                h,
+                (0.0, step),
+                values,
+                i,
+                (*hint, known),
+                FORCE_THETA_TOL,
+            );
             *hint = Some(theta);
             value
-        };
+        }
         let [h_min, h_max, h_normal, h_mg, h_ratio] = &mut hints.theta;
         let (a_min, a_max) = if with_a {
             (
-                refine(&|theta| self.orbit_jet(theta, omega0).0, a_s, h_min),
-                -refine(&|theta| -self.orbit_jet(theta, omega0).0, neg_a_s, h_max),
+                refine(
+                    |theta| self.orbit_jet(theta, omega0).0,
+                    a_s,
+                    step,
+                    (h_min, None),
+                ),
+                -refine(
+                    |theta| -self.orbit_jet(theta, omega0).0,
+                    neg_a_s,
+                    step,
+                    (h_max, None),
+                ),
             )
         } else {
             (f64::NAN, f64::NAN)
         };
-        let (n_min, first_zero_normal) = self.normal_minima(omega0, normal, step, h_normal);
+        let (n_min, first_zero_normal, at_n_min) =
+            self.normal_minima(omega0, normal, step, h_normal);
+        // N/(M g) = N/((1 + μθ) g) has its minimum within ~μ N/N″ of N's: its
+        // Newton's method starts from N's last evaluation (late in a run
+        // that one is already within the step tolerance).
+        let over_mg = |theta: f64, n: Jet| n / ((Jet::variable(theta) * mu + 1.0) * g);
         let min_normal_over_mg = refine(
-            &|theta| self.orbit_jet(theta, omega0).1 / ((Jet::variable(theta) * mu + 1.0) * g),
+            |theta| over_mg(theta, self.orbit_jet(theta, omega0).1),
             mg_s,
-            h_mg,
+            step,
+            (h_mg, at_n_min.map(|(theta, n)| (theta, over_mg(theta, n)))),
         );
         let max_friction_ratio = (n_min > 0.0).then(|| {
             -refine(
-                &|theta| {
+                |theta| {
                     let (_, n, f) = self.orbit_jet(theta, omega0);
                     -(f.abs() / n)
                 },
                 neg_ratio_s,
-                h_ratio,
+                step,
+                (h_ratio, None),
             )
         });
         TurnExtremes {
@@ -238,7 +286,9 @@ impl TurnDynamics {
     }
 
     /// From the samples `normal[i]` of N at θ = i `step` on the energy
-    /// integral: the smallest N and the first θ where N ≤ 0, if any.
+    /// integral: the smallest N, the first θ where N ≤ 0, if any, and the
+    /// last evaluation of N (θ and N with its derivatives) in the
+    /// refinement that found the smallest, where one did.
     ///
     /// Every local minimum of the samples (the first of a run of equal
     /// ones) is refined by Brent's method over its two intervals, so a dip
@@ -253,10 +303,10 @@ impl TurnDynamics {
         normal: &[f64],
         step: f64,
         hint: &mut Option<f64>,
-    ) -> (f64, Option<Radians>) {
+    ) -> (f64, Option<Radians>, Option<(f64, Jet)>) {
         let n_at = |theta: f64| self.orbit(theta, omega0).1;
         let last = normal.len() - 1;
-        let (mut n_min, mut first_zero) = (f64::INFINITY, None);
+        let (mut n_min, mut first_zero, mut evaluated) = (f64::INFINITY, None, None);
         for (i, &n_i) in normal.iter().enumerate() {
             let theta_i = i as f64 * step;
             n_min = n_min.min(n_i);
@@ -270,16 +320,23 @@ impl TurnDynamics {
             if !local {
                 continue;
             }
+            let last = Cell::new(None);
             let (theta_m, n_m) = extremes::refine_min_jet(
-                |theta| self.orbit_jet(theta, omega0).1,
-                0.0,
-                step,
+                |theta| {
+                    let n = self.orbit_jet(theta, omega0).1;
+                    last.set(Some((theta, n)));
+                    n
+                },
+                (0.0, step),
                 normal,
                 i,
-                *hint,
+                (*hint, None),
                 FORCE_THETA_TOL,
             );
             *hint = Some(theta_m);
+            if n_m < n_min {
+                evaluated = last.get();
+            }
             n_min = n_min.min(n_m);
             if first_zero.is_none() && n_m <= 0.0 {
                 // N > 0 at every grid point up to θ_i (and θ_m ≥ θ_{i−1}).
@@ -291,7 +348,7 @@ impl TurnDynamics {
                 first_zero = Some(first_root(n_at, lo, theta_m));
             }
         }
-        (n_min, first_zero)
+        (n_min, first_zero, evaluated)
     }
 
     /// `(N, F)` per unit `m_k` on the energy integral ([`Self::orbit`]).
@@ -387,6 +444,22 @@ pub struct ContactRange {
     /// The first θ of the range where N ≤ 0 (where the log hops, `docs/contact-forces.md`
     /// §4), to the rounding of θ; `None` when N > 0 throughout.
     pub first_zero_normal: Option<Radians>,
+}
+
+/// `(sin h, cos h)` of a grid step `h`: of a whole turn's two grids from a
+/// table made once, else from the library (the same bits either way).
+fn grid_rotation(step: f64) -> (f64, f64) {
+    static TURN: OnceLock<[(f64, (f64, f64)); 2]> = OnceLock::new();
+    let table = TURN.get_or_init(|| {
+        [SMOOTH_GRID, FORCE_GRID].map(|n| {
+            let h = TWO_PI / n as f64;
+            (h, h.sin_cos())
+        })
+    });
+    match table.iter().find(|(h, _)| *h == step) {
+        Some(&(_, sc)) => sc,
+        None => step.sin_cos(),
+    }
 }
 
 /// The index of the smallest of `values` (the first of equal ones).

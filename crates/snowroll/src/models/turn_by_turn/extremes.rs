@@ -174,24 +174,30 @@ const NEWTON_STEP_TOL: f64 = 1e-5;
 /// Newton's method does not apply (g not convex there, a step leaving the
 /// bracket) Brent's method on the values takes over, to `x_tol`. An end of
 /// the grid that `g` increases away from (`g′` pointing inward) is itself
-/// the extreme. Returns `(θ, value)`, the value never above `samples[i]`.
+/// the extreme. `known`, `(θ, g(θ))` with its derivatives where another
+/// refinement already evaluated it, starts Newton's method there instead of
+/// `hint`, with no evaluation of its own (where it lies in the same
+/// intervals). Returns `(θ, value)`, the value never above `samples[i]`.
 pub(super) fn refine_min_jet(
     g: impl Fn(f64) -> Jet,
-    lo: f64,
-    step: f64,
+    (lo, step): (f64, f64),
     samples: &[f64],
     i: usize,
-    hint: Option<f64>,
+    (hint, known): (Option<f64>, Option<(f64, Jet)>),
     x_tol: f64,
 ) -> (f64, f64) {
     let grid = samples.len() - 1;
     let g_i = samples[i];
     let at = |j: usize| lo + j as f64 * step;
     let (a, b) = (at(i.saturating_sub(1)), at((i + 1).min(grid)));
+    let interior = i > 0 && i < grid;
     let mut x = at(i);
-    if let Some(h) = hint.filter(|h| *h >= a && *h <= b && i > 0 && i < grid) {
+    let mut first = None;
+    if let Some((theta, jet)) = known.filter(|(t, _)| *t >= a && *t <= b && interior) {
+        (x, first) = (theta, Some(jet));
+    } else if let Some(h) = hint.filter(|h| *h >= a && *h <= b && interior) {
         x = h;
-    } else if i > 0 && i < grid {
+    } else if interior {
         // The parabola's vertex, within the bracket (a start within
         // ~h³|g‴/g″| of the minimum, so that Newton needs a step or two).
         let (before, after) = (samples[i - 1], samples[i + 1]);
@@ -201,7 +207,7 @@ pub(super) fn refine_min_jet(
         }
     }
     for n in 0..MAX_NEWTON {
-        let j = g(x);
+        let j = first.take().unwrap_or_else(|| g(x));
         if n == 0 && ((i == 0 && j.d >= 0.0) || (i == grid && j.d <= 0.0)) {
             return (x, g_i);
         }

@@ -72,13 +72,13 @@ impl<'a> Orbit<'a> {
 
     /// `E(θ)`, m²/s².
     pub(crate) fn energy(&self, theta: f64) -> f64 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = super::sin_cos(theta);
         self.energy_sc(theta, s, c)
     }
 
     /// `θ̇(θ) = √(E/I)` (0 past a stall), rad/s.
     pub(crate) fn omega(&self, theta: f64) -> f64 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = super::sin_cos(theta);
         let e = self.energy_sc(theta, s, c);
         let (i, _) = self.turn.inertia_sc(theta, s, c);
         (e / i).max(0.0).sqrt()
