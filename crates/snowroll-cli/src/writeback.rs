@@ -2,23 +2,24 @@
 //! million-turn table is 270 MB) would otherwise sit in the page cache
 //! until the `fsync` of [`Sink::commit`](crate::sink::Sink::commit), which
 //! then waits for all of it at the end. Every [`STRIDE`] bytes a thread of
-//! its own syncs what has been written so far, while the program goes on
-//! computing; the final `fsync` then waits for the last stride only.
+//! its own starts the write-out of what has been written so far
+//! ([`start_writeback`]), while the program goes on computing; the final
+//! `fsync` then waits for the last stride only.
 //!
-//! The thread syncs through a second descriptor of the same open file: an
-//! error it meets is kept and returned by [`EarlyWriteback::finish`] (the
-//! kernel reports a write-back error once per open file, so the final
-//! `fsync` would not see it again).
+//! The thread works through a second descriptor of the same open file: an
+//! error it meets is kept and returned by [`EarlyWriteback::finish`]. A
+//! failure of the write-out itself is reported by the final `fsync` (the
+//! advice does not consume it).
 
 use std::fs::File;
 use std::io::{self, Write};
 use std::sync::mpsc::{channel, Sender};
 use std::thread::{self, JoinHandle};
 
-/// Bytes written between two background syncs.
+/// Bytes written between two background write-outs.
 const STRIDE: u64 = 32 << 20;
 
-/// A file whose written bytes are synced in the background every [`STRIDE`].
+/// A file whose written bytes start going to disk in the background every [`STRIDE`].
 #[derive(Debug)]
 pub struct EarlyWriteback {
     file: File,

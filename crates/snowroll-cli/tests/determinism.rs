@@ -1,7 +1,7 @@
 //! Determinism (issue 7): the same command gives the same bytes, run after
-//! run and whatever the thread count. Nothing in snowroll runs in parallel
-//! today; the runs set RAYON_NUM_THREADS to 1 and 2 anyway, so that the
-//! test keeps its meaning if `paper` or a sweep becomes parallel.
+//! run and whatever the thread count (RAYON_NUM_THREADS 1 and 2; a long
+//! turn table, whose turns are prepared ahead on the other threads in
+//! blocks, also with 3).
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -62,6 +62,17 @@ fn simulate_and_turns_give_the_same_bytes_every_run() {
         assert_deterministic(&args);
     }
     assert_deterministic(&["turns", "--model", "turns", "--turns", "500"]);
+    // Past the first blocks of turns prepared ahead (8192 turns each), with
+    // as many threads as blocks in the pipeline: which thread prepares which
+    // run of turns must not show in the bytes.
+    let long = ["turns", "--model", "turns", "--turns", "30000"];
+    let first = run(&long, "1");
+    for threads in ["2", "3", "4"] {
+        assert!(
+            run(&long, threads) == first,
+            "30000 turns differ with {threads} threads"
+        );
+    }
     assert_deterministic(&[
         "turns",
         "--model",

@@ -187,7 +187,11 @@ mod tests {
         for theta in [0.0, -0.0, TWO_PI, 1.0, PI, 1e-300] {
             let (s, c) = sin_cos(theta);
             let (s_lib, c_lib) = theta.sin_cos();
-            assert_eq!((s.to_bits(), c.to_bits()), (s_lib.to_bits(), c_lib.to_bits()), "{theta}");
+            assert_eq!(
+                (s.to_bits(), c.to_bits()),
+                (s_lib.to_bits(), c_lib.to_bits()),
+                "{theta}"
+            );
         }
     }
 }

@@ -13,7 +13,9 @@
 //! functions. A run that leaves the prediction (a hop, a slip, an end
 //! distance or time, a stall) stops there, or computes its turns itself.
 
-use rayon::prelude::*;
+use std::collections::VecDeque;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
 
 use super::{TurnSystem, TWO_PI};
 use crate::models::turn_by_turn::orbit::Orbit;
@@ -123,19 +125,14 @@ impl Ahead {
         out
     }
 
-    /// Each of `starts` prepared, in parallel: in fixed runs of [`TASK`]
-    /// turns, each run in order with Newton's method for a turn's extremes
-    /// started where the turn before had them ([`Hints`]), so that the
-    /// result does not depend on how the runs are shared out.
-    pub(super) fn prepare(&self, starts: &[TurnStart]) -> Vec<Prepared> {
-        starts
-            .par_chunks(TASK)
-            .flat_map_iter(|run| {
-                let mut hints = Hints::default();
-                run.iter()
-                    .map(move |s| self.prepare_one(s, &mut hints))
-                    .collect::<Vec<_>>()
-            })
+    /// The turns of one run of a [`Block`], in order, with Newton's method
+    /// for a turn's extremes started where the turn before had them
+    /// ([`Hints`]): runs of fixed length, each from no hints, so that the
+    /// result does not depend on which thread prepares which run.
+    fn prepare_run(&self, run: &[TurnStart]) -> Vec<Prepared> {
+        let mut hints = Hints::default();
+        run.iter()
+            .map(|s| self.prepare_one(s, &mut hints))
             .collect()
     }
 
@@ -156,5 +153,235 @@ impl Ahead {
                 .mu
                 .and_then(|mu| dynamics.first_slip(start.omega0, mu, TWO_PI)),
         }
+    }
+}
+
+/// A block of turns being prepared: its runs of [`TASK`] turns are claimed
+/// one at a time by whichever thread asks next ([`Block::work`]), so that
+/// the thread that runs the turns in order, once through its own block,
+/// takes runs of the next one instead of waiting for the other threads.
+/// Claimed by hand (an atomic counter) rather than by rayon's scheduler:
+/// that thread is not one of the pool's, and a pool's scope would have it
+/// sleep until the pool is done.
+pub(super) struct Block<'a> {
+    ahead: &'a Ahead,
+    starts: Vec<TurnStart>,
+    /// The next run not yet claimed.
+    next: AtomicUsize,
+    /// Each run's turns, once prepared.
+    runs: Vec<OnceLock<Vec<Prepared>>>,
+}
+
+impl<'a> Block<'a> {
+    fn new(ahead: &'a Ahead, starts: Vec<TurnStart>) -> Self {
+        let runs = starts.len().div_ceil(TASK);
+        Self {
+            ahead,
+            starts,
+            next: AtomicUsize::new(0),
+            runs: (0..runs).map(|_| OnceLock::new()).collect(),
+        }
+    }
+
+    /// Prepares runs not yet claimed, one at a time, until none is left.
+    fn work(&self) {
+        loop {
+            let i = self.next.fetch_add(1, Ordering::Relaxed);
+            let Some(run) = self.starts.chunks(TASK).nth(i) else {
+                return;
+            };
+            let cell = &self.runs[i];
+            let unfinished = Unfinished(cell);
+            // Each run is claimed once, so the cell is empty.
+            let _ = cell.set(self.ahead.prepare_run(run));
+            drop(unfinished);
+        }
+    }
+
+    /// Leaves the runs not yet claimed unprepared (the run stopped).
+    fn abandon(&self) {
+        self.next.store(self.runs.len(), Ordering::Relaxed);
+    }
+
+    /// Whether a run is left to claim.
+    fn has_unclaimed(&self) -> bool {
+        self.next.load(Ordering::Relaxed) < self.runs.len()
+    }
+
+    /// The start of the turn after this block's last, by the prediction.
+    fn next_start(&self) -> Option<TurnStart> {
+        self.starts.last().and_then(|s| self.ahead.next_after(s))
+    }
+
+    /// Every prepared turn in order, once the runs other threads claimed
+    /// are done (this thread takes those left, then waits for the others).
+    fn prepared(&self) -> Vec<Prepared> {
+        self.work();
+        let mut prepared = Vec::with_capacity(self.starts.len());
+        for run in &self.runs {
+            prepared.extend_from_slice(run.wait());
+        }
+        prepared
+    }
+}
+
+/// A claimed run's cell, filled with no turns should its preparation not
+/// finish (a panic on another thread): the waiting thread then goes on,
+/// and the run computes those turns itself.
+struct Unfinished<'b>(&'b OnceLock<Vec<Prepared>>);
+
+impl Drop for Unfinished<'_> {
+    fn drop(&mut self) {
+        let _ = self.0.set(Vec::new());
+    }
+}
+
+/// Blocks prepared ahead of the run, at most [`DEPTH`] of them at a time:
+/// the threads of the pool ([`Pipeline::work`]) extend the prediction by
+/// a block when there is room and prepare the runs of the blocks queued;
+/// the thread that runs the turns takes the blocks in order
+/// ([`Pipeline::take`]), helping with the runs of a block not yet done.
+/// Deeper than one block, so that the pool goes on while the run is held
+/// up (by a slow write, say), and the run does not wait for the pool's
+/// last run of a block.
+pub(super) struct Pipeline<'a> {
+    ahead: &'a Ahead,
+    /// Turns of the run, `u64::MAX` without a limit.
+    limit: u64,
+    state: Mutex<PipelineState<'a>>,
+    changed: Condvar,
+}
+
+/// What [`Pipeline`] shares between its threads.
+struct PipelineState<'a> {
+    /// Blocks made and not yet taken by the run, in order.
+    queue: VecDeque<Arc<Block<'a>>>,
+    /// Where the next block starts; `None` where the prediction ends
+    /// (a stuck log, the turn limit) or a thread is making the block.
+    next: Option<TurnStart>,
+    /// A thread is making the next block (its starts, in order).
+    extending: bool,
+    /// The run has ended, or taken every block there will be.
+    stopped: bool,
+}
+
+/// Blocks made ahead of the run, at most.
+const DEPTH: usize = 3;
+
+impl<'a> Pipeline<'a> {
+    /// A pipeline whose first block starts at `first`.
+    pub(super) fn new(ahead: &'a Ahead, first: TurnStart, limit: u64) -> Self {
+        Self {
+            ahead,
+            limit,
+            state: Mutex::new(PipelineState {
+                queue: VecDeque::new(),
+                next: Some(first).filter(|s| s.turn < limit),
+                extending: false,
+                stopped: false,
+            }),
+            changed: Condvar::new(),
+        }
+    }
+
+    fn lock(&self) -> MutexGuard<'_, PipelineState<'a>> {
+        // A panic elsewhere leaves the state as consistent as before it.
+        self.state.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// The starts of up to a block of turns from `from` on.
+    fn make_block(&self, from: TurnStart) -> Arc<Block<'a>> {
+        let count = BLOCK.min(self.limit.saturating_sub(from.turn));
+        Arc::new(Block::new(self.ahead, self.ahead.starts(from, count)))
+    }
+
+    /// A pool thread's part, until the run stops: prepares runs of queued
+    /// blocks, and makes the next block when there is room for it.
+    pub(super) fn work(&self) {
+        enum Task<'a> {
+            Prepare(Arc<Block<'a>>),
+            Extend(TurnStart),
+        }
+        loop {
+            let task = {
+                let mut state = self.lock();
+                loop {
+                    if state.stopped {
+                        return;
+                    }
+                    if let Some(b) = state.queue.iter().find(|b| b.has_unclaimed()) {
+                        break Task::Prepare(Arc::clone(b));
+                    }
+                    if state.queue.len() < DEPTH && !state.extending {
+                        if let Some(from) = state.next.take() {
+                            state.extending = true;
+                            break Task::Extend(from);
+                        }
+                    }
+                    state = self.changed.wait(state).unwrap_or_else(|e| e.into_inner());
+                }
+            };
+            match task {
+                Task::Prepare(b) => b.work(),
+                Task::Extend(from) => {
+                    let b = self.make_block(from);
+                    let mut state = self.lock();
+                    state.next = b.next_start().filter(|s| s.turn < self.limit);
+                    state.extending = false;
+                    state.queue.push_back(b);
+                    self.changed.notify_all();
+                }
+            }
+        }
+    }
+
+    /// The next block's starts and prepared turns, in order; `None` where
+    /// the prediction ends. Makes the block itself when no thread has, and
+    /// helps with its runs.
+    pub(super) fn take(&self) -> Option<(Vec<TurnStart>, Vec<Prepared>)> {
+        let b = {
+            let mut state = self.lock();
+            loop {
+                // Left in the queue while it is being prepared, for the
+                // pool's threads to help with.
+                if let Some(b) = state.queue.front() {
+                    break Arc::clone(b);
+                }
+                if !state.extending {
+                    match state.next.take() {
+                        Some(from) => {
+                            // No thread has started it: this one makes it.
+                            state.extending = true;
+                            drop(state);
+                            let b = self.make_block(from);
+                            state = self.lock();
+                            state.next = b.next_start().filter(|s| s.turn < self.limit);
+                            state.extending = false;
+                            state.queue.push_back(Arc::clone(&b));
+                            self.changed.notify_all();
+                            break b;
+                        }
+                        None => return None,
+                    }
+                }
+                state = self.changed.wait(state).unwrap_or_else(|e| e.into_inner());
+            }
+        };
+        let prepared = b.prepared();
+        let mut state = self.lock();
+        state.queue.pop_front();
+        self.changed.notify_all();
+        drop(state);
+        Some((b.starts.clone(), prepared))
+    }
+
+    /// Ends the pool's part: the blocks queued are left as they are.
+    pub(super) fn stop(&self) {
+        let mut state = self.lock();
+        state.stopped = true;
+        for b in &state.queue {
+            b.abandon();
+        }
+        self.changed.notify_all();
     }
 }

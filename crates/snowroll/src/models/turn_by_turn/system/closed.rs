@@ -7,7 +7,7 @@
 //! rows are made by the same code; only t and θ̇ at the events differ, by
 //! the integrator's error.
 
-use super::ahead::{self, Ahead, TurnStart};
+use super::ahead::{Ahead, Pipeline, TurnStart};
 use super::*;
 
 use crate::error::SimError;
@@ -140,60 +140,46 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
         omega0: y[1],
         v_start: system.speed_at_start(),
     };
-    let block = |from: TurnStart| {
-        let count = ahead::BLOCK.min(limit.saturating_sub(from.turn));
-        ahead.starts(from, count)
-    };
-    // This thread runs the turns in order and helps with the next block once
-    // done; the pool has the other cores (a pool of every core would put
-    // one more thread than cores at work, its spinning taking time from this one).
+    // This thread runs the turns in order, block after block, and helps
+    // with a block not yet prepared when it gets to it ([`Pipeline`]); the
+    // pool has the other cores (a pool of every core would put one more
+    // thread than cores at work, its spinning taking time from this one).
     let workers = rayon::current_num_threads().saturating_sub(1).max(1);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(workers)
         .build()
         .ok();
-    let mut starts = block(first);
-    let mut ready = match &pool {
-        Some(pool) => pool.install(|| ahead.prepare(&starts)),
-        None => ahead.prepare(&starts),
-    };
-    loop {
-        // Where this block's prediction ends: the next block's first turn.
-        let next_first = starts.last().and_then(|s| ahead.next_after(s));
-        let block_end = system.turn + ready.len() as u64;
-        let mut next = (Vec::new(), Vec::new());
-        let end = in_place_scope(pool.as_ref(), |scope| {
-            if let Some(from) = next_first.filter(|s| s.turn < limit) {
-                let next = &mut next;
-                scope.spawn(move |_| {
-                    let starts = block(from);
-                    let prepared = ahead.prepare(&starts);
-                    *next = (starts, prepared);
-                });
-            }
-            system.load_prepared(std::mem::take(&mut ready));
-            loop {
+    let pipeline = Pipeline::new(ahead, first, limit);
+    in_place_scope(pool.as_ref(), |scope| {
+        for _ in 0..workers {
+            scope.spawn(|_| pipeline.work());
+        }
+        let end = loop {
+            let Some((_, ready)) = pipeline.take() else {
+                // The prediction stopped (a stuck log): the run finds out itself.
+                break loop {
+                    if let Some(end) = closed_step(system, (t, y), t_end, observer) {
+                        break end;
+                    }
+                };
+            };
+            let block_end = system.turn + ready.len() as u64;
+            system.load_prepared(ready);
+            let end = loop {
                 if let Some(end) = closed_step(system, (t, y), t_end, observer) {
                     break Some(end);
                 }
                 if system.turn >= block_end {
                     break None;
                 }
+            };
+            if let Some(end) = end {
+                break end;
             }
-        });
-        match end {
-            Some(end) => return end,
-            None if next.0.is_empty() => {
-                // The prediction stopped (a stuck log): the run finds out itself.
-                loop {
-                    if let Some(end) = closed_step(system, (t, y), t_end, observer) {
-                        return end;
-                    }
-                }
-            }
-            None => (starts, ready) = next,
-        }
-    }
+        };
+        pipeline.stop();
+        end
+    })
 }
 
 /// `op` in a scope of `pool` (of rayon's global pool without one) that
