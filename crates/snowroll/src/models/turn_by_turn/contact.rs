@@ -456,7 +456,7 @@ fn grid_rotation(step: f64) -> (f64, f64) {
             (h, h.sin_cos())
         })
     });
-    match table.iter().find(|(h, _)| *h == step) {
+    match table.iter().find(|(h, _)| h.to_bits() == step.to_bits()) {
         Some(&(_, sc)) => sc,
         None => step.sin_cos(),
     }
