@@ -206,7 +206,7 @@ impl TurnDynamics {
             h: impl Fn(f64) -> Jet,
             values: &[f64],
             step: f64,
-            (hint, known): (&mut Option<f64>, Option<(f64, Jet)>),
+            (track, known): (&mut Track, Option<(f64, Jet)>),
         ) -> f64 {
             let i = least(values);
             let (theta, value) = extremes::refine_min_jet(
@@ -214,10 +214,10 @@ impl TurnDynamics {
                 (0.0, step),
                 values,
                 i,
-                (*hint, known),
+                (track.guess(), known),
                 FORCE_THETA_TOL,
             );
-            *hint = Some(theta);
+            track.record(theta);
             value
         }
         let [h_min, h_max, h_normal, h_mg, h_ratio] = &mut hints.theta;
@@ -302,11 +302,21 @@ impl TurnDynamics {
         omega0: f64,
         normal: &[f64],
         step: f64,
-        hint: &mut Option<f64>,
+        track: &mut Track,
     ) -> (f64, Option<Radians>, Option<(f64, Jet)>) {
         let n_at = |theta: f64| self.orbit(theta, omega0).1;
         let last = normal.len() - 1;
         let (mut n_min, mut first_zero, mut evaluated) = (f64::INFINITY, None, None);
+        // The next turn starts from where the smallest minimum was (not an
+        // end of the turn that is a minimum of the samples too).
+        let (hint, mut at_min) = (track.guess(), None);
+        // N′(0) = μC + e₂θ̇₀² (the module doc's N at θ = 0, where sin θ = 0
+        // and 1 − cos θ = 0 take out every other term): with each term ≥ 0
+        // N does not fall after θ = 0, and a minimum of the samples there is
+        // the end value itself, which the refinement would find from the
+        // sign of that same sum (no evaluation needed).
+        let k = &self.coeffs;
+        let rises_at_start = k.accretion >= 0.0 && self.g_normal >= 0.0 && k.e2 >= 0.0;
         for (i, &n_i) in normal.iter().enumerate() {
             let theta_i = i as f64 * step;
             n_min = n_min.min(n_i);
@@ -317,25 +327,25 @@ impl TurnDynamics {
                 });
             }
             let local = (i == 0 || n_i < normal[i - 1]) && (i == last || n_i <= normal[i + 1]);
-            if !local {
+            if !local || (i == 0 && rises_at_start) {
                 continue;
             }
-            let last = Cell::new(None);
+            let latest = Cell::new(None);
             let (theta_m, n_m) = extremes::refine_min_jet(
                 |theta| {
                     let n = self.orbit_jet(theta, omega0).1;
-                    last.set(Some((theta, n)));
+                    latest.set(Some((theta, n)));
                     n
                 },
                 (0.0, step),
                 normal,
                 i,
-                (*hint, None),
+                (hint, None),
                 FORCE_THETA_TOL,
             );
-            *hint = Some(theta_m);
             if n_m < n_min {
-                evaluated = last.get();
+                evaluated = latest.get();
+                at_min = Some(theta_m);
             }
             n_min = n_min.min(n_m);
             if first_zero.is_none() && n_m <= 0.0 {
@@ -347,6 +357,9 @@ impl TurnDynamics {
                 };
                 first_zero = Some(first_root(n_at, lo, theta_m));
             }
+        }
+        if let Some(theta) = at_min {
+            track.record(theta);
         }
         (n_min, first_zero, evaluated)
     }
@@ -413,12 +426,39 @@ impl TurnDynamics {
     }
 }
 
-/// Where the extremes of the last turn were found: the starts of Newton's
+/// Where the extremes of the last turns were found: the starts of Newton's
 /// method for the next ([`TurnDynamics::turn_extremes_hinted`]), for the
 /// smallest and largest a, the smallest N, N/(M g) and the largest |F|/N.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct Hints {
-    theta: [Option<Radians>; 5],
+    theta: [Track; 5],
+}
+
+/// Where one extreme was in the last two turns. An extreme drifts by
+/// nearly the same angle from one turn to the next (by ~1e-4 rad a turn
+/// around turn 10⁴, more than Newton's last step of
+/// [`extremes::refine_min_jet`]), so the next turn's guess is the straight
+/// line through the two: a step of Newton's method fewer than from the
+/// last alone.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Track {
+    last: Option<Radians>,
+    before: Option<Radians>,
+}
+
+impl Track {
+    /// The next turn's guess.
+    fn guess(&self) -> Option<Radians> {
+        match (self.before, self.last) {
+            (Some(before), Some(last)) => Some(2.0 * last - before),
+            (_, last) => last,
+        }
+    }
+
+    /// Where the extreme was in this turn.
+    fn record(&mut self, theta: Radians) {
+        (self.before, self.last) = (self.last, Some(theta));
+    }
 }
 
 /// Extremes of a, N and |F|/N over a whole turn, [`TurnDynamics::turn_extremes`].
@@ -555,7 +595,10 @@ mod tests {
         let mut hints = Hints::default();
         late(4.99).turn_extremes_hinted(omega0 * 1.001, &mut hints);
         same(&plain, &turn.turn_extremes_hinted(omega0, &mut hints));
-        let far = [Some(6.0), Some(3.0), Some(0.1), Some(6.2), Some(0.5)];
+        let far = [6.0, 3.0, 0.1, 6.2, 0.5].map(|theta| Track {
+            last: Some(theta),
+            before: None,
+        });
         same(
             &plain,
             &turn.turn_extremes_hinted(omega0, &mut Hints { theta: far }),
