@@ -62,8 +62,9 @@ pub enum Sink {
     },
     /// A temporary file, renamed over `target` on commit.
     Replace {
-        /// The temporary file, open for writing, synced as it grows.
-        file: BufWriter<EarlyWriteback>,
+        /// The temporary file, open for writing, buffered in whole
+        /// blocks and sent to disk as it grows.
+        file: EarlyWriteback,
         /// Its name and lock; removes it unless renamed.
         scratch: Scratch,
         /// The regular file (or place for one) that it will replace.
@@ -117,7 +118,7 @@ impl Sink {
                 let (scratch, file) = temporary_beside(&target, existing.as_ref())
                     .with_context(|| format!("cannot write {shown}"))?;
                 Ok(Sink::Replace {
-                    file: BufWriter::new(EarlyWriteback::new(file)),
+                    file: EarlyWriteback::new(file),
                     scratch,
                     target,
                     path: path.to_path_buf(),
@@ -137,7 +138,6 @@ impl Sink {
                 target,
                 ..
             } => {
-                let file = file.into_inner().map_err(|e| plain(e.into_error()))?;
                 let file = file.finish().map_err(plain)?;
                 file.sync_all().map_err(plain)?;
                 scratch.rename_to(&target)?;

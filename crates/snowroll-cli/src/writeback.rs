@@ -6,23 +6,34 @@
 //! ([`start_writeback`]), while the program goes on computing; the final
 //! `fsync` then waits for the last stride only.
 //!
+//! It is also the file's buffer, and writes whole [`BLOCK`]s at offsets
+//! that are multiples of it (all but the last write): the kernel then
+//! fills whole pages of its cache, a third less of its time than for the
+//! same bytes at arbitrary offsets (268 MB with `dd`: 0.095 s against
+//! 0.145 s of system time).
+//!
 //! The thread works through a second descriptor of the same open file: an
 //! error it meets is kept and returned by [`EarlyWriteback::finish`]. A
 //! failure of the write-out itself is reported by the final `fsync` (the
 //! advice does not consume it).
 
 use std::fs::File;
-use std::io::{self, Write};
+use std::io::{self, IoSlice, Write};
 use std::sync::mpsc::{channel, Sender};
 use std::thread::{self, JoinHandle};
 
 /// Bytes written between two background write-outs.
 const STRIDE: u64 = 32 << 20;
+/// Bytes of each write to the file, and the alignment of its offsets.
+const BLOCK: usize = 64 << 10;
 
 /// A file whose written bytes start going to disk in the background every [`STRIDE`].
 #[derive(Debug)]
 pub struct EarlyWriteback {
     file: File,
+    /// Bytes not yet written, from a multiple of [`BLOCK`] on: fewer than
+    /// a block.
+    pending: Vec<u8>,
     /// Bytes written since the last request to sync.
     since: u64,
     /// The syncing thread, started at the first full stride: its requests
@@ -35,6 +46,7 @@ impl EarlyWriteback {
     pub fn new(file: File) -> Self {
         Self {
             file,
+            pending: Vec::with_capacity(BLOCK),
             since: 0,
             syncer: None,
         }
@@ -70,7 +82,8 @@ impl EarlyWriteback {
     ///
     /// # Errors
     /// The background sync's error.
-    pub fn finish(self) -> io::Result<File> {
+    pub fn finish(mut self) -> io::Result<File> {
+        self.flush()?;
         if let Some((tx, handle)) = self.syncer {
             drop(tx);
             handle
@@ -99,18 +112,61 @@ fn start_writeback(file: &File) -> io::Result<()> {
     }
 }
 
-impl Write for EarlyWriteback {
-    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
-        let n = self.file.write(buf)?;
+impl EarlyWriteback {
+    /// Counts `n` bytes written, asking for a write-out every [`STRIDE`].
+    fn wrote(&mut self, n: usize) {
         self.since += n as u64;
         if self.since >= STRIDE {
             self.since = 0;
             self.request();
         }
-        Ok(n)
+    }
+}
+
+/// Writes all of `head` then all of `tail` to `file`, in one call where the
+/// kernel takes it all (`writev`): the pending bytes and the caller's
+/// need not be copied together first.
+fn write_both(file: &mut File, head: &[u8], tail: &[u8]) -> io::Result<()> {
+    let mut slices = [IoSlice::new(head), IoSlice::new(tail)];
+    let mut left = &mut slices[..];
+    IoSlice::advance_slices(&mut left, 0);
+    while !left.is_empty() {
+        match file.write_vectored(left) {
+            Ok(0) => return Err(io::ErrorKind::WriteZero.into()),
+            Ok(n) => IoSlice::advance_slices(&mut left, n),
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(())
+}
+
+impl Write for EarlyWriteback {
+    /// Keeps `buf` until the bytes pending reach a whole number of blocks,
+    /// then writes those blocks: the pending bytes and the first part of
+    /// `buf` together, the rest of `buf` kept.
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        let total = self.pending.len() + buf.len();
+        if total < BLOCK {
+            self.pending.extend_from_slice(buf);
+            return Ok(buf.len());
+        }
+        // At least one block, more than the pending bytes (fewer than a block).
+        let now = total - total % BLOCK - self.pending.len();
+        write_both(&mut self.file, &self.pending, &buf[..now])?;
+        self.wrote(self.pending.len() + now);
+        self.pending.clear();
+        self.pending.extend_from_slice(&buf[now..]);
+        Ok(buf.len())
     }
 
     fn flush(&mut self) -> io::Result<()> {
+        if !self.pending.is_empty() {
+            self.file.write_all(&self.pending)?;
+            let n = self.pending.len();
+            self.pending.clear();
+            self.wrote(n);
+        }
         self.file.flush()
     }
 }
@@ -141,5 +197,43 @@ mod tests {
         assert_eq!(back.len(), blocks * block.len());
         assert!(back.chunks(block.len()).all(|c| c == block.as_slice()));
         drop(file.write_all(b"")); // still a usable file
+    }
+
+    /// Writes of every size, small and larger than a block, in any order:
+    /// until the flush the file holds exactly the whole blocks written so
+    /// far (every write was of whole blocks at a block's offset), and after
+    /// it every byte, in order.
+    #[test]
+    fn the_file_grows_by_whole_blocks_and_ends_whole() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out");
+        let mut w = EarlyWriteback::new(File::create(&path).unwrap());
+        let mut sent = Vec::new();
+        for (i, size) in [
+            1,
+            700,
+            BLOCK - 1,
+            2,
+            3 * BLOCK + 5,
+            0,
+            BLOCK,
+            12_345,
+            65_591,
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let chunk: Vec<u8> = (0..size).map(|j| (i * 31 + j * 7) as u8).collect();
+            w.write_all(&chunk).unwrap();
+            sent.extend_from_slice(&chunk);
+            let on_disk = std::fs::metadata(&path).unwrap().len() as usize;
+            assert_eq!(
+                on_disk,
+                sent.len() - sent.len() % BLOCK,
+                "after {size} bytes"
+            );
+        }
+        w.finish().unwrap();
+        assert!(std::fs::read(&path).unwrap() == sent);
     }
 }
