@@ -46,7 +46,7 @@ enum Out<W: Write> {
 }
 
 /// Bytes of formatted CSV rows written at a time.
-const LINES_BLOCK: usize = 1 << 16;
+const LINES_BLOCK: usize = 1 << 20;
 
 impl<W: Write> TurnTableWriter<W> {
     /// Writes the opening (version, `model`, `params`, and for CSV the
