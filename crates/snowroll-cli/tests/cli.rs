@@ -690,6 +690,20 @@ fn turns_gives_exactly_n_rows_numbered_from_zero() {
     // Without --turns: the documented default of 100.
     let (out, _) = turns(&["--model", "eq73"]);
     assert_eq!(Csv::parse(&out).rows.len(), 100);
+    // Without --model: the note's own turn model, the same table as asked by name.
+    let (out, _) = turns(&["--turns", "4"]);
+    let (named, _) = turns(&["--model", "turns", "--turns", "4"]);
+    let body = |text: &str| -> Vec<String> {
+        text.lines()
+            .filter(|l| !l.starts_with("# command"))
+            .map(String::from)
+            .collect()
+    };
+    assert_eq!(
+        Csv::parse(&out).comments["model"],
+        "turns (eqs. (73), (76), (89))"
+    );
+    assert_eq!(body(&out), body(&named));
 }
 
 #[test]

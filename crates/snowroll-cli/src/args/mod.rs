@@ -334,7 +334,7 @@ fn turn_model_parser() -> impl clap::builder::TypedValueParser<Value = ModelList
 #[derive(Debug, Clone, Default, PartialEq, clap::Args)]
 #[command(
     mut_arg("model", |a| a.value_name("ID").hide_possible_values(true).value_parser(turn_model_parser()).help(
-        "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry), any case; one model [default: none, one is required]"
+        "Turn model: turns (eq73, the note's eqs. (73), (76)) or turns-exact (eq88, exact geometry), any case; one model [default: turns]"
     )),
     mut_arg("t_end", |a| a.help(with_default(
         "Stop at this time, in s (t_end > 0); long enough by default that --turns ends the run",

@@ -99,9 +99,13 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
     Ok(())
 }
 
-/// The turn model asked for; any other model is refused, naming the turn models.
+/// The turn model asked for, `turns` (the note's, eqs. (73), (76)) when
+/// none is; any other model is refused, naming the turn models.
 fn turn_model(args: &TurnsArgs) -> Result<ModelKind> {
     let choices = turn_models();
+    if args.scenario.model.is_none() {
+        return Ok(ModelKind::Turns);
+    }
     let models = inputs::models(&args.scenario, &choices)?;
     if let Some(&model) = models.iter().find(|m| !m.is_turn_model()) {
         bail!(
