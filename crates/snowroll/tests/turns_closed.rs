@@ -363,3 +363,48 @@ fn turns_computed_ahead_match_each_turn_recomputed_here() {
         );
     }
 }
+
+/// A run that stops inside a block of turns computed ahead (at an end
+/// distance half-way through turn 12 000, in the second block; at an end
+/// time in turn 9000) stops there, with the rows before it those of a run
+/// that goes on (the same bits), and its last state where the stop says:
+/// the pipeline that prepares turns ahead is left behind without holding
+/// the run up. The distance is X_k + π r_k with X_k of eq. (74).
+#[test]
+fn a_run_that_stops_inside_a_block_keeps_the_rows_before_it() {
+    let (r0, b) = (0.1, 0.01);
+    let s = scenario(30.0, b, r0, 0.0);
+    let full = table(TurnVariant::Paper, TurnMethod::Closed, &s, &tight(20_000));
+    let k = 12_000.0;
+    let x_end = 2.0 * PI * k * r0 + k * (k - 1.0) * PI * b + PI * (r0 + k * b);
+    let by_distance = SimOptions {
+        turns: None,
+        x_end: Some(x_end),
+        ..tight(1)
+    };
+    let t_stop =
+        full.rows[9000].t_start_s + 0.25 * (full.rows[9000].t_end_s - full.rows[9000].t_start_s);
+    let by_time = SimOptions {
+        turns: None,
+        t_end: t_stop,
+        ..tight(1)
+    };
+    for (opts, rows, reason) in [
+        (by_distance, 12_000, StopReason::Distance),
+        (by_time, 9000, StopReason::EndTime),
+    ] {
+        let run = table(TurnVariant::Paper, TurnMethod::Closed, &s, &opts);
+        assert_eq!(run.rows.len(), rows);
+        let stop = run.stop;
+        assert_eq!(stop.reason, reason);
+        assert_eq!(stop.turn.map(|t| t.turn), Some(rows as u64));
+        // Where it stopped: the distance to its rounding (x ~ 1e6 m), the time exactly.
+        match reason {
+            StopReason::Distance => assert!((stop.x_m - x_end).abs() < 1e-9 * x_end),
+            _ => assert_eq!(stop.t_s, t_stop),
+        }
+        for (a, b) in run.rows.iter().zip(&full.rows) {
+            assert_eq!(format!("{a:?}"), format!("{b:?}"), "turn {}", a.turn);
+        }
+    }
+}
