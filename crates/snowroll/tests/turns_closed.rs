@@ -401,7 +401,7 @@ fn a_run_that_stops_inside_a_block_keeps_the_rows_before_it() {
         // Where it stopped: the distance to its rounding (x ~ 1e6 m), the time exactly.
         match reason {
             StopReason::Distance => assert!((stop.x_m - x_end).abs() < 1e-9 * x_end),
-            _ => assert_eq!(stop.t_s, t_stop),
+            _ => assert_eq!(stop.t_s.to_bits(), t_stop.to_bits()),
         }
         for (a, b) in run.rows.iter().zip(&full.rows) {
             assert_eq!(format!("{a:?}"), format!("{b:?}"), "turn {}", a.turn);
