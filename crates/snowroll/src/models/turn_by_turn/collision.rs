@@ -23,6 +23,35 @@ pub fn charged_collision_speed(
     (v2 > 0.0).then(|| v2.sqrt())
 }
 
+/// The start of turn k + 1 after a collision at θ = 2π of the rolling log
+/// of radius `r_k`, from `θ̇` there: `(θ̇′, v′)`, θ̇′ = v′/r_{k+1} with v′
+/// by eq. (89) (`note`, [`super::collision_speed`]) or
+/// [`charged_collision_speed`] (`charged`, whose v′ is then reported as
+/// θ̇′ r_{k+1}). `None` when the log is stuck at the step, and for `pivot`,
+/// whose collision is its impact at θ_c ([`PivotImpact`]). One function for
+/// the run (`TurnSystem`) and for the turns it computes ahead, so that the
+/// two predict the same starts by construction.
+pub(crate) fn after_collision(
+    rule: CollisionModel,
+    r_k: Meters,
+    b: Meters,
+    g_normal: MetersPerSecondSquared,
+    omega_end: f64,
+) -> Option<(f64, MetersPerSecond)> {
+    let r_next = r_k + b;
+    match rule {
+        CollisionModel::Note => {
+            let v = super::collision_speed(r_k, b, r_k * omega_end);
+            Some((v / r_next, v))
+        }
+        CollisionModel::Charged => {
+            let omega = charged_collision_speed(r_k, b, g_normal, r_k * omega_end)? / r_next;
+            Some((omega, omega * r_next))
+        }
+        CollisionModel::Pivot => None,
+    }
+}
+
 /// The impact of the `pivot` collision at the end of turn k
 /// (`docs/contact-forces.md` §6.3), per unit m_k, with the exact mass
 /// properties of the disk plus the annular sector at θ_c.

@@ -45,6 +45,7 @@ mod stall;
 mod summary;
 mod system;
 
+use collision::after_collision;
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
 pub(crate) use contact::Hints;
 pub use contact::{ContactRange, TurnExtremes};

@@ -20,8 +20,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
 use super::{TurnSystem, TWO_PI};
 use crate::models::turn_by_turn::orbit::Orbit;
 use crate::models::turn_by_turn::{
-    charged_collision_speed, collision_speed, CollisionModel, Hints, TurnDynamics, TurnExtremes,
-    TurnVariant,
+    after_collision, CollisionModel, Hints, TurnDynamics, TurnExtremes, TurnVariant,
 };
 use crate::units::Radians;
 
@@ -92,20 +91,14 @@ impl Ahead {
     /// `None` when the log is stuck at the step.
     pub(super) fn next_after(&self, start: &TurnStart) -> Option<TurnStart> {
         let dynamics = self.dynamics(start.turn);
-        let r = dynamics.radius();
-        let r_next = r + self.b;
         let omega_end = Orbit::new(&dynamics, start.omega0).omega(TWO_PI);
-        let (omega0, v_start) = match self.collision {
-            CollisionModel::Note => {
-                let v = collision_speed(r, self.b, r * omega_end);
-                (v / r_next, v)
-            }
-            _ => {
-                let v = charged_collision_speed(r, self.b, self.g_normal, r * omega_end)?;
-                let omega = v / r_next;
-                (omega, omega * r_next)
-            }
-        };
+        let (omega0, v_start) = after_collision(
+            self.collision,
+            dynamics.radius(),
+            self.b,
+            self.g_normal,
+            omega_end,
+        )?;
         Some(TurnStart {
             turn: start.turn + 1,
             omega0,

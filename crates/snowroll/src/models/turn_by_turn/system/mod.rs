@@ -11,8 +11,8 @@ pub(crate) use closed::run_closed;
 use std::f64::consts::PI;
 
 use super::{
-    charged_collision_speed, collision_speed, kinetic_energy_at_turn_start, CollisionModel,
-    PivotImpact, TurnDynamics, TurnExtremes, TurnVariant, TWO_PI,
+    after_collision, kinetic_energy_at_turn_start, CollisionModel, PivotImpact, TurnDynamics,
+    TurnExtremes, TurnVariant, TWO_PI,
 };
 
 use crate::scenario::Scenario;
@@ -258,16 +258,12 @@ impl TurnSystem {
     /// stuck at the step.
     pub(crate) fn omega_next(&self, omega_end: f64) -> Option<f64> {
         let r = self.dynamics.radius();
-        let r_next = r + self.b;
         match self.collision {
-            CollisionModel::Note => Some(collision_speed(r, self.b, r * omega_end) / r_next),
-            CollisionModel::Charged => {
-                charged_collision_speed(r, self.b, self.g_normal, r * omega_end).map(|v| v / r_next)
-            }
             CollisionModel::Pivot => {
                 self.impact
                     .omega_next(r, self.b, omega_end, self.g_along, self.g_normal)
             }
+            rule => after_collision(rule, r, self.b, self.g_normal, omega_end).map(|(w, _)| w),
         }
     }
 
@@ -443,8 +439,10 @@ impl TurnSystem {
     pub(crate) fn speed_after(&self, omega_end: f64) -> f64 {
         let r = self.dynamics.radius();
         match self.collision {
-            CollisionModel::Note => collision_speed(r, self.b, r * omega_end),
-            _ => self.omega_next(omega_end).unwrap_or(0.0) * (r + self.b),
+            CollisionModel::Pivot => self.omega_next(omega_end).unwrap_or(0.0) * (r + self.b),
+            rule => {
+                after_collision(rule, r, self.b, self.g_normal, omega_end).map_or(0.0, |(_, v)| v)
+            }
         }
     }
 
