@@ -288,6 +288,21 @@ impl<'a> Pipeline<'a> {
         Arc::new(Block::new(self.ahead, self.ahead.starts(from, count)))
     }
 
+    /// Makes the block from `from` on (`extending` set by the caller) and
+    /// queues it. Should that fail half-way (a panic), the prediction ends
+    /// there ([`Extending`]) rather than leave the run waiting for it.
+    fn extend(&self, from: TurnStart) -> Arc<Block<'a>> {
+        let guard = Extending(self);
+        let b = self.make_block(from);
+        std::mem::forget(guard);
+        let mut state = self.lock();
+        state.next = b.next_start().filter(|s| s.turn < self.limit);
+        state.extending = false;
+        state.queue.push_back(Arc::clone(&b));
+        self.changed.notify_all();
+        b
+    }
+
     /// A pool thread's part, until the run stops: prepares runs of queued
     /// blocks, and makes the next block when there is room for it.
     pub(super) fn work(&self) {
@@ -317,12 +332,7 @@ impl<'a> Pipeline<'a> {
             match task {
                 Task::Prepare(b) => b.work(),
                 Task::Extend(from) => {
-                    let b = self.make_block(from);
-                    let mut state = self.lock();
-                    state.next = b.next_start().filter(|s| s.turn < self.limit);
-                    state.extending = false;
-                    state.queue.push_back(b);
-                    self.changed.notify_all();
+                    self.extend(from);
                 }
             }
         }
@@ -346,13 +356,7 @@ impl<'a> Pipeline<'a> {
                             // No thread has started it: this one makes it.
                             state.extending = true;
                             drop(state);
-                            let b = self.make_block(from);
-                            state = self.lock();
-                            state.next = b.next_start().filter(|s| s.turn < self.limit);
-                            state.extending = false;
-                            state.queue.push_back(Arc::clone(&b));
-                            self.changed.notify_all();
-                            break b;
+                            break self.extend(from);
                         }
                         None => return None,
                     }
@@ -376,5 +380,18 @@ impl<'a> Pipeline<'a> {
             b.abandon();
         }
         self.changed.notify_all();
+    }
+}
+
+/// A block being made, until it is queued: dropped before (a panic while
+/// making it), it ends the prediction (`next` stays `None`) and wakes the
+/// threads waiting for the block, so that the run computes its turns itself.
+struct Extending<'p, 'a>(&'p Pipeline<'a>);
+
+impl Drop for Extending<'_, '_> {
+    fn drop(&mut self) {
+        let mut state = self.0.lock();
+        state.extending = false;
+        self.0.changed.notify_all();
     }
 }
