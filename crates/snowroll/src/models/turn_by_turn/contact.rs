@@ -206,7 +206,7 @@ impl TurnDynamics {
             h: impl Fn(f64) -> Jet,
             values: &[f64],
             step: f64,
-            (track, known): (&mut Track, Option<(f64, Jet)>),
+            (hint, known): (&mut Option<f64>, Option<(f64, Jet)>),
         ) -> f64 {
             let i = least(values);
             let (theta, value) = extremes::refine_min_jet(
@@ -214,10 +214,10 @@ impl TurnDynamics {
                 (0.0, step),
                 values,
                 i,
-                (track.guess(), known),
+                (*hint, known),
                 FORCE_THETA_TOL,
             );
-            track.record(theta);
+            *hint = Some(theta);
             value
         }
         let [h_min, h_max, h_normal, h_mg, h_ratio] = &mut hints.theta;
@@ -302,14 +302,14 @@ impl TurnDynamics {
         omega0: f64,
         normal: &[f64],
         step: f64,
-        track: &mut Track,
+        hint: &mut Option<f64>,
     ) -> (f64, Option<Radians>, Option<(f64, Jet)>) {
         let n_at = |theta: f64| self.orbit(theta, omega0).1;
         let last = normal.len() - 1;
         let (mut n_min, mut first_zero, mut evaluated) = (f64::INFINITY, None, None);
         // The next turn starts from where the smallest minimum was (not an
         // end of the turn that is a minimum of the samples too).
-        let (hint, mut at_min) = (track.guess(), None);
+        let (start, mut at_min) = (*hint, None);
         // N′(0) = μC + e₂θ̇₀² (the module doc's N at θ = 0, where sin θ = 0
         // and 1 − cos θ = 0 take out every other term): with each term ≥ 0
         // N does not fall after θ = 0, and a minimum of the samples there is
@@ -340,7 +340,7 @@ impl TurnDynamics {
                 (0.0, step),
                 normal,
                 i,
-                (hint, None),
+                (start, None),
                 FORCE_THETA_TOL,
             );
             if n_m < n_min {
@@ -358,8 +358,8 @@ impl TurnDynamics {
                 first_zero = Some(first_root(n_at, lo, theta_m));
             }
         }
-        if let Some(theta) = at_min {
-            track.record(theta);
+        if at_min.is_some() {
+            *hint = at_min;
         }
         (n_min, first_zero, evaluated)
     }
@@ -426,39 +426,12 @@ impl TurnDynamics {
     }
 }
 
-/// Where the extremes of the last turns were found: the starts of Newton's
+/// Where the extremes of the last turn were found: the starts of Newton's
 /// method for the next ([`TurnDynamics::turn_extremes_hinted`]), for the
 /// smallest and largest a, the smallest N, N/(M g) and the largest |F|/N.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct Hints {
-    theta: [Track; 5],
-}
-
-/// Where one extreme was in the last two turns. An extreme drifts by
-/// nearly the same angle from one turn to the next (by ~1e-4 rad a turn
-/// around turn 10⁴, more than Newton's last step of
-/// [`extremes::refine_min_jet`]), so the next turn's guess is the straight
-/// line through the two: a step of Newton's method fewer than from the
-/// last alone.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub(crate) struct Track {
-    last: Option<Radians>,
-    before: Option<Radians>,
-}
-
-impl Track {
-    /// The next turn's guess.
-    fn guess(&self) -> Option<Radians> {
-        match (self.before, self.last) {
-            (Some(before), Some(last)) => Some(2.0 * last - before),
-            (_, last) => last,
-        }
-    }
-
-    /// Where the extreme was in this turn.
-    fn record(&mut self, theta: Radians) {
-        (self.before, self.last) = (self.last, Some(theta));
-    }
+    theta: [Option<Radians>; 5],
 }
 
 /// Extremes of a, N and |F|/N over a whole turn, [`TurnDynamics::turn_extremes`].
@@ -595,10 +568,7 @@ mod tests {
         let mut hints = Hints::default();
         late(4.99).turn_extremes_hinted(omega0 * 1.001, &mut hints);
         same(&plain, &turn.turn_extremes_hinted(omega0, &mut hints));
-        let far = [6.0, 3.0, 0.1, 6.2, 0.5].map(|theta| Track {
-            last: Some(theta),
-            before: None,
-        });
+        let far = [Some(6.0), Some(3.0), Some(0.1), Some(6.2), Some(0.5)];
         same(
             &plain,
             &turn.turn_extremes_hinted(omega0, &mut Hints { theta: far }),
