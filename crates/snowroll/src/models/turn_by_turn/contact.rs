@@ -169,27 +169,18 @@ impl TurnDynamics {
         }
     }
 
-    /// [`Self::scan`] on a grid of `POINTS` points (its arrays on the stack,
-    /// of that size).
-    fn scan_on<const POINTS: usize>(
-        &self,
-        omega0: f64,
-        theta_max: Radians,
-        with_a: bool,
-        hints: &mut Hints,
-    ) -> TurnExtremes {
+    /// a, −a, N, N/(M g), −|F|/N (each refined at its smallest) at the
+    /// `POINTS` points `i step` of [`Self::scan_on`]'s grid (sin and cos by
+    /// the rotation recurrence), in a loop without a dependence between its
+    /// passes (the compiler runs two points at once).
+    fn samples<const POINTS: usize>(&self, omega0: f64, step: f64, g: f64) -> [[f64; POINTS]; 5] {
         let mu = self.coeffs.accretion;
-        let g = self.g_along.hypot(self.g_normal);
-        let step = theta_max / (POINTS - 1) as f64;
         let (sh, ch) = grid_rotation(step);
         let mut sin_cos = [(0.0, 1.0); POINTS];
         for i in 1..POINTS {
             let (s, c) = sin_cos[i - 1];
             sin_cos[i] = (s * ch + c * sh, c * ch - s * sh);
         }
-        // Samples of a, −a, N, N/(M g), −|F|/N (each refined at its
-        // smallest), in a loop without a dependence between its passes (the
-        // compiler runs two points at once).
         let mut samples = [[0.0; POINTS]; 5];
         for (i, &(s, c)) in sin_cos.iter().enumerate() {
             let theta = i as f64 * step;
@@ -199,27 +190,22 @@ impl TurnDynamics {
                 row[i] = value;
             }
         }
+        samples
+    }
+
+    /// [`Self::scan`] on a grid of `POINTS` points (its arrays on the stack,
+    /// of that size).
+    fn scan_on<const POINTS: usize>(
+        &self,
+        omega0: f64,
+        theta_max: Radians,
+        with_a: bool,
+        hints: &mut Hints,
+    ) -> TurnExtremes {
+        let (mu, g) = (self.coeffs.accretion, self.g_along.hypot(self.g_normal));
+        let step = theta_max / (POINTS - 1) as f64;
+        let samples = self.samples::<POINTS>(omega0, step, g);
         let [a_s, neg_a_s, normal, mg_s, neg_ratio_s] = &samples;
-        // Generic in `h`, so that each function's evaluation is compiled
-        // with only the parts of (a, N, F) it uses.
-        fn refine(
-            h: impl Fn(f64) -> Jet,
-            values: &[f64],
-            step: f64,
-            (hint, known): (&mut Option<f64>, Option<(f64, Jet)>),
-        ) -> f64 {
-            let i = least(values);
-            let (theta, value) = extremes::refine_min_jet(
-                h,
-                (0.0, step),
-                values,
-                i,
-                (*hint, known),
-                FORCE_THETA_TOL,
-            );
-            *hint = Some(theta);
-            value
-        }
         let [h_min, h_max, h_normal, h_mg, h_ratio] = &mut hints.theta;
         let (a_min, a_max) = if with_a {
             (
@@ -323,7 +309,7 @@ impl TurnDynamics {
             if first_zero.is_none() && n_i <= 0.0 {
                 first_zero = Some(match i {
                     0 => 0.0,
-                    _ => first_root(n_at, theta_i - step, theta_i),
+                    _ => extremes::first_root(n_at, theta_i - step, theta_i),
                 });
             }
             let local = (i == 0 || n_i < normal[i - 1]) && (i == last || n_i <= normal[i + 1]);
@@ -355,7 +341,7 @@ impl TurnDynamics {
                 } else {
                     theta_i - step
                 };
-                first_zero = Some(first_root(n_at, lo, theta_m));
+                first_zero = Some(extremes::first_root(n_at, lo, theta_m));
             }
         }
         if at_min.is_some() {
@@ -459,6 +445,24 @@ pub struct ContactRange {
     pub first_zero_normal: Option<Radians>,
 }
 
+/// The smallest value of `h` near the smallest of its grid samples
+/// `values` ([`extremes::refine_min_jet`]), Newton's method started from
+/// `known` or `hint`, which becomes where this one was. Generic in `h`, so
+/// that each function's evaluation is compiled with only the parts of
+/// (a, N, F) it uses.
+fn refine(
+    h: impl Fn(f64) -> Jet,
+    values: &[f64],
+    step: f64,
+    (hint, known): (&mut Option<f64>, Option<(f64, Jet)>),
+) -> f64 {
+    let i = extremes::least(values);
+    let (theta, value) =
+        extremes::refine_min_jet(h, (0.0, step), values, i, (*hint, known), FORCE_THETA_TOL);
+    *hint = Some(theta);
+    value
+}
+
 /// `(sin h, cos h)` of a grid step `h`: of a whole turn's two grids from a
 /// table made once, else from the library (the same bits either way).
 fn grid_rotation(step: f64) -> (f64, f64) {
@@ -472,34 +476,6 @@ fn grid_rotation(step: f64) -> (f64, f64) {
     match table.iter().find(|(h, _)| h.to_bits() == step.to_bits()) {
         Some(&(_, sc)) => sc,
         None => step.sin_cos(),
-    }
-}
-
-/// The index of the smallest of `values` (the first of equal ones).
-fn least(values: &[f64]) -> usize {
-    let mut best = 0;
-    for (i, &v) in values.iter().enumerate() {
-        if v < values[best] {
-            best = i;
-        }
-    }
-    best
-}
-
-/// The first θ in `(lo, hi]` where `n(θ) ≤ 0`, given `n(lo) > 0 ≥ n(hi)` and
-/// one crossing between them: bisection until `lo` and `hi` are adjacent
-/// doubles (at most ~60 halvings for θ ≤ 2π); the end with `n ≤ 0`.
-pub(super) fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    loop {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            return hi;
-        }
-        if n(mid) <= 0.0 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
     }
 }
 

@@ -237,6 +237,34 @@ pub(super) fn refine_min_jet(
     }
 }
 
+/// The index of the smallest of `values` (the first of equal ones).
+pub(super) fn least(values: &[f64]) -> usize {
+    let mut best = 0;
+    for (i, &v) in values.iter().enumerate() {
+        if v < values[best] {
+            best = i;
+        }
+    }
+    best
+}
+
+/// The first θ in `(lo, hi]` where `n(θ) ≤ 0`, given `n(lo) > 0 ≥ n(hi)` and
+/// one crossing between them: bisection until `lo` and `hi` are adjacent
+/// doubles (at most ~60 halvings for θ ≤ 2π); the end with `n ≤ 0`.
+pub(super) fn first_root(n: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            return hi;
+        }
+        if n(mid) <= 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

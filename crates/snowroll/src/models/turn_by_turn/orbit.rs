@@ -112,13 +112,13 @@ impl<'a> Orbit<'a> {
             let (lo, hi) = ((i - 1) as f64 * h, i as f64 * h);
             let e_hi = self.energy(hi);
             if e_hi <= 0.0 {
-                return Some(super::contact::first_root(|x| self.energy(x), lo, hi));
+                return Some(super::extremes::first_root(|x| self.energy(x), lo, hi));
             }
             let clear = e_lo.min(e_hi) > dip || (i == 1 && first_clear);
             if !clear {
                 let (x, e_x) = super::extremes::brent_min(|x| self.energy(x), lo, hi, STALL_X_TOL);
                 if e_x <= 0.0 {
-                    return Some(super::contact::first_root(|x| self.energy(x), lo, x));
+                    return Some(super::extremes::first_root(|x| self.energy(x), lo, x));
                 }
             }
             e_lo = e_hi;
