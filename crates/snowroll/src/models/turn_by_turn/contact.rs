@@ -147,14 +147,14 @@ impl TurnDynamics {
         self.scan(omega0, std::f64::consts::TAU, true, hints)
     }
 
-    /// One grid of [`FORCE_GRID`] intervals over [0, `theta_max`] samples a,
-    /// N, N/(M g) and |F|/N together (sin, cos of the grid points by the
-    /// rotation recurrence, off by ~FORCE_GRID ulp); Brent's method then
+    /// One grid of [`FORCE_GRID`] intervals over [0, `theta_max`]
+    /// ([`SMOOTH_GRID`] where the turn is smooth) samples a, N, N/(M g) and
+    /// |F|/N together ([`Self::samples`]); Newton's method on jets (Brent's
+    /// method where it does not apply, [`extremes::refine_min_jet`]) then
     /// refines each wanted extreme from its own grid point, with one
-    /// `sin_cos` per evaluation. The extremes of a are refined only if `with_a`.
-    /// N is refined at every local minimum of its samples
+    /// `sin_cos` per evaluation. The extremes of a are refined only if
+    /// `with_a`. N is refined at every local minimum of its samples
     /// ([`Self::normal_minima`]), which also gives where N first reaches 0.
-    /// [`SMOOTH_GRID`] intervals where the turn is smooth.
     fn scan(
         &self,
         omega0: f64,
