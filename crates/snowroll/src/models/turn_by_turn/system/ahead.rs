@@ -338,10 +338,10 @@ impl<'a> Pipeline<'a> {
         }
     }
 
-    /// The next block's starts and prepared turns, in order; `None` where
-    /// the prediction ends. Makes the block itself when no thread has, and
+    /// The next block's prepared turns, in order; `None` where the
+    /// prediction ends. Makes the block itself when no thread has, and
     /// helps with its runs.
-    pub(super) fn take(&self) -> Option<(Vec<TurnStart>, Vec<Prepared>)> {
+    pub(super) fn take(&self) -> Option<Vec<Prepared>> {
         let b = {
             let mut state = self.lock();
             loop {
@@ -369,11 +369,18 @@ impl<'a> Pipeline<'a> {
         state.queue.pop_front();
         self.changed.notify_all();
         drop(state);
-        Some((b.starts.clone(), prepared))
+        Some(prepared)
     }
 
-    /// Ends the pool's part: the blocks queued are left as they are.
-    pub(super) fn stop(&self) {
+    /// Ends the pool's part: the blocks queued are left as they are. Called
+    /// when the returned guard is dropped, however the run ends (a panic
+    /// included: the pool's threads would otherwise wait for the run, and
+    /// the run's scope for them).
+    pub(super) fn stopped_on_drop(&self) -> StopOnDrop<'_, 'a> {
+        StopOnDrop(self)
+    }
+
+    fn stop(&self) {
         let mut state = self.lock();
         state.stopped = true;
         for b in &state.queue {
@@ -393,5 +400,14 @@ impl Drop for Extending<'_, '_> {
         let mut state = self.0.lock();
         state.extending = false;
         self.0.changed.notify_all();
+    }
+}
+
+/// Stops a [`Pipeline`] when dropped ([`Pipeline::stopped_on_drop`]).
+pub(super) struct StopOnDrop<'p, 'a>(&'p Pipeline<'a>);
+
+impl Drop for StopOnDrop<'_, '_> {
+    fn drop(&mut self) {
+        self.0.stop();
     }
 }

@@ -154,8 +154,9 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
         for _ in 0..workers {
             scope.spawn(|_| pipeline.work());
         }
-        let end = loop {
-            let Some((_, ready)) = pipeline.take() else {
+        let _stop = pipeline.stopped_on_drop();
+        loop {
+            let Some(ready) = pipeline.take() else {
                 // The prediction stopped (a stuck log): the run finds out itself.
                 break loop {
                     if let Some(end) = closed_step(system, (t, y), t_end, observer) {
@@ -176,9 +177,7 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
             if let Some(end) = end {
                 break end;
             }
-        };
-        pipeline.stop();
-        end
+        }
     })
 }
 
