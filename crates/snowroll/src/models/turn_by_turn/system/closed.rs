@@ -120,9 +120,10 @@ pub(crate) fn run_closed<O: RunObserver<TurnSystem, 2>>(
 }
 
 /// [`run_closed`]'s turns in blocks of [`ahead::BLOCK`]: while the turns of
-/// one block go through the run in order on this thread, the next block is
-/// prepared on the thread pool ([`Ahead`]), from where the prediction says
-/// this block ends.
+/// one block go through the run in order on this thread, the next blocks
+/// (up to three) are predicted and prepared by the thread pool
+/// ([`Pipeline`]), each from where the prediction says the one before ends;
+/// this thread helps with a block not yet done when it gets to it.
 fn run_ahead<O: RunObserver<TurnSystem, 2>>(
     system: &mut TurnSystem,
     ahead: &Ahead,
