@@ -32,6 +32,14 @@ cleanup() {
 }
 trap cleanup EXIT
 
+# When each background job started (seconds of this script), by its pid.
+declare -A started
+# Prints when a step ended, in seconds since this script started: the run's
+# time line, to tell which step a slow run spent its time on.
+stamp() {
+    echo "test: $1 done at ${SECONDS} s"
+}
+
 # Starts `$@` in the background with its output in a file; sets $job, $log.
 start() {
     log=$(mktemp)
@@ -39,6 +47,7 @@ start() {
     "$@" >"$log" 2>&1 &
     job=$!
     jobs_running+=("$job")
+    started[$job]=$SECONDS
 }
 
 # Waits for job $1 (log $2); shows its log when it fails (or always, with
@@ -58,6 +67,7 @@ finish() {
         echo "test: FAIL: $3 exited $status" >&2
         exit "$status"
     fi
+    echo "test: $3 done at ${SECONDS} s (started at ${started[$1]} s)"
 }
 
 # The Python tests' environment is installed (pip, mostly downloads) while
@@ -66,6 +76,7 @@ start bash scripts/test-python.sh --setup
 py_setup=$job py_setup_log=$log
 
 cargo test --workspace --all-features --no-run
+stamp "the test build"
 
 # The wheel (a second cargo build, of crates/snowroll-py) beside the Rust
 # tests (which keep about one and a half of the 2 cores busy).
@@ -74,6 +85,7 @@ start bash scripts/test-python.sh --wheel
 wheel=$job wheel_log=$log
 
 cargo test --workspace --all-features
+stamp "the Rust tests"
 
 finish "$wheel" "$wheel_log" "scripts/test-python.sh --wheel"
 
@@ -90,6 +102,7 @@ cli=$target/debug/snowroll
 # Chromium is installed first (a no-op when it is) so that it and the Slurm
 # test never run apt-get at once.
 bash .ci/install-chromium.sh >/dev/null
+stamp "the Chromium install check"
 
 # The Python package's tests: pytest against that CLI.
 start env SNOWROLL_CLI="$cli" bash scripts/test-python.sh --tests
@@ -114,6 +127,7 @@ cp "$report_dir"/browser-*.png target/browser-test/ 2>/dev/null || true
 bash .ci/serve-browser-test.sh "$cli" target/browser-test
 echo "browser test artifacts: target/browser-test/"
 echo "browser: 2 passed, 0 failed"
+stamp "paper and the browser tests"
 
 finish "$pytest_job" "$pytest_log" "scripts/test-python.sh --tests" show
 finish "$slurm" "$slurm_log" "scripts/test-slurm.sh" show
