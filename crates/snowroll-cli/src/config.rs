@@ -185,8 +185,13 @@ impl<'de> Deserialize<'de> for AnyCase<TurnMethod> {
             .find(|m| m.id().eq_ignore_ascii_case(name.trim()))
             .map(AnyCase)
             .ok_or_else(|| {
+                let ids: Vec<String> = TurnMethod::ALL
+                    .iter()
+                    .map(|m| format!("`{}`", m.id()))
+                    .collect();
                 D::Error::custom(format!(
-                    "unknown method `{name}`, expected `closed` or `ode`"
+                    "unknown method `{name}`, expected {}",
+                    ids.join(" or ")
                 ))
             })
     }

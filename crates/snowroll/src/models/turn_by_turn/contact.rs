@@ -100,14 +100,14 @@ impl TurnDynamics {
     /// so that a caller that uses one of the three computes only that one).
     #[inline(always)]
     fn orbit_jet(&self, theta: f64, omega0: f64) -> (Jet, Jet, Jet) {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = super::sin_cos(theta);
         let (js, jc) = Jet::sin_cos(s, c);
         self.orbit_sc(Jet::variable(theta), js, jc, omega0)
     }
 
     /// `(a, N, F)` at θ on the energy integral ([`Self::orbit_sc`]).
     fn orbit(&self, theta: f64, omega0: f64) -> (f64, f64, f64) {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = super::sin_cos(theta);
         self.orbit_sc(theta, s, c, omega0)
     }
 
@@ -277,7 +277,8 @@ impl TurnDynamics {
     /// refinement that found the smallest, where one did.
     ///
     /// Every local minimum of the samples (the first of a run of equal
-    /// ones) is refined by Brent's method over its two intervals, so a dip
+    /// ones) is refined over its two intervals ([`extremes::refine_min_jet`];
+    /// none is needed at θ = 0 where N rises, see below), so a dip
     /// of N below 0 that opens and closes between grid points is seen. In
     /// θ order, the first sample with N ≤ 0 or the first refined minimum
     /// with N ≤ 0 closes a bracket whose other end (the last grid point

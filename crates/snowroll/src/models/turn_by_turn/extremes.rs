@@ -168,8 +168,9 @@ const NEWTON_STEP_TOL: f64 = 1e-5;
 /// ([`Jet`]), given the samples `samples[j] = g(lo + j step)` and the
 /// index `i` of the smallest: from `hint` where it lies within the two
 /// intervals next to `i` (where a like extreme was found before), else from
-/// the vertex of the parabola through the samples around `i`, steps `−g′/g″` while `g″ > 0` and the steps stay
-/// within the two intervals next to `i`; once a step is below
+/// the vertex of the parabola through the samples around `i`, steps
+/// `−g′/g″` while `g″ > 0` and the steps stay within the two intervals next
+/// to `i`; once a step is below
 /// [`NEWTON_STEP_TOL`] the value is the local quadratic's minimum. Where
 /// Newton's method does not apply (g not convex there, a step leaving the
 /// bracket) Brent's method on the values takes over, to `x_tol`. An end of

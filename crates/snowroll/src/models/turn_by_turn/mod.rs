@@ -87,6 +87,13 @@ fn sin_cos(theta: f64) -> (f64, f64) {
     }
 }
 
+/// `r_k = r0 + k b`, the radius at the start of turn k (module doc,
+/// 0-based): one function for the run and for the turns it computes ahead,
+/// so that both have the same bits.
+fn turn_radius(r0: Meters, b: Meters, k: u64) -> Meters {
+    r0 + k as f64 * b
+}
+
 /// Speed just after the collision at the end of turn k, eq. (89) with
 /// `I_C,end = m_{k+1}(r_{k+1}²/2 + r_k²)` (eq. (85)) and
 /// `I_C,beg = 3m_{k+1}r_{k+1}²/2` (eq. (81)):

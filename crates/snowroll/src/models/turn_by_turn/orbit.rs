@@ -224,10 +224,8 @@ impl<'a> Orbit<'a> {
     /// (an early turn, a slow one near a stall).
     fn turn_time(&self) -> Option<f64> {
         let nodes = TurnNodes::get();
-        let (k, r) = (&self.turn.coeffs, self.turn.r);
-        // I = 3r²/2 + c₁θ − c₂ sin θ and E = I(0)θ̇₀² − 2W, W term by term
-        // ([`TurnDynamics::potential_terms`]), by node.
-        let (i0, i_th, i_sin) = (1.5 * r * r, k.c1, -k.c2);
+        // I ([`TurnDynamics::inertia_sc`]; its I′ is not used) and
+        // E = I(0)θ̇₀² − 2W, W term by term ([`TurnDynamics::potential_terms`]), by node.
         let [w_th, w_th2, w_vers, w_sin] = self.turn.potential_terms();
         let sum = |rule: &Rule| {
             // Four nodes at a time into four partial sums: independent
@@ -235,7 +233,8 @@ impl<'a> Orbit<'a> {
             let mut lanes = [0.0; 4];
             for q in &rule.quads {
                 for (l, lane) in lanes.iter_mut().enumerate() {
-                    let i = i0 + i_th * q.theta[l] + i_sin * q.sin[l];
+                    let cos = 1.0 - q.versine[l];
+                    let (i, _) = self.turn.inertia_sc(q.theta[l], q.sin[l], cos);
                     let pot = w_th * q.theta[l]
                         + w_th2 * q.theta2[l]
                         + w_vers * q.versine[l]

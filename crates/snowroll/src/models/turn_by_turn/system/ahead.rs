@@ -20,7 +20,7 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard, OnceLock};
 use super::{TurnSystem, TWO_PI};
 use crate::models::turn_by_turn::orbit::Orbit;
 use crate::models::turn_by_turn::{
-    after_collision, CollisionModel, Hints, TurnDynamics, TurnExtremes, TurnVariant,
+    after_collision, turn_radius, CollisionModel, Hints, TurnDynamics, TurnExtremes, TurnVariant,
 };
 use crate::units::Radians;
 
@@ -80,8 +80,7 @@ impl Ahead {
     }
 
     fn dynamics(&self, turn: u64) -> TurnDynamics {
-        // r_k as `TurnSystem::enter_turn` computes it.
-        let r = self.r0 + turn as f64 * self.b;
+        let r = turn_radius(self.r0, self.b, turn);
         TurnDynamics::new(self.variant, r, self.b, self.g_along, self.g_normal)
     }
 

@@ -11,8 +11,8 @@ pub(crate) use closed::run_closed;
 use std::f64::consts::PI;
 
 use super::{
-    after_collision, kinetic_energy_at_turn_start, CollisionModel, PivotImpact, TurnDynamics,
-    TurnExtremes, TurnVariant, TWO_PI,
+    after_collision, kinetic_energy_at_turn_start, turn_radius, CollisionModel, PivotImpact,
+    TurnDynamics, TurnExtremes, TurnVariant, TWO_PI,
 };
 
 use crate::scenario::Scenario;
@@ -235,7 +235,7 @@ impl TurnSystem {
     /// shift of the pivots) and the in-turn coefficients, in O(1).
     fn enter_turn(&mut self, k: u64) {
         let kf = k as f64;
-        let r = self.r0 + kf * self.b;
+        let r = turn_radius(self.r0, self.b, k);
         self.turn = k;
         self.x_start = 2.0 * PI * kf * self.r0 + kf * (kf - 1.0) * PI * self.b + self.pivot_shift;
         self.mass = PI * self.rho_l * r * r;
