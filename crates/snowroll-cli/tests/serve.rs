@@ -53,10 +53,7 @@ impl Server {
     }
 
     fn get(&self, path: &str) -> Reply {
-        request(
-            &self.addr,
-            &format!("GET {path} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n"),
-        )
+        request(&self.addr, &get(&self.addr, path))
     }
 }
 
@@ -82,6 +79,11 @@ impl Reply {
             .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&self.body)));
         v["error"].as_str().unwrap().to_string()
     }
+}
+
+/// A GET of `path` from the server at `addr`, closing the connection after.
+fn get(addr: &str, path: &str) -> String {
+    format!("GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\n\r\n")
 }
 
 /// Sends `raw` to `addr`; reads the whole answer (the server closes).
@@ -386,13 +388,16 @@ fn requests_over_a_limit_are_refused_before_any_run() {
     let body = "x".repeat(4096);
     let reply = request(
         &server.addr,
-        &format!("POST /api/simulate HTTP/1.1\r\nHost: x\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}", body.len()),
+        &format!("POST /api/simulate HTTP/1.1\r\nHost: {}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}", server.addr, body.len()),
     );
     assert_eq!(reply.status, 413);
     assert_eq!(
         request(
             &server.addr,
-            "DELETE /api/simulate HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n"
+            &format!(
+                "DELETE /api/simulate HTTP/1.1\r\nHost: {}\r\nConnection: close\r\n\r\n",
+                server.addr
+            )
         )
         .status,
         405
@@ -451,10 +456,7 @@ fn many_clients_at_once_are_all_answered_alike() {
                 (0..10)
                     .map(|i| {
                         let q = queries[(t + i) % queries.len()];
-                        let r = request(
-                            &addr,
-                            &format!("GET {q} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n"),
-                        );
+                        let r = request(&addr, &get(&addr, q));
                         (q, r)
                     })
                     .collect::<Vec<_>>()
@@ -481,7 +483,10 @@ fn a_slow_request_does_not_hold_up_the_others() {
     // A turn-by-turn run over 10^6 s: minutes of work, ended at the
     // server's limit (10 s) with 413.
     let slow = std::thread::spawn(move || {
-        request(&addr, "GET /api/simulate?model=turns&t_end=1e6&dt=1e5 HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+        request(
+            &addr,
+            &get(&addr, "/api/simulate?model=turns&t_end=1e6&dt=1e5"),
+        )
     });
     std::thread::sleep(Duration::from_millis(300));
     let start = Instant::now();
@@ -515,7 +520,15 @@ fn sigint_stops_the_server_with_success_and_frees_the_port() {
 #[test]
 fn a_host_that_is_not_loopback_is_warned_about() {
     let mut child = Command::new(bin())
-        .args(["serve", "--port", "0", "--host", "0.0.0.0"])
+        .args([
+            "serve",
+            "--port",
+            "0",
+            "--host",
+            "0.0.0.0",
+            "--allow-host",
+            "Teacher.local",
+        ])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -530,6 +543,23 @@ fn a_host_that_is_not_loopback_is_warned_about() {
         .read_line(&mut url)
         .unwrap();
     assert!(url.contains("http://0.0.0.0:"), "{url}");
+    // Every address, and the name given, is taken as the Host; other names
+    // are not. (The requests go to the loopback address.)
+    let word = url
+        .split_whitespace()
+        .find(|w| w.starts_with("http://"))
+        .unwrap();
+    let port = word.trim_end_matches('/').rsplit(':').next().unwrap();
+    let addr = format!("127.0.0.1:{port}");
+    for (host, status) in [
+        (format!("teacher.local:{port}"), 200),
+        (format!("192.168.1.5:{port}"), 200),
+        (format!("[fe80::1]:{port}"), 200),
+        (format!("evil.example:{port}"), 403),
+    ] {
+        let raw = format!("GET /api/params HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n");
+        assert_eq!(request(&addr, &raw).status, status, "{host}");
+    }
     let _ = Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status();
@@ -538,6 +568,13 @@ fn a_host_that_is_not_loopback_is_warned_about() {
     let out = cli(&["serve", "--host", "localhost-ish"]);
     assert!(!out.status.success());
     assert!(cli_error(&out).contains("is not an IP address"));
+    let out = cli(&["serve", "--allow-host", "evil.example:80"]);
+    assert!(!out.status.success());
+    assert!(
+        cli_error(&out).contains("without a port"),
+        "{}",
+        cli_error(&out)
+    );
 }
 
 #[test]
@@ -571,4 +608,509 @@ fn open_without_xdg_open_says_so() {
         note.contains("no xdg-open") && note.contains(addr),
         "{note}"
     );
+}
+
+// Hostile clients. Every one connects to the loopback address of a server
+// this test started on a port the system picked, and every loop is bounded
+// in count and in time. Each test names the finding it guards against (in
+// the server that tiny_http ran, before issue 34).
+
+/// The server's peak resident memory, KiB (`VmHWM`).
+fn peak_rss_kib(pid: u32) -> u64 {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
+    status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmHWM:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
+        .unwrap()
+}
+
+/// Open file descriptors of process `pid`.
+fn open_fds(pid: u32) -> usize {
+    std::fs::read_dir(format!("/proc/{pid}/fd"))
+        .unwrap()
+        .count()
+}
+
+/// The processes whose parent is `pid`.
+fn children_of(pid: u32) -> Vec<u32> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir("/proc").unwrap().flatten() {
+        let Ok(child) = entry.file_name().to_string_lossy().parse::<u32>() else {
+            continue;
+        };
+        let Ok(stat) = std::fs::read_to_string(format!("/proc/{child}/stat")) else {
+            continue;
+        };
+        // The fields after the command's name, which ends with the last ')'.
+        let rest = &stat[stat.rfind(')').unwrap() + 2..];
+        let ppid: u32 = rest.split(' ').nth(1).unwrap().parse().unwrap();
+        if ppid == pid {
+            out.push(child);
+        }
+    }
+    out
+}
+
+/// Whether process `pid` exists and is not a zombie.
+fn alive(pid: u32) -> bool {
+    std::fs::read_to_string(format!("/proc/{pid}/stat"))
+        .is_ok_and(|stat| !stat[stat.rfind(')').unwrap() + 2..].starts_with('Z'))
+}
+
+/// The status of the answer that `s` receives within `within`; `None` when
+/// the connection is closed (or reset) before one arrives.
+fn status_within(s: &mut TcpStream, within: Duration) -> Option<u16> {
+    s.set_read_timeout(Some(within)).unwrap();
+    let mut got = Vec::new();
+    let mut buf = [0u8; 4096];
+    while !got.windows(4).any(|w| w == b"\r\n\r\n") {
+        match s.read(&mut buf) {
+            Ok(0) | Err(_) => return None,
+            Ok(n) => got.extend_from_slice(&buf[..n]),
+        }
+    }
+    String::from_utf8_lossy(&got)
+        .split_whitespace()
+        .nth(1)
+        .and_then(|w| w.parse().ok())
+}
+
+/// Whether the server closes `s` within `within` (reading and dropping what
+/// it sends until then).
+fn closed_within(s: &mut TcpStream, within: Duration) -> bool {
+    let end = Instant::now() + within;
+    let mut buf = [0u8; 65536];
+    loop {
+        let left = end.saturating_duration_since(Instant::now());
+        if left.is_zero() {
+            return false;
+        }
+        s.set_read_timeout(Some(left)).unwrap();
+        match s.read(&mut buf) {
+            Ok(0) => return true,
+            Ok(_) => {}
+            Err(e) if e.kind() == std::io::ErrorKind::ConnectionReset => return true,
+            Err(_) => return false,
+        }
+    }
+}
+
+/// Writes `chunk` to `s` again and again, up to `most` bytes in all, until
+/// a write fails (the server closed); returns the bytes written.
+fn flood(s: &mut TcpStream, chunk: &[u8], most: usize) -> usize {
+    s.set_write_timeout(Some(Duration::from_secs(10))).unwrap();
+    let mut sent = 0;
+    while sent < most {
+        if s.write_all(chunk).is_err() {
+            break;
+        }
+        sent += chunk.len();
+    }
+    sent
+}
+
+#[test]
+fn a_declared_body_is_never_allocated() {
+    // Before: `Content-Length: 1000000000000000` on a GET made the server
+    // allocate that much and abort (SIGABRT).
+    let server = Server::start();
+    let pid = server.child.id();
+    for (method, length) in [("GET", "1000000000000000"), ("POST", "1000000000000000000")] {
+        let start = Instant::now();
+        let reply = request(
+            &server.addr,
+            &format!(
+                "{method} /api/params HTTP/1.1\r\nHost: {}\r\nContent-Length: {length}\r\n\r\n",
+                server.addr
+            ),
+        );
+        assert_eq!(reply.status, 413, "{method} {length}");
+        assert!(reply.error().contains("1024 bytes"), "{}", reply.error());
+        // Answered from the header alone; 2 s is far above the milliseconds
+        // that takes and far below reading (or allocating) a petabyte.
+        assert!(
+            start.elapsed() < Duration::from_secs(2),
+            "{:?}",
+            start.elapsed()
+        );
+    }
+    // A length past what hyper counts (2^64 - 1): refused by hyper as a
+    // head it cannot take (431).
+    let reply = request(
+        &server.addr,
+        &format!(
+            "GET /api/params HTTP/1.1\r\nHost: {}\r\nContent-Length: 18446744073709551615\r\n\r\n",
+            server.addr
+        ),
+    );
+    assert_eq!(reply.status, 431);
+    // A body of no declared length (chunked) is refused the same way.
+    let reply = request(
+        &server.addr,
+        &format!(
+            "GET /api/params HTTP/1.1\r\nHost: {}\r\nTransfer-Encoding: chunked\r\n\r\n400\r\n",
+            server.addr
+        ),
+    );
+    assert_eq!(reply.status, 413);
+    assert_eq!(server.get("/api/params").status, 200);
+    // The server's whole peak: 64 MiB is several times its size at rest
+    // (about 10 MiB), and a millionth of what was declared.
+    let peak = peak_rss_kib(pid);
+    assert!(peak < 64 * 1024, "peak {peak} KiB");
+}
+
+#[test]
+fn a_head_past_16_kib_is_refused_while_it_is_read() {
+    // Before: 200 MB of headers grew the server to 2.7 GB and it aborted.
+    let server = Server::start();
+    let pid = server.child.id();
+    // A head of 20 KiB, sent whole: 431 once 16 KiB are in.
+    let pad = format!("X-Pad: {}\r\n", "a".repeat(1000));
+    let mut s = TcpStream::connect(&server.addr).unwrap();
+    let head = format!(
+        "GET /api/params HTTP/1.1\r\nHost: {}\r\n{}\r\n",
+        server.addr,
+        pad.repeat(20)
+    );
+    s.write_all(head.as_bytes()).unwrap();
+    assert_eq!(status_within(&mut s, Duration::from_secs(5)), Some(431));
+    // Too many header lines, each short: 431 too.
+    let mut s = TcpStream::connect(&server.addr).unwrap();
+    let head = format!(
+        "GET /api/params HTTP/1.1\r\nHost: {}\r\n{}\r\n",
+        server.addr,
+        "X-A: b\r\n".repeat(100)
+    );
+    s.write_all(head.as_bytes()).unwrap();
+    assert_eq!(status_within(&mut s, Duration::from_secs(5)), Some(431));
+    // 200 MB of headers that never end: the server closes the connection
+    // after reading its 16 KiB; the flood stops at the first refused write,
+    // after what the two sockets' buffers hold (a few MB on loopback).
+    let mut s = TcpStream::connect(&server.addr).unwrap();
+    s.write_all(format!("GET / HTTP/1.1\r\nHost: {}\r\n", server.addr).as_bytes())
+        .unwrap();
+    let sent = flood(&mut s, pad.repeat(64).as_bytes(), 200 << 20);
+    assert!(sent < 64 << 20, "{sent} bytes of headers were taken");
+    assert_eq!(server.get("/api/params").status, 200);
+    let peak = peak_rss_kib(pid);
+    assert!(peak < 64 * 1024, "peak {peak} KiB");
+}
+
+#[test]
+fn a_request_line_past_8_kib_is_refused_while_it_is_read() {
+    // Before: the 8 KiB limit was checked only once the whole line was in
+    // memory, however long.
+    let server = Server::start();
+    let pid = server.child.id();
+    let mut s = TcpStream::connect(&server.addr).unwrap();
+    s.write_all(b"GET /api/simulate?model=energy&times=")
+        .unwrap();
+    let sent = flood(&mut s, "1,".repeat(32 * 1024).as_bytes(), 200 << 20);
+    assert!(
+        sent < 64 << 20,
+        "{sent} bytes of one request line were taken"
+    );
+    // A line of 9 KiB, ended: 414 with the limit named.
+    let long = format!("/api/params?x={}", "a".repeat(9 * 1024));
+    let reply = server.get(&long);
+    assert_eq!(reply.status, 414);
+    assert!(reply.error().contains("8192"), "{}", reply.error());
+    // A line of 8 KiB less a few bytes: read, and answered (400: `x` is no key).
+    let fits = format!("/api/simulate?x={}", "a".repeat(8 * 1024 - 20));
+    assert_eq!(server.get(&fits).status, 400);
+    let peak = peak_rss_kib(pid);
+    assert!(peak < 64 * 1024, "peak {peak} KiB");
+}
+
+#[test]
+fn idle_connections_past_the_limit_do_not_lock_anyone_out() {
+    // Before: about 1,450 idle connections took every thread, and every
+    // later connection was refused for good.
+    let server = Server::start();
+    let pid = server.child.id();
+    let idle: Vec<TcpStream> = (0..1500)
+        .filter_map(|_| {
+            TcpStream::connect_timeout(&server.addr.parse().unwrap(), Duration::from_secs(3)).ok()
+        })
+        .collect();
+    assert!(idle.len() > 1000, "only {} connections opened", idle.len());
+    // A client that asks again on 503 (as told by Retry-After) is answered
+    // within seconds, while the 1,500 stay open on this side.
+    let start = Instant::now();
+    let mut answered = None;
+    for _ in 0..50 {
+        let mut s = TcpStream::connect(&server.addr).unwrap();
+        s.write_all(get(&server.addr, "/api/params").as_bytes())
+            .unwrap();
+        match status_within(&mut s, Duration::from_secs(3)) {
+            Some(200) => {
+                answered = Some(start.elapsed());
+                break;
+            }
+            Some(503) | None => std::thread::sleep(Duration::from_millis(200)),
+            Some(other) => panic!("status {other}"),
+        }
+    }
+    let answered = answered.expect("never answered");
+    // The limit's wait is 1 s; 10 s is far below "for good".
+    assert!(answered < Duration::from_secs(10), "{answered:?}");
+    // The server holds a bounded number of them: 256 connections and 64
+    // waiting, plus its own files.
+    let fds = open_fds(pid);
+    assert!(fds < 256 + 64 + 32, "{fds} open files");
+    drop(idle);
+    assert_eq!(server.get("/api/params").status, 200);
+}
+
+#[test]
+fn slow_and_silent_clients_are_timed_out_and_hold_up_no_one() {
+    // Before: four idle half-sent requests blocked every other request (no
+    // read or write timeouts).
+    let server = Server::start();
+    let addr = server.addr.clone();
+    let mut half: Vec<TcpStream> = Vec::new();
+    for partial in [
+        format!("GET /api/params HTTP/1.1\r\nHost: {addr}\r\n"),
+        "GET /api/par".to_string(),
+        String::new(),
+    ] {
+        for _ in 0..4 {
+            let mut s = TcpStream::connect(&addr).unwrap();
+            s.write_all(partial.as_bytes()).unwrap();
+            half.push(s);
+        }
+    }
+    // A client that asks for answers and reads none of them: 40 CSVs of
+    // 10 001 rows (1.5 MB each) on one connection, ten times what the two
+    // sockets' buffers hold.
+    let mut deaf = TcpStream::connect(&addr).unwrap();
+    let big = "/api/simulate?model=energy&dt=0.01&t_end=100&format=csv";
+    let ask = format!("GET {big} HTTP/1.1\r\nHost: {addr}\r\n\r\n").repeat(40);
+    deaf.write_all(ask.as_bytes()).unwrap();
+    let started = Instant::now();
+    // Meanwhile everyone else is answered at once: 2 s each is far above the
+    // milliseconds these take, and the half-sent requests never end.
+    for _ in 0..10 {
+        let t = Instant::now();
+        assert_eq!(server.get("/api/params").status, 200);
+        assert!(t.elapsed() < Duration::from_secs(2), "{:?}", t.elapsed());
+    }
+    // The half-sent and silent ones are closed at the head timeout (5 s).
+    for s in &mut half {
+        let left = Duration::from_secs(8).saturating_sub(started.elapsed());
+        assert!(closed_within(s, left), "a half-sent request is still open");
+    }
+    let closed = started.elapsed();
+    assert!(closed > Duration::from_secs(4), "closed early: {closed:?}");
+    // The deaf client is closed 10 s after its answers stopped moving.
+    std::thread::sleep(Duration::from_secs(11).saturating_sub(started.elapsed()));
+    let mut got = 0usize;
+    let mut buf = vec![0u8; 1 << 16];
+    deaf.set_read_timeout(Some(Duration::from_secs(5))).unwrap();
+    let ended = loop {
+        match deaf.read(&mut buf) {
+            Ok(0) => break true,
+            Ok(n) => got += n,
+            Err(e) if e.kind() == std::io::ErrorKind::ConnectionReset => break true,
+            Err(_) => break false,
+        }
+    };
+    assert!(ended, "the deaf client's connection is still open");
+    let one = server.get(&format!("{big}")).body.len();
+    assert!(got < 40 * one, "{got} bytes: every answer was sent");
+}
+
+#[test]
+fn static_pages_stay_fast_while_runs_wait_in_turn() {
+    // Before: 16 clients looping on legal 10 s runs made `GET /` wait 30 to
+    // 40 s, and SIGINT no longer stopped a server whose workers were held.
+    let mut server = Server::start();
+    let pid = server.child.id();
+    let addr = server.addr.clone();
+    // 72 runs of 10 s each (ended at the limit): 4 run, 64 wait in turn, 4
+    // are told at once to come back.
+    let slow = "/api/simulate?model=turns&t_end=1e6&dt=1e5";
+    let clients: Vec<_> = (0..72)
+        .map(|_| {
+            let addr = addr.clone();
+            std::thread::spawn(move || request(&addr, &get(&addr, slow)))
+        })
+        .collect();
+    std::thread::sleep(Duration::from_millis(1500));
+    let runs = children_of(pid);
+    assert_eq!(runs.len(), 4, "runs at once: {runs:?}");
+    let mut slowest = Duration::ZERO;
+    for _ in 0..10 {
+        for path in ["/", "/api/params", "/style.css"] {
+            let t = Instant::now();
+            assert_eq!(server.get(path).status, 200);
+            slowest = slowest.max(t.elapsed());
+        }
+    }
+    // Milliseconds each on a quiet machine; 1 s leaves room for a loaded one.
+    assert!(slowest < Duration::from_secs(1), "{slowest:?}");
+    let reply = server.get("/api/simulate?model=energy");
+    assert_eq!(reply.status, 503);
+    assert!(
+        reply.headers.contains("Retry-After: 5"),
+        "{}",
+        reply.headers
+    );
+    // SIGINT: every run ended, every client answered or closed, the port
+    // freed, within 2 s.
+    let t = Instant::now();
+    let status = server.interrupt();
+    let stopped = t.elapsed();
+    assert!(status.success(), "{status:?}");
+    assert!(stopped < Duration::from_secs(2), "{stopped:?}");
+    for run in runs {
+        assert!(!alive(run), "run {run} outlived the server");
+    }
+    let mut busy = 0;
+    for c in clients {
+        let reply = c.join().unwrap();
+        assert_eq!(
+            reply.status,
+            503,
+            "{}",
+            String::from_utf8_lossy(&reply.body)
+        );
+        busy += usize::from(reply.error().contains("ask again"));
+    }
+    assert_eq!(busy, 4, "refused at once");
+}
+
+#[test]
+fn sigint_closes_idle_and_half_sent_connections_within_2_s() {
+    // Before: with half-sent requests holding the workers, SIGINT no longer
+    // stopped the server.
+    let mut server = Server::start();
+    let addr = server.addr.clone();
+    let mut open = Vec::new();
+    for partial in ["", "GET / HTTP/1.1\r\n", "GET /api/para"] {
+        for _ in 0..4 {
+            let mut s = TcpStream::connect(&addr).unwrap();
+            s.write_all(partial.as_bytes()).unwrap();
+            open.push(s);
+        }
+    }
+    // And one kept alive after an answer.
+    let mut kept = TcpStream::connect(&addr).unwrap();
+    kept.write_all(format!("GET /api/params HTTP/1.1\r\nHost: {addr}\r\n\r\n").as_bytes())
+        .unwrap();
+    assert_eq!(status_within(&mut kept, Duration::from_secs(5)), Some(200));
+    open.push(kept);
+    std::thread::sleep(Duration::from_millis(300));
+    let t = Instant::now();
+    let status = server.interrupt();
+    assert!(status.success(), "{status:?}");
+    assert!(t.elapsed() < Duration::from_secs(2), "{:?}", t.elapsed());
+    for s in &mut open {
+        assert!(closed_within(s, Duration::from_secs(1)));
+    }
+}
+
+#[test]
+fn a_nul_in_a_value_gets_400() {
+    // Before: a NUL in a value got 500 (the run could not be started).
+    let server = Server::start();
+    for path in [
+        "/api/simulate?model=energy&alpha_deg=30%00",
+        "/api/simulate?model=energy%00&alpha_deg=30",
+        "/api/turns?model=turns&alpha%00_deg=30",
+    ] {
+        let reply = server.get(path);
+        assert_eq!(reply.status, 400, "{path}");
+        assert!(reply.error().contains("NUL"), "{path}: {}", reply.error());
+    }
+    // A raw NUL byte in the line or a header: not HTTP, 400.
+    for raw in [
+        format!(
+            "GET /api/params?a=\0 HTTP/1.1\r\nHost: {}\r\n\r\n",
+            server.addr
+        ),
+        format!(
+            "GET /api/params HTTP/1.1\r\nHost: {}\r\nX-A: \0\r\n\r\n",
+            server.addr
+        ),
+    ] {
+        let mut s = TcpStream::connect(&server.addr).unwrap();
+        s.write_all(raw.as_bytes()).unwrap();
+        assert_eq!(status_within(&mut s, Duration::from_secs(5)), Some(400));
+    }
+}
+
+#[test]
+fn http_2_and_other_versions_get_505() {
+    // Before: an `HTTP/2.0` request line got no answer.
+    let server = Server::start();
+    let host = &server.addr;
+    for raw in [
+        format!("GET / HTTP/2.0\r\nHost: {host}\r\n\r\n"),
+        format!("GET /api/params HTTP/2\r\nHost: {host}\r\n\r\n"),
+        format!("GET / HTTP/3.0\r\nHost: {host}\r\n\r\n"),
+        // HTTP/2's preface (a client that assumes HTTP/2).
+        "PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n".to_string(),
+    ] {
+        let reply = request(&server.addr, &raw);
+        assert_eq!(reply.status, 505, "{raw:?}");
+        assert!(reply.error().contains("HTTP/1.1"), "{}", reply.error());
+    }
+    // HTTP/1.0, which needs no Host: answered.
+    assert_eq!(
+        request(&server.addr, "GET /api/params HTTP/1.0\r\n\r\n").status,
+        200
+    );
+    // Not HTTP at all: 400.
+    let mut s = TcpStream::connect(&server.addr).unwrap();
+    s.write_all(b"HELLO\r\n\r\n").unwrap();
+    assert_eq!(status_within(&mut s, Duration::from_secs(5)), Some(400));
+}
+
+#[test]
+fn the_host_header_must_name_this_server() {
+    // Before: any Host was served, so a page on another site could reach the
+    // API through DNS rebinding.
+    let server = Server::start();
+    let port = server.addr.rsplit(':').next().unwrap().to_string();
+    for host in [
+        format!("localhost:{port}"),
+        format!("127.0.0.1:{port}"),
+        format!("[::1]:{port}"),
+        "localhost".to_string(),
+    ] {
+        let raw = format!("GET /api/params HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n");
+        assert_eq!(request(&server.addr, &raw).status, 200, "{host}");
+    }
+    for host in [
+        format!("evil.example:{port}"),
+        "evil.example".to_string(),
+        format!("localhost.evil.example:{port}"),
+        // Loopback, but another port: not this server.
+        "localhost:1".to_string(),
+    ] {
+        let raw = format!(
+            "GET /api/simulate?model=energy HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n"
+        );
+        let reply = request(&server.addr, &raw);
+        assert_eq!(reply.status, 403, "{host}");
+        assert!(reply.error().contains("DNS rebinding"), "{}", reply.error());
+    }
+    // An absolute target names the host too.
+    let raw = format!(
+        "GET http://evil.example:{port}/api/params HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n"
+    );
+    assert_eq!(request(&server.addr, &raw).status, 403);
+    // HTTP/1.1 without a Host, or with two: 400.
+    let reply = request(
+        &server.addr,
+        "GET /api/params HTTP/1.1\r\nConnection: close\r\n\r\n",
+    );
+    assert_eq!(reply.status, 400);
+    let raw = format!(
+        "GET /api/params HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nHost: evil.example\r\nConnection: close\r\n\r\n"
+    );
+    assert_eq!(request(&server.addr, &raw).status, 400);
 }

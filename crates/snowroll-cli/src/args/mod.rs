@@ -85,6 +85,20 @@ pub enum Command {
     /// (`/api/simulate`, `/api/turns`, `/api/models`, `/api/params`).
     #[cfg(feature = "serve")]
     Serve(ServeArgs),
+    /// `snowroll serve` in a build without it: says which feature to enable.
+    #[cfg(not(feature = "serve"))]
+    #[command(hide = true, disable_help_flag = true)]
+    Serve(ServeMissingArgs),
+}
+
+/// Whatever follows `snowroll serve` in a build without the `serve`
+/// feature (never read: the command says how to get it).
+#[cfg(not(feature = "serve"))]
+#[derive(Debug, Clone, PartialEq, clap::Args)]
+pub struct ServeMissingArgs {
+    /// Any flags.
+    #[arg(trailing_var_arg = true, allow_hyphen_values = true, hide = true)]
+    pub rest: Vec<std::ffi::OsString>,
 }
 
 /// Default port of `snowroll serve`.
@@ -99,9 +113,16 @@ pub struct ServeArgs {
     #[arg(long, value_name = "PORT", default_value_t = SERVE_PORT_DEFAULT)]
     pub port: u16,
     /// Address to listen on. Anything but a loopback address (127.0.0.1,
-    /// ::1) serves other machines too, with a warning.
+    /// ::1) serves other machines too, with a warning. Requests must name
+    /// the server (`Host`) as localhost, 127.0.0.1, [::1] or this address;
+    /// with 0.0.0.0 or :: any IP address.
     #[arg(long, value_name = "IP", default_value = "127.0.0.1")]
     pub host: String,
+    /// A host name (or IPv4 address) requests may also name the server by,
+    /// such as teacher.local with --host 0.0.0.0; repeatable. Requests for
+    /// other names are refused (403), a guard against DNS rebinding.
+    #[arg(long, value_name = "NAME")]
+    pub allow_host: Vec<String>,
     /// Open the page in a browser (with xdg-open, where there is one).
     #[arg(long)]
     pub open: bool,

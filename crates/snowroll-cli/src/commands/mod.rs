@@ -33,5 +33,11 @@ pub fn run(args: Args) -> Result<()> {
         Command::Merge(a) => merge::run(&a),
         #[cfg(feature = "serve")]
         Command::Serve(a) => crate::serve::run(&a),
+        #[cfg(not(feature = "serve"))]
+        Command::Serve(_) => anyhow::bail!(
+            "this snowroll was built without `snowroll serve`: rebuild it with the `serve` \
+             feature (cargo install --path crates/snowroll-cli --features serve; it is in the \
+             default features)"
+        ),
     }
 }

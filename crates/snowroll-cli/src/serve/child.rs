@@ -6,15 +6,19 @@
 //! a call in this process, is what bounds a request's work: a run whose
 //! length is not known before it starts (every step sampled, or a coarse
 //! grid over a long turn-by-turn run) is ended at [`Limits::seconds`] or at
-//! [`Limits::answer_bytes`] of output, and its memory goes with it.
+//! [`Limits::answer_bytes`] of output, and its memory goes with it; it is
+//! ended too when its client goes away or the server stops.
 
-use std::io::{self, Read};
+use std::io;
 use std::path::Path;
-use std::process::{Child, Command, ExitStatus, Stdio};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex, PoisonError};
-use std::thread;
-use std::time::{Duration, Instant};
+use std::process::{ExitStatus, Stdio};
+use std::time::Duration;
+
+use tokio::io::{AsyncRead, AsyncReadExt};
+use tokio::process::Command;
+use tokio::sync::watch;
+
+use super::conn::{race, stopped, Either};
 
 /// The most of a child's stderr kept (its messages are a few lines).
 const STDERR_KEPT: u64 = 64 * 1024;
@@ -28,6 +32,8 @@ pub enum Ended {
     TimedOut,
     /// It was ended when its output passed `answer_bytes`.
     TooLong,
+    /// It was ended because the server is stopping.
+    Stopped,
 }
 
 /// What one run gave.
@@ -50,67 +56,74 @@ pub struct Limits {
     pub answer_bytes: usize,
 }
 
-/// Runs `exe` with `args` within `limits`.
+/// Runs `exe` with `args` within `limits`, ended early when `stop` turns
+/// true. The child is killed and reaped before this returns, and killed
+/// too if this future is dropped (its client went away).
 ///
 /// # Errors
 /// When the child cannot be started or its pipes read.
-pub fn run(exe: &Path, args: &[String], limits: Limits) -> io::Result<Ran> {
+pub async fn run(
+    exe: &Path,
+    args: &[String],
+    limits: Limits,
+    stop: watch::Receiver<bool>,
+) -> io::Result<Ran> {
     let mut child = Command::new(exe)
         .args(args)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
+        .kill_on_drop(true)
         .spawn()?;
     let out = child.stdout.take();
     let err = child.stderr.take();
-    let errors = thread::spawn(move || {
+    // The messages are read beside the answer, so that a child writing much
+    // to stderr never blocks on a full pipe.
+    let errors = tokio::spawn(async move {
         let mut kept = Vec::new();
         if let Some(mut err) = err {
-            let _ = (&mut err).take(STDERR_KEPT).read_to_end(&mut kept);
-            let _ = io::copy(&mut err, &mut io::sink());
+            let _ = (&mut err).take(STDERR_KEPT).read_to_end(&mut kept).await;
+            let _ = tokio::io::copy(&mut err, &mut tokio::io::sink()).await;
         }
         String::from_utf8_lossy(&kept).into_owned()
     });
-    let child = Arc::new(Mutex::new(child));
-    let timed_out = Arc::new(AtomicBool::new(false));
-    let done = Arc::new(AtomicBool::new(false));
-    let watchdog = {
-        let (child, timed_out, done) = (
-            Arc::clone(&child),
-            Arc::clone(&timed_out),
-            Arc::clone(&done),
-        );
-        let deadline = Instant::now() + Duration::from_secs_f64(limits.seconds);
-        thread::spawn(move || watch(&child, deadline, &timed_out, &done))
-    };
     let mut stdout = Vec::new();
-    let read = match out {
-        Some(out) => out
-            .take(limits.answer_bytes as u64 + 1)
-            .read_to_end(&mut stdout)
-            .map(drop),
-        None => Ok(()),
-    };
-    let too_long = stdout.len() > limits.answer_bytes;
-    let status = {
-        let mut c = child.lock().unwrap_or_else(PoisonError::into_inner);
-        if too_long || read.is_err() {
-            let _ = c.kill();
+    let limit = limits.answer_bytes as u64 + 1;
+    let read = async {
+        match out {
+            Some(out) => read_limited(out, limit, &mut stdout).await,
+            None => Ok(()),
         }
-        c.wait()
     };
-    done.store(true, Ordering::SeqCst);
-    watchdog.thread().unpark();
-    let _ = watchdog.join();
-    let stderr = errors.join().unwrap_or_default();
-    read?;
-    let ended = if timed_out.load(Ordering::SeqCst) {
-        Ended::TimedOut
-    } else if too_long {
-        Ended::TooLong
-    } else {
-        Ended::Exited(status?)
+    let deadline = tokio::time::sleep(Duration::from_secs_f64(limits.seconds));
+    let ended = match race(race(read, deadline), stopped(stop)).await {
+        Either::Left(Either::Left(read)) => {
+            read?;
+            if stdout.len() > limits.answer_bytes {
+                Some(Ended::TooLong)
+            } else {
+                None
+            }
+        }
+        Either::Left(Either::Right(())) => Some(Ended::TimedOut),
+        Either::Right(()) => Some(Ended::Stopped),
     };
+    let ended = match ended {
+        Some(ended) => {
+            // Killed and reaped (an error: it had already exited).
+            let _ = child.kill().await;
+            ended
+        }
+        // Its output is closed: it is exiting. Bounded all the same.
+        None => match tokio::time::timeout(Duration::from_secs(2), child.wait()).await {
+            Ok(status) => Ended::Exited(status?),
+            Err(_) => {
+                let _ = child.kill().await;
+                Ended::TimedOut
+            }
+        },
+    };
+    let stderr = errors.await.unwrap_or_default();
     Ok(Ran {
         ended,
         stdout,
@@ -118,24 +131,13 @@ pub fn run(exe: &Path, args: &[String], limits: Limits) -> io::Result<Ran> {
     })
 }
 
-/// Ends the child at `deadline` unless `done` is set first.
-fn watch(child: &Mutex<Child>, deadline: Instant, timed_out: &AtomicBool, done: &AtomicBool) {
-    loop {
-        if done.load(Ordering::SeqCst) {
-            return;
-        }
-        let now = Instant::now();
-        if now >= deadline {
-            let mut c = child.lock().unwrap_or_else(PoisonError::into_inner);
-            // Still running (not yet reaped): end it.
-            if matches!(c.try_wait(), Ok(None)) {
-                timed_out.store(true, Ordering::SeqCst);
-                let _ = c.kill();
-            }
-            return;
-        }
-        thread::park_timeout(deadline - now);
-    }
+/// Reads `from` to its end or to `limit` bytes into `into`.
+async fn read_limited(
+    from: impl AsyncRead + Unpin,
+    limit: u64,
+    into: &mut Vec<u8>,
+) -> io::Result<()> {
+    from.take(limit).read_to_end(into).await.map(drop)
 }
 
 /// The message of a failed run: from its first `error: ` line to the first

@@ -1,41 +1,44 @@
-//! `snowroll serve`: the classroom explorer. One page (`assets/`, built into
-//! the binary) and a JSON API on a local HTTP server.
+//! `snowroll serve`: the classroom explorer. One page ([`files`], built
+//! into the binary) and a JSON API on a local HTTP server.
 //!
-//! The HTTP crate is `tiny_http`: synchronous, four small dependencies, no
-//! async runtime. Requests are answered by a fixed pool of [`WORKERS`]
-//! threads, each running at most one child at a time ([`child`]), so that
-//! one slow request holds one worker and the others keep answering; every
-//! request is checked against the [`limits`] before any run.
+//! The HTTP/1.1 server is hyper's, on a single-threaded tokio runtime: the
+//! work of a request is a child process ([`child`]), so the server itself
+//! only reads requests and writes answers, and one thread does that for
+//! every connection; a slow run or a slow client holds no thread. Every
+//! bound on what a client can make the server hold or do is in [`limits`]:
+//! what a connection may send and how slowly ([`conn`]), and what a
+//! request may run ([`respond`], [`query`]).
 //!
 //! | request | answer |
 //! |---|---|
-//! | `GET /` | the page (`/app.js`, `/style.css` beside it) |
+//! | `GET /` | the page (and the other [`files`]) |
 //! | `GET /api/params` | the parameter table: keys, units, kinds, defaults, ranges, help ([`limits::params_json`]) |
 //! | `GET /api/models` | `snowroll models --format json` |
 //! | `GET /api/simulate?model=...&alpha_deg=...` | `snowroll simulate --format json` (or `format=csv`) |
 //! | `GET /api/turns?...` | `snowroll turns --format json` (or `format=csv`) |
 //!
 //! A bad value is answered with 400 and `{"error": "<the command's message>"}`,
-//! a request over a limit with 413.
+//! a request over a limit with 413 (414, 431), a busy server with 503 and
+//! `Retry-After`, a `Host` that is not this server's with 403.
 
 mod child;
+mod conn;
+mod files;
 mod limits;
 mod query;
 mod respond;
 
 use std::io::Write;
 use std::net::{IpAddr, SocketAddr};
-use std::path::Path;
 use std::sync::{Arc, OnceLock};
-use std::thread;
 
-use anyhow::{anyhow, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
+use tokio::sync::watch;
 
 use crate::args::ServeArgs;
 use crate::console::{self, report};
-pub use limits::WORKERS;
 
-/// What a signal does while the server runs: unblocks its workers.
+/// What a signal does while the server runs: tells it to stop.
 static ON_SIGNAL: OnceLock<Box<dyn Fn() + Send + Sync>> = OnceLock::new();
 
 /// Stops the server if one is running (SIGINT, SIGTERM, SIGHUP); returns
@@ -58,58 +61,57 @@ pub fn run(args: &ServeArgs) -> Result<()> {
             args.host
         )
     })?;
+    for name in &args.allow_host {
+        if name.is_empty() || name.contains(|c: char| c == '/' || c == ':' || c.is_whitespace()) {
+            bail!(
+                "--allow-host `{}` is not a host name or IPv4 address (such as teacher.local \
+                 or 192.168.1.5, without a port)",
+                name.chars().take(100).collect::<String>()
+            );
+        }
+    }
     if !ip.is_loopback() {
         report!(
             "warning: --host {ip} serves this page and its API to other machines on the network, \
              with no password; 127.0.0.1 (the default) serves this machine only"
         );
     }
-    let server = tiny_http::Server::http(SocketAddr::new(ip, args.port))
-        .map_err(|e| anyhow!("cannot listen on {ip} port {}: {e}", args.port))?;
-    let server = Arc::new(server);
-    let addr = server
-        .server_addr()
-        .to_ip()
-        .ok_or_else(|| anyhow!("the server has no IP address"))?;
-    let url = match addr {
-        SocketAddr::V6(a) => format!("http://[{}]:{}/", a.ip(), a.port()),
-        SocketAddr::V4(a) => format!("http://{a}/"),
-    };
     let exe = std::env::current_exe().context("cannot find the snowroll program to run")?;
-    {
-        let server = Arc::clone(&server);
+    let runtime = tokio::runtime::Builder::new_current_thread()
+        .enable_io()
+        .enable_time()
+        .build()
+        .context("cannot start the server's event loop")?;
+    let (stop_tx, stop) = watch::channel(false);
+    let (shed_tx, shed) = watch::channel(0u64);
+    runtime.block_on(async move {
+        let listener = tokio::net::TcpListener::bind(SocketAddr::new(ip, args.port))
+            .await
+            .map_err(|e| anyhow!("cannot listen on {ip} port {}: {e}", args.port))?;
+        let addr = listener.local_addr()?;
+        let url = match addr {
+            SocketAddr::V6(a) => format!("http://[{}]:{}/", a.ip(), a.port()),
+            SocketAddr::V4(a) => format!("http://{a}/"),
+        };
+        let hosts = respond::Hosts::new(ip, addr.port(), &args.allow_host);
+        let server = Arc::new(respond::Server::new(exe, hosts, stop, shed));
         let _ = ON_SIGNAL.set(Box::new(move || {
-            for _ in 0..=WORKERS {
-                server.unblock();
-            }
+            let _ = stop_tx.send(true);
         }));
-    }
-    let mut out = console::Stdout;
-    let _ = writeln!(out, "snowroll serve: {url} (Ctrl-C stops it)");
-    let _ = out.flush();
-    if args.open {
-        open_browser(&url);
-    }
-    let workers: Vec<_> = (0..WORKERS)
-        .map(|i| {
-            let (server, exe) = (Arc::clone(&server), exe.clone());
-            thread::Builder::new()
-                .name(format!("serve-{i}"))
-                .spawn(move || work(&server, &exe))
-        })
-        .collect::<std::io::Result<_>>()?;
-    for w in workers {
-        let _ = w.join();
-    }
+        let mut out = console::Stdout;
+        let _ = writeln!(out, "snowroll serve: {url} (Ctrl-C stops it)");
+        let _ = out.flush();
+        if args.open {
+            open_browser(&url);
+        }
+        conn::accept_loop(listener, server, shed_tx).await;
+        Ok::<(), anyhow::Error>(())
+    })?;
+    // Whatever is still open (an answer being sent past the grace time) is
+    // dropped with the runtime; a run still going is killed with it.
+    drop(runtime);
     report!("snowroll serve: stopped");
     Ok(())
-}
-
-/// Answers requests until the server is unblocked.
-fn work(server: &tiny_http::Server, exe: &Path) {
-    while let Ok(request) = server.recv() {
-        respond::answer(request, exe);
-    }
 }
 
 /// Opens `url` with `xdg-open` when there is one, else says so.
@@ -128,7 +130,7 @@ fn open_browser(url: &str) {
         .spawn();
     match spawned {
         // Reaped when it ends (xdg-open returns once the browser is asked).
-        Ok(mut child) => drop(thread::spawn(move || child.wait())),
+        Ok(mut child) => drop(std::thread::spawn(move || child.wait())),
         Err(e) => report!("note: --open: xdg-open failed ({e}); open {url} in a browser"),
     }
 }

@@ -93,7 +93,8 @@ pub fn decode(text: &str) -> Option<String> {
 /// The pairs of `query` (the text after `?`), decoded, each key once.
 ///
 /// # Errors
-/// A bad escape, or a key given twice.
+/// A bad escape, a NUL character (no command-line argument can hold one),
+/// or a key given twice.
 pub fn pairs(query: &str) -> Result<Vec<(String, String)>, Refused> {
     let mut out: Vec<(String, String)> = Vec::new();
     for part in query.split('&').filter(|p| !p.is_empty()) {
@@ -104,6 +105,12 @@ pub fn pairs(query: &str) -> Result<Vec<(String, String)>, Refused> {
                 "`{shown}` is not URL-encoded text (a bad %-escape, or not UTF-8)"
             )));
         };
+        if k.contains('\0') || v.contains('\0') {
+            let shown: String = k.chars().filter(|c| *c != '\0').take(100).collect();
+            return Err(Refused::Bad(format!(
+                "`{shown}` holds a NUL character (%00); no parameter takes one"
+            )));
+        }
         if out.iter().any(|(seen, _)| *seen == k) {
             return Err(Refused::Bad(format!("`{k}` is given twice; give it once")));
         }
@@ -274,5 +281,14 @@ mod tests {
         assert!((r.g_along.unwrap() - expected).abs() < 1e-12);
         let bad = command_line(Endpoint::Simulate, "model=energy&alpha_deg=1%zz");
         assert!(matches!(bad, Err(Refused::Bad(m)) if m.contains("not URL-encoded")));
+        // A NUL, in a value or a key: refused here (a command line cannot
+        // hold one), not left to fail at the run.
+        for query in ["model=energy&alpha_deg=1%00", "model=energy&alpha%00deg=1"] {
+            let bad = command_line(Endpoint::Simulate, query);
+            assert!(
+                matches!(&bad, Err(Refused::Bad(m)) if m.contains("NUL")),
+                "{query}: {bad:?}"
+            );
+        }
     }
 }
