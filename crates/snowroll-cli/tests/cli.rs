@@ -1786,3 +1786,20 @@ fn a_newline_in_a_sweep_path_keeps_the_command_on_one_line() {
     };
     assert_eq!(rows(&fs::read_to_string(&again).unwrap()), rows(&text));
 }
+
+/// In a build without the `serve` feature (`--no-default-features`),
+/// `snowroll serve` names the feature to enable, whatever flags follow,
+/// rather than clap's "unrecognized subcommand".
+#[cfg(not(feature = "serve"))]
+#[test]
+fn serve_without_its_feature_names_the_feature() {
+    for args in [&["serve"][..], &["serve", "--port", "0", "--open"]] {
+        snowroll()
+            .args(args)
+            .assert()
+            .failure()
+            .code(1)
+            .stderr(predicate::str::contains("the `serve` feature"))
+            .stderr(predicate::str::contains("unrecognized").not());
+    }
+}
