@@ -1153,3 +1153,20 @@ fn the_host_header_must_name_this_server() {
     );
     assert_eq!(request(&server.addr, &raw).status, 400);
 }
+
+#[test]
+fn a_client_that_closes_its_side_after_asking_is_answered() {
+    // `nc -N` and other simple clients end their side once the request is
+    // sent; the answer still comes (hyper's default drops the request).
+    let server = Server::start();
+    for path in ["/api/params", "/api/simulate?model=energy&t_end=1"] {
+        let mut s = TcpStream::connect(&server.addr).unwrap();
+        s.write_all(get(&server.addr, path).as_bytes()).unwrap();
+        s.shutdown(std::net::Shutdown::Write).unwrap();
+        assert_eq!(
+            status_within(&mut s, Duration::from_secs(10)),
+            Some(200),
+            "{path}"
+        );
+    }
+}

@@ -175,6 +175,13 @@ async fn serve_connection(mut stream: TcpStream, server: Arc<Server>, place: Own
         .max_headers(MAX_HEADERS)
         // `X-Snowroll-G-Along`, as the server has always written it.
         .title_case_headers(true)
+        // A client that closes its side after its request (as `nc -N`
+        // does) still gets its answer. (Without this hyper drops the
+        // request when it reads that end, a static page's too; the cost is
+        // that a run whose client has gone is not ended until it ends or
+        // reaches its 10 s, since hyper reads nothing more while it
+        // answers.)
+        .half_close(true)
         .serve_connection(io, service);
     let mut conn = pin!(conn);
     if let Either::Right(()) = race(conn.as_mut(), stopped_or_shed(stop, shed)).await {
