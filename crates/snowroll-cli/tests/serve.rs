@@ -1,8 +1,12 @@
-//! `snowroll serve` (feature `serve`): the API answers with the bytes of the
-//! command line's `simulate`, `turns` and `models`; bad values get 400 and
-//! the command's own message; requests over a limit are refused before any
-//! run; many clients at once are all answered, and a slow request does not
-//! hold up the others; SIGINT stops the server with success.
+//! `snowroll serve` (feature `serve`, in the default build): the API answers
+//! with the bytes of the command line's `simulate`, `turns` and `models`;
+//! bad values get 400 and the command's own message; requests over a limit
+//! are refused before any run; many clients at once are all answered, and a
+//! slow request does not hold up the others; SIGINT and SIGTERM stop the
+//! server with success. Then hostile clients, one test for each finding of
+//! issue 34 (limits enforced while reading, timeouts, bounded connections
+//! and runs, the Host check, NUL, HTTP/2), on raw sockets to the loopback
+//! address of a server started on a port the system picked.
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
@@ -43,9 +47,14 @@ impl Server {
 
     /// Sends SIGINT and waits for the exit.
     fn interrupt(&mut self) -> std::process::ExitStatus {
+        self.signal("-INT")
+    }
+
+    /// Sends `signal` (`-INT`, `-TERM`) and waits for the exit.
+    fn signal(&mut self, signal: &str) -> std::process::ExitStatus {
         let pid = self.child.id().to_string();
         assert!(Command::new("kill")
-            .args(["-INT", &pid])
+            .args([signal, &pid])
             .status()
             .unwrap()
             .success());
@@ -830,12 +839,22 @@ fn idle_connections_past_the_limit_do_not_lock_anyone_out() {
     // later connection was refused for good.
     let server = Server::start();
     let pid = server.child.id();
-    let idle: Vec<TcpStream> = (0..1500)
+    // 1,500, or fewer where this process may open fewer files (leaving 300
+    // for the other tests of this binary); at least 400 all the same, more
+    // than the 256 + 64 the server holds.
+    let limits = std::fs::read_to_string("/proc/self/limits").unwrap();
+    let most_files: usize = limits
+        .lines()
+        .find(|l| l.starts_with("Max open files"))
+        .and_then(|l| l.split_whitespace().nth(3)?.parse().ok())
+        .unwrap_or(1024);
+    let count = 1500.min(most_files.saturating_sub(300));
+    let idle: Vec<TcpStream> = (0..count)
         .filter_map(|_| {
             TcpStream::connect_timeout(&server.addr.parse().unwrap(), Duration::from_secs(3)).ok()
         })
         .collect();
-    assert!(idle.len() > 1000, "only {} connections opened", idle.len());
+    assert!(idle.len() >= 400, "only {} connections opened", idle.len());
     // A client that asks again on 503 (as told by Retry-After) is answered
     // within seconds, while the 1,500 stay open on this side.
     let start = Instant::now();
@@ -1025,6 +1044,14 @@ fn static_pages_stay_fast_while_runs_wait_in_turn() {
 fn sigint_closes_idle_and_half_sent_connections_within_2_s() {
     // Before: with half-sent requests holding the workers, SIGINT no longer
     // stopped the server.
+    for signal in ["-INT", "-TERM"] {
+        stops_within_2_s_with_connections_open(signal);
+    }
+}
+
+/// Opens idle, half-sent and kept-alive connections, sends `signal`, and
+/// checks the server exits with success within 2 s, closing them all.
+fn stops_within_2_s_with_connections_open(signal: &str) {
     let mut server = Server::start();
     let addr = server.addr.clone();
     let mut open = Vec::new();
@@ -1043,11 +1070,15 @@ fn sigint_closes_idle_and_half_sent_connections_within_2_s() {
     open.push(kept);
     std::thread::sleep(Duration::from_millis(300));
     let t = Instant::now();
-    let status = server.interrupt();
-    assert!(status.success(), "{status:?}");
-    assert!(t.elapsed() < Duration::from_secs(2), "{:?}", t.elapsed());
+    let status = server.signal(signal);
+    assert!(status.success(), "{signal}: {status:?}");
+    assert!(
+        t.elapsed() < Duration::from_secs(2),
+        "{signal}: {:?}",
+        t.elapsed()
+    );
     for s in &mut open {
-        assert!(closed_within(s, Duration::from_secs(1)));
+        assert!(closed_within(s, Duration::from_secs(1)), "{signal}");
     }
 }
 
