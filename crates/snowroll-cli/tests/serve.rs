@@ -1095,6 +1095,19 @@ fn a_nul_in_a_value_gets_400() {
         assert_eq!(reply.status, 400, "{path}");
         assert!(reply.error().contains("NUL"), "{path}: {}", reply.error());
     }
+    // A value that does not decode (a bad escape, bytes that are not UTF-8).
+    for path in [
+        "/api/simulate?model=energy&alpha_deg=3%zz",
+        "/api/simulate?model=energy&alpha_deg=3%FF",
+    ] {
+        let reply = server.get(path);
+        assert_eq!(reply.status, 400, "{path}");
+        assert!(
+            reply.error().contains("not URL-encoded"),
+            "{path}: {}",
+            reply.error()
+        );
+    }
     // A raw NUL byte in the line or a header: not HTTP, 400.
     for raw in [
         format!(
