@@ -20,7 +20,7 @@ snowroll=$1 page=$2
 mkdir -p "$3"
 out=$(cd "$3" && pwd)
 chromium=$("$here/install-chromium.sh") || fail "Chromium is not available"
-command -v node >/dev/null || fail "node is not installed (apt-get install nodejs)"
+node=$("$here/install-node.sh") || fail "node is not available"
 
 # playwright-core 1.57.0: no browser download (it drives the Chromium above).
 node_dir=${CARGO_TARGET_DIR:-$root/target}/explorer-node
@@ -31,5 +31,5 @@ if [ ! -f "$node_dir/node_modules/playwright-core/package.json" ]; then
         || fail "npm could not install playwright-core"
 fi
 PLAYWRIGHT_CORE=$node_dir/node_modules/playwright-core \
-    timeout 300 node "$root/scripts/explorer/browser-test.js" --chromium "$chromium" --cli "$snowroll" \
+    timeout 300 "$node" "$root/scripts/explorer/browser-test.js" --chromium "$chromium" --cli "$snowroll" \
     --page "$page" --serve --shots "$out"

@@ -12,7 +12,7 @@
 const Plots = (function () {
   // Each run's line: solid for the first, then dashes, so that curves that
   // coincide (eq. (4) and Loney's fn. 4) are both seen.
-  const DASHES = [[], [7, 4], [2, 3], [9, 3, 2, 3], [4, 4], [1, 2]];
+  const DASHES = [[], [8, 5], [2, 5], [10, 4, 2, 4], [4, 6], [1, 4]];
   const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'stall', stuck: 'stuck' };
   const MAX_POINTS = 2000;
 
@@ -171,8 +171,11 @@ const Plots = (function () {
       }
     }
     series.forEach((s) => {
+      // The solid line wide and a little light, the dashed ones over it.
       ctx.strokeStyle = s.color;
-      ctx.lineWidth = s.dash.length ? 1.8 : 2.6;
+      ctx.globalAlpha = s.dash.length ? 1 : 0.7;
+      ctx.lineWidth = s.dash.length ? 2.2 : 3.2;
+      ctx.lineCap = 'round';
       ctx.setLineDash(s.dash);
       ctx.beginPath();
       let started = false;
@@ -183,6 +186,7 @@ const Plots = (function () {
       }
       ctx.stroke();
       ctx.setLineDash([]);
+      ctx.globalAlpha = 1;
     });
     ctx.restore();
     // Events: a dashed red line at the time, its name, and a note when the
@@ -211,7 +215,7 @@ const Plots = (function () {
       const dash = s.dash.join(' ');
       span.innerHTML = '<svg width="28" height="10" aria-hidden="true">' +
         (s.lo ? '<rect x="0" y="0" width="28" height="10" fill="' + s.color + '" fill-opacity="0.16"></rect>' : '') +
-        '<line x1="0" y1="5" x2="28" y2="5" stroke="' + s.color + '" stroke-width="' + (s.dash.length ? 1.8 : 2.6) +
+        '<line x1="0" y1="5" x2="28" y2="5" stroke="' + s.color + '" stroke-linecap="round" stroke-width="' + (s.dash.length ? 2.2 : 3.2) +
         '" stroke-dasharray="' + dash + '"></line></svg>';
       span.appendChild(document.createTextNode(s.label + (s.note ? ' (' + s.note + ')' : '')));
       el.appendChild(span);

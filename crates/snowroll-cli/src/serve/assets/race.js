@@ -76,7 +76,8 @@ const Race = (function () {
       ctx.lineTo(cx + rad * Math.cos(s.angle), cy + rad * Math.sin(s.angle));
       ctx.stroke();
       ctx.fillStyle = '#1c2733';
-      ctx.fillText(run.label, bx + length * cos + 8, by + length * sin);
+      // The name past the slope's foot, clear of a body that has arrived.
+      ctx.fillText(run.label, bx + length * cos + LANE + 6, by + length * sin);
       const mark = MARKS[run.stop.reason];
       if (mark && t >= run.stop.t_s) {
         ctx.fillStyle = '#b42318';
@@ -106,7 +107,9 @@ const Race = (function () {
     // 220 to 560 px.
     const wide = canvas.clientWidth || 900;
     const drop = (wide - 2 * MARGIN - labelRoom(wide)) * Math.tan(alpha);
-    canvas.style.height = Math.round(Math.min(560, Math.max(220, TOP + ok.length * LANE + MARGIN + drop))) + 'px';
+    // At most 0.8 of its width (a phone: the readout stays near).
+    const tallest = Math.max(220, Math.min(560, 0.8 * wide));
+    canvas.style.height = Math.round(Math.min(tallest, Math.max(220, TOP + ok.length * LANE + MARGIN + drop))) + 'px';
     const w = canvas.clientWidth || 900, h = canvas.clientHeight || 300;
     canvas.width = Math.round(w * ratio);
     canvas.height = Math.round(h * ratio);
