@@ -132,7 +132,7 @@ async function checkPage(browser, base, name) {
 
 // At a phone's width: no sideways scrolling; race and readout first.
 async function checkPhone(browser, base, name, shot) {
-  const { context, page, problems } = await openPage(browser, base + '?models=torque-cm,loney,turns&alpha_deg=65', 400, 900);
+  const { context, page, problems } = await openPage(browser, base + '?models=torque-cm,loney,turns&alpha_deg=65' + (shot ? '#end' : ''), 400, 900);
   const m = await page.evaluate(() => ({
     scroll: document.documentElement.scrollWidth, client: document.documentElement.clientWidth,
     race: document.getElementById('race').getBoundingClientRect().top,
@@ -156,8 +156,9 @@ async function checkPhone(browser, base, name, shot) {
 }
 
 async function desktopShot(browser, base, shot) {
-  const { context, page } = await openPage(browser, base + '?models=torque-cm,loney,turns&ball=1&alpha_deg=65', 1400, 1500);
-  await page.waitForSelector('#race[data-done="1"]', { timeout: 20000 }); // the race plays for at most 8 s
+  // #end: the race drawn at its end at once (it plays for up to 8 s).
+  const { context, page } = await openPage(browser, base + '?models=torque-cm,loney,turns&ball=1&alpha_deg=65#end', 1400, 1500);
+  await page.waitForSelector('#race[data-done="1"]', { timeout: 20000 });
   await page.screenshot({ path: shot, fullPage: false });
   await context.close();
 }

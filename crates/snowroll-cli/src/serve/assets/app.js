@@ -250,7 +250,7 @@ function buildForm() {
     box.appendChild(label);
   }
   $('ball-too').addEventListener('change', changed);
-  $('replay').addEventListener('click', race);
+  $('replay').addEventListener('click', () => race(false));
 }
 
 const isTurn = (id) => state.models.some((m) => m.id === id && m.turn_model);
@@ -377,7 +377,7 @@ async function refresh() {
   Plots.drawAll($('plots'), answers);
   downloads();
   commands();
-  race();
+  race(location.hash === '#end');
   const drawn = performance.now();
   state.timing = { compute_ms: computed - state.started, draw_ms: drawn - computed };
   if (performance.getEntriesByName('snowroll-input', 'mark').length > 0) {
@@ -391,9 +391,10 @@ async function refresh() {
   document.documentElement.dataset.refreshed = String(seq);
 }
 
-function race() {
+// Plays the race (`atEnd`: shows its last frame at once).
+function race(atEnd) {
   const alpha = parseFloat(given('alpha_deg') || state.inputs.alpha_deg.p.default_text) * Math.PI / 180;
-  Race.start($('race'), $('race-clock'), state.runs.filter((r) => !r.error), alpha);
+  Race.start($('race'), $('race-clock'), state.runs.filter((r) => !r.error), alpha, atEnd === true);
 }
 
 function readout() {

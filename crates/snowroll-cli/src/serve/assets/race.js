@@ -96,7 +96,7 @@ const Race = (function () {
 
   // Plays `runs` ({label, color, track, stop, firstHop}) on `canvas` at slope angle
   // alpha (radians); `clock` shows the time. The race lasts at most 8 s.
-  function start(canvas, clock, runs, alpha) {
+  function start(canvas, clock, runs, alpha, atEnd) {
     if (frame !== null) cancelAnimationFrame(frame);
     frame = null;
     canvas.dataset.done = '';
@@ -122,7 +122,9 @@ const Race = (function () {
     }
     const tEnd = Math.max(...ok.map((r) => r.stop.t_s));
     const speed = Math.max(1, tEnd / 8);
-    const t0 = performance.now();
+    // atEnd: the race's last frame at once (an address ending in #end, for
+    // screenshots).
+    const t0 = performance.now() - (atEnd ? (tEnd / speed) * 1000 : 0);
     function step(now) {
       const t = Math.min(tEnd, ((now - t0) / 1000) * speed);
       draw(ctx, w, h, ok, alpha, t);
