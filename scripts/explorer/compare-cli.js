@@ -67,6 +67,9 @@ for (const m of turnModels) {
   cases.push(['turns', { model: m, turns: '2000', alpha_deg: '45' }]);
   cases.push(['turns', { model: m, alpha_deg: '65' }]);
   cases.push(['turns', { model: m, collision: 'pivot', turns: '50' }]);
+  // A slip in the middle of the run (F/N grows turn by turn at 60 degrees).
+  cases.push(['simulate', { model: m, alpha_deg: '60', mu: '2' }]);
+  cases.push(['turns', { model: m, alpha_deg: '60', mu: '2' }]);
 }
 // Refused by both: a bad angle, a key the command does not take.
 cases.push(['simulate', { model: 'energy', alpha_deg: '95' }]);
