@@ -5,7 +5,9 @@
 # --strict` (fails when any verdict differs from the one the claims table
 # expects) and the browser test of the report it writes (installs
 # Debian's chromium first if it is missing; needs root or sudo for that) and
-# of `snowroll serve`'s page (.ci/serve-browser-test.sh), then
+# of the explorer (scripts/build-explorer.sh, its WebAssembly against the
+# CLI, and .ci/explorer-browser-test.sh: the page from file:// and under
+# `snowroll serve`), then
 # scripts/check-guide.py (links of the docs, the user guide's examples).
 #
 # On 2 cores the order is chosen so that waiting overlaps work (issue 19,
@@ -104,6 +106,14 @@ cli=$target/debug/snowroll
 bash .ci/install-chromium.sh >/dev/null
 stamp "the Chromium install check"
 
+# The explorer's one-file page (the library in WebAssembly; installs the
+# wasm32 target first if missing), built beside the Python and Slurm tests,
+# which mostly wait.
+explorer_dir=$(mktemp -d)
+files+=("$explorer_dir")
+start bash scripts/build-explorer.sh "$explorer_dir/explorer.html"
+explorer_job=$job explorer_log=$log
+
 # The Python package's tests: pytest against that CLI.
 start env SNOWROLL_CLI="$cli" bash scripts/test-python.sh --tests
 pytest_job=$job pytest_log=$log
@@ -121,10 +131,13 @@ bash .ci/browser-test.sh "$report_dir"
 # Keep the screenshots as artifacts of the run.
 mkdir -p target/browser-test
 cp "$report_dir"/browser-*.png target/browser-test/ 2>/dev/null || true
-# `snowroll serve`: the page in the same browser; the slider's move, the
-# plots and the readout against the API (the binary above has the feature:
-# `cargo test --all-features` built it).
-bash .ci/serve-browser-test.sh "$cli" target/browser-test
+# The explorer: the WebAssembly module's outputs against the CLI's, byte
+# for byte (every model, both bodies, losses, CSV and JSON), then the page
+# in the same browser from file:// and under `snowroll serve` (the binary
+# above has the feature: `cargo test --all-features` built it).
+finish "$explorer_job" "$explorer_log" "scripts/build-explorer.sh" show
+"$(bash .ci/install-node.sh)" scripts/explorer/compare-cli.js "$cli" "$target/wasm32-unknown-unknown/release/snowroll_wasm.wasm"
+bash .ci/explorer-browser-test.sh "$cli" "$explorer_dir/explorer.html" target/browser-test
 echo "browser test artifacts: target/browser-test/"
 echo "browser: 2 passed, 0 failed"
 stamp "paper and the browser tests"

@@ -12,11 +12,18 @@ use snowroll_report::CLAIMS;
 fn paper_writes_the_report_with_every_claim_as_expected() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("report");
+    // An explorer page as scripts/build-explorer.sh writes one (its module
+    // here a stand-in: paper copies the file, it does not run it).
+    let explorer = dir.path().join("built.html");
+    let page = "<!DOCTYPE html>\n<script>\nconst SNOWROLL_WASM = 'AGFzbQ==';\n</script>\n";
+    fs::write(&explorer, page).unwrap();
     // 10^4 turns keep the test fast and are enough for the long-run
     // claims' tolerances; --strict makes any unexpected verdict a failure.
     let assert = cargo_bin_cmd!("snowroll")
         .args(["paper", "--quiet", "--strict", "--turns", "10000", "--out"])
         .arg(&out)
+        .arg("--explorer")
+        .arg(&explorer)
         .assert()
         .success()
         .stdout(predicate::str::contains("every verdict as expected"));
@@ -30,6 +37,11 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
     }
     let html = fs::read_to_string(out.join("report.html")).unwrap();
     assert!(html.contains("<svg"));
+    // The explorer beside the report, the same bytes, linked from it.
+    assert_eq!(fs::read_to_string(out.join("explorer.html")).unwrap(), page);
+    assert!(html.contains("<a href=\"explorer.html\">"));
+    let md = fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(md.contains("[explorer.html](explorer.html)"));
     // Self-contained: nothing is loaded from elsewhere.
     for external in [
         "src=\"http",
@@ -228,7 +240,40 @@ fn paper_strict_fails_on_an_unexpected_verdict_but_still_writes_the_report() {
         .assert()
         .failure()
         .stderr(predicate::str::contains("--strict").and(predicate::str::contains("inconclusive")));
-    assert!(out.join("report.html").is_file());
+    // Without --explorer: no link to a page that is not there, but how to
+    // build or serve the explorer.
+    let html = fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(!html.contains("href=\"explorer.html\"") && !out.join("explorer.html").exists());
+    assert!(html.contains("bash scripts/build-explorer.sh explorer.html"));
+}
+
+#[test]
+fn paper_refuses_an_explorer_that_is_not_one_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("report");
+    let bad = dir.path().join("page.html");
+    fs::write(&bad, "<!DOCTYPE html><p>a page</p>").unwrap();
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--turns", "10", "--out"])
+        .arg(&out)
+        .arg("--explorer")
+        .arg(&bad)
+        .assert()
+        .failure()
+        .stderr(
+            predicate::str::contains("page.html")
+                .and(predicate::str::contains("build-explorer.sh")),
+        );
+    assert!(!out.exists());
+    cargo_bin_cmd!("snowroll")
+        .args(["paper", "--quiet", "--turns", "10", "--out"])
+        .arg(&out)
+        .arg("--explorer")
+        .arg(dir.path().join("missing.html"))
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("missing.html"));
+    assert!(!out.exists());
 }
 
 /// Issue 22, item 5: at 85° no turn of the turn model completes, and the

@@ -19,6 +19,7 @@ use snowroll::{Losses, Settings, TurnMethod};
 mod error;
 mod finite;
 mod ledger;
+pub mod notes;
 mod row;
 mod trajectory;
 mod turns;

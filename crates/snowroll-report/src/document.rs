@@ -155,6 +155,10 @@ pub struct Report {
     /// The animations: at most one of the log and one of the snowball
     /// ([`Animation::name`] tells them apart).
     pub animations: Vec<Animation>,
+    /// Whether the explorer (`scripts/build-explorer.sh`) is written beside
+    /// the report as `explorer.html` (`snowroll paper --explorer`): the
+    /// report links it; otherwise it says how to build or serve it.
+    pub explorer: bool,
 }
 
 /// A figure drawn in both formats.
@@ -175,6 +179,7 @@ impl Report {
             tables: Vec::new(),
             figures: Vec::new(),
             animations: Vec::new(),
+            explorer: false,
         }
     }
 

@@ -381,6 +381,7 @@ fn small_report() -> Report {
             .param("snow_depth", 0.01),
         ],
         animations: vec![Animation::from_trajectory(&anim_run, &s, 300).unwrap()],
+        explorer: false,
     }
 }
 

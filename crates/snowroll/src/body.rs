@@ -6,6 +6,7 @@
 //! body through [`Body`] (from [`crate::Scenario::body`]), so that a new
 //! shape is one more variant here.
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 
 use serde::{Deserialize, Serialize};
@@ -196,7 +197,7 @@ impl Body {
         let (r0, b) = (self.r0, self.snow_depth);
         match self.ball_swath() {
             Swath::Diameter => (r0 * r0 + b * x / PI).sqrt(),
-            Swath::Fixed(w) => (r0 * r0 * r0 + 3.0 * b * w * x / (4.0 * PI)).cbrt(),
+            Swath::Fixed(w) => (r0 * r0 * r0 + 3.0 * b * w * x / (4.0 * PI)).cbrt_p(),
             Swath::Chord => self.chord_radius(x),
         }
     }
@@ -236,7 +237,7 @@ impl Body {
         }
         let s0 = (b * (2.0 * r0 - b)).sqrt();
         let f0 = 0.4 * s0.powi(5) + 4.0 * b * b * s0.powi(3) / 3.0 + 2.0 * b.powi(4) * s0;
-        let s = (2.5 * (4.0 * b.powi(4) * x / PI + f0)).powf(0.2);
+        let s = (2.5 * (4.0 * b.powi(4) * x / PI + f0)).powf_p(0.2);
         let mut r = (s * s / b + b) / 2.0;
         for _ in 0..200 {
             let slope = 4.0 * PI * r * r / (b * self.swath(r));

@@ -129,6 +129,7 @@ pub mod models;
 pub mod number;
 pub mod params;
 pub mod physics;
+mod portable;
 mod quadrature;
 pub mod scenario;
 pub mod sweep;

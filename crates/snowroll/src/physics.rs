@@ -3,6 +3,7 @@
 //! (`docs/snowball-and-losses.md` §1.1–1.2), and the body's growth law of
 //! [`Body`](crate::body::Body) for a scenario.
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 
 use crate::scenario::{Scenario, Shape, Swath};
@@ -118,8 +119,8 @@ pub fn potential_energy(s: &Scenario, x: Meters) -> Joules {
     let r3_minus_r03 = (b * x / PI) / (r + r0) * (r * r + r * r0 + r0 * r0);
     rho * l
         * g
-        * ((PI * r3_minus_r03 + b * b * x / 2.0) * alpha.cos()
-            - (b * x * x / 2.0 + PI * r0 * r0 * x) * alpha.sin())
+        * ((PI * r3_minus_r03 + b * b * x / 2.0) * alpha.cos_p()
+            - (b * x * x / 2.0 + PI * r0 * r0 * x) * alpha.sin_p())
 }
 
 /// Mechanical energy `E = T + V` of eq. (11) (zero for a start from rest).

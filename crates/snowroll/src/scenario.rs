@@ -1,5 +1,6 @@
 //! The physical set-up: slope, snow, log. Validated once, SI inside.
 
+use crate::portable::Portable as _;
 use serde::{Deserialize, Serialize};
 
 use crate::body::Body;
@@ -312,11 +313,11 @@ impl Scenario {
     }
     /// G = g sin alpha, the slope component of gravity, m/s².
     pub fn g_along(&self) -> MetersPerSecondSquared {
-        self.g * self.alpha.sin()
+        self.g * self.alpha.sin_p()
     }
     /// C = g cos alpha, the normal component of gravity, m/s².
     pub fn g_normal(&self) -> MetersPerSecondSquared {
-        self.g * self.alpha.cos()
+        self.g * self.alpha.cos_p()
     }
     /// The body's shape.
     pub fn shape(&self) -> Shape {

@@ -153,6 +153,10 @@ pub struct PaperArgs {
     #[arg(long)]
     pub strict: bool,
 
+    /// The explorer built by `bash scripts/build-explorer.sh FILE.html`, copied beside the report as explorer.html and linked from it [default: none: the report says how to build or serve it]
+    #[arg(long, value_name = "FILE.html")]
+    pub explorer: Option<PathBuf>,
+
     /// The scenario every claim is judged on (the flags of `simulate`;
     /// the defaults where none is given). Claims whose check needs the
     /// default scenario say so in their verdict.

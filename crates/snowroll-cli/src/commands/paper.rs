@@ -5,6 +5,7 @@
 //! the claims table expects (after writing the report, so it can be read).
 
 use std::io::Write;
+use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -25,15 +26,17 @@ pub fn run(args: &PaperArgs) -> Result<()> {
     // Check --out and stdout (where the claims table goes) before the long
     // computation, so that a bad path or a closed stdout fails at once.
     console::check_stdout().context("writing the claims table to stdout")?;
+    let explorer = args.explorer.as_deref().map(read_explorer).transpose()?;
     let staged = StagedDir::open(&args.out)?;
     let scenario = scenario_of(args)?;
     let lab = Lab::new(scenario, args.turns);
     let bar = progress_bar(args.quiet)?;
-    let report = build_paper_report(&lab, &mut |p| {
+    let mut report = build_paper_report(&lab, &mut |p| {
         bar.set_position(p.done as u64);
         bar.set_message(p.label.to_string());
     })
     .context("building the report")?;
+    report.explorer = explorer.is_some();
     bar.set_message("writing files");
     let written = report
         .write_to(staged.path())
@@ -45,6 +48,11 @@ pub fn run(args: &PaperArgs) -> Result<()> {
             other => other.into(),
         })
         .with_context(|| format!("writing the report to {}", args.out.display()))?;
+    if let Some(page) = &explorer {
+        let path = staged.path().join(EXPLORER);
+        std::fs::write(&path, page)
+            .with_context(|| format!("writing {}", args.out.join(EXPLORER).display()))?;
+    }
     staged.commit()?;
     bar.finish_and_clear();
     let tally = print_claims(&report.claims)?;
@@ -63,6 +71,25 @@ pub fn run(args: &PaperArgs) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// The explorer's name in the report directory.
+const EXPLORER: &str = "explorer.html";
+
+/// The page of `--explorer`, read before the long computation: an explorer
+/// built by scripts/build-explorer.sh (it holds the library in WebAssembly),
+/// else an error naming the file and how to build one.
+fn read_explorer(path: &Path) -> Result<Vec<u8>> {
+    let page = std::fs::read(path).with_context(|| format!("--explorer {}", path.display()))?;
+    let marker: &[u8] = b"const SNOWROLL_WASM = '";
+    if !page.starts_with(b"<!DOCTYPE html>") || !page.windows(marker.len()).any(|w| w == marker) {
+        bail!(
+            "--explorer {}: not an explorer page built by `bash scripts/build-explorer.sh FILE.html` \
+             (no WebAssembly module inlined)",
+            path.display()
+        );
+    }
+    Ok(page)
 }
 
 /// The scenario of the flags given (the defaults for the others). The

@@ -3,8 +3,8 @@
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
     default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
-    Stop, StopReason, TurnState,
 };
+use snowroll_io::notes::{stop_note, times_note};
 use snowroll_io::{RunParams, TrajectoryWriter};
 
 use snowroll::trajectory::Collected;
@@ -228,75 +228,4 @@ fn options(a: &SimulateArgs) -> Result<SimOptions> {
         sampling,
         a.turns,
     )?)
-}
-
-/// How many requested times were not written because the run stopped
-/// before them (times after `t_end` are refused before the run).
-fn times_note(rows: u64, stop: Stop, opts: &SimOptions) -> Option<String> {
-    let Sampling::Times(times) = &opts.sampling else {
-        return None;
-    };
-    let missing = times.len().saturating_sub(rows as usize);
-    (missing > 0).then(|| {
-        format!(
-            "{missing} of the {} requested times are after the stop at t = {} s and were not written",
-            times.len(),
-            format_number(stop.t_s)
-        )
-    })
-}
-
-/// One line for stderr when the run ended before its end time, or reached
-/// it short of the turns asked for.
-fn stop_note(
-    model: ModelKind,
-    stop: Stop,
-    last_turn: Option<TurnState>,
-    scenario: &Scenario,
-    opts: &SimOptions,
-) -> Option<String> {
-    if stop.reason == StopReason::EndTime {
-        let (wanted, last) = (opts.turns?, last_turn?);
-        return Some(format!(
-            "reached t_end = {} s in turn {} (0-based) of the {wanted} asked for; \
-             raise --t-end for more",
-            format_number(opts.t_end),
-            last.turn
-        ));
-    }
-    let mut note = format!(
-        "run stopped at {}: {}",
-        stop.place(),
-        stop.reason.describe()
-    );
-    if stop.reason == StopReason::DoesNotStart {
-        // The run's own body, swath and losses set the threshold.
-        let threshold = model.stall_threshold_in(scenario, &opts.losses);
-        match threshold.map(|t| t.slope.to_degrees()) {
-            Some(deg) if deg < 89.9999 => note.push_str(&format!(
-                "; from rest this model needs alpha > {deg:.4} degrees"
-            )),
-            Some(_) => {
-                note.push_str("; with this snow, radius and losses it cannot start on any slope")
-            }
-            None => {}
-        }
-    }
-    match stop.reason {
-        StopReason::StepLimit => {
-            note.push_str("; a looser --rtol or a shorter --t-end needs fewer steps");
-        }
-        StopReason::RowLimit => note.push_str(&format!(
-            " ({}); raise --max-rows, or sample with {}",
-            opts.max_rows,
-            // A grid run can only coarsen its grid; a step-by-step run can take one.
-            if matches!(opts.sampling, Sampling::Every(_)) {
-                "a coarser --dt"
-            } else {
-                "--dt"
-            }
-        )),
-        _ => {}
-    }
-    Some(note)
 }

@@ -6,8 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
-    StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
+    default_atol, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions, TurnMethod,
+    TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -81,7 +81,9 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
             )))
         }
     };
-    params.notes = stop_note(&end, wanted, opts.t_end).into_iter().collect();
+    params.notes = snowroll_io::notes::turns_stop_note(&end, wanted, opts.t_end)
+        .into_iter()
+        .collect();
     let written = writer.finish(&end, &params.notes).map(drop);
     written
         .map_err(anyhow::Error::from)
@@ -167,27 +169,6 @@ fn warnings(model: ModelKind, s: &Scenario, opts: &SimOptions, method: TurnMetho
         report!("warning: {w}");
     }
     warnings
-}
-
-/// One line for stderr when the run ended before the turns asked for.
-fn stop_note(end: &TurnRunEnd, wanted: u64, t_end: f64) -> Option<String> {
-    let stop = end.stop;
-    if stop.reason == StopReason::Turns {
-        return None;
-    }
-    let mut note = format!(
-        "run stopped at {}: {}, after {} of the {wanted} turns asked for",
-        stop.place(),
-        stop.reason.describe(),
-        end.summary.turns
-    );
-    if stop.reason == StopReason::EndTime {
-        note.push_str(&format!(
-            " (t_end = {} s; raise --t-end for more)",
-            format_number(t_end)
-        ));
-    }
-    Some(note)
 }
 
 /// The long-run statistics for people: overall means, the last decade,

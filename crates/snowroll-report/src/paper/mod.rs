@@ -139,6 +139,7 @@ pub fn build_paper_report(
             .chain([contact_figure, regime])
             .collect(),
         animations,
+        explorer: false,
     })
 }
 

@@ -7,6 +7,7 @@
 
 use super::{OdeSystem, Tolerances};
 use crate::error::{ParamError, SimError};
+use crate::portable::Portable as _;
 
 // Hairer's DOP853 controller constants (his defaults).
 /// Safety factor on the predicted step.
@@ -61,7 +62,7 @@ pub(super) fn initial_step<S: OdeSystem<N>, const N: usize>(
     let h1 = if der12 <= 1e-15 {
         (h * 1e-3).max(1e-6)
     } else {
-        (0.01 / der12).powf(1.0 / 8.0)
+        (0.01 / der12).powf_p(1.0 / 8.0)
     };
     let guess = (100.0 * h).min(h1).min(tol.max_step);
     // Hairer's formulae overflow when f or y dwarf the tolerances (e.g.

@@ -18,6 +18,7 @@
 //!   models the late-turn limit `μ = 4 tan α/(3(4 − tan²α))` (early turns
 //!   need slightly more).
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 use std::fmt;
 
@@ -129,7 +130,7 @@ pub fn hop_slope_within(b: f64, r0: f64, k_turns: u64, collision: CollisionModel
         return None;
     }
     let eps = b / (r0 + (k_turns - 1) as f64 * b);
-    Some(((1.0 + eps * c_c) / (0.5 - eps * HOP_C_G)).atan())
+    Some(((1.0 + eps * c_c) / (0.5 - eps * HOP_C_G)).atan_p())
 }
 
 /// The smallest μ that keeps `model` rolling, where a closed form gives it
@@ -139,7 +140,7 @@ pub fn hop_slope_within(b: f64, r0: f64, k_turns: u64, collision: CollisionModel
 pub fn slip_mu(model: ModelKind, s: &Scenario) -> Option<f64> {
     let alpha = s.slope_angle();
     if !model.is_circular() {
-        let t = alpha.tan();
+        let t = alpha.tan_p();
         return (t < 2.0).then(|| 4.0 * t / (3.0 * (4.0 - t * t)));
     }
     let c = model.derivation()?.coefficients();
@@ -191,7 +192,7 @@ impl Plane {
             .map(|i| {
                 let f = i as f64 / (CURVE_POINTS - 1) as f64;
                 if log {
-                    lo * (hi / lo).powf(f)
+                    lo * (hi / lo).powf_p(f)
                 } else {
                     lo + (hi - lo) * f
                 }
@@ -275,7 +276,7 @@ impl ModelBorders<'_> {
     /// hop within the turns the rows reached (§4.3).
     fn hop(&self, rows: &[SweepRow]) -> Vec<Boundary> {
         let (plane, model) = (self.plane, self.model);
-        let late = 2f64.atan().to_degrees();
+        let late = 2f64.atan_p().to_degrees();
         let mut out = vec![Boundary {
             label: self.named("hop, late turns: tan α = 2 (fn. 10)"),
             points: vec![plane.place(late, plane.lo), plane.place(late, plane.hi)],

@@ -1,11 +1,143 @@
-// The explorer's page: the form comes from /api/params (one field per
-// parameter of the table), every number from /api/simulate and /api/turns.
-// No physics here: this file only builds the form, asks the server, and draws.
+// The explorer's page: the form is built from the parameter table, every
+// number comes from the snowroll library, and this file only asks and draws.
+//
+// Two engines, one page. Built by scripts/build-explorer.sh, the page holds
+// the library compiled to WebAssembly (SNOWROLL_WASM, base64) and runs it in
+// a Web Worker: no server, works from file://. Served by `snowroll serve`
+// (no WebAssembly inlined), it asks the server's API instead, which runs the
+// command line. Either way a run is `snowroll simulate` (circular models)
+// or `snowroll turns` (turn models) with the same parameters, and what the
+// page offers to download is that command's output, byte for byte.
 'use strict';
 
 const COLORS = ['#0969da', '#cf222e', '#1a7f37', '#8250df', '#bf8700', '#0598bc', '#6e7781', '#e16f24', '#57606a', '#a40e26', '#116329'];
-const state = { params: [], models: [], inputs: {}, runs: [], seq: 0, timer: null };
+// Turns a turn model runs for when the turns field is left empty: the run
+// then ends at t_end (100 s by default) long before.
+const PAGE_TURNS = 100000;
+const state = { params: [], models: [], inputs: {}, runs: [], seq: 0, timer: null, busy: false, dirty: false, limits: null };
 const $ = (id) => document.getElementById(id);
+
+// A command's JSON output as columns (Float64Array per numeric field), its
+// stop and summary. Runs in the worker too (its source is sent there).
+function shapeOutput(body) {
+  const rows = body.samples || body.turns || [];
+  const cols = {};
+  if (rows.length > 0) {
+    for (const k of Object.keys(rows[0])) {
+      if (typeof rows[0][k] !== 'number') continue;
+      const a = new Float64Array(rows.length);
+      for (let i = 0; i < rows.length; i++) a[i] = rows[i][k] === null || rows[i][k] === undefined ? NaN : rows[i][k];
+      cols[k] = a;
+    }
+  }
+  return { cols, n: rows.length, stop: body.stop, summary: body.summary || null };
+}
+
+// The worker: instantiates the module once, then answers runs. The module's
+// ABI is crates/snowroll-wasm/src/abi.rs (request in, bytes out).
+function workerMain() {
+  let current = null;
+  let ready = null;
+  const enc = new TextEncoder(), dec = new TextDecoder();
+  self.onmessage = async (e) => {
+    const m = e.data;
+    if (m.module) {
+      ready = WebAssembly.instantiate(m.module, { env: { progress: (f) => self.postMessage({ id: current, progress: f }) } });
+      return;
+    }
+    const abi = (await ready).exports;
+    current = m.id;
+    const bytes = enc.encode(JSON.stringify(m.request));
+    const at = abi.request_buffer(bytes.length);
+    new Uint8Array(abi.memory.buffer, at, bytes.length).set(bytes);
+    const status = abi.run(m.command);
+    const text = dec.decode(new Uint8Array(abi.memory.buffer, abi.answer_ptr(), abi.answer_len()));
+    const g = abi.g_along();
+    if (status !== 0 || m.raw) {
+      self.postMessage({ id: m.id, status, text, g });
+      return;
+    }
+    // eslint-disable-next-line no-undef
+    const data = shapeOutput(JSON.parse(text));
+    self.postMessage({ id: m.id, status, g, data }, Object.values(data.cols).map((a) => a.buffer));
+  };
+}
+
+const Engine = {
+  wasm: typeof SNOWROLL_WASM === 'string',
+  worker: null,
+  pending: new Map(),
+  next: 0,
+
+  async init() {
+    if (!this.wasm) return;
+    // eslint-disable-next-line no-undef
+    const bin = atob(SNOWROLL_WASM);
+    const bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    this.module = await WebAssembly.compile(bytes);
+    this.spawn();
+  },
+
+  spawn() {
+    const src = shapeOutput.toString() + '\n(' + workerMain.toString() + ')();';
+    const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
+    this.worker = new Worker(url);
+    URL.revokeObjectURL(url);
+    this.worker.onmessage = (e) => {
+      const m = e.data, p = this.pending.get(m.id);
+      if (!p) return;
+      if (m.progress !== undefined) { if (p.onProgress) p.onProgress(m.progress); return; }
+      this.pending.delete(m.id);
+      p.resolve(m.status === 0 ? { ok: true, g: m.g, data: m.data, text: m.text } : { ok: false, error: m.text });
+    };
+    this.worker.postMessage({ module: this.module });
+  },
+
+  // Ends the runs in flight (a new scenario replaces them): the worker is
+  // ended and a fresh one started.
+  cancel() {
+    if (!this.wasm || this.pending.size === 0) return;
+    this.worker.terminate();
+    for (const p of this.pending.values()) p.resolve({ ok: false, cancelled: true, error: 'cancelled' });
+    this.pending.clear();
+    this.spawn();
+  },
+
+  // Runs `command` ('simulate', 'turns') with `request` (key: value text);
+  // `raw`: the output's text, else its columns.
+  async call(command, request, raw, onProgress) {
+    if (this.wasm) {
+      const id = ++this.next;
+      return new Promise((resolve) => {
+        this.pending.set(id, { resolve, onProgress });
+        this.worker.postMessage({ id, command: command === 'simulate' ? 1 : 2, request, raw });
+      });
+    }
+    const r = await fetch('api/' + command + '?' + new URLSearchParams(request).toString());
+    const text = await r.text();
+    if (!r.ok) {
+      let error = text;
+      try { error = JSON.parse(text).error; } catch (e) { /* the text as it came */ }
+      return { ok: false, error };
+    }
+    const g = Number(r.headers.get('X-Snowroll-G-Along'));
+    return raw ? { ok: true, g, text } : { ok: true, g, data: shapeOutput(JSON.parse(text)) };
+  },
+
+  async params() {
+    if (this.wasm) {
+      const r = await new Promise((resolve) => {
+        const id = ++this.next;
+        this.pending.set(id, { resolve });
+        this.worker.postMessage({ id, command: 0, request: {}, raw: true });
+      });
+      return JSON.parse(r.text);
+    }
+    const r = await fetch('api/params');
+    return r.json();
+  },
+};
 
 // Text for a slider's number: short, and read back to about the same value.
 function fmt(x) {
@@ -54,6 +186,7 @@ function paramField(p) {
       input.range.type = 'range';
       input.range.min = 0;
       input.range.max = 1000;
+      input.range.id = 'slider-' + p.key;
       input.range.setAttribute('aria-label', p.key + ' slider');
       input.range.addEventListener('input', () => {
         input.text.value = fmt(toValue(p.slider, Number(input.range.value)));
@@ -117,28 +250,46 @@ function buildForm() {
     box.appendChild(label);
   }
   $('ball-too').addEventListener('change', changed);
-  $('replay').addEventListener('click', race);
+  $('replay').addEventListener('click', () => race(false));
 }
 
 const isTurn = (id) => state.models.some((m) => m.id === id && m.turn_model);
 const chosen = () => [...$('models').querySelectorAll('input:checked')].map((c) => c.value);
 
-// The query of one run: the model, then every parameter given that the
-// command and the model take.
-function query(cmd, model, shape, extra) {
-  const q = new URLSearchParams();
-  q.set('model', model);
+// The request of one run: the model, then every parameter given that the
+// command and the model take. A turn model runs `turns` up to the page's
+// t_end (its field's value or default) for as many turns as fit, unless
+// the turns field says otherwise.
+function request(cmd, model, shape) {
+  const q = { model };
   for (const p of state.params) {
     if (!p.commands.includes(cmd)) continue;
     if (p.applies === 'turn-models' && !isTurn(model)) continue;
     if (p.key === 'shape' && shape) continue;
     if (p.applies === 'sphere' && (shape || given('shape') || 'cylinder') !== 'sphere') continue;
     const v = given(p.key);
-    if (v !== '') q.set(p.key, v);
+    if (v !== '') q[p.key] = v;
   }
-  if (shape) q.set('shape', shape);
-  for (const [k, v] of Object.entries(extra || {})) q.set(k, v);
-  return q.toString();
+  if (shape) q.shape = shape;
+  if (cmd === 'turns') {
+    if (q.t_end === undefined) q.t_end = state.inputs.t_end.p.default_text;
+    if (q.turns === undefined) q.turns = String(pageTurns());
+  }
+  return q;
+}
+
+const pageTurns = () => (state.limits ? Math.min(PAGE_TURNS, state.limits.max_turns) : PAGE_TURNS);
+
+// The command line of a request (what the downloaded CSV is the output of).
+function commandLine(cmd, q) {
+  const words = ['snowroll', cmd];
+  for (const [k, v] of Object.entries(q)) {
+    const p = state.params.find((x) => x.key === k);
+    const flag = '--' + (p ? p.flag : k);
+    if (p && p.kind === 'flag') { if (v === 'true') words.push(flag); continue; }
+    words.push(flag, /^[A-Za-z0-9_.,+-]+$/.test(v) ? v : "'" + v.replace(/'/g, "'\\''") + "'");
+  }
+  return words.join(' ');
 }
 
 // The runs the page asks for: each model chosen, and with the ball box
@@ -148,56 +299,102 @@ function plan() {
   const shape = given('shape') || 'cylinder';
   const other = shape === 'sphere' ? 'cylinder' : 'sphere';
   for (const m of chosen()) {
-    runs.push({ model: m, label: m, shape: null });
-    if ($('ball-too').checked && !isTurn(m)) runs.push({ model: m, label: m + ' (' + other + ')', shape: other, dash: true });
+    const cmd = isTurn(m) ? 'turns' : 'simulate';
+    runs.push({ model: m, label: m, shape: null, cmd });
+    if ($('ball-too').checked && !isTurn(m)) runs.push({ model: m, label: m + ' (' + other + ')', shape: other, cmd });
   }
-  runs.forEach((r, i) => { r.color = COLORS[i % COLORS.length]; });
+  runs.forEach((r, i) => { r.color = COLORS[i % COLORS.length]; r.index = i; r.request = request(r.cmd, r.model, r.shape); });
   return runs;
 }
 
-async function fetchJson(url) {
-  const r = await fetch(url);
-  const text = await r.text();
-  let body;
-  try { body = JSON.parse(text); } catch (e) { body = { error: text }; }
-  return { ok: r.ok, body, gAlong: Number(r.headers.get('X-Snowroll-G-Along')) };
+// The race's track of a run: its rows' t, x (r and the turn angle where it
+// has them); a turn table's turns' starts and its stop.
+function track(run) {
+  const c = run.cols;
+  if (run.kind === 'sim') return { t: c.t_s, x: c.x_m, r: c.r_m, angle: c.theta_rad || null };
+  const n = run.n;
+  const t = new Float64Array(n + 1), x = new Float64Array(n + 1), angle = new Float64Array(n + 1);
+  for (let i = 0; i < n; i++) { t[i] = c.t_start_s[i]; x[i] = c.x_start_m[i]; angle[i] = 2 * Math.PI * i; }
+  t[n] = run.stop.t_s; x[n] = run.stop.x_m;
+  angle[n] = 2 * Math.PI * (run.stop.turn || n) + (run.stop.theta_rad || 0);
+  return { t, x, r: null, angle };
+}
+
+// The first row whose normal force is <= 0 (a run going on through a hop).
+function firstHop(run) {
+  const c = run.cols;
+  const n = run.kind === 'sim' ? c.normal_n : c.min_normal_n;
+  if (!n) return null;
+  const ts = run.kind === 'sim' ? c.t_s : c.t_start_s, xs = run.kind === 'sim' ? c.x_m : c.x_start_m;
+  for (let i = 0; i < n.length; i++) if (n[i] <= 0) return { t: ts[i], x: xs[i] };
+  return null;
 }
 
 function changed() {
+  if (typeof performance.mark === 'function') performance.mark('snowroll-input');
+  writePermalink();
   clearTimeout(state.timer);
-  state.timer = setTimeout(refresh, 100);
+  if (!Engine.wasm) { state.timer = setTimeout(refresh, 100); return; }
+  // WebAssembly: at once; while a run is in flight the newest scenario
+  // waits for it (a slider dragged), unless it has run for long (a long
+  // run is ended and replaced).
+  if (state.busy) {
+    state.dirty = true;
+    if (performance.now() - state.started > 300) Engine.cancel();
+    return;
+  }
+  refresh();
+}
+
+function showProgress(run, f) {
+  const box = $('progress');
+  box.hidden = false;
+  box.querySelector('progress').value = f;
+  const what = run.cmd === 'turns' ? 'of ' + run.request.turns + ' turns (or t_end = ' + run.request.t_end + ' s)' : 'of t_end';
+  box.querySelector('span').textContent = run.label + ': ' + (100 * f).toFixed(0) + '% ' + what + ', in a Web Worker';
 }
 
 async function refresh() {
   const seq = ++state.seq;
+  state.busy = true;
+  state.dirty = false;
+  state.started = performance.now();
   const runs = plan();
-  writePermalink();
-  const started = performance.now();
   $('status').textContent = 'computing ' + runs.length + ' runs…';
   const answers = await Promise.all(runs.map(async (run) => {
-    const q = query('simulate', run.model, run.shape);
-    run.query = q;
-    const sim = await fetchJson('/api/simulate?' + q);
-    if (sim.ok && isTurn(run.model)) run.turns = await fetchJson('/api/turns?' + query('turns', run.model, run.shape));
-    return Object.assign(run, sim.ok ? { samples: sim.body.samples, stop: sim.body.stop, gAlong: sim.gAlong } : { error: sim.body.error });
+    const r = await Engine.call(run.cmd, run.request, false, (f) => showProgress(run, f));
+    if (!r.ok) return Object.assign(run, { error: r.error, cancelled: r.cancelled });
+    return Object.assign(run, r.data, { g: r.g, kind: run.cmd === 'turns' ? 'table' : 'sim' });
   }));
+  state.busy = false;
+  $('progress').hidden = true;
   if (seq !== state.seq) return;
+  if (state.dirty || answers.some((r) => r.cancelled)) { refresh(); return; }
+  const computed = performance.now();
+  for (const r of answers) if (!r.error) { r.track = track(r); r.firstHop = firstHop(r); }
   state.runs = answers;
-  const ms = performance.now() - started;
-  const bad = answers.filter((r) => r.error).length;
-  $('status').textContent = answers.length + ' runs in ' + ms.toFixed(0) + ' ms' + (bad ? ', ' + bad + ' refused (see the readout)' : '');
-  $('status').className = bad ? 'error' : '';
   readout();
   Plots.drawAll($('plots'), answers);
   downloads();
-  race();
+  commands();
+  race(location.hash === '#end');
+  const drawn = performance.now();
+  state.timing = { compute_ms: computed - state.started, draw_ms: drawn - computed };
+  if (performance.getEntriesByName('snowroll-input', 'mark').length > 0) {
+    performance.measure('snowroll-update', 'snowroll-input');
+    performance.clearMarks('snowroll-input');
+  }
+  const bad = answers.filter((r) => r.error).length;
+  $('status').textContent = answers.length + ' runs computed in ' + state.timing.compute_ms.toFixed(0) + ' ms, drawn in ' +
+    state.timing.draw_ms.toFixed(0) + ' ms' + (bad ? ', ' + bad + ' refused (see the readout)' : '');
+  $('status').className = bad ? 'error' : '';
   document.documentElement.dataset.refreshed = String(seq);
-  if (state.onRefresh) state.onRefresh();
 }
 
-function race() {
+// Plays the race (`atEnd`: shows its last frame at once).
+function race(atEnd) {
   const alpha = parseFloat(given('alpha_deg') || state.inputs.alpha_deg.p.default_text) * Math.PI / 180;
-  Race.start($('race'), $('race-clock'), state.runs.filter((r) => !r.error), alpha);
+  Race.start($('race'), $('race-clock'), state.runs.filter((r) => !r.error), alpha, atEnd === true);
 }
 
 function readout() {
@@ -211,28 +408,51 @@ function readout() {
       tr.innerHTML = name + '<td class="err" colspan="5"></td>';
       tr.querySelector('.err').textContent = r.error;
     } else {
-      const last = r.samples[r.samples.length - 1];
-      const a = last ? last.a_m_s2 / r.gAlong : NaN;
-      tr.innerHTML = name + '<td title="' + r.stop.description + '">' + r.stop.reason + '</td><td>' + String(r.stop.t_s) + '</td><td>' + String(r.stop.x_m) + '</td><td class="v">' + String(r.stop.v_m_s) + '</td><td>' + a.toPrecision(6) + '</td>';
+      // a at the end: the last row's (a turn table's: the last turn's mean).
+      const a = r.kind === 'sim' ? r.cols.a_m_s2 : r.cols.mean_a_turn_m_s2;
+      const end = a && a.length ? (a[a.length - 1] / r.g).toPrecision(6) + (r.kind === 'sim' ? '' : ' (last turn\'s mean)') : '';
+      tr.innerHTML = name + '<td></td><td></td><td></td><td class="v"></td><td></td>';
+      const cells = tr.querySelectorAll('td');
+      cells[1].textContent = r.stop.reason;
+      cells[1].title = r.stop.description;
+      cells[2].textContent = String(r.stop.t_s);
+      cells[3].textContent = String(r.stop.x_m);
+      cells[4].textContent = String(r.stop.v_m_s);
+      cells[5].textContent = end;
       tr.dataset.v = String(r.stop.v_m_s);
     }
     body.appendChild(tr);
   }
 }
 
+function commands() {
+  $('command').textContent = state.runs.map((r) => commandLine(r.cmd, r.request)).join('\n') +
+    (state.runs.length ? '\n# each writes CSV (the download\'s bytes); add --format json for the JSON' : '');
+}
+
 function downloads() {
   const sel = $('download-model');
   const keep = sel.value;
   sel.innerHTML = '';
-  for (const r of state.runs) sel.add(new Option(r.label, r.label));
+  for (const r of state.runs) sel.add(new Option(r.label + (r.cmd === 'turns' ? ' (turn table)' : ''), r.label));
   if (keep) sel.value = keep;
-  const r = state.runs.find((x) => x.label === sel.value) || state.runs[0];
-  for (const f of ['csv', 'json']) {
-    const a = $('download-' + f);
-    if (!r) { a.removeAttribute('href'); continue; }
-    a.href = '/api/simulate?' + r.query + '&format=' + f;
-    a.download = 'snowroll-' + r.label.replace(/[^a-z0-9-]+/gi, '-') + '.' + f;
-  }
+}
+
+// Writes the chosen run's output in `format` to a file, as the command line
+// writes it (the same bytes).
+async function download(format) {
+  const r = state.runs.find((x) => x.label === $('download-model').value) || state.runs[0];
+  if (!r) return;
+  const q = Object.assign({}, r.request, { format });
+  const out = await Engine.call(r.cmd, q, true);
+  if (!out.ok) { $('status').textContent = 'error: ' + out.error; $('status').className = 'error'; return; }
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(new Blob([out.text], { type: format === 'csv' ? 'text/csv' : 'application/json' }));
+  a.download = 'snowroll-' + r.label.replace(/[^a-z0-9-]+/gi, '-').replace(/-+$/, '') + '.' + format;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 60000);
 }
 
 // The scenario in the address: models, the ball box, every value given.
@@ -255,41 +475,22 @@ function readPermalink() {
   for (const [k, v] of q.entries()) setGiven(k, v);
 }
 
-// The browser test's hook (page address ending in #selftest): records the
-// readout and the plots, moves the alpha slider to its middle as a hand
-// would, and records them again once the new answers are drawn.
-const SelfTest = {
-  run(st) {
-    const root = document.documentElement.dataset;
-    const cell = () => $('readout').querySelector('td.v');
-    const first = () => st.runs.find((r) => !r.error);
-    root.beforeV = String(first().stop.v_m_s);
-    root.beforeReadout = cell().textContent;
-    root.beforeSig = Plots.signature($('plots'));
-    st.onRefresh = () => {
-      st.onRefresh = null;
-      root.afterAlpha = st.inputs.alpha_deg.text.value;
-      root.afterQuery = first().query;
-      root.afterV = String(first().stop.v_m_s);
-      root.afterReadout = cell().textContent;
-      root.afterSig = Plots.signature($('plots'));
-      root.selftest = 'done';
-    };
-    const range = st.inputs.alpha_deg.range;
-    range.value = 500;
-    range.dispatchEvent(new Event('input'));
-  },
-};
-
 async function main() {
-  const r = await fetchJson('/api/params');
-  state.params = r.body.params;
-  state.models = r.body.models;
+  await Engine.init();
+  $('engine').textContent = Engine.wasm ? 'in this page (WebAssembly), with no server' : 'by the snowroll program serving this page';
+  const table = await Engine.params();
+  state.params = table.params;
+  state.models = table.models;
+  state.limits = table.limits || null;
   buildForm();
   readPermalink();
+  // A phone: the race and the readout first, the parameters folded below.
+  if (window.matchMedia('(max-width: 800px)').matches) $('panel').open = false;
   $('download-model').addEventListener('change', downloads);
+  $('download-csv').addEventListener('click', () => download('csv'));
+  $('download-json').addEventListener('click', () => download('json'));
+  writePermalink();
   await refresh();
-  if (location.hash === '#selftest') SelfTest.run(state);
 }
 
 main().catch((e) => { $('status').textContent = 'error: ' + e; $('status').className = 'error'; });

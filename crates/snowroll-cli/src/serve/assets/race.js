@@ -1,41 +1,45 @@
 // The race: every run of the page on one slope, side by side, each body
-// rolling to its x(t) as the server computed it (no physics here: positions
-// are the samples, interpolated in time for drawing). Hops, slips and stalls
-// are marked where the run stopped for them.
+// rolling to its x(t) as the library computed it (no physics here: positions
+// are the run's rows, interpolated in time for drawing; a turn model's are
+// its turns' starts). Hops, slips and stalls are marked where the run
+// stopped for them.
 'use strict';
 
 const Race = (function () {
   const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'stall', stuck: 'stuck' };
   let frame = null;
 
-  // The sample index at or before time t (samples ascend in t).
-  function before(samples, t) {
-    let lo = 0, hi = samples.length - 1;
-    if (t >= samples[hi].t_s) return hi;
+  // The row index at or before time t (rows ascend in t).
+  function before(ts, t) {
+    let lo = 0, hi = ts.length - 1;
+    if (t >= ts[hi]) return hi;
     while (hi - lo > 1) {
       const mid = (lo + hi) >> 1;
-      if (samples[mid].t_s <= t) lo = mid; else hi = mid;
+      if (ts[mid] <= t) lo = mid; else hi = mid;
     }
     return lo;
   }
 
-  // The drawn state of a run at time t: x, r and the turn angle.
-  function at(samples, t) {
-    const i = before(samples, t);
-    const a = samples[i], b = samples[Math.min(i + 1, samples.length - 1)];
-    const f = b.t_s > a.t_s ? Math.min(1, Math.max(0, (t - a.t_s) / (b.t_s - a.t_s))) : 0;
-    const mix = (p, q) => p + (q - p) * f;
-    const x = mix(a.x_m, b.x_m), r = mix(a.r_m, b.r_m);
-    const angle = a.theta_rad !== undefined ? mix(a.theta_rad, b.theta_rad) : x / r;
+  // The drawn state of a run at time t: x, r and the turn angle, from its
+  // track ({t, x, r, angle}: arrays; r and angle may be absent).
+  function at(track, t) {
+    const i = before(track.t, t);
+    const j = Math.min(i + 1, track.t.length - 1);
+    const f = track.t[j] > track.t[i] ? Math.min(1, Math.max(0, (t - track.t[i]) / (track.t[j] - track.t[i]))) : 0;
+    const mix = (a) => a[i] + (a[j] - a[i]) * f;
+    const x = mix(track.x), r = track.r ? mix(track.r) : null;
+    const angle = track.angle ? mix(track.angle) : (r ? x / r : 0);
     return { x, r, angle };
   }
 
-  const LANE = 30, MARGIN = 20, TOP = 34, LABEL_ROOM = 170;
+  const LANE = 30, MARGIN = 20, TOP = 34;
+  // Room for the runs' names at the slope's foot: less on a narrow screen.
+  const labelRoom = (w) => Math.min(170, Math.round(w * 0.3));
 
   // The range of r over the runs, for the bodies' drawn sizes.
   function radii(runs) {
-    const rs = runs.flatMap((r) => [r.samples[0].r_m, r.samples[r.samples.length - 1].r_m]);
-    return [Math.min(...rs), Math.max(...rs)];
+    const rs = runs.filter((r) => r.track.r).flatMap((r) => [r.track.r[0], r.track.r[r.track.r.length - 1]]);
+    return rs.length ? [Math.min(...rs), Math.max(...rs)] : [0, 0];
   }
 
   function draw(ctx, w, h, runs, alpha, t) {
@@ -43,15 +47,15 @@ const Race = (function () {
     const n = runs.length;
     const cos = Math.cos(alpha), sin = Math.sin(alpha);
     const x0 = MARGIN, y0 = TOP;
-    const length = Math.min((w - 2 * MARGIN - LABEL_ROOM) / cos, (h - y0 - n * LANE - MARGIN) / Math.max(sin, 1e-3));
+    const length = Math.min((w - 2 * MARGIN - labelRoom(w)) / cos, (h - y0 - n * LANE - MARGIN) / Math.max(sin, 1e-3));
     const xMax = Math.max(1e-9, ...runs.map((r) => r.stop.x_m));
     const [rMin, rMax] = radii(runs);
     ctx.font = '12px system-ui, sans-serif';
     runs.forEach((run, k) => {
-      const s = at(run.samples, Math.min(t, run.stop.t_s));
+      const s = at(run.track, Math.min(t, run.stop.t_s));
       const along = (s.x / xMax) * length;
       // From 5 px at the smallest radius to the lane's half-width at the largest.
-      const rad = 5 + (LANE / 2 - 7) * (rMax > rMin ? (s.r - rMin) / (rMax - rMin) : 0);
+      const rad = s.r === null ? LANE / 4 : 5 + (LANE / 2 - 7) * (rMax > rMin ? (s.r - rMin) / (rMax - rMin) : 0);
       // Each run on its own lane, parallel to the slope; the surface under it.
       const bx = x0, by = y0 + (k + 1) * LANE;
       ctx.strokeStyle = k === n - 1 ? '#57606a' : '#d0d7de';
@@ -72,36 +76,40 @@ const Race = (function () {
       ctx.lineTo(cx + rad * Math.cos(s.angle), cy + rad * Math.sin(s.angle));
       ctx.stroke();
       ctx.fillStyle = '#1c2733';
-      ctx.fillText(run.label, bx + length * cos + 8, by + length * sin);
+      // The name past the slope's foot, clear of a body that has arrived.
+      ctx.fillText(run.label, bx + length * cos + LANE + 6, by + length * sin);
       const mark = MARKS[run.stop.reason];
       if (mark && t >= run.stop.t_s) {
         ctx.fillStyle = '#b42318';
         ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - rad);
       }
       // A run that goes on through a hop (on_hop = continue): the first
-      // sample whose normal force the server gave as <= 0, once passed.
+      // row whose normal force the library gave as <= 0, once passed.
       const off = run.firstHop;
-      if (off && t >= off.t_s && run.stop.reason !== 'hop') {
-        const hx = bx + (off.x_m / xMax) * length * cos, hy = by + (off.x_m / xMax) * length * sin;
+      if (off && t >= off.t && run.stop.reason !== 'hop') {
+        const hx = bx + (off.x / xMax) * length * cos, hy = by + (off.x / xMax) * length * sin;
         ctx.fillStyle = '#b42318';
         ctx.fillText('✕ hop', hx, hy - LANE / 2);
       }
     });
   }
 
-  // Plays `runs` ({label, color, samples, stop}) on `canvas` at slope angle
+  // Plays `runs` ({label, color, track, stop, firstHop}) on `canvas` at slope angle
   // alpha (radians); `clock` shows the time. The race lasts at most 8 s.
-  function start(canvas, clock, runs, alpha) {
+  function start(canvas, clock, runs, alpha, atEnd) {
     if (frame !== null) cancelAnimationFrame(frame);
     frame = null;
+    canvas.dataset.done = '';
     const ctx = canvas.getContext('2d');
     const ratio = window.devicePixelRatio || 1;
-    const ok = runs.filter((r) => r.samples && r.samples.length > 0);
+    const ok = runs.filter((r) => r.track && r.track.t.length > 0);
     // Tall enough for the slope at its true angle across the width, within
     // 220 to 560 px.
     const wide = canvas.clientWidth || 900;
-    const drop = (wide - 2 * MARGIN - LABEL_ROOM) * Math.tan(alpha);
-    canvas.style.height = Math.round(Math.min(560, Math.max(220, TOP + ok.length * LANE + MARGIN + drop))) + 'px';
+    const drop = (wide - 2 * MARGIN - labelRoom(wide)) * Math.tan(alpha);
+    // At most 0.8 of its width (a phone: the readout stays near).
+    const tallest = Math.max(220, Math.min(560, 0.8 * wide));
+    canvas.style.height = Math.round(Math.min(tallest, Math.max(220, TOP + ok.length * LANE + MARGIN + drop))) + 'px';
     const w = canvas.clientWidth || 900, h = canvas.clientHeight || 300;
     canvas.width = Math.round(w * ratio);
     canvas.height = Math.round(h * ratio);
@@ -109,17 +117,20 @@ const Race = (function () {
     if (ok.length === 0) {
       ctx.clearRect(0, 0, w, h);
       clock.textContent = 'no run to race';
+      canvas.dataset.done = '1';
       return;
     }
-    for (const r of ok) r.firstHop = r.samples.find((s) => s.normal_n !== undefined && s.normal_n <= 0);
     const tEnd = Math.max(...ok.map((r) => r.stop.t_s));
     const speed = Math.max(1, tEnd / 8);
-    const t0 = performance.now();
+    // atEnd: the race's last frame at once (an address ending in #end, for
+    // screenshots).
+    const t0 = performance.now() - (atEnd ? (tEnd / speed) * 1000 : 0);
     function step(now) {
       const t = Math.min(tEnd, ((now - t0) / 1000) * speed);
       draw(ctx, w, h, ok, alpha, t);
       clock.textContent = 't = ' + t.toFixed(2) + ' s of ' + tEnd.toPrecision(4) + ' s (' + speed.toPrecision(3) + '× real time)';
       frame = t < tEnd ? requestAnimationFrame(step) : null;
+      canvas.dataset.done = frame === null ? '1' : '';
     }
     frame = requestAnimationFrame(step);
   }

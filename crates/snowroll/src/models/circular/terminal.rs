@@ -2,6 +2,7 @@
 //! acceleration (eq. (35), fn. 4, App. A), how fast a run approaches it, and
 //! the slope below which a log at rest does not start (fn. 7).
 
+use crate::portable::Portable as _;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::rhs::Acceleration;
@@ -55,7 +56,7 @@ impl Coefficients {
         }
         let (num, den) = self.shape.push_ratio();
         let tan = den * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (num * PI * r0 * r0);
-        Some(tan.atan())
+        Some(tan.atan_p())
     }
 }
 

@@ -18,6 +18,7 @@
 //! from rest, the closed form of the letter in The Physics Teacher 57,
 //! p. 436 (2019), a → G/6.
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 
 use super::clock::Clock;
@@ -169,7 +170,7 @@ fn first_contact_event(
     let at = |j: usize| {
         let frac = j as f64 / EVENT_SCAN as f64;
         if u.b > 0.0 {
-            (u.s0 / u.b) * (s_ratio.powf(frac) - 1.0)
+            (u.s0 / u.b) * (s_ratio.powf_p(frac) - 1.0)
         } else {
             x_limit * frac
         }

@@ -52,6 +52,7 @@
 //! `loney` ([`LoneyModel`], [`DragOnlyClosedForm`]: contact events located
 //! by a scan, and the samples).
 
+use crate::portable::Portable as _;
 use std::cell::Cell;
 use std::f64::consts::PI;
 
@@ -264,9 +265,9 @@ impl SpeedSquared {
                 // |em| ≥ 1 − (1 + EXP_M1_BELOW)^(−n) is not small, and
                 // exp(), cheaper than exp_m1(), loses nothing to the − 1.
                 let em = if growth < EXP_M1_BELOW {
-                    (-n * growth.ln_1p()).exp_m1()
+                    (-n * growth.ln_1p_p()).exp_m1_p()
                 } else {
-                    (-n * (1.0 + growth).ln()).exp() - 1.0
+                    (-n * (1.0 + growth).ln_p()).exp_p() - 1.0
                 };
                 let mut bracket = p * (growth - em) / (n + 1.0);
                 if l != 0.0 || m != 0.0 {
@@ -430,7 +431,7 @@ fn poly_form(push: f64, big_l: f64, big_m: f64, s0: f64, k: f64, n: f64, u0: f64
 fn adaptive(f: &mut impl FnMut(f64) -> f64, lo: f64, hi: f64, budget: &mut u32) -> f64 {
     let (value, diff) = kronrod(f, lo, hi);
     let scale = value.abs().max(f64::MIN_POSITIVE);
-    let err = (200.0 * diff / scale).powf(1.5);
+    let err = (200.0 * diff / scale).powf_p(1.5);
     if err <= QUAD_RTOL || *budget == 0 || !err.is_finite() {
         return value;
     }

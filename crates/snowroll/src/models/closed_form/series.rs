@@ -42,6 +42,7 @@
 //! on a rectangle at a corner: checking the four corners bounds the forces
 //! along the whole run (conservatively).
 
+use crate::portable::Portable as _;
 use std::cell::Cell;
 use std::f64::consts::PI;
 
@@ -85,7 +86,7 @@ impl SpeedSquared {
         let beta = self.u0 / alpha1 - 1.0;
         let np1 = n + 1.0;
         // |β| z1^(−(n+1)) ≤ MAX_RATIO, and z1 ≥ 1 (the start).
-        let z1 = (beta.abs() / MAX_RATIO).powf(1.0 / np1).max(1.0);
+        let z1 = (beta.abs() / MAX_RATIO).powf_p(1.0 / np1).max(1.0);
         let mut series = Series {
             beta,
             np1,
@@ -142,7 +143,7 @@ fn beta_over_np1(np1: f64) -> f64 {
 impl Series {
     /// S(z) of (T2).
     fn antiderivative(&self, z: f64) -> f64 {
-        let eps = self.beta * z.powf(-self.np1);
+        let eps = self.beta * z.powf_p(-self.np1);
         let mut coeff = 1.0;
         let mut sum = 2.0;
         for k in 1..=MAX_TERMS {
@@ -164,7 +165,7 @@ impl Series {
 
     /// dt/dy at `y = √z`: `2c/√(1 + β z^(−(n+1)))` from (T1).
     fn dt_dy(&self, y: f64) -> f64 {
-        2.0 * self.scale / (1.0 + self.beta * (y * y).powf(-self.np1)).sqrt()
+        2.0 * self.scale / (1.0 + self.beta * (y * y).powf_p(-self.np1)).sqrt()
     }
 
     /// The `z ≥ z1` at which `t(z1) + t(Z) − t(z1) = t_end`, given

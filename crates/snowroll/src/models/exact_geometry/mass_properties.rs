@@ -7,6 +7,7 @@
 //! element at `(r′, θ′)` sits at `(x − r′ sin θ′, r − r′ cos θ′)` when the
 //! contact line is at `(x, 0)`. Every integral reduces to `D_n = (r + b)ⁿ − rⁿ`.
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 
 use crate::units::{Joules, Kilograms, Meters, Radians};
@@ -100,8 +101,8 @@ impl SectorBody {
         let m = self.mass(theta);
         let first_moment = self.rho_l * self.moments.d3 / 3.0;
         (
-            -first_moment * (1.0 - theta.cos()) / m,
-            self.r - first_moment * theta.sin() / m,
+            -first_moment * (1.0 - theta.cos_p()) / m,
+            self.r - first_moment * theta.sin_p() / m,
         )
     }
 
@@ -111,7 +112,7 @@ impl SectorBody {
         let (r, d) = (self.r, self.moments);
         self.rho_l
             * (1.5 * PI * r.powi(4) + theta * (r * r * d.d2 / 2.0 + d.d4 / 4.0)
-                - 2.0 * r * d.d3 * theta.sin() / 3.0)
+                - 2.0 * r * d.d3 * theta.sin_p() / 3.0)
     }
 
     /// Moment of inertia about the axis of the disk, `πρl r⁴/2 + ρlθD₄/4`.
@@ -138,8 +139,8 @@ impl SectorBody {
         let first_moment = self.rho_l * self.moments.d3 / 3.0;
         let x = r * theta;
         // M y_cm − m r = m_s r − ρlD₃ sin θ/3; M x_cm = M x − ρlD₃(1 − cos θ)/3.
-        let height = m_s * (r + b / 2.0) - first_moment * theta.sin();
-        let along = (self.core_mass() + m_s / 2.0) * x - first_moment * (1.0 - theta.cos());
+        let height = m_s * (r + b / 2.0) - first_moment * theta.sin_p();
+        let along = (self.core_mass() + m_s / 2.0) * x - first_moment * (1.0 - theta.cos_p());
         g_normal * height - g_along * along
     }
 

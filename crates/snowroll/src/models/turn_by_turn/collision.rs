@@ -1,6 +1,7 @@
 //! The step of each new layer at the end of a turn of §3.4: three ways to
 //! climb it (`--collision note|charged|pivot`, `docs/contact-forces.md` §6).
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 
 use crate::models::exact_geometry::exact_turn_coefficients;
@@ -84,10 +85,10 @@ impl PivotImpact {
     /// The impact geometry and mass properties of turn k (radius `r`, snow depth `b`).
     pub fn new(r: Meters, b: Meters) -> Self {
         let k = exact_turn_coefficients(r, b);
-        let delta = (r / (r + b)).acos();
+        let delta = (r / (r + b)).acos_p();
         let theta_c = 2.0 * PI - delta;
         let d = (2.0 * r * b + b * b).sqrt();
-        let (s, c) = theta_c.sin_cos();
+        let (s, c) = theta_c.sin_cos_p();
         let mass = 1.0 + k.accretion * theta_c;
         let inertia_c = 1.5 * r * r + k.c1 * theta_c - k.c2 * s;
         let s_x = -k.e2 * (1.0 - c);
@@ -103,8 +104,8 @@ impl PivotImpact {
             s_x,
             s_y,
             inertia_e,
-            rho_e: ex.hypot(ey),
-            psi0: (-ex).atan2(ey),
+            rho_e: ex.hypot_p(ey),
+            psi0: (-ex).atan2_p(ey),
         }
     }
 
@@ -118,7 +119,7 @@ impl PivotImpact {
     /// `I_E φ̈ = M g ρ_E sin(α − ψ)`, ψ = ψ₀ − φ, written with G = g sin α and
     /// C = g cos α: `g sin(α − ψ) = G cos ψ − C sin ψ`, rad/s².
     pub fn angular_acceleration(&self, phi: Radians, g_along: f64, g_normal: f64) -> f64 {
-        let (s, c) = (self.psi0 - phi).sin_cos();
+        let (s, c) = (self.psi0 - phi).sin_cos_p();
         self.mass * self.rho_e * (g_along * c - g_normal * s) / self.inertia_e
     }
 
@@ -133,7 +134,7 @@ impl PivotImpact {
         g_normal: f64,
     ) -> (f64, f64) {
         let alpha = self.angular_acceleration(phi, g_along, g_normal);
-        let (s, c) = (self.psi0 - phi).sin_cos();
+        let (s, c) = (self.psi0 - phi).sin_cos_p();
         let w2 = omega * omega;
         (
             self.mass * (g_normal + self.rho_e * (alpha * s - w2 * c)),
@@ -187,7 +188,7 @@ impl PivotImpact {
         let d3 = big_r.powi(3) - r.powi(3);
         let dm = per_mk * self.delta * d2 / 2.0;
         let q = per_mk * d3 / 3.0;
-        let (s, c) = self.delta.sin_cos();
+        let (s, c) = self.delta.sin_cos_p();
         g_normal * (dm * (big_r + b / 2.0) - q * s) - g_along * (dm * self.d / 2.0 - q * (1.0 - c))
     }
 
@@ -196,8 +197,8 @@ impl PivotImpact {
     /// ψ = ψ₀ − φ (= M g ρ_E [cos(ψ − α) − cos(ψ₀ − α)]; its −d/dφ is the
     /// torque of [`PivotImpact::angular_acceleration`]), J/kg.
     pub fn pivot_potential(&self, phi: Radians, g_along: f64, g_normal: f64) -> f64 {
-        let (s, c) = (self.psi0 - phi).sin_cos();
-        let (s0, c0) = self.psi0.sin_cos();
+        let (s, c) = (self.psi0 - phi).sin_cos_p();
+        let (s0, c0) = self.psi0.sin_cos_p();
         self.mass * self.rho_e * (g_normal * (c - c0) + g_along * (s - s0))
     }
 }

@@ -16,6 +16,7 @@
 //! energy equation). Exact for the `Exact` variant, first order in b/r for
 //! `Paper`. As b → 0: N = m C, F = m G/3 (App. A).
 
+use crate::portable::Portable as _;
 use std::cell::Cell;
 use std::sync::OnceLock;
 
@@ -202,7 +203,7 @@ impl TurnDynamics {
         with_a: bool,
         hints: &mut Hints,
     ) -> TurnExtremes {
-        let (mu, g) = (self.coeffs.accretion, self.g_along.hypot(self.g_normal));
+        let (mu, g) = (self.coeffs.accretion, self.g_along.hypot_p(self.g_normal));
         let step = theta_max / (POINTS - 1) as f64;
         let samples = self.samples::<POINTS>(omega0, step, g);
         let [a_s, neg_a_s, normal, mg_s, neg_ratio_s] = &samples;
@@ -471,12 +472,12 @@ fn grid_rotation(step: f64) -> (f64, f64) {
     let table = TURN.get_or_init(|| {
         [SMOOTH_GRID, FORCE_GRID].map(|n| {
             let h = TWO_PI / n as f64;
-            (h, h.sin_cos())
+            (h, h.sin_cos_p())
         })
     });
     match table.iter().find(|(h, _)| h.to_bits() == step.to_bits()) {
         Some(&(_, sc)) => sc,
-        None => step.sin_cos(),
+        None => step.sin_cos_p(),
     }
 }
 

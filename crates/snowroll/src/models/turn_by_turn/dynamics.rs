@@ -3,6 +3,7 @@
 //! form ([`InTurnCoefficients`]) and the equation of motion with its energy
 //! integral ([`TurnDynamics`]).
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 
 use super::{extremes, TWO_PI};
@@ -123,7 +124,7 @@ impl TurnDynamics {
 
     /// `(I, dI/dθ)` per unit `m_k`, m².
     pub fn inertia(&self, theta: Radians) -> (f64, f64) {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.sin_cos_p();
         self.inertia_sc(theta, s, c)
     }
 
@@ -137,7 +138,7 @@ impl TurnDynamics {
 
     /// `(W, dW/dθ)` per unit `m_k`, J/kg, zero at θ = 0.
     pub fn potential(&self, theta: Radians) -> (f64, f64) {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.sin_cos_p();
         self.potential_sc(theta, s, c)
     }
 
@@ -169,7 +170,7 @@ impl TurnDynamics {
 
     /// `θ̈ = (−W′ − ½ I′ θ̇²)/I`, rad/s².
     pub fn angular_acceleration(&self, theta: Radians, omega: f64) -> f64 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.sin_cos_p();
         let (i, di) = self.inertia_sc(theta, s, c);
         (-self.potential_slope_sc(theta, s, c) - 0.5 * di * omega * omega) / i
     }
@@ -205,7 +206,7 @@ impl TurnDynamics {
     /// (θ̇² clamped at 0 past a stall): `a = r(−W′ − ½I′θ̇²)/I` with
     /// `θ̇² = [I(0)θ̇₀² − 2W]/I`.
     pub fn acceleration_on_orbit(&self, theta: Radians, omega0: f64) -> MetersPerSecondSquared {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.sin_cos_p();
         let (i, di) = self.inertia_sc(theta, s, c);
         let (w, dw) = self.potential_sc(theta, s, c);
         let omega2 = self.energy_integral(i, w, omega0).max(0.0);

@@ -32,6 +32,7 @@
 //! the exact sector mass for `Exact`), so the mass may jump by O(b²) at a
 //! collision for `Paper`. The per-turn table is [`run_turns`].
 
+use crate::portable::Portable as _;
 mod collision;
 mod contact;
 mod dynamics;
@@ -83,7 +84,7 @@ fn sin_cos(theta: f64) -> (f64, f64) {
         // ±0 keeps its sign in sin, as the library's does.
         (theta, 1.0)
     } else {
-        theta.sin_cos()
+        theta.sin_cos_p()
     }
 }
 

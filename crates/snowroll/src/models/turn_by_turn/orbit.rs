@@ -21,6 +21,7 @@
 //! `θ = θ_s − s²`) takes out the inverse square root, so the panels see a
 //! smooth integrand.
 
+use crate::portable::Portable as _;
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
@@ -148,7 +149,7 @@ impl<'a> Orbit<'a> {
 
     /// `√(I/E)` at θ, s/rad.
     fn slowness(&self, theta: f64) -> f64 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.sin_cos_p();
         let (i, _) = self.turn.inertia_sc(theta, s, c);
         (i / self.energy_sc(theta, s, c)).sqrt()
     }
@@ -160,15 +161,15 @@ impl<'a> Orbit<'a> {
         let k = &self.turn.coeffs;
         let (g, c_n, r) = (self.turn.g_along, self.turn.g_normal, self.turn.r);
         let theta = theta1 - u;
-        let s_half = (0.5 * u).sin();
-        let (s_mid, c_mid) = (theta1 - 0.5 * u).sin_cos();
+        let s_half = (0.5 * u).sin_p();
+        let (s_mid, c_mid) = (theta1 - 0.5 * u).sin_cos_p();
         // cos θ − cos θ₁ = 2 sin(θ₁ − u/2) sin(u/2); sin θ − sin θ₁ = −2 cos(θ₁ − u/2) sin(u/2).
         let d_cos = 2.0 * s_mid * s_half;
         let d_sin = -2.0 * c_mid * s_half;
         // W(θ) − W(θ₁), with θ − θ₁ = −u and θ² − θ₁² = −u(2θ₁ − u).
         let d_w = -g * (-r * u - k.e1 * u * (2.0 * theta1 - u) / 2.0 + k.e2 * d_cos)
             + c_n * (-k.e3 * u - k.e2 * d_sin);
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.sin_cos_p();
         let (i, _) = self.turn.inertia_sc(theta, s, c);
         (i / (-2.0 * d_w)).sqrt()
     }
@@ -311,8 +312,8 @@ impl Rule {
                     let theta = PI * (1.0 + x);
                     q.theta[l] = theta;
                     q.theta2[l] = theta * theta;
-                    q.versine[l] = 1.0 - theta.cos();
-                    q.sin[l] = theta.sin();
+                    q.versine[l] = 1.0 - theta.cos_p();
+                    q.sin[l] = theta.sin_p();
                     q.weight[l] = PI * w;
                 }
                 q

@@ -5,6 +5,7 @@
 //! first turn").
 
 use super::{TurnDynamics, TurnVariant};
+use crate::portable::Portable as _;
 use crate::units::{Meters, Radians};
 
 /// Grid intervals over (0, 2π] that bracket the maximum of Q/P: Q/P has a
@@ -58,14 +59,14 @@ pub fn first_turn_stall_slope(variant: TurnVariant, r0: Meters, b: Meters) -> Op
         GRID,
         THETA_TOL,
     );
-    Some(max.max(0.0).atan())
+    Some(max.max(0.0).atan_p())
 }
 
 /// The coefficients `(P, Q)` split of the in-turn potential, for tests.
 #[cfg(test)]
 fn split(c: &super::InTurnCoefficients, r0: f64, theta: f64) -> (f64, f64) {
-    let p = r0 * theta + c.e1 * theta * theta / 2.0 - c.e2 * (1.0 - theta.cos());
-    let q = c.e3 * theta - c.e2 * theta.sin();
+    let p = r0 * theta + c.e1 * theta * theta / 2.0 - c.e2 * (1.0 - theta.cos_p());
+    let q = c.e3 * theta - c.e2 * theta.sin_p();
     (p, q)
 }
 

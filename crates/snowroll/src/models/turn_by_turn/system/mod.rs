@@ -2,6 +2,7 @@
 //! k kept up to date as the turns go by, its events (turn end, stall,
 //! distance, hop, slip, pivot impact) and its energy ledger.
 
+use crate::portable::Portable as _;
 mod ahead;
 mod closed;
 mod stepping;
@@ -454,7 +455,7 @@ impl TurnSystem {
         if self.pivoting {
             let p = &self.impact;
             let x_e = self.x_start + r * p.theta_c + p.d;
-            x_e - (r + self.b) * (p.delta - (theta - p.theta_c)).sin()
+            x_e - (r + self.b) * (p.delta - (theta - p.theta_c)).sin_p()
         } else {
             self.x_start + r * theta
         }

@@ -126,7 +126,7 @@ impl OdeModel<2> for TurnSystem {
             let p = &self.impact;
             let big_r = r + self.b;
             let phi = theta - p.theta_c;
-            let (s, c) = (p.delta - phi).sin_cos();
+            let (s, c) = (p.delta - phi).sin_cos_p();
             let alpha = p.angular_acceleration(phi, self.g_along, self.g_normal);
             (
                 big_r * c * omega,
