@@ -721,3 +721,34 @@ fn regression_21_circular_analyses_differ_notices_distinct_but_wrong_coefficient
         ),
     );
 }
+
+// ---- Issue 32: what a claim's numbers are, and headlines from outcomes. ----
+
+#[test]
+fn regression_32_collision_potential_jump_divides_the_rise_by_the_energy_the_turn_released() {
+    // Turn 0 from rest under eq. (73): the turn releases the fall of its
+    // potential energy, ∫₀^{2π} m₀ r₀ [G (r₀ + bθ/π − (b/π) sin θ) − C (b/π)(1 − cos θ)] dθ
+    // = 2π m₀ G (r₀ + b) − 2 m₀ C b (40.466 J at the defaults), and the centre
+    // rises by b with the mass m₁: m₁ C b (1.2918 J), 3.19 %. The eq. (86)
+    // kinetic energy with the `turns` model's θ̇ (41.36 J) would give 3.12 %.
+    let s = Scenario::default();
+    let (b, r0) = (s.snow_depth(), s.initial_radius());
+    let rho_l = s.density() * s.length();
+    let (m0, m1) = (
+        std::f64::consts::PI * rho_l * r0 * r0,
+        std::f64::consts::PI * rho_l * (r0 + b) * (r0 + b),
+    );
+    let released =
+        2.0 * std::f64::consts::PI * m0 * s.g_along() * (r0 + b) - 2.0 * m0 * s.g_normal() * b;
+    let rise = m1 * s.g_normal() * b;
+    let result = check(ClaimId::CollisionPotentialJump).run(&lab()).unwrap();
+    let percent = format!("is {:.2} %", 100.0 * rise / released);
+    assert_eq!(percent, "is 3.19 %");
+    assert!(
+        result.measured.contains(&percent)
+            && result.measured.contains(&format!("({:.3} J", released))
+            && result.measured.contains(&format!("({:.4} J)", rise)),
+        "{}",
+        result.measured
+    );
+}

@@ -326,7 +326,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::CollisionPotentialJump,
             paper_ref: "§3.4, eqs. (70), (89)",
             statement: "At the collision the centre of the log rises by b; neglecting the potential energy this takes costs only a relative O(b/r) per turn.",
-            method: "the rise m g b cos α from the element integrals, against the energy each turn releases, on the long run of turns; its ratio times rₖ/b against the derived C/(2πG)",
+            method: "the rise m g b cos α from the element integrals, divided by the energy each turn releases (the kinetic energy T_end − T_beg the long run of `turns` gains over the turn, I_C of eq. (76)); that ratio times rₖ/b against the derived C/(2πG)",
             tolerances: &[JUMP_ORDER],
             expected: Verdict::Holds,
         },
