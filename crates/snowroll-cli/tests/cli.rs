@@ -1786,3 +1786,23 @@ fn a_newline_in_a_sweep_path_keeps_the_command_on_one_line() {
     };
     assert_eq!(rows(&fs::read_to_string(&again).unwrap()), rows(&text));
 }
+
+/// Issue 32, item 7: the human summary on stderr writes G = g sin α to six
+/// significant digits (9.81 · sin 30° = 4.905 to rounding, printed as
+/// such), while the CSV's `# summary` line keeps the shortest round-trip
+/// digits of the same f64.
+#[test]
+fn regression_32_turns_summary_writes_g_for_people() {
+    let (stdout, stderr) = turns(&["--turns", "2"]);
+    assert!(
+        stderr.contains("as fractions of G = g sin(alpha) = 4.905 m/s^2\n"),
+        "{stderr}"
+    );
+    let g = 9.81 * 30f64.to_radians().sin();
+    assert!(
+        stdout.contains(&format!(
+            "# summary: 2 turns; accelerations over G = g sin(alpha) = {g} m/s^2"
+        )),
+        "{stdout}"
+    );
+}

@@ -6,8 +6,9 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
-    StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
+    default_atol, format_number, format_readable, run_warnings, ModelKind, Sampling, Scenario,
+    SimError, SimOptions, StopReason, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant,
+    WarningCode,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -199,7 +200,7 @@ fn summary(end: &TurnRunEnd) -> String {
         end.model.id(),
         end.model.equation(),
         s.turns,
-        s.g_along_m_s2
+        format_readable(s.g_along_m_s2)
     );
     let Some(all) = s.overall() else {
         text.push_str("  no turn was completed\n");
