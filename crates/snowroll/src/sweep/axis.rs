@@ -7,7 +7,7 @@ use std::fmt;
 use thiserror::Error;
 
 use crate::error::ParamError;
-use crate::number::format_number;
+use crate::number::{format_number, READABLE_DIGITS};
 
 /// A parameter that a sweep can vary. The names are the command line's
 /// (`--alpha-deg`) in snake case (`alpha_deg`), as in config files.
@@ -221,16 +221,27 @@ impl Values {
         self.len() == 0
     }
 
-    /// The `k`-th value, `k < len()`: for a range
-    /// `start + (end − start)·k/(count − 1)`, with the last one exactly `end`.
+    /// The `k`-th value, `k < len()`. For a range it is
+    /// `start + (end − start)·k/(count − 1)` in decimal: with the decimal
+    /// places of `start` and `end` as written, and of the step where it ends
+    /// within 15 significant digits (`0.001:0.1:100` gives `0.012`, not
+    /// `0.012000000000000002`); a step that does not end (`0:1:4`) is kept
+    /// to [`READABLE_DIGITS`] significant digits. The value returned is the
+    /// `f64` of that decimal, so the value printed ([`format_number`]) is
+    /// the value run, and a row reruns from its printed values. The ends are
+    /// exactly `start` and `end`. Ends too far apart in magnitude for exact
+    /// integer arithmetic (`1e-100:1:3`) fall back to the binary formula.
     pub fn get(&self, k: u64) -> f64 {
         match self {
             Values::List(v) => v.get(k as usize).copied().unwrap_or(f64::NAN),
             Values::Range { start, end, count } => {
                 if k + 1 >= *count {
                     *end
+                } else if k == 0 {
+                    *start
                 } else {
-                    start + (end - start) * (k as f64 / (*count - 1) as f64)
+                    decimal_range_value(*start, *end, *count, k)
+                        .unwrap_or_else(|| start + (end - start) * (k as f64 / (*count - 1) as f64))
                 }
             }
         }
@@ -270,6 +281,71 @@ impl fmt::Display for Values {
     }
 }
 
+/// `x` as ±`digits`·10^`exp` with the fewest digits (the shortest text
+/// that round-trips): `0.012` is (12, −3), `2.5e12` is (25, 11).
+fn decimal_parts(x: f64) -> Option<(i128, i32)> {
+    let text = format!("{:e}", x.abs());
+    let (mantissa, exp) = text.split_once('e')?;
+    let exp: i32 = exp.parse().ok()?;
+    let (whole, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let digits: i128 = format!("{whole}{frac}").parse().ok()?;
+    let sign = if x < 0.0 { -1 } else { 1 };
+    Some((sign * digits, exp - frac.len() as i32))
+}
+
+/// `10^n` for `n ≥ 0`, if it fits.
+fn pow10(n: i32) -> Option<i128> {
+    10i128.checked_pow(u32::try_from(n).ok()?)
+}
+
+/// `num/den` rounded to the nearest integer, halves away from zero; `den > 0`.
+fn div_round(num: i128, den: i128) -> i128 {
+    let (q, r) = (num / den, num % den);
+    if 2 * r.abs() >= den {
+        q + num.signum()
+    } else {
+        q
+    }
+}
+
+/// The `k`-th value of the range `start:end:count` (`0 < k < count − 1`)
+/// as the decimal [`Values::get`] describes, or `None` when its integers
+/// would overflow.
+fn decimal_range_value(start: f64, end: f64, count: u64, k: u64) -> Option<f64> {
+    let ((ds, es), (de, ee)) = (decimal_parts(start)?, decimal_parts(end)?);
+    // Both ends as integers of the unit 10^low.
+    let low = es.min(ee);
+    let s = ds.checked_mul(pow10(es - low)?)?;
+    let e = de.checked_mul(pow10(ee - low)?)?;
+    let span = e.checked_sub(s)?;
+    let intervals = i128::from(count - 1);
+    // Extra decimal places: the fewest at which the step ends, while it
+    // has at most 15 significant digits; else READABLE_DIGITS of the step.
+    let mut extra = 0;
+    loop {
+        let scaled = span.checked_mul(pow10(extra)?)?;
+        if scaled % intervals == 0 {
+            break;
+        }
+        if (scaled / intervals).abs() >= pow10(15)? {
+            extra = 0;
+            while (span.checked_mul(pow10(extra)?)? / intervals).abs()
+                < pow10(READABLE_DIGITS as i32 - 1)?
+            {
+                extra += 1;
+            }
+            break;
+        }
+        extra += 1;
+    }
+    let unit = pow10(extra)?;
+    let offset = span.checked_mul(unit)?.checked_mul(i128::from(k))?;
+    let value = s
+        .checked_mul(unit)?
+        .checked_add(div_round(offset, intervals))?;
+    format!("{value}e{}", low - extra).parse().ok()
+}
+
 /// One swept parameter and its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
@@ -301,5 +377,34 @@ mod tests {
         }
         let shown = Values::parse("rtol", "1e-100,0.5").unwrap().to_string();
         assert_eq!(shown, "1e-100,0.5");
+    }
+
+    /// Issue 32, item 7: a range's values have the decimal digits its spec
+    /// needs, printed and run alike.
+    #[test]
+    fn range_values_have_the_digits_of_their_spec() {
+        let shown = |text: &str| -> Vec<String> {
+            let v = Values::parse("snow_depth", text).unwrap();
+            (0..v.len()).map(|k| format_number(v.get(k))).collect()
+        };
+        let fine = shown("0.001:0.1:100");
+        assert_eq!(fine[11], "0.012");
+        for (k, text) in fine.iter().enumerate() {
+            let want: f64 = format!("{:.3}", 0.001 * (k + 1) as f64).parse().unwrap();
+            assert_eq!(text, &format_number(want), "{k}");
+            assert!(text.len() <= 5, "{text}");
+        }
+        assert_eq!(shown("0.1:0.7:4"), ["0.1", "0.3", "0.5", "0.7"]);
+        assert_eq!(shown("1e-12:1e-6:3"), ["1e-12", "5.000005e-7", "1e-6"]);
+        assert_eq!(shown("0:1:4"), ["0", "0.333333", "0.666667", "1"]);
+        assert_eq!(shown("31:29:3"), ["31", "30", "29"]);
+        assert_eq!(shown("-1:1:5"), ["-1", "-0.5", "0", "0.5", "1"]);
+        assert_eq!(shown("0:1:9")[3], "0.375");
+        assert_eq!(shown("0:1:8")[3], "0.428571");
+        // Ends too far apart for i128: the binary formula, still in range.
+        let wide = shown("1e-100:1:3");
+        assert_eq!(wide[0], "1e-100");
+        assert_eq!(wide[1], "0.5");
+        assert_eq!(wide[2], "1");
     }
 }
