@@ -1346,6 +1346,49 @@ fn simulate_help_gives_units() {
         );
 }
 
+/// Issue 32, item 8: no `--help` shows the source's syntax. The help
+/// texts come from doc comments (clap's derive, the library's
+/// `ValueEnum`s), where rustdoc links (`[`TurnModel::method_for`]`), paths
+/// (`crate::x`) and attributes read as code; every command's help, the
+/// program's own and `help`'s, must be free of them.
+#[test]
+fn regression_32_no_help_shows_source_syntax() {
+    let help = |args: &[&str]| -> String {
+        let out = snowroll().args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let top = help(&["--help"]);
+    let commands: Vec<String> = top
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.split_whitespace().next().map(String::from))
+        .collect();
+    assert!(
+        ["simulate", "turns", "models", "paper", "sweep", "merge"]
+            .iter()
+            .all(|c| commands.iter().any(|x| x == c)),
+        "{commands:?}"
+    );
+    let mut texts = vec![("--help".to_string(), top.clone())];
+    for c in commands.iter().filter(|c| *c != "help") {
+        texts.push((format!("help {c}"), help(&["help", c])));
+        texts.push((format!("{c} --help"), help(&[c, "--help"])));
+        texts.push((format!("{c} -h"), help(&[c, "-h"])));
+    }
+    for (args, text) in &texts {
+        for syntax in ["[`", "`]", "::", "](", "#[", "///", "//!", "crate", "Self"] {
+            assert!(
+                !text.contains(syntax),
+                "`snowroll {args}` shows source syntax {syntax:?}: {}",
+                text.lines().find(|l| l.contains(syntax)).unwrap_or("")
+            );
+        }
+    }
+}
+
 // ---------------------------------------------------------------- errors
 
 /// Stderr is exactly one line starting `error: ` containing every `needle`.
