@@ -1904,3 +1904,45 @@ fn regression_32_turns_summary_writes_g_for_people() {
         "{stdout}"
     );
 }
+
+/// Issue 32, item 8: the crate table of `docs/architecture.md` is the
+/// crates' own: each crate's `snowroll*` dependencies in its `Cargo.toml`
+/// are the ones the table names (it once drew the Python package on the
+/// report, and not on the formats crate it reads).
+#[test]
+fn regression_32_architecture_names_each_crates_dependencies() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let doc = std::fs::read_to_string(root.join("docs/architecture.md")).unwrap();
+    let table: Vec<&str> = doc
+        .lines()
+        .skip_while(|l| !l.starts_with("crate ") || !l.contains("depends on"))
+        .skip(1)
+        .take_while(|l| !l.starts_with("```"))
+        .collect();
+    assert_eq!(table.len(), 5, "{table:?}");
+    for line in table {
+        let name = line.split_whitespace().next().unwrap();
+        let named: std::collections::BTreeSet<String> = line
+            .split("  ")
+            .map(str::trim)
+            .filter(|c| !c.is_empty())
+            .nth(1)
+            .unwrap()
+            .split(", ")
+            .filter(|d| d.starts_with("snowroll"))
+            .map(String::from)
+            .collect();
+        let manifest =
+            std::fs::read_to_string(root.join("crates").join(name).join("Cargo.toml")).unwrap();
+        let deps: std::collections::BTreeSet<String> = manifest
+            .lines()
+            .skip_while(|l| l.trim() != "[dependencies]")
+            .skip(1)
+            .take_while(|l| !l.starts_with('['))
+            .filter_map(|l| l.split(['.', ' ', '=']).next())
+            .filter(|d| d.starts_with("snowroll"))
+            .map(String::from)
+            .collect();
+        assert_eq!(named, deps, "{name}: the table against its Cargo.toml");
+    }
+}
