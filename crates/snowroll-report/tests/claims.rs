@@ -752,3 +752,25 @@ fn regression_32_collision_potential_jump_divides_the_rise_by_the_energy_the_tur
         result.measured
     );
 }
+
+#[test]
+fn regression_32_app_a_says_its_newton_half_is_no_second_check() {
+    // The snowless log's centre keeps its height, so Newton's law normal to
+    // the slope, N = m(ÿ − g_y), is m g cos α again: the claim must not
+    // count it as a check of its own.
+    let c = check(ClaimId::AppAMovingPoints);
+    let result = c.run(&lab()).unwrap();
+    assert!(
+        result.evidence.contains("not a second check") && result.measured.contains("ÿ = 0 m/s²"),
+        "{}\n{}",
+        result.measured,
+        result.evidence
+    );
+    for t in c.claim.tolerances {
+        assert!(
+            !t.quantity.contains("and from Newton's law"),
+            "{}",
+            t.quantity
+        );
+    }
+}
