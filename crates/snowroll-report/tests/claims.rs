@@ -766,6 +766,11 @@ fn regression_32_app_a_says_its_newton_half_is_no_second_check() {
         result.measured,
         result.evidence
     );
+    assert!(
+        !c.claim.method.contains("and against Newton's law"),
+        "{}",
+        c.claim.method
+    );
     for t in c.claim.tolerances {
         assert!(
             !t.quantity.contains("and from Newton's law"),

@@ -216,7 +216,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::AppAMovingPoints,
             paper_ref: "App. A.3.2, A.4.1, A.5.2, eqs. (111), (115), (127), (128)",
             statement: "About the moving contact line L′_P = I_cm ω = mr²v/2 (111); F_y − mg = 0 (115); about the point P of A.5.2, τ′_P = τ_P + rma and L′_P = L_cm.",
-            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; the normal force the snowless model reports against m g cos α and against Newton's law m(ÿ − g_y) for its centre's simulated motion",
+            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; the normal force the snowless model reports against m g cos α (Newton's law normal to the slope, m(ÿ − g_y), says the same for a centre at constant height: one check)",
             tolerances: &[APP_A_INTEGRALS, APP_A_APART],
             expected: Verdict::HoldsAfterCorrection(ERRATUM_APP_A),
         },
