@@ -344,12 +344,14 @@ fn small_report() -> Report {
         claims: vec![
             ClaimResult {
                 claim: &HOLDS,
+                headline: None,
                 measured: "1.0e-12".into(),
                 verdict: Verdict::Holds,
                 evidence: "e".into(),
             },
             ClaimResult {
                 claim: &CORRECTED,
+                headline: None,
                 measured: "2".into(),
                 verdict: Verdict::Refuted,
                 evidence: "differs".into(),

@@ -78,6 +78,7 @@ pub(super) fn snowless_limit(lab: &Lab) -> Result<Finding, SimError> {
     }
     let ok = SNOWLESS_LIMIT.accepts_deviation(worst);
     Ok(Finding {
+        headline: None,
         measured: format!("at t = {SNOWLESS_T} s: {}", parts.join("; ")),
         verdict: holds_if(ok, &numbers),
         evidence: format!(
@@ -379,6 +380,7 @@ pub(super) fn app_a_moving_points(lab: &Lab) -> Result<Finding, SimError> {
     let mut numbers = corrected.to_vec();
     numbers.extend([dev_111p, dev_115p, material_off]);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "disk r = {r} m at v = 1 m/s, a = {a:.6} m/s² (snowless model): |L′_P| about the moving contact = {l_111:.6} kg m²/s against mrv/2 {:.6} (printed mr²v/2 {:.6}); N/(mg) of the snowless model = {:.6} (cos α = {:.6}, printed 1; its centre's ÿ = {} m/s²); about (x, 2r): relative deviations from (127), (128): {dev_127:.1e}, {dev_128:.1e} for the geometric point, {material_off:.2} for the material point at the top; a solved from τ′ = dL′/dt: {a_solved:.6} m/s²",
             m * r * v / 2.0,

@@ -204,6 +204,7 @@ pub(super) fn borders_against(lab: &Lab, forms: &BorderForms) -> Result<Finding,
         ));
     }
     Ok(Finding {
+        headline: None,
         measured: format!(
             "turns from rest, {MAP_TURNS} turns, {} slopes × {} depths; largest distance {:.2} cells (stall), {:.2} cells (hop); {}",
             alphas.len(),

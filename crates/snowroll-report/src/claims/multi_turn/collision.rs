@@ -120,6 +120,7 @@ pub(in crate::claims) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> 
     }
     let ok = COLLISION_L.accepts_deviation(worst_l) && COLLISION_T.accepts_deviation(worst_t);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "{count} collisions (the first 200 and the last of each turn model): max relative |v after − v after predicted from the impact| = {worst_l:.1e}; max relative |T after/T before − (r₁² + 2r₀²)/(3r₁²)| = {worst_t:.1e}; the first collision loses {:.2} % of T",
             100.0 * first_loss
@@ -189,6 +190,10 @@ pub(in crate::claims) fn collision_potential_jump(lab: &Lab) -> Result<Finding, 
     // Charged to the kinetic energy, the rise would lower v_after by the factor √(1 − ΔV/T).
     let dv0 = 1.0 - (1.0 - f0).sqrt();
     Ok(Finding {
+        headline: Some(format!(
+            "The rise of the centre at a collision costs {:.2} % of the energy the first turn released, a share that falls like b/r turn by turn",
+            100.0 * q0
+        )),
         measured: format!(
             "turn {}: the rise m g b cos α ({:.4} J) over the energy the turn released ({:.3} J: T_end − T_beg of the `turns` run, I_C of eq. (76), not the eq. (86) kinetic energy) is {:.2} %, and charged to the motion would lower v after the collision by {:.2} %; turn {}: that ratio × rₖ/b = {scaled:.5}",
             first.turn,
