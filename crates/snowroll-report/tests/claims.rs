@@ -900,3 +900,39 @@ fn regression_32_algebra_checks_are_marked_as_such() {
     let (h, _) = headline_on(&lab(), ClaimId::Eq5ContactTorque);
     assert!(!h.contains("algebra check"), "{h}");
 }
+
+/// Issue 32, item 6: `regime-map-borders` bisects each border and holds the
+/// stall border to 1e-6° of the fn. 7 form, so a 1 % error in the turn
+/// model's lift of the snow flips it (the map's cells alone, 0.5° wide at
+/// the stall slopes, did not notice).
+#[test]
+fn regression_32_regime_map_borders_notice_a_one_percent_error_in_the_lift() {
+    // The lift term of eq. (73), (b/π)(1 − cos θ) C, 1 % too strong: from
+    // rest the log starts iff tan α > max Q/P, so the same runs with Q 1 %
+    // larger are those at tan α' = tan α/1.01 (the stall slope moves
+    // ~0.01°, ~2 % of a cell: the map's cells are unchanged).
+    let stronger_lift = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let mut f = ScenarioFile::from(*s);
+            f.alpha_deg = (f.alpha_deg.to_radians().tan() / 1.01).atan().to_degrees();
+            TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    changes(ClaimId::RegimeMapBorders, &stronger_lift);
+    // The turn model run as if the snow were 1 % deeper.
+    let deeper = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let mut f = ScenarioFile::from(*s);
+            f.snow_depth *= 1.01;
+            TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    let r = check(ClaimId::RegimeMapBorders).run(&deeper).unwrap();
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.measured);
+    // The map's cells alone would not have noticed: still within them.
+    assert!(
+        r.measured.contains("the map's cells at most 0."),
+        "{}",
+        r.measured
+    );
+}

@@ -176,7 +176,7 @@ fn leading_form_errors(eps: f64) -> ((f64, f64), (f64, f64)) {
 
 /// Whether `kind` started from rest at `deg` degrees stalls inside its
 /// first turn (and the run that says so).
-fn stalls_in_first_turn(
+pub(super) fn stalls_in_first_turn(
     lab: &Lab,
     kind: ModelKind,
     base: &Scenario,

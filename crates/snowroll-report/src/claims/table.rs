@@ -29,7 +29,7 @@ use super::multi_turn::{
     mean_four_ninths, never_settles, COLLISION_L, COLLISION_T, EQ88_APART, EQ88_EXACT, ERRATUM_87,
     JUMP_ORDER, LONG_RUN, NOTE_APART, SWING, TRUNCATION_ORDER,
 };
-use super::regime::{map_borders, MAP_CELL};
+use super::regime::{map_borders, MAP_CELL, MAP_HOP_BISECTED, MAP_STALL_BISECTED};
 use super::slip::{slip_mu_min, MU_AT_END, MU_AT_REST};
 use super::snowball::{
     ball_terminal_fractions, five_sevenths, tpt_letter, BALL_TERMINAL_LIMIT, FIVE_SEVENTHS,
@@ -414,8 +414,8 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::RegimeMapBorders,
             paper_ref: "fn. 7, fn. 10",
             statement: "Over slope × snow depth the turn-by-turn log started from rest stalls in its first turn below the fn. 7 slope, hops within K turns above tan α_K = (1 + ε c_C)/(½ − ε c_G) (ε = b/r_(K−1)) and rolls on between: the closed forms are the borders of the regime map.",
-            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms typed in the check (not the library's functions)",
-            tolerances: &[MAP_CELL],
+            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms typed in the check (not the library's functions); then each border bisected inside its cell, on runs of turns from rest (the stall: does the log get past turn 0; the hop: does it hop within 200 turns), against the same forms",
+            tolerances: &[MAP_CELL, MAP_STALL_BISECTED, MAP_HOP_BISECTED],
             expected: Verdict::Holds,
         },
         check: map_borders,
