@@ -41,9 +41,15 @@ pub(crate) fn method_text(c: &crate::Claim) -> String {
     if algebra_only(c.id) {
         let mut note = ALGEBRA_NOTE.to_string();
         note[..1].make_ascii_uppercase();
+        let mut method = c.method.chars();
+        let first: String = method
+            .next()
+            .into_iter()
+            .flat_map(char::to_uppercase)
+            .collect();
         format!(
-            "{note}, so no wrong model can change its verdict. {}",
-            c.method
+            "{note}, so no wrong model can change its verdict. {first}{}",
+            method.as_str()
         )
     } else {
         c.method.to_string()
