@@ -56,7 +56,8 @@ pub(crate) fn method_text(c: &crate::Claim) -> String {
     }
 }
 
-/// The headline of a result: the check's own sentence or [`established`],
+/// The headline of a result: the check's own sentence or the table's
+/// sentence of the finding (`established`),
 /// when the verdict is the one the table expects (with the algebra note
 /// where it applies); otherwise a sentence saying which verdict was
 /// reached instead.

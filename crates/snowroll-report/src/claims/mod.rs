@@ -279,7 +279,7 @@ impl Lab {
 pub struct Finding {
     /// The finding in one sentence, composed from the numbers the check
     /// measured, where it has such numbers; `None` for the table's sentence
-    /// of the verdict reached ([`crate::findings`]). A headline is printed
+    /// of the verdict reached ([`crate::headline`]). A headline is printed
     /// only beside the verdict its check expects: any other verdict gets a
     /// sentence that says so instead.
     pub headline: Option<String>,
