@@ -234,8 +234,8 @@ pub struct ClaimResult {
     pub claim: &'static Claim,
     /// The finding in one sentence as its check composed it from what it
     /// measured, if it did; the report's headline is
-    /// `findings::headline` of the whole result.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    /// [`crate::headline`] of the whole result (`claims.json` records that).
+    #[serde(skip)]
     pub headline: Option<String>,
     /// The measured numbers, with units.
     pub measured: String,

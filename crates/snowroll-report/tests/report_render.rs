@@ -471,6 +471,20 @@ fn claims_json_carries_verdicts_errata_and_mismatches() {
     assert_eq!(claims[1]["verdict"]["verdict"], "refuted");
     assert_eq!(claims[1]["as_expected"], false);
     assert_eq!(v["tally"]["unexpected"], 1);
+    // The headline as the report prints it: the finding where the verdict
+    // is the expected one, a sentence saying otherwise where it is not.
+    assert!(
+        claims[1]["headline"]
+            .as_str()
+            .unwrap()
+            .contains("did not reach its finding: refuted where the claims table expects holds after correction"),
+        "{}",
+        claims[1]["headline"]
+    );
+    assert!(!claims[0]["headline"]
+        .as_str()
+        .unwrap()
+        .contains("did not reach"));
 }
 
 #[test]
