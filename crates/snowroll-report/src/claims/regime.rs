@@ -306,7 +306,11 @@ pub(super) fn borders_against(lab: &Lab, forms: &BorderForms) -> Result<Finding,
         ));
     }
     Ok(Finding {
-        headline: None,
+        headline: Some(format!(
+            "The closed-form stall and hop slopes border the simulated regime map: bisected, its borders lie within {}° and {}° of them",
+            crate::notation::number(worst_bisected.0, 2),
+            crate::notation::number(worst_bisected.1, 2)
+        )),
         measured: format!(
             "turns from rest, {MAP_TURNS} turns, {} slopes × {} depths; the borders bisected in each row are at most {:.1e}° (stall) and {:.1e}° (hop) from the closed forms; the map's cells at most {:.2} cells (stall), {:.2} cells (hop); {}",
             alphas.len(),
