@@ -232,6 +232,12 @@ impl Values {
     /// exactly `start` and `end`. Ends too far apart in magnitude for exact
     /// integer arithmetic (`1e-100:1:3`) fall back to the binary formula.
     pub fn get(&self, k: u64) -> f64 {
+        self.get_planned(self.decimal_range().as_ref(), k)
+    }
+
+    /// [`Values::get`] with the plan [`Values::decimal_range`] made
+    /// beforehand (a grid makes it once per axis, not once per point).
+    pub fn get_planned(&self, plan: Option<&DecimalRange>, k: u64) -> f64 {
         match self {
             Values::List(v) => v.get(k as usize).copied().unwrap_or(f64::NAN),
             Values::Range { start, end, count } => {
@@ -240,10 +246,22 @@ impl Values {
                 } else if k == 0 {
                     *start
                 } else {
-                    decimal_range_value(*start, *end, *count, k)
-                        .unwrap_or_else(|| start + (end - start) * (k as f64 / (*count - 1) as f64))
+                    match plan {
+                        Some(plan) => plan.value(k),
+                        None => start + (end - start) * (k as f64 / (*count - 1) as f64),
+                    }
                 }
             }
+        }
+    }
+
+    /// The decimal plan of a range ([`DecimalRange`]), made once so that
+    /// [`Values::get`]'s values cost no text; `None` for a list, a range of
+    /// one value, or ends too far apart for exact integers.
+    pub fn decimal_range(&self) -> Option<DecimalRange> {
+        match self {
+            Values::List(_) => None,
+            Values::Range { start, end, count } => DecimalRange::new(*start, *end, *count),
         }
     }
 
@@ -308,42 +326,91 @@ fn div_round(num: i128, den: i128) -> i128 {
     }
 }
 
-/// The `k`-th value of the range `start:end:count` (`0 < k < count − 1`)
-/// as the decimal [`Values::get`] describes, or `None` when its integers
-/// would overflow.
-fn decimal_range_value(start: f64, end: f64, count: u64, k: u64) -> Option<f64> {
-    let ((ds, es), (de, ee)) = (decimal_parts(start)?, decimal_parts(end)?);
-    // Both ends as integers of the unit 10^low.
-    let low = es.min(ee);
-    let s = ds.checked_mul(pow10(es - low)?)?;
-    let e = de.checked_mul(pow10(ee - low)?)?;
-    let span = e.checked_sub(s)?;
-    let intervals = i128::from(count - 1);
-    // Extra decimal places: the fewest at which the step ends, while it
-    // has at most 15 significant digits; else READABLE_DIGITS of the step.
-    let mut extra = 0;
-    loop {
-        let scaled = span.checked_mul(pow10(extra)?)?;
-        if scaled % intervals == 0 {
-            break;
-        }
-        if (scaled / intervals).abs() >= pow10(15)? {
-            extra = 0;
-            while (span.checked_mul(pow10(extra)?)? / intervals).abs()
-                < pow10(READABLE_DIGITS as i32 - 1)?
-            {
-                extra += 1;
+/// The decimal values of a range `start:end:count` ([`Values::get`]): the
+/// k-th is `(start + k·span/intervals)·10^exp` in integers, `span/intervals`
+/// rounded to the nearest integer where it does not end. Made once per axis
+/// ([`Values::decimal_range`]), so that a grid's points cost no text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DecimalRange {
+    /// `start` in units of 10^`exp`.
+    start: i128,
+    /// `end − start` in units of 10^`exp` (divided by `intervals` only
+    /// after the multiplication by k, so that the k-th value rounds once).
+    span: i128,
+    /// `count − 1`.
+    intervals: i128,
+    /// The decimal exponent of the unit.
+    exp: i32,
+}
+
+impl DecimalRange {
+    /// The plan of `start:end:count` (`count ≥ 2`), or `None` when its
+    /// integers would overflow.
+    pub fn new(start: f64, end: f64, count: u64) -> Option<Self> {
+        let ((ds, es), (de, ee)) = (decimal_parts(start)?, decimal_parts(end)?);
+        // Both ends as integers of the unit 10^low.
+        let low = es.min(ee);
+        let s = ds.checked_mul(pow10(es - low)?)?;
+        let e = de.checked_mul(pow10(ee - low)?)?;
+        let span = e.checked_sub(s)?;
+        let intervals = i128::from(count.checked_sub(1).filter(|&n| n > 0)?);
+        // Extra decimal places: the fewest at which the step ends, while it
+        // has at most 15 significant digits; else READABLE_DIGITS of the step.
+        let mut extra = 0;
+        loop {
+            let scaled = span.checked_mul(pow10(extra)?)?;
+            if scaled % intervals == 0 {
+                break;
             }
-            break;
+            if (scaled / intervals).abs() >= pow10(15)? {
+                extra = 0;
+                while (span.checked_mul(pow10(extra)?)? / intervals).abs()
+                    < pow10(READABLE_DIGITS as i32 - 1)?
+                {
+                    extra += 1;
+                }
+                break;
+            }
+            extra += 1;
         }
-        extra += 1;
+        let unit = pow10(extra)?;
+        let plan = Self {
+            start: s.checked_mul(unit)?,
+            span: span.checked_mul(unit)?,
+            intervals,
+            exp: low - extra,
+        };
+        // Every k ≤ intervals must fit: the largest offset is span·intervals.
+        plan.span.checked_mul(intervals)?;
+        Some(plan)
     }
-    let unit = pow10(extra)?;
-    let offset = span.checked_mul(unit)?.checked_mul(i128::from(k))?;
-    let value = s
-        .checked_mul(unit)?
-        .checked_add(div_round(offset, intervals))?;
-    format!("{value}e{}", low - extra).parse().ok()
+
+    /// The `k`-th value (`k ≤ count − 1`).
+    pub fn value(&self, k: u64) -> f64 {
+        let k = i128::from(k).min(self.intervals);
+        // Cannot overflow: checked for k = intervals in `new`.
+        let v = self.start + div_round(self.span * k, self.intervals);
+        decimal_to_f64(v, self.exp)
+    }
+}
+
+/// Exact powers of ten in `f64`, 10^0 to 10^22.
+const POW10_F64: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// `v·10^exp` rounded to the nearest `f64`, as parsing its text would give:
+/// one IEEE multiplication or division of two exact numbers where `v` fits
+/// in 53 bits and |exp| ≤ 22 (correctly rounded), else by parsing.
+fn decimal_to_f64(v: i128, exp: i32) -> f64 {
+    if v.unsigned_abs() <= 1 << 53 {
+        if let Some(&p) = POW10_F64.get(exp.unsigned_abs() as usize) {
+            let m = v as f64;
+            return if exp >= 0 { m * p } else { m / p };
+        }
+    }
+    format!("{v}e{exp}").parse().unwrap_or(f64::NAN)
 }
 
 /// One swept parameter and its values.
@@ -406,5 +473,38 @@ mod tests {
         assert_eq!(wide[0], "1e-100");
         assert_eq!(wide[1], "0.5");
         assert_eq!(wide[2], "1");
+    }
+
+    /// The fast conversion of a planned value (one IEEE operation on exact
+    /// numbers, [`decimal_to_f64`]) gives the `f64` that parsing the
+    /// decimal's text gives, and a grid's planned values are `get`'s.
+    #[test]
+    fn planned_values_are_their_decimals_parsed() {
+        for text in [
+            "0.001:0.1:1000",
+            "1e-12:1e-6:7",
+            "5:60:12",
+            "0:1:3",
+            "1.5e-300:2.5e-300:11",
+            "123456.789:987654.321:77",
+            "0.3:0.1:7",
+            "1e-5:89.99:1001",
+            "9007199254740993:9007199254741993:3",
+        ] {
+            let v = Values::parse("x", text).unwrap();
+            let plan = v.decimal_range();
+            assert!(plan.is_some(), "{text}");
+            for k in 0..v.len() {
+                let p = plan.unwrap();
+                let exact = p.start + div_round(p.span * i128::from(k), p.intervals);
+                let parsed: f64 = format!("{exact}e{}", p.exp).parse().unwrap();
+                assert_eq!(p.value(k).to_bits(), parsed.to_bits(), "{text}, k = {k}");
+                assert_eq!(
+                    v.get(k).to_bits(),
+                    v.get_planned(plan.as_ref(), k).to_bits(),
+                    "{text}, k = {k}"
+                );
+            }
+        }
     }
 }
