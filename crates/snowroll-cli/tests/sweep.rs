@@ -519,3 +519,50 @@ fn plot_draws_a_regime_map_with_legend_axes_and_the_stall_border() {
     assert!(e.contains("has 4 cells"), "{e}");
     assert!(!out3.exists(), "a refused --plot left {out3_s}");
 }
+
+/// Issue 32, item 7: a range's values are printed with the digits its spec
+/// needs (`0.001:0.1:100` steps by 0.001: `0.012`, not `0.012000000000000002`),
+/// and the value printed is the value run, so a row reruns from its printed
+/// values: the same sweep on the printed value alone gives the same row.
+#[test]
+fn regression_32_range_values_print_their_spec_digits_and_rerun_from_the_print() {
+    let args = |depth: &str| {
+        [
+            "sweep",
+            "--model",
+            "loney,turns",
+            "--snow-depth",
+            depth,
+            "--t-end",
+            "2",
+        ]
+        .map(String::from)
+    };
+    let text = ok(&argv(&args("0.001:0.1:100")));
+    let rows = rows(&text);
+    assert_eq!(rows.len(), 200);
+    for (i, row) in rows.iter().enumerate() {
+        let depth = row.split(',').nth(3).unwrap();
+        let k = i % 100 + 1;
+        assert_eq!(
+            depth.parse::<f64>().unwrap().to_bits(),
+            format!("0.{k:03}").parse::<f64>().unwrap().to_bits()
+        );
+        assert!(depth.len() <= 5, "row {i}: snow_depth {depth}");
+    }
+    for i in (0..200).step_by(17) {
+        let depth = rows[i].split(',').nth(3).unwrap();
+        let again = ok(&argv(&args(depth)));
+        let again = self::rows(&again);
+        let without_index = |row: &str, want: usize| -> String {
+            let (index, rest) = row.split_once(',').unwrap();
+            assert_eq!(index.parse::<usize>().unwrap() % 100, want);
+            rest.to_string()
+        };
+        assert_eq!(
+            without_index(again[i / 100], i / 100),
+            without_index(rows[i], i % 100),
+            "row {i} rerun at snow_depth {depth}"
+        );
+    }
+}

@@ -232,6 +232,11 @@ impl Claim {
 pub struct ClaimResult {
     /// The claim.
     pub claim: &'static Claim,
+    /// The finding in one sentence as its check composed it from what it
+    /// measured, if it did; the report's headline is
+    /// [`crate::headline`] of the whole result (`claims.json` records that).
+    #[serde(skip)]
+    pub headline: Option<String>,
     /// The measured numbers, with units.
     pub measured: String,
     /// The verdict reached.
@@ -336,6 +341,7 @@ mod tests {
     fn tally_counts_each_verdict_and_the_unexpected_ones() {
         let r = |verdict| ClaimResult {
             claim: &CLAIM,
+            headline: None,
             measured: String::new(),
             verdict,
             evidence: String::new(),

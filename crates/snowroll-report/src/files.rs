@@ -175,6 +175,8 @@ impl Serialize for OrderedMap<'_> {
 struct ClaimRow<'a> {
     #[serde(flatten)]
     claim: &'a super::Claim,
+    /// The headline the report prints for it ([`super::headline`]).
+    headline: String,
     measured: &'a str,
     verdict: super::Verdict,
     evidence: &'a str,
@@ -203,6 +205,7 @@ pub(super) fn claims_json(report: &Report) -> Result<String, ReportError> {
             .iter()
             .map(|r| ClaimRow {
                 claim: r.claim,
+                headline: super::headline(r),
                 measured: &r.measured,
                 verdict: r.verdict,
                 evidence: &r.evidence,

@@ -2,16 +2,89 @@
 //! grouped so that a physicist reads the refutations and corrections first.
 //!
 //! Each claim has a headline ([`headline`]): the finding in one sentence,
-//! with its closed-form number where there is one. The line the report
-//! prints beside it is the claim's measured value ([`short_measured`]) and
-//! its verdict, so a headline never states a verdict the run did not reach.
+//! composed from its check's outcome. A check that measured the finding's
+//! numbers composes the sentence from them (`ClaimResult::headline`);
+//! otherwise it is the sentence of the finding ([`established`]). Either is
+//! printed only when the check reached the verdict the claims table
+//! expects; any other verdict prints a sentence that says what was not
+//! reached, so a headline never states a finding the run did not make. The
+//! line the report prints beside it is the claim's measured value
+//! ([`short_measured`]) and its verdict. Checks of the note's algebra alone
+//! ([`algebra_only`]) say so in their headline.
 
 use crate::claim::{ClaimResult, Verdict};
 use crate::ClaimId;
 
-/// The finding of claim `id` in one sentence. An exhaustive match: a new
-/// claim does not compile until it has one.
-pub(crate) fn headline(id: ClaimId) -> &'static str {
+/// The claims whose check evaluates the note's equations and runs no
+/// model: no wrong model can change their verdict, only wrong algebra in
+/// the check itself (issue 32, item 6).
+pub const ALGEBRA_ONLY: [ClaimId; 5] = [
+    ClaimId::LoneyAccelerationCoefficient,
+    ClaimId::FirstTurn58_64_69,
+    ClaimId::Eq47_48AngularMomentum,
+    ClaimId::Eq54CrossProduct,
+    ClaimId::Eq51_55AccretingBody,
+];
+
+/// Whether the check of `id` is of the note's algebra alone ([`ALGEBRA_ONLY`]).
+pub fn algebra_only(id: ClaimId) -> bool {
+    ALGEBRA_ONLY.contains(&id)
+}
+
+/// What the report says of an algebra-only check, after its headline.
+pub const ALGEBRA_NOTE: &str =
+    "an algebra check: it evaluates the note's equations and runs no model";
+
+/// How claim `c` was checked, as the report shows it: the table's method,
+/// opened by [`ALGEBRA_NOTE`] for an algebra-only check.
+pub(crate) fn method_text(c: &crate::Claim) -> String {
+    if algebra_only(c.id) {
+        let mut note = ALGEBRA_NOTE.to_string();
+        note[..1].make_ascii_uppercase();
+        let mut method = c.method.chars();
+        let first: String = method
+            .next()
+            .into_iter()
+            .flat_map(char::to_uppercase)
+            .collect();
+        format!(
+            "{note}, so no wrong model can change its verdict. {first}{}",
+            method.as_str()
+        )
+    } else {
+        c.method.to_string()
+    }
+}
+
+/// The headline of a result: the check's own sentence or the table's
+/// sentence of the finding (`established`),
+/// when the verdict is the one the table expects (with the algebra note
+/// where it applies); otherwise a sentence saying which verdict was
+/// reached instead.
+pub fn headline(r: &ClaimResult) -> String {
+    if r.verdict != r.claim.expected {
+        return format!(
+            "The check of {} did not reach its finding: {} where the claims table expects {}",
+            r.claim.paper_ref,
+            r.verdict.label(),
+            r.claim.expected.label()
+        );
+    }
+    let sentence = r
+        .headline
+        .clone()
+        .unwrap_or_else(|| established(r.claim.id).to_string());
+    if algebra_only(r.claim.id) {
+        format!("{sentence} ({ALGEBRA_NOTE})")
+    } else {
+        sentence
+    }
+}
+
+/// The finding of claim `id` in one sentence, as the check establishes it
+/// when it reaches the verdict the table expects. An exhaustive match: a
+/// new claim does not compile until it has one.
+pub(crate) fn established(id: ClaimId) -> &'static str {
     use ClaimId::*;
     match id {
         CircularAnalysesDiffer => {
@@ -139,7 +212,7 @@ mod tests {
     #[test]
     fn every_claim_has_a_one_line_headline() {
         for id in ClaimId::ALL {
-            let h = headline(id);
+            let h = established(id);
             assert!(
                 !h.is_empty() && h.len() < 200 && !h.contains('\n'),
                 "{id}: {h}"

@@ -13,7 +13,7 @@
 use std::fmt::Write as _;
 
 use super::errata::{errata_section, link_citations};
-use super::findings::{headline, short_measured, Group};
+use super::findings::{headline, method_text, short_measured, Group};
 use super::intro::intro_section;
 use super::markup::{esc, prose};
 use super::CLAIMS_CSV;
@@ -234,7 +234,7 @@ fn findings_section(h: &mut String, claims: &[ClaimResult]) {
                 class = r.verdict.class(),
                 label = esc(r.verdict.class()),
                 symbol = r.verdict.symbol(),
-                headline = prose(headline(r.claim.id)),
+                headline = prose(&headline(r)),
                 measured = prose(&short_measured(&r.measured)),
             );
         }
@@ -291,7 +291,7 @@ fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
             ok = r.as_expected(),
             paper = prose(c.paper_ref),
             statement = prose(c.statement),
-            method = prose(c.method),
+            method = prose(&method_text(c)),
             tol = prose(&c.tolerances_text()),
             measured = prose(&r.measured),
             short = prose(&short_measured(&r.measured)),

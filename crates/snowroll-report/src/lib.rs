@@ -34,6 +34,7 @@ mod turn_digest;
 pub use claim::{Claim, ClaimResult, Criterion, Tally, Tolerance, Verdict, EXPECTATION_NOTE};
 pub use claim_id::{ClaimId, UnknownClaimId};
 pub use claims::{tuned_to_default, ClaimCheck, Finding, Lab, Runner, CLAIMS};
+pub use findings::{algebra_only, headline, ALGEBRA_ONLY};
 pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
 pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 

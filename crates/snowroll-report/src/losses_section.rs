@@ -169,6 +169,7 @@ mod tests {
         report.claims = RESULTS
             .iter()
             .map(|r| ClaimResult {
+                headline: None,
                 claim: &CLAIMS
                     .iter()
                     .find(|c| c.claim.id == r.claim)

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use super::findings::{headline, short_measured, Group};
+use super::findings::{headline, method_text, short_measured, Group};
 use super::CLAIMS_CSV;
 use super::{notation, Report, Tally, EXPECTATION_NOTE};
 
@@ -114,7 +114,7 @@ fn findings_section(md: &mut String, report: &Report) {
                 md,
                 "- {} [{}](#claim-{}){erratum}: {}",
                 r.verdict.symbol(),
-                cell(headline(r.claim.id)),
+                cell(&headline(r)),
                 r.claim.id.as_str(),
                 cell(&short_measured(&r.measured)),
             );
@@ -186,8 +186,8 @@ fn checks_section(md: &mut String, report: &Report) {
             "<details><summary><code>{id}</code>: {}</summary>\n\n\
              {}\n\nTolerances: {}\n\nMeasured: {}\n\n{}{see} Measured values: \
              [data/{CLAIMS_CSV}](data/{CLAIMS_CSV}).\n\n</details>\n",
-            cell(headline(c.id)),
-            cell(c.method),
+            cell(&headline(r)),
+            cell(&method_text(c)),
             cell(&c.tolerances_text()),
             cell(&r.measured),
             cell(&r.evidence),

@@ -14,7 +14,7 @@ use snowroll::{
     run_turns, Coefficients, Derivation, Model, ModelKind, Scenario, ScenarioFile, SimOptions,
     TurnModel, TurnSummary, TurnTable, TurnVariant,
 };
-use snowroll_report::{ClaimCheck, ClaimId, Lab, Verdict, CLAIMS};
+use snowroll_report::{headline, ClaimCheck, ClaimId, Lab, Verdict, ALGEBRA_ONLY, CLAIMS};
 
 /// 10^4 turns are enough for the long-run claims' verdicts (the last-decade
 /// means are within 1e-3 G of their limits there); the report runs 10^5.
@@ -719,5 +719,220 @@ fn regression_21_circular_analyses_differ_notices_distinct_but_wrong_coefficient
             Derivation::Energy,
             perturbed(Derivation::Energy, |c| c.lift *= 0.9),
         ),
+    );
+}
+
+// ---- Issue 32: what a claim's numbers are, and headlines from outcomes. ----
+
+#[test]
+fn regression_32_collision_potential_jump_divides_the_rise_by_the_energy_the_turn_released() {
+    // Turn 0 from rest under eq. (73): the turn releases the fall of its
+    // potential energy, ∫₀^{2π} m₀ r₀ [G (r₀ + bθ/π − (b/π) sin θ) − C (b/π)(1 − cos θ)] dθ
+    // = 2π m₀ G (r₀ + b) − 2 m₀ C b (40.466 J at the defaults), and the centre
+    // rises by b with the mass m₁: m₁ C b (1.2918 J), 3.19 %. The eq. (86)
+    // kinetic energy with the `turns` model's θ̇ (41.36 J) would give 3.12 %.
+    let s = Scenario::default();
+    let (b, r0) = (s.snow_depth(), s.initial_radius());
+    let rho_l = s.density() * s.length();
+    let (m0, m1) = (
+        std::f64::consts::PI * rho_l * r0 * r0,
+        std::f64::consts::PI * rho_l * (r0 + b) * (r0 + b),
+    );
+    let released =
+        2.0 * std::f64::consts::PI * m0 * s.g_along() * (r0 + b) - 2.0 * m0 * s.g_normal() * b;
+    let rise = m1 * s.g_normal() * b;
+    let result = check(ClaimId::CollisionPotentialJump).run(&lab()).unwrap();
+    let percent = format!("is {:.2} %", 100.0 * rise / released);
+    assert_eq!(percent, "is 3.19 %");
+    assert!(
+        result.measured.contains(&percent)
+            && result.measured.contains(&format!("({:.3} J", released))
+            && result.measured.contains(&format!("({:.4} J)", rise)),
+        "{}",
+        result.measured
+    );
+}
+
+#[test]
+fn regression_32_app_a_says_its_newton_half_is_no_second_check() {
+    // The snowless log's centre keeps its height, so Newton's law normal to
+    // the slope, N = m(ÿ − g_y), is m g cos α again: the claim must not
+    // count it as a check of its own.
+    let c = check(ClaimId::AppAMovingPoints);
+    let result = c.run(&lab()).unwrap();
+    assert!(
+        result.evidence.contains("not a second check") && result.measured.contains("ÿ = 0 m/s²"),
+        "{}\n{}",
+        result.measured,
+        result.evidence
+    );
+    assert!(
+        !c.claim.method.contains("and against Newton's law"),
+        "{}",
+        c.claim.method
+    );
+    for t in c.claim.tolerances {
+        assert!(
+            !t.quantity.contains("and from Newton's law"),
+            "{}",
+            t.quantity
+        );
+    }
+}
+
+/// The headline of `id` on `lab`, with its verdict.
+fn headline_on(lab: &Lab, id: ClaimId) -> (String, Verdict) {
+    let r = check(id).run(lab).unwrap();
+    (headline(&r), r.verdict)
+}
+
+/// Issue 32, item 5: a headline follows its check's outcome. Fed a wrong
+/// model, the finding's sentence changes or disappears, not only the
+/// verdict's mark; where the check measured the headline's numbers, they
+/// are the run's.
+#[test]
+fn regression_32_headlines_follow_the_measured_outcome() {
+    let s = Scenario::default();
+    // The long-run means: the numbers are the `turns` run's last decade.
+    let real = check(ClaimId::MultiTurnMeanFourNinths).run(&lab()).unwrap();
+    let w = long_run(ModelKind::Turns, &s)
+        .summary
+        .checkpoints
+        .last()
+        .copied()
+        .unwrap();
+    assert_eq!(
+        headline(&real),
+        format!(
+            "The turn model's long-run mean acceleration is {:.3} G with the collisions ({:.3} G within a turn), not the 4G/9 of eq. (79)",
+            w.window_mean_a_with_collision_over_g, w.window_mean_a_turn_over_g
+        )
+    );
+    // Collisions that cost nothing (turns-exact): no longer refuted, and
+    // the headline no longer states the G/4 finding.
+    let mut free = long_run(ModelKind::TurnsExact, &s);
+    for i in 0..free.rows.len() {
+        free.rows[i].v_after_m_s = free.rows[i].v_end_m_s;
+        if i > 0 {
+            free.rows[i].v_start_m_s = free.rows[i - 1].v_end_m_s;
+        }
+    }
+    let free = edited_table(free, |_| {});
+    let (wrong, verdict) = headline_on(
+        &lab().with_long_run(true, free),
+        ClaimId::MultiTurnMeanFourNinths,
+    );
+    assert_ne!(verdict, Verdict::Refuted);
+    assert!(
+        !wrong.contains("4G/9") && wrong.contains("did not reach its finding"),
+        "{wrong}"
+    );
+
+    // The hop threshold with the hop event off: its sentence disappears.
+    let (real, _) = headline_on(&lab(), ClaimId::Fn10HopThreshold);
+    assert!(
+        real.contains("hops in late turns exactly when tan α > 2 (α > 63.43°)"),
+        "{real}"
+    );
+    let no_hops = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let opts = SimOptions {
+                on_hop: snowroll::OnHop::Continue,
+                ..opts.clone()
+            };
+            TurnModel::new(TurnVariant::Paper).simulate(s, &opts)
+        })
+    });
+    let (wrong, _) = headline_on(&no_hops, ClaimId::Fn10HopThreshold);
+    assert!(!wrong.contains("tan α > 2"), "{wrong}");
+
+    // The collision's potential jump: a first turn that ends 1 % faster
+    // still holds (the order is judged on the last turn), but the headline's
+    // percentage is the run's: 3.19 % / 1.01² = 3.13 %.
+    let (real, _) = headline_on(&lab(), ClaimId::CollisionPotentialJump);
+    assert!(real.contains("costs 3.19 % of the energy"), "{real}");
+    let faster = edited_table(long_run(ModelKind::Turns, &s), |r| {
+        if r.turn == 0 {
+            r.v_end_m_s *= 1.01;
+        }
+    });
+    let (moved, verdict) = headline_on(
+        &lab().with_long_run(false, faster),
+        ClaimId::CollisionPotentialJump,
+    );
+    assert_eq!(verdict, Verdict::Holds);
+    assert!(moved.contains("costs 3.13 % of the energy"), "{moved}");
+
+    // A claim with the table's sentence: it goes with the verdict.
+    let (real, _) = headline_on(&lab(), ClaimId::Eq5ContactTorque);
+    let wrong = lab().with_coefficients(
+        Derivation::TorqueAboutContact,
+        perturbed(Derivation::TorqueAboutContact, |c| c.drag = 1.6),
+    );
+    let (wrong, _) = headline_on(&wrong, ClaimId::Eq5ContactTorque);
+    assert!(
+        real.contains("eq. (5), holds") && !wrong.contains("eq. (5), holds"),
+        "{real}\n{wrong}"
+    );
+}
+
+/// Issue 32, item 6: the five claims that check only the note's algebra
+/// run no model, so no wrong model can flip them; the report says so in
+/// their headline and method.
+#[test]
+fn regression_32_algebra_checks_are_marked_as_such() {
+    for id in ALGEBRA_ONLY {
+        let (h, _) = headline_on(&lab(), id);
+        assert!(
+            h.ends_with("(an algebra check: it evaluates the note's equations and runs no model)"),
+            "{id}: {h}"
+        );
+        // A lab whose every model run fails: an algebra check does not notice.
+        let broken = lab().with_runner(|_, _, _| {
+            Some(Err(snowroll::SimError::StepSizeTooSmall { t: 0.0, h: 0.0 }))
+        });
+        assert_eq!(
+            verdict(&broken, id),
+            check(id).claim.expected,
+            "{id} ran a model"
+        );
+    }
+    let (h, _) = headline_on(&lab(), ClaimId::Eq5ContactTorque);
+    assert!(!h.contains("algebra check"), "{h}");
+}
+
+/// Issue 32, item 6: `regime-map-borders` bisects each border and holds the
+/// stall border to 1e-6° of the fn. 7 form, so a 1 % error in the turn
+/// model's lift of the snow flips it (the map's cells alone, 0.5° wide at
+/// the stall slopes, did not notice).
+#[test]
+fn regression_32_regime_map_borders_notice_a_one_percent_error_in_the_lift() {
+    // The lift term of eq. (73), (b/π)(1 − cos θ) C, 1 % too strong: from
+    // rest the log starts iff tan α > max Q/P, so the same runs with Q 1 %
+    // larger are those at tan α' = tan α/1.01 (the stall slope moves
+    // ~0.01°, ~2 % of a cell: the map's cells are unchanged).
+    let stronger_lift = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let mut f = ScenarioFile::from(*s);
+            f.alpha_deg = (f.alpha_deg.to_radians().tan() / 1.01).atan().to_degrees();
+            TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    changes(ClaimId::RegimeMapBorders, &stronger_lift);
+    // The turn model run as if the snow were 1 % deeper.
+    let deeper = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::Turns).then(|| {
+            let mut f = ScenarioFile::from(*s);
+            f.snow_depth *= 1.01;
+            TurnModel::new(TurnVariant::Paper).simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    let r = check(ClaimId::RegimeMapBorders).run(&deeper).unwrap();
+    assert_eq!(r.verdict, Verdict::Refuted, "{}", r.measured);
+    // The map's cells alone would not have noticed: still within them.
+    assert!(
+        r.measured.contains("the map's cells at most 0."),
+        "{}",
+        r.measured
     );
 }

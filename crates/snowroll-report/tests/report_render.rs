@@ -344,12 +344,14 @@ fn small_report() -> Report {
         claims: vec![
             ClaimResult {
                 claim: &HOLDS,
+                headline: None,
                 measured: "1.0e-12".into(),
                 verdict: Verdict::Holds,
                 evidence: "e".into(),
             },
             ClaimResult {
                 claim: &CORRECTED,
+                headline: None,
                 measured: "2".into(),
                 verdict: Verdict::Refuted,
                 evidence: "differs".into(),
@@ -470,6 +472,20 @@ fn claims_json_carries_verdicts_errata_and_mismatches() {
     assert_eq!(claims[1]["verdict"]["verdict"], "refuted");
     assert_eq!(claims[1]["as_expected"], false);
     assert_eq!(v["tally"]["unexpected"], 1);
+    // The headline as the report prints it: the finding where the verdict
+    // is the expected one, a sentence saying otherwise where it is not.
+    assert!(
+        claims[1]["headline"]
+            .as_str()
+            .unwrap()
+            .contains("did not reach its finding: refuted where the claims table expects holds after correction"),
+        "{}",
+        claims[1]["headline"]
+    );
+    assert!(!claims[0]["headline"]
+        .as_str()
+        .unwrap()
+        .contains("did not reach"));
 }
 
 #[test]

@@ -149,7 +149,7 @@ pub use models::{
     TurnRunEnd, TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
     WarningCode,
 };
-pub use number::format_number;
+pub use number::{format_number, format_readable};
 pub use params::{Given, Param, RecordedSampling, Settings, Value, PARAMS};
 pub use scenario::{ChordWord, Scenario, ScenarioFile, Shape, Swath, SwathWidth};
 pub use trajectory::{

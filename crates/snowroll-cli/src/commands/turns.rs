@@ -6,8 +6,8 @@
 
 use anyhow::{bail, Context, Result};
 use snowroll::{
-    default_atol, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions, TurnMethod,
-    TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
+    default_atol, format_readable, run_warnings, ModelKind, Sampling, Scenario, SimError,
+    SimOptions, TurnMethod, TurnModel, TurnRunEnd, TurnSummary, TurnVariant, WarningCode,
 };
 use snowroll_io::{RunParams, TurnTableWriter};
 
@@ -180,7 +180,7 @@ fn summary(end: &TurnRunEnd) -> String {
         end.model.id(),
         end.model.equation(),
         s.turns,
-        s.g_along_m_s2
+        format_readable(s.g_along_m_s2)
     );
     let Some(all) = s.overall() else {
         text.push_str("  no turn was completed\n");

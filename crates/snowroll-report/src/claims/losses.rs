@@ -47,6 +47,7 @@ pub(super) fn drag_terminal_velocity(lab: &Lab) -> Result<Finding, SimError> {
     let dev = (v / vt - 1.0).abs();
     let reached = traj.stop.reason == StopReason::Terminal;
     Ok(Finding {
+        headline: None,
         measured: format!(
             "stop `{}` at t = {:.3} s with v = {v:.12} m/s; closed form v_t = {vt:.12} m/s",
             serde_json::to_value(traj.stop.reason)
@@ -340,6 +341,7 @@ pub(super) fn ledger_balances(lab: &Lab) -> Result<Finding, SimError> {
     let w4_ok = LEDGER_W4.accepts_deviation(w4_dev) && w4 > 0.0 && w_model > 0.0;
     let ok = balance_ok && conserved_ok && w4_ok;
     Ok(Finding {
+        headline: None,
         measured: format!(
             "largest imbalance {} of the largest term ({worst_at}), over {samples} samples of {runs} runs; largest |W_model| of energy and snowless {} of the largest term; torque-cm from rest without losses, 100 s: W_model = {w_model:.6e} J against W_4 = {w4:.6e} J, largest deviation {} of max(K, E_released)",
             notation::number(worst, 2),

@@ -277,6 +277,12 @@ impl Lab {
 /// What a check found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Finding {
+    /// The finding in one sentence, composed from the numbers the check
+    /// measured, where it has such numbers; `None` for the table's sentence
+    /// of the verdict reached ([`crate::headline`]). A headline is printed
+    /// only beside the verdict its check expects: any other verdict gets a
+    /// sentence that says so instead.
+    pub headline: Option<String>,
     /// The measured numbers, with units.
     pub measured: String,
     /// The verdict reached.
@@ -303,6 +309,7 @@ impl ClaimCheck {
         let f = (self.check)(lab)?;
         Ok(ClaimResult {
             claim: &self.claim,
+            headline: f.headline,
             measured: f.measured,
             verdict: f.verdict,
             evidence: f.evidence,

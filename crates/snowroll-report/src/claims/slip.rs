@@ -213,6 +213,7 @@ pub(super) fn slip_mu_min(lab: &Lab) -> Result<Finding, SimError> {
     // A scenario that does not start from rest has no closed form for the snowy models.
     ok &= checked == 8;
     Ok(Finding {
+        headline: None,
         measured: parts.join("; "),
         verdict: holds_if(ok, &numbers),
         evidence: format!(

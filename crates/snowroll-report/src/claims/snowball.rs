@@ -56,6 +56,7 @@ pub(super) fn five_sevenths(lab: &Lab) -> Result<Finding, SimError> {
     let ok = FIVE_SEVENTHS.accepts_deviation(worst_a) && FIVE_SEVENTHS.accepts_deviation(x_dev);
     let a0 = traj.samples.first().map_or(f64::NAN, |p| p.a_m_s2 / g);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "snowless ball: a/G = {a0:.15} (5/7 = {:.15}); x({:.0} s) = {:.9} m",
             5.0 / 7.0,
@@ -122,6 +123,7 @@ pub(super) fn ball_terminal_fractions(lab: &Lab) -> Result<Finding, SimError> {
     }
     let ok = BALL_TERMINAL_LIMIT.accepts_deviation(worst);
     Ok(Finding {
+        headline: None,
         measured: format!("ball, a/G at x = {BALL_X_FAR:e} m: {}", parts.join("; ")),
         verdict: holds_if(ok, &numbers),
         evidence: format!(
@@ -201,6 +203,7 @@ pub(super) fn tpt_letter(lab: &Lab) -> Result<Finding, SimError> {
     }
     let apart = TPT_OTHERS_APART.accepts_deviation(closest_other);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "ball torque-cm: a/G = {a0:.6} at t = 0 (5/7 = {:.6}), {a_end:.6} at t = 100 s (→ 1/6 = {:.6}); other models' v² off the letter's by {}",
             5.0 / 7.0,

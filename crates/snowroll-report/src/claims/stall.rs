@@ -176,7 +176,7 @@ fn leading_form_errors(eps: f64) -> ((f64, f64), (f64, f64)) {
 
 /// Whether `kind` started from rest at `deg` degrees stalls inside its
 /// first turn (and the run that says so).
-fn stalls_in_first_turn(
+pub(super) fn stalls_in_first_turn(
     lab: &Lab,
     kind: ModelKind,
     base: &Scenario,
@@ -291,6 +291,12 @@ pub(super) fn stall_in_first_turn(lab: &Lab) -> Result<Finding, SimError> {
     numbers.extend([ratio_lead, ratio_corr]);
     let deg = |t: f64| t.atan().to_degrees();
     Ok(Finding {
+        headline: Some(format!(
+            "In the turn model a light log starts and stalls within its first turn below {:.4}° (turns) or {:.4}° (turns-exact) at b/r0 = {}",
+            deg(closed),
+            deg(exact),
+            snowroll::format_readable(b / r0)
+        )),
         measured: format!(
             "b = {b} m, r0 = {r0} m (ε = b/(πr0) = {eps:.5}): {}; closed form {:.6}°, leading order ε(1 − cos θ₁) {:.4}° (error {:.2} %), first-corrected {:.5}° (error {:.3} %); error ratios from ε/10 to ε/100: {ratio_lead:.2} and {ratio_corr:.1}",
             parts.join("; "),

@@ -29,7 +29,7 @@ use super::multi_turn::{
     mean_four_ninths, never_settles, COLLISION_L, COLLISION_T, EQ88_APART, EQ88_EXACT, ERRATUM_87,
     JUMP_ORDER, LONG_RUN, NOTE_APART, SWING, TRUNCATION_ORDER,
 };
-use super::regime::{map_borders, MAP_CELL};
+use super::regime::{map_borders, MAP_CELL, MAP_HOP_BISECTED, MAP_STALL_BISECTED};
 use super::slip::{slip_mu_min, MU_AT_END, MU_AT_REST};
 use super::snowball::{
     ball_terminal_fractions, five_sevenths, tpt_letter, BALL_TERMINAL_LIMIT, FIVE_SEVENTHS,
@@ -216,7 +216,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::AppAMovingPoints,
             paper_ref: "App. A.3.2, A.4.1, A.5.2, eqs. (111), (115), (127), (128)",
             statement: "About the moving contact line L′_P = I_cm ω = mr²v/2 (111); F_y − mg = 0 (115); about the point P of A.5.2, τ′_P = τ_P + rma and L′_P = L_cm.",
-            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; the normal force the snowless model reports against m g cos α and against Newton's law m(ÿ − g_y) for its centre's simulated motion",
+            method: "a rolling disk integrated element by element: L′_P and τ′_P from eqs. (105), (106) for P on the contact line, for P the geometric point (x, 2r) and for the material point at the top; the normal force the snowless model reports against m g cos α (Newton's law normal to the slope, m(ÿ − g_y), says the same for a centre at constant height: one check)",
             tolerances: &[APP_A_INTEGRALS, APP_A_APART],
             expected: Verdict::HoldsAfterCorrection(ERRATUM_APP_A),
         },
@@ -326,7 +326,7 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::CollisionPotentialJump,
             paper_ref: "§3.4, eqs. (70), (89)",
             statement: "At the collision the centre of the log rises by b; neglecting the potential energy this takes costs only a relative O(b/r) per turn.",
-            method: "the rise m g b cos α from the element integrals, against the energy each turn releases, on the long run of turns; its ratio times rₖ/b against the derived C/(2πG)",
+            method: "the rise m g b cos α from the element integrals, divided by the energy each turn releases (the kinetic energy T_end − T_beg the long run of `turns` gains over the turn, I_C of eq. (76)); that ratio times rₖ/b against the derived C/(2πG)",
             tolerances: &[JUMP_ORDER],
             expected: Verdict::Holds,
         },
@@ -414,8 +414,8 @@ pub static CLAIMS: &[ClaimCheck] = &[
             id: ClaimId::RegimeMapBorders,
             paper_ref: "fn. 7, fn. 10",
             statement: "Over slope × snow depth the turn-by-turn log started from rest stalls in its first turn below the fn. 7 slope, hops within K turns above tan α_K = (1 + ε c_C)/(½ − ε c_G) (ε = b/r_(K−1)) and rolls on between: the closed forms are the borders of the regime map.",
-            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms typed in the check (not the library's functions)",
-            tolerances: &[MAP_CELL],
+            method: "turns from rest for 200 turns on 48 slopes (0.5°–6° by 0.5°, 8°–56° by 4°, 58°–80° by 1°) × 7 depths (b/r0 = 0.05–0.2): in each row, the midpoint between the last stalling and first rolling slope, and between the last rolling and first hopping slope, against the closed forms typed in the check (not the library's functions); then each border bisected inside its cell, on runs of turns from rest (the stall: does the log get past turn 0; the hop: does it hop within 200 turns), against the same forms",
+            tolerances: &[MAP_CELL, MAP_STALL_BISECTED, MAP_HOP_BISECTED],
             expected: Verdict::Holds,
         },
         check: map_borders,

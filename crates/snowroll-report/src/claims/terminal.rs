@@ -216,6 +216,7 @@ pub(super) fn terminal_values(lab: &Lab) -> Result<Finding, SimError> {
         ));
     }
     Ok(Finding {
+        headline: None,
         measured: parts.join("; "),
         verdict: holds_if(ok, &numbers),
         evidence: format!(
@@ -252,6 +253,7 @@ pub(super) fn eq35_third(lab: &Lab) -> Result<Finding, SimError> {
     )?;
     let ok = EQ35_LIMIT.accepts(got, 1.0 / 3.0);
     Ok(Finding {
+        headline: None,
         measured: format!("a/G of eq. (32) at x = 1000 km: {got:.8}"),
         verdict: holds_if(ok, &[got]),
         evidence: format!(
@@ -358,6 +360,7 @@ pub(super) fn eq33_35_argument(lab: &Lab) -> Result<Finding, SimError> {
         && EQ33_PRINTED_APART.accepts_deviation(dev_34p);
     let numbers = [worst_33, least_33p, dev_34, dev_34p, dev_27, dev_x];
     Ok(Finding {
+        headline: None,
         measured: format!(
             "eq. (32) at t = 0.2–2 s: max relative |v̈ − (33) corrected| = {worst_33:.1e}, smallest relative |v̈ − (33) printed| = {least_33p:.2}; at x = 1000 km (t = {t:.1} s): |a − bv²/(2πr²)|/a = {dev_34:.1e}, |a − bv²/(2πr³)|/a = {dev_34p:.2}, |πr²/(bx) − 1| = {dev_27:.1e}, |a t²/2 − x|/x = {dev_x:.1e}"
         ),
@@ -384,6 +387,7 @@ pub(super) fn eq36_slows(lab: &Lab) -> Result<Finding, SimError> {
     let p36 = approach_power(lab, ModelKind::QuasiCircularLift, s, 1.0 / 3.0, (1e3, 1e5))?;
     let ok = APPROACH_POWER.accepts(p32, want32) && APPROACH_POWER.accepts(p36, want36);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "|a − G/3| ∝ r^−p: p = {p32:.3} for (32) (x 10–1000 m), p = {p36:.3} for (32)+(36) (x 1–100 km)"
         ),

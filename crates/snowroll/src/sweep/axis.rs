@@ -7,7 +7,7 @@ use std::fmt;
 use thiserror::Error;
 
 use crate::error::ParamError;
-use crate::number::format_number;
+use crate::number::{format_number, READABLE_DIGITS};
 
 /// A parameter that a sweep can vary. The names are the command line's
 /// (`--alpha-deg`) in snake case (`alpha_deg`), as in config files.
@@ -221,18 +221,47 @@ impl Values {
         self.len() == 0
     }
 
-    /// The `k`-th value, `k < len()`: for a range
-    /// `start + (end − start)·k/(count − 1)`, with the last one exactly `end`.
+    /// The `k`-th value, `k < len()`. For a range it is
+    /// `start + (end − start)·k/(count − 1)` in decimal: with the decimal
+    /// places of `start` and `end` as written, and of the step where it ends
+    /// within 15 significant digits (`0.001:0.1:100` gives `0.012`, not
+    /// `0.012000000000000002`); a step that does not end (`0:1:4`) is kept
+    /// to [`READABLE_DIGITS`] significant digits. The value returned is the
+    /// `f64` of that decimal, so the value printed ([`format_number`]) is
+    /// the value run, and a row reruns from its printed values. The ends are
+    /// exactly `start` and `end`. Ends too far apart in magnitude for exact
+    /// integer arithmetic (`1e-100:1:3`) fall back to the binary formula.
     pub fn get(&self, k: u64) -> f64 {
+        self.get_planned(self.decimal_range().as_ref(), k)
+    }
+
+    /// [`Values::get`] with the plan [`Values::decimal_range`] made
+    /// beforehand (a grid makes it once per axis, not once per point).
+    pub fn get_planned(&self, plan: Option<&DecimalRange>, k: u64) -> f64 {
         match self {
             Values::List(v) => v.get(k as usize).copied().unwrap_or(f64::NAN),
             Values::Range { start, end, count } => {
                 if k + 1 >= *count {
                     *end
+                } else if k == 0 {
+                    *start
                 } else {
-                    start + (end - start) * (k as f64 / (*count - 1) as f64)
+                    match plan {
+                        Some(plan) => plan.value(k),
+                        None => start + (end - start) * (k as f64 / (*count - 1) as f64),
+                    }
                 }
             }
+        }
+    }
+
+    /// The decimal plan of a range ([`DecimalRange`]), made once so that
+    /// [`Values::get`]'s values cost no text; `None` for a list, a range of
+    /// one value, or ends too far apart for exact integers.
+    pub fn decimal_range(&self) -> Option<DecimalRange> {
+        match self {
+            Values::List(_) => None,
+            Values::Range { start, end, count } => DecimalRange::new(*start, *end, *count),
         }
     }
 
@@ -270,6 +299,120 @@ impl fmt::Display for Values {
     }
 }
 
+/// `x` as ±`digits`·10^`exp` with the fewest digits (the shortest text
+/// that round-trips): `0.012` is (12, −3), `2.5e12` is (25, 11).
+fn decimal_parts(x: f64) -> Option<(i128, i32)> {
+    let text = format!("{:e}", x.abs());
+    let (mantissa, exp) = text.split_once('e')?;
+    let exp: i32 = exp.parse().ok()?;
+    let (whole, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let digits: i128 = format!("{whole}{frac}").parse().ok()?;
+    let sign = if x < 0.0 { -1 } else { 1 };
+    Some((sign * digits, exp - frac.len() as i32))
+}
+
+/// `10^n` for `n ≥ 0`, if it fits.
+fn pow10(n: i32) -> Option<i128> {
+    10i128.checked_pow(u32::try_from(n).ok()?)
+}
+
+/// `num/den` rounded to the nearest integer, halves away from zero; `den > 0`.
+fn div_round(num: i128, den: i128) -> i128 {
+    let (q, r) = (num / den, num % den);
+    if 2 * r.abs() >= den {
+        q + num.signum()
+    } else {
+        q
+    }
+}
+
+/// The decimal values of a range `start:end:count` ([`Values::get`]): the
+/// k-th is `(start + k·span/intervals)·10^exp` in integers, `span/intervals`
+/// rounded to the nearest integer where it does not end. Made once per axis
+/// ([`Values::decimal_range`]), so that a grid's points cost no text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DecimalRange {
+    /// `start` in units of 10^`exp`.
+    start: i128,
+    /// `end − start` in units of 10^`exp` (divided by `intervals` only
+    /// after the multiplication by k, so that the k-th value rounds once).
+    span: i128,
+    /// `count − 1`.
+    intervals: i128,
+    /// The decimal exponent of the unit.
+    exp: i32,
+}
+
+impl DecimalRange {
+    /// The plan of `start:end:count` (`count ≥ 2`), or `None` when its
+    /// integers would overflow.
+    pub fn new(start: f64, end: f64, count: u64) -> Option<Self> {
+        let ((ds, es), (de, ee)) = (decimal_parts(start)?, decimal_parts(end)?);
+        // Both ends as integers of the unit 10^low.
+        let low = es.min(ee);
+        let s = ds.checked_mul(pow10(es - low)?)?;
+        let e = de.checked_mul(pow10(ee - low)?)?;
+        let span = e.checked_sub(s)?;
+        let intervals = i128::from(count.checked_sub(1).filter(|&n| n > 0)?);
+        // Extra decimal places: the fewest at which the step ends, while it
+        // has at most 15 significant digits; else READABLE_DIGITS of the step.
+        let mut extra = 0;
+        loop {
+            let scaled = span.checked_mul(pow10(extra)?)?;
+            if scaled % intervals == 0 {
+                break;
+            }
+            if (scaled / intervals).abs() >= pow10(15)? {
+                extra = 0;
+                while (span.checked_mul(pow10(extra)?)? / intervals).abs()
+                    < pow10(READABLE_DIGITS as i32 - 1)?
+                {
+                    extra += 1;
+                }
+                break;
+            }
+            extra += 1;
+        }
+        let unit = pow10(extra)?;
+        let plan = Self {
+            start: s.checked_mul(unit)?,
+            span: span.checked_mul(unit)?,
+            intervals,
+            exp: low - extra,
+        };
+        // Every k ≤ intervals must fit: the largest offset is span·intervals.
+        plan.span.checked_mul(intervals)?;
+        Some(plan)
+    }
+
+    /// The `k`-th value (`k ≤ count − 1`).
+    pub fn value(&self, k: u64) -> f64 {
+        let k = i128::from(k).min(self.intervals);
+        // Cannot overflow: checked for k = intervals in `new`.
+        let v = self.start + div_round(self.span * k, self.intervals);
+        decimal_to_f64(v, self.exp)
+    }
+}
+
+/// Exact powers of ten in `f64`, 10^0 to 10^22.
+const POW10_F64: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// `v·10^exp` rounded to the nearest `f64`, as parsing its text would give:
+/// one IEEE multiplication or division of two exact numbers where `v` fits
+/// in 53 bits and |exp| ≤ 22 (correctly rounded), else by parsing.
+fn decimal_to_f64(v: i128, exp: i32) -> f64 {
+    if v.unsigned_abs() <= 1 << 53 {
+        if let Some(&p) = POW10_F64.get(exp.unsigned_abs() as usize) {
+            let m = v as f64;
+            return if exp >= 0 { m * p } else { m / p };
+        }
+    }
+    format!("{v}e{exp}").parse().unwrap_or(f64::NAN)
+}
+
 /// One swept parameter and its values.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
@@ -301,5 +444,67 @@ mod tests {
         }
         let shown = Values::parse("rtol", "1e-100,0.5").unwrap().to_string();
         assert_eq!(shown, "1e-100,0.5");
+    }
+
+    /// Issue 32, item 7: a range's values have the decimal digits its spec
+    /// needs, printed and run alike.
+    #[test]
+    fn range_values_have_the_digits_of_their_spec() {
+        let shown = |text: &str| -> Vec<String> {
+            let v = Values::parse("snow_depth", text).unwrap();
+            (0..v.len()).map(|k| format_number(v.get(k))).collect()
+        };
+        let fine = shown("0.001:0.1:100");
+        assert_eq!(fine[11], "0.012");
+        for (k, text) in fine.iter().enumerate() {
+            let want: f64 = format!("{:.3}", 0.001 * (k + 1) as f64).parse().unwrap();
+            assert_eq!(text, &format_number(want), "{k}");
+            assert!(text.len() <= 5, "{text}");
+        }
+        assert_eq!(shown("0.1:0.7:4"), ["0.1", "0.3", "0.5", "0.7"]);
+        assert_eq!(shown("1e-12:1e-6:3"), ["1e-12", "5.000005e-7", "1e-6"]);
+        assert_eq!(shown("0:1:4"), ["0", "0.333333", "0.666667", "1"]);
+        assert_eq!(shown("31:29:3"), ["31", "30", "29"]);
+        assert_eq!(shown("-1:1:5"), ["-1", "-0.5", "0", "0.5", "1"]);
+        assert_eq!(shown("0:1:9")[3], "0.375");
+        assert_eq!(shown("0:1:8")[3], "0.428571");
+        // Ends too far apart for i128: the binary formula, still in range.
+        let wide = shown("1e-100:1:3");
+        assert_eq!(wide[0], "1e-100");
+        assert_eq!(wide[1], "0.5");
+        assert_eq!(wide[2], "1");
+    }
+
+    /// The fast conversion of a planned value (one IEEE operation on exact
+    /// numbers, [`decimal_to_f64`]) gives the `f64` that parsing the
+    /// decimal's text gives, and a grid's planned values are `get`'s.
+    #[test]
+    fn planned_values_are_their_decimals_parsed() {
+        for text in [
+            "0.001:0.1:1000",
+            "1e-12:1e-6:7",
+            "5:60:12",
+            "0:1:3",
+            "1.5e-300:2.5e-300:11",
+            "123456.789:987654.321:77",
+            "0.3:0.1:7",
+            "1e-5:89.99:1001",
+            "9007199254740993:9007199254741993:3",
+        ] {
+            let v = Values::parse("x", text).unwrap();
+            let plan = v.decimal_range();
+            assert!(plan.is_some(), "{text}");
+            for k in 0..v.len() {
+                let p = plan.unwrap();
+                let exact = p.start + div_round(p.span * i128::from(k), p.intervals);
+                let parsed: f64 = format!("{exact}e{}", p.exp).parse().unwrap();
+                assert_eq!(p.value(k).to_bits(), parsed.to_bits(), "{text}, k = {k}");
+                assert_eq!(
+                    v.get(k).to_bits(),
+                    v.get_planned(plan.as_ref(), k).to_bits(),
+                    "{text}, k = {k}"
+                );
+            }
+        }
     }
 }

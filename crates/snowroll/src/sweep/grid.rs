@@ -7,7 +7,7 @@
 //! one varying fastest (nested loops written in that order). Ranges are
 //! never expanded into memory: [`Values::get`] computes the k-th value.
 
-use super::axis::{Axis, GridError, Param};
+use super::axis::{Axis, DecimalRange, GridError, Param};
 use crate::error::ParamError;
 use crate::integrate::Tolerances;
 use crate::models::{CollisionModel, ModelKind};
@@ -41,6 +41,8 @@ pub struct Grid {
     choices: Choices,
     /// At most one per parameter, in [`Param::ALL`] order.
     axes: Vec<Axis>,
+    /// The decimal plan of each axis ([`Values::decimal_range`](super::Values::decimal_range)), made once.
+    plans: Vec<Option<DecimalRange>>,
     /// Number of points.
     len: u64,
 }
@@ -89,10 +91,12 @@ impl Grid {
                 limit: MAX_GRID_POINTS,
             });
         }
+        let plans = axes.iter().map(|a| a.values.decimal_range()).collect();
         Ok(Grid {
             models,
             choices: Choices::default(),
             axes,
+            plans,
             len: points as u64,
         })
     }
@@ -185,13 +189,13 @@ impl Grid {
             ..SimOptions::default()
         };
         let mut rest = i;
-        for axis in self.axes.iter().rev() {
+        for (axis, plan) in self.axes.iter().zip(&self.plans).rev() {
             let n = axis.values.len();
             set(
                 &mut file,
                 &mut options,
                 axis.param,
-                axis.values.get(rest % n),
+                axis.values.get_planned(plan.as_ref(), rest % n),
             );
             rest /= n;
         }

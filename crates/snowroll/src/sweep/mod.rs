@@ -22,7 +22,7 @@ mod row;
 mod run;
 
 pub use crate::models::{circular_end, ContactCheck, FastEnd, SpeedSquared};
-pub use axis::{Axis, GridError, Param, Values};
+pub use axis::{Axis, DecimalRange, GridError, Param, Values};
 pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
 pub use row::{point_warnings, SweepRow};

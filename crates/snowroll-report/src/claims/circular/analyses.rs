@@ -142,6 +142,7 @@ pub(in crate::claims) fn circular_differ(lab: &Lab) -> Result<Finding, SimError>
     let mut numbers = vec![min_gap, worst_coefficient, terminal_gap];
     numbers.extend(&fractions);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "at t = 10 s: {measured}; read off each equation at r = {{1, 3, 10}} r0: {}",
             read.join("; ")
@@ -215,6 +216,7 @@ pub(in crate::claims) fn circular_agree_as_b_vanishes(lab: &Lab) -> Result<Findi
     let mut numbers = ratios.clone();
     numbers.push(spreads[2].1);
     Ok(Finding {
+        headline: None,
         measured: spreads
             .iter()
             .map(|(b, w)| format!("b = {b:e} m: max |a/G − 2/3| = {w:.2e}"))
@@ -306,6 +308,7 @@ pub(in crate::claims) fn lagrangian_vs_energy(lab: &Lab) -> Result<Finding, SimE
     let apart = LAGRANGE_APART.accepts_deviation(largest_gap);
     let numbers = [worst_corrected, worst_difference, largest_gap];
     Ok(Finding {
+        headline: None,
         measured: format!(
             "on the {}-state grid x ∈ {} m × v ∈ {} m/s: max |a(21 corrected) − a(14)|/G = {worst_corrected:.1e}; max |(a₂₁ − a₁₄) − derived|/G = {worst_difference:.1e}; max |a₂₁ − a₁₄|/G = {largest_gap:.4}",
             LAGRANGE_XS.len() * LAGRANGE_VS.len(),

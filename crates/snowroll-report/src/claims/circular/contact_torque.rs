@@ -66,6 +66,7 @@ pub(in crate::claims) fn eq5_contact_torque(lab: &Lab) -> Result<Finding, SimErr
         &[worst_corrected, least_printed],
     );
     Ok(Finding {
+        headline: None,
         measured: format!(
             "eq. (6) at t = 0.5, 2, 8 s: max relative |d(3mrv/2)/dt − r m G| = {worst_corrected:.1e}; smallest relative |d(3mr²/2)/dt − r m G| = {least_printed:.3}"
         ),

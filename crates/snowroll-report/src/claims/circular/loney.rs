@@ -75,6 +75,7 @@ pub(in crate::claims) fn loney_closed_form(lab: &Lab) -> Result<Finding, SimErro
     }
     let ok = LONEY_SPEED.accepts_deviation(worst);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "max relative |v_ODE − v_Loney| over 0 ≤ x ≤ 10 km, 3 scenarios: {worst:.2e}"
         ),
@@ -130,6 +131,7 @@ pub(in crate::claims) fn loney_coefficient(lab: &Lab) -> Result<Finding, SimErro
         &[dev_corrected, dev_printed],
     );
     Ok(Finding {
+        headline: None,
         measured: format!(
             "at x = {x} m: ½ du/dx = {half_du:.6} m/s², 7bK/6 form {corrected:.6}, printed 7bK/3 form {printed:.6}"
         ),
@@ -174,6 +176,7 @@ pub(in crate::claims) fn loney_limit(lab: &Lab) -> Result<Finding, SimError> {
     )?;
     let ok = LONEY_LIMIT.accepts(closed, 0.2) && LONEY_LIMIT.accepts(sim, 0.2);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "a/G at x = {x:e} m: ½ du/dx of fn. 4 {closed:.10}, integrated eq. (4) {sim:.10}"
         ),

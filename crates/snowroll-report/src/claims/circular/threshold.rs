@@ -117,6 +117,7 @@ pub(in crate::claims) fn stall_threshold(lab: &Lab) -> Result<Finding, SimError>
         ));
     }
     Ok(Finding {
+        headline: None,
         measured: format!("b = {b} m, r0 = {r0} m: {}", parts.join("; ")),
         verdict: holds_if(ok, &numbers),
         evidence: format!(

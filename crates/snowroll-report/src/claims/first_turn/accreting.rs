@@ -161,6 +161,7 @@ pub(in crate::claims) fn eq51_55_accreting_body(lab: &Lab) -> Result<Finding, Si
     let mut numbers = ratios.clone();
     numbers.push(worst_b3);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "4 states (θ, θ̇): energy − torque against b³ρl(2C + 3bθ̇² + 4r0θ̇²)/24: max relative deviation {worst_b3:.1e}; |θ̈ − θ̈ of (55)| shrinks {} -fold for a tenfold smaller b",
             ratios

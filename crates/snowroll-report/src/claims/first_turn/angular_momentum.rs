@@ -154,6 +154,7 @@ pub(in crate::claims) fn eq47_48_angular_momentum(lab: &Lab) -> Result<Finding, 
         EQ47_48_APART.accepts_deviation(least_47p) && EQ47_48_APART.accepts_deviation(dev_48p);
     let numbers = [worst_47, least_47p, dev_48, dev_48p, order_ratio];
     Ok(Finding {
+        headline: None,
         measured: format!(
             "at θ = {theta} rad: |ẋ′ − (47)|/(r0θ̇) ≤ {worst_47:.1e} corrected, ≥ {least_47p:.2} printed; ∫ integrand of (48) against ∫ dm (x′ − x_cm) × v′: {dev_48:.1e} corrected, {dev_48p:.2} printed (disk alone: printed {disk_printed:.3e} m⁴ against πr0⁴/2 = {:.3e} m⁴); |L_cm exact − (48)| shrinks {order_ratio:.1}-fold for a tenfold smaller b",
             PI * r0.powi(4) / 2.0
@@ -209,6 +210,7 @@ pub(in crate::claims) fn eq54_erratum(lab: &Lab) -> Result<Finding, SimError> {
     let corrected_ok = EQ54_ORDER.accepts(c_ratio, 100.0);
     let printed_first_order = EQ54_ORDER.accepts(p_ratio, 10.0);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "residual vs exact product for b = 1e-3 r0 → 1e-4 r0 shrinks by {c_ratio:.1} (corrected) and by {p_ratio:.1} (printed)"
         ),

@@ -93,6 +93,7 @@ pub(in crate::claims) fn first_turn_equivalence(lab: &Lab) -> Result<Finding, Si
         .iter()
         .all(|d| FIRST_TURN_APART.accepts_deviation(*d));
     Ok(Finding {
+        headline: None,
         measured: format!(
             "max |Δa|/G over θ ∈ (0, 2π), 3 speeds: corrected (58) vs (64) vs (69): {worst_corr:.1e}; printed (58) vs corrected: {worst_58:.2e}; printed (63): {worst_63:.3}; printed (69): {worst_69:.2e}"
         ),

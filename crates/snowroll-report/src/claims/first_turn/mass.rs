@@ -76,6 +76,7 @@ pub(in crate::claims) fn eq70_mass(lab: &Lab) -> Result<Finding, SimError> {
         && MASS_FIRST_ORDER.accepts(first_order, first_order_want);
     let dev_printed = (printed - integrated).abs() / integrated;
     Ok(Finding {
+        headline: None,
         measured: format!(
             "mass after one turn: disk + integrated layer {integrated:.6} kg; πρl r1² {corrected:.6} kg; printed 2πρl r1² {printed:.6} kg; turns-exact at θ = 2π {exact_model:.6} kg; turns (eq. (38)) {first_order:.6} kg"
         ),

@@ -120,6 +120,7 @@ pub(in crate::claims) fn collision_loss(lab: &Lab) -> Result<Finding, SimError> 
     }
     let ok = COLLISION_L.accepts_deviation(worst_l) && COLLISION_T.accepts_deviation(worst_t);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "{count} collisions (the first 200 and the last of each turn model): max relative |v after − v after predicted from the impact| = {worst_l:.1e}; max relative |T after/T before − (r₁² + 2r₀²)/(3r₁²)| = {worst_t:.1e}; the first collision loses {:.2} % of T",
             100.0 * first_loss
@@ -142,8 +143,14 @@ pub(in crate::claims) const JUMP_ORDER: Criterion = Criterion {
 /// §3.4 (`docs/errata.md`, the collision's potential energy): at each
 /// collision the centre rises by b at no cost in kinetic energy. The rise,
 /// ΔV = M g cos α (y_after − y_before) from the element integrals, is
-/// compared with the energy the turn released, ΔE = T_end − T_beg; their
-/// ratio falls like b/r_k, to `C b/(2πG r_k)`.
+/// compared with the energy the turn released: the kinetic energy the
+/// `turns` run gained over the turn, ΔE = T_end − T_beg, each T = ½ I_C θ̇²
+/// with I_C of eq. (76) at θ = 2π and at θ = 0 and θ̇ = v/r_k of the run
+/// (eq. (73) conserves this energy within a turn, so ΔE is the fall of its
+/// potential energy). Their ratio falls like b/r_k, to `C b/(2πG r_k)`.
+/// Not the eq. (86) kinetic energy (I_C of eq. (85), the round log of
+/// radius r_(k+1)): with the `turns` run's θ̇ that is not the energy of any
+/// one model.
 pub(in crate::claims) fn collision_potential_jump(lab: &Lab) -> Result<Finding, SimError> {
     let s = lab.scenario();
     let Symbols {
@@ -154,7 +161,8 @@ pub(in crate::claims) fn collision_potential_jump(lab: &Lab) -> Result<Finding, 
         rho_l,
     } = symbols(s);
     let table = lab.long_run(false)?;
-    let ratio_of = |row: &TurnRow| {
+    // (rise ΔV, released ΔE, ΔV over T after the collision, r_k), J.
+    let energies_of = |row: &TurnRow| {
         let r = r0 + row.turn as f64 * b;
         let (before, after) = collision_bodies(r, b, rho_l);
         let (pb, pa) = (
@@ -162,25 +170,35 @@ pub(in crate::claims) fn collision_potential_jump(lab: &Lab) -> Result<Finding, 
             mass_properties(&after, (0.0, 0.0)),
         );
         let rise = pb.mass * gc * (pa.centre.1 - pb.centre.1);
-        let start = mass_properties(&[Sector::full((0.0, r), (0.0, r), rho_l)], (0.0, 0.0));
-        let released = 0.5 * pb.inertia * (row.v_end_m_s / r).powi(2)
-            - 0.5 * start.inertia * (row.v_start_m_s / r).powi(2);
+        // eq. (76): I_C(θ) = (3/2) m r² + (2 m b r/π)(θ − sin θ), m = πρl r².
+        let m = PI * rho_l * r * r;
+        let i_c = |theta: f64| 1.5 * m * r * r + 2.0 * m * b * r / PI * (theta - theta.sin());
+        let released = 0.5 * i_c(2.0 * PI) * (row.v_end_m_s / r).powi(2)
+            - 0.5 * i_c(0.0) * (row.v_start_m_s / r).powi(2);
         let t_after = 0.5 * pa.inertia * (row.v_after_m_s / (r + b)).powi(2);
-        (rise / released, rise / t_after, r)
+        (rise, released, rise / t_after, r)
     };
     let (Some(first), Some(last)) = (table.head.first(), table.last.as_ref()) else {
         return Ok(no_turns());
     };
-    let (q0, f0, _) = ratio_of(first);
-    let (q, _, r_last) = ratio_of(last);
-    let scaled = q * r_last / b;
+    let (rise0, released0, f0, _) = energies_of(first);
+    let q0 = rise0 / released0;
+    let (rise, released, _, r_last) = energies_of(last);
+    let scaled = rise / released * r_last / b;
     let want = gc / (2.0 * PI * gs);
     let ok = JUMP_ORDER.accepts(scaled, want);
     // Charged to the kinetic energy, the rise would lower v_after by the factor √(1 − ΔV/T).
     let dv0 = 1.0 - (1.0 - f0).sqrt();
     Ok(Finding {
+        headline: Some(format!(
+            "The rise of the centre at a collision costs {:.2} % of the energy the first turn released, a share that falls like b/r turn by turn",
+            100.0 * q0
+        )),
         measured: format!(
-            "turn 0: the rise m g b cos α is {:.2} % of the energy the turn released and would lower v after the collision by {:.2} %; turn {}: ratio × rₖ/b = {scaled:.5}",
+            "turn {}: the rise m g b cos α ({:.4} J) over the energy the turn released ({:.3} J: T_end − T_beg of the `turns` run, I_C of eq. (76), not the eq. (86) kinetic energy) is {:.2} %, and charged to the motion would lower v after the collision by {:.2} %; turn {}: that ratio × rₖ/b = {scaled:.5}",
+            first.turn,
+            rise0,
+            released0,
             100.0 * q0,
             100.0 * dv0,
             last.turn

@@ -146,6 +146,7 @@ pub(in crate::claims) fn eq88_balance(lab: &Lab) -> Result<Finding, SimError> {
     let apart =
         EQ88_APART.accepts_deviation(worst_printed) && EQ88_APART.accepts_deviation(worst_index);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "first 50 turns, relative |v_end(88) − v_end(integrated)|: exact geometry {worst_exact:.1e}, eq. (73) {worst_paper:.1e} (its O((b/r)²) truncation); up to {worst_printed:.2e} with (87) as printed, up to {worst_index:.2e} with the turn index of (73)"
         ),
@@ -210,6 +211,7 @@ pub(in crate::claims) fn eq73_truncates_exact(lab: &Lab) -> Result<Finding, SimE
     let ratio = diffs[0] / diffs[1];
     let ok = TRUNCATION_ORDER.accepts(ratio, 4.0);
     Ok(Finding {
+        headline: None,
         measured: format!(
             "turn 0 from rest: |v_end(turns)/v_end(turns-exact) − 1| = {:.3e} at b/r0 = 0.02, {:.3e} at 0.01; ratio {ratio:.3}",
             diffs[0], diffs[1]

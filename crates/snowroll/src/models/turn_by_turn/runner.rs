@@ -74,6 +74,16 @@ pub enum TurnMethod {
     /// collision algebraically. Runs it does not cover go to the
     /// integrator: `--collision pivot`, and a start from rest where the log
     /// does not surely start ([`TurnModel::method_for`] says which ran).
+    /// The command line's help says the same in its own words (no link).
+    #[cfg_attr(
+        feature = "clap",
+        value(
+            help = "Each turn from its energy integral: θ̇(θ) in closed form, the time by quadrature, \
+                      the stall, hop and slip angles by root finding, the collision algebraically. Runs \
+                      it does not cover go to the integrator, and a note on stderr says so: \
+                      `--collision pivot`, and a start from rest where the log does not surely start"
+        )
+    )]
     #[default]
     Closed,
     /// DOP853 with events and the collision as a reset (rtol, atol and
