@@ -1,0 +1,95 @@
+//! Issue 32, items 1–3: the turn models where they are hardest to get
+//! right. The slip angle of a turn against the root of μN − |F| found here
+//! from formulas written here; a nearly stalling turn's time against a
+//! quadrature in double-double arithmetic written here; the first hop of the
+//! integrator's path against the closed form.
+
+use std::f64::consts::PI;
+
+use snowroll::integrate::Tolerances;
+
+use crate::support::scenario;
+use snowroll::{Scenario, SimOptions, StopReason, TurnMethod, TurnModel, TurnTable, TurnVariant};
+
+fn run(method: TurnMethod, s: &Scenario, o: &SimOptions) -> TurnTable {
+    let model = TurnModel::new(TurnVariant::Paper).with_method(method);
+    assert_eq!(model.method_for(s, o), method);
+    model.run_table(s, o).unwrap()
+}
+
+/// `(N, F)` per unit m_k at θ on the energy integral of a `turns` turn of
+/// radius r from `θ̇(0) = w0` (`docs/contact-forces.md` §3, eq. (73)
+/// written out here: e = b/π, μ = b/(πr), I = 3r²/2 + 2re(θ − sin θ)).
+fn paper_contact(r: f64, b: f64, g: f64, c: f64, w0: f64, th: f64) -> (f64, f64) {
+    let e = b / PI;
+    let (s, co) = th.sin_cos();
+    let i = 1.5 * r * r + 2.0 * r * e * (th - s);
+    let di = 2.0 * r * e * (1.0 - co);
+    let w = -g * (r * th + e * (th * th / 2.0 - 1.0 + co)) + c * e * (th - s);
+    let dw = -g * (r + e * (th - s)) + c * e * (1.0 - co);
+    let w2 = (1.5 * r * r * w0 * w0 - 2.0 * w) / i;
+    let acc = (-dw - 0.5 * di * w2) / i;
+    let grown = 1.0 + e / r * th;
+    let n = grown * c + e * (acc * (1.0 - co) + w2 * s);
+    let f = grown * g - acc * (r * grown - e * s) - w2 * (e - e * co);
+    (n, f)
+}
+
+/// Item 2: the slip of issue 32's example (`turns`, 65.4538°, b = 6.51 mm,
+/// r0 = 68.36 mm, μ = 2.3745) is where μN − |F| first reaches 0 in turn 3,
+/// found here by bisection to adjacent doubles on the forces written above,
+/// from the turn's start speed in the table. On both paths, the integrator
+/// at rtol 1e-13 (its θ̇(0) enters through the table's start speed, so the
+/// root is that of the path's own turn). Tolerance 1e-12 rad: the root of
+/// a margin with slope O(1) per rad and rounding ~1e-15 of μN is good to
+/// ~1e-14, the integrator's event on θ − θ_slip to its locator's 1e-13.
+/// Before the fix the slip was bisected to 1e-8 rad only (off by 5.8e-9).
+#[test]
+fn slip_angle_is_the_root_of_mu_n_minus_f_to_1e_12() {
+    let (b, r0, mu) = (0.00651, 0.06836, 2.3745);
+    let s = scenario(65.4538, b, r0, 0.0);
+    let (g, c) = (s.g_along(), s.g_normal());
+    for method in [TurnMethod::Closed, TurnMethod::Ode] {
+        let opts = SimOptions {
+            turns: Some(3000),
+            t_end: 1e9,
+            mu: Some(mu),
+            tolerances: Tolerances {
+                rtol: 1e-13,
+                ..Tolerances::default()
+            },
+            ..SimOptions::default()
+        };
+        let table = run(method, &s, &opts);
+        assert_eq!(table.stop.reason, StopReason::Slip, "{method:?}");
+        let at = table.stop.turn.unwrap();
+        assert_eq!(at.turn, 3, "{method:?}");
+        let k = at.turn as usize;
+        let r = r0 + k as f64 * b;
+        let w0 = table.rows[k - 1].v_after_m_s / r;
+        let margin = |th: f64| {
+            let (n, f) = paper_contact(r, b, g, c, w0, th);
+            mu * n - f.abs()
+        };
+        // μN − |F| > 0 at 4.6 rad, ≤ 0 at 4.7 rad (one crossing between).
+        let (mut lo, mut hi) = (4.6, 4.7);
+        assert!(margin(lo) > 0.0 && margin(hi) <= 0.0);
+        loop {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if margin(mid) <= 0.0 {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        assert!(
+            (at.theta_rad - hi).abs() < 1e-12,
+            "{method:?}: slip at {} against the root {hi} ({:e})",
+            at.theta_rad,
+            at.theta_rad - hi
+        );
+    }
+}
