@@ -93,3 +93,55 @@ fn slip_angle_is_the_root_of_mu_n_minus_f_to_1e_12() {
         );
     }
 }
+
+/// Item 1 through the table: turn 0 of `run_turns` (closed form, both
+/// models), from rest 1e-3 .. 1e-10° above the stall slope and at 1° from
+/// a start speed 1e-3 .. 1e-10 relative above the least that clears the
+/// turn, against `scripts/derivations/reference/near_stall_times.csv`
+/// (tanh-sinh at 50 digits on the program's own doubles, split at the
+/// minimum of E). The row's t_end and both mean accelerations (v_end −
+/// v_start and v_after − v_start over the reference time) to 1e-10
+/// relative, the goal; the scenario's G and C are first checked to
+/// be the reference's doubles. Before the fix the durations were off by up
+/// to 0.19 relative (`turns`) and 0.29 (`turns-exact`).
+#[test]
+fn nearly_stalling_first_turns_in_the_table_take_the_reference_time() {
+    let text = include_str!("../../../scripts/derivations/reference/near_stall_times.csv");
+    let mut rows = 0;
+    for line in text.lines().filter(|l| l.starts_with("turns")) {
+        let f: Vec<&str> = line.split(',').collect();
+        if f[1] == "later" {
+            continue;
+        }
+        let x = |i: usize| f[i].parse::<f64>().unwrap();
+        let variant = match f[0] {
+            "turns" => TurnVariant::Paper,
+            _ => TurnVariant::Exact,
+        };
+        let s = scenario(x(4), 0.01, 0.1, x(5));
+        assert_eq!(s.g_along().to_bits(), x(8).to_bits(), "{line}: G");
+        assert_eq!(s.g_normal().to_bits(), x(9).to_bits(), "{line}: C");
+        let opts = SimOptions {
+            turns: Some(1),
+            t_end: 1e9,
+            ..SimOptions::default()
+        };
+        let model = TurnModel::new(variant);
+        assert_eq!(model.method_for(&s, &opts), TurnMethod::Closed);
+        let table = model.run_table(&s, &opts).unwrap();
+        assert_eq!(table.stop.reason, StopReason::Turns, "{line}");
+        let row = &table.rows[0];
+        let want = x(17);
+        let close = |have: f64, want: f64, what: &str| {
+            let rel = (have - want).abs() / want.abs();
+            assert!(rel < 1e-10, "{line}: {what} {have} against {want} ({rel:e})");
+        };
+        close(row.t_end_s, want, "t_end");
+        let dv = row.v_end_m_s - row.v_start_m_s;
+        close(row.mean_a_turn_m_s2, dv / want, "mean a");
+        let dv = row.v_after_m_s - row.v_start_m_s;
+        close(row.mean_a_with_collision_m_s2, dv / want, "mean a with collision");
+        rows += 1;
+    }
+    assert_eq!(rows, 32);
+}

@@ -34,6 +34,7 @@
 
 mod collision;
 mod contact;
+mod dd;
 mod dynamics;
 mod extremes;
 mod jet;

@@ -1,0 +1,176 @@
+"""Reference times of turns that nearly stall (issue 32, item 1; docs/turn-model.md,
+"The closed-form path", (T3)): t = integral over [0, 2 pi] of sqrt(I/E) d theta, where
+E = I(0) theta'_0^2 - 2 W(theta) dips close to 0 inside the turn, so that the integrand has a
+tall, narrow (logarithmic) peak at the minimum of E.
+
+The turn is the model as the program holds it: the slope components G, C, the radius r, the
+in-turn coefficients c1, c2, e1, e2, e3 and I(0) theta'_0^2 are the doubles the program
+computes (the same operations in IEEE double here, printed in the CSV so that the Rust test can
+check it uses the very same numbers). Everything after that is exact arithmetic at 50 digits
+(mpmath): the minimum of E by Newton's method on W' = 0, and the time by tanh-sinh quadrature
+split at that minimum (mpmath's quad, with its error estimate, which must be below 1e-25 of
+the time). Why the doubles matter: near a stall the time is ill-conditioned, t ~ c ln(1/E_min),
+and E_min is a difference of terms 1e10 times larger at 1e-10 degrees above the stall slope, so
+a rounding of G at 1e-16 moves t by ~1e-7 relative; the program's time is compared with the
+exact time of its own numbers.
+
+Cases, for both turn models (`turns`, eq. (73); `turns-exact`, the disk and annular sector):
+  rest:  turn 0 from rest on alpha = alpha* + delta degrees (alpha*: the turn-0 stall slope,
+         the largest Q/P, docs/turn-model.md "Stall in the first turn"), b = 0.01 m, r0 = 0.1 m;
+  speed: turn 0 on alpha = 1 degree from v0 = v* (1 + delta), v* the least start speed that
+         clears the turn (E_min = 0);
+  later: turn 3 (r = r0 + 3 b) on alpha = 1 degree from theta'_0 = w* (1 + delta) likewise;
+delta = 1e-3 ... 1e-10.
+
+Run: python3 scripts/derivations/near_stall_times.py   (writes reference/near_stall_times.csv;
+exits 1 on any FAIL; ~1 min)
+"""
+
+import math
+import os
+
+import mpmath as mp
+
+from _check import check, finish
+
+mp.mp.dps = 50
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, "reference", "near_stall_times.csv")
+
+B, R0, GRAV = 0.01, 0.1, 9.81
+DELTAS = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10]
+
+
+def coefficients(r, b, exact):
+    """(c1, c2, e1, e2, e3) as the program computes them, in IEEE double
+    (InTurnCoefficients::paper, exact_turn_coefficients with RingMoments)."""
+    pi = math.pi
+    if not exact:
+        c = 2.0 * b * r / pi
+        e = b / pi
+        return (c, c, e, e, e)
+    d2 = b * (2.0 * r + b)
+    d3 = b * (3.0 * r * r + 3.0 * r * b + b * b)
+    d4 = b * (4.0 * r * r * r + 6.0 * r * r * b + 4.0 * r * b * b + b * b * b)
+    r2 = r * r
+    return (
+        (r2 * d2 / 2.0 + d4 / 4.0) / (pi * r2),
+        2.0 * d3 / (3.0 * pi * r),
+        d2 / (2.0 * pi * r),
+        d3 / (3.0 * pi * r2),
+        d2 * (2.0 * r + b) / (4.0 * pi * r2),
+    )
+
+
+class Turn:
+    """One turn, exact arithmetic on the double inputs."""
+
+    def __init__(self, r, b, exact, g_along, g_normal):
+        self.r, self.b = r, b
+        self.k = coefficients(r, b, exact)
+        self.G, self.C = mp.mpf(g_along), mp.mpf(g_normal)
+        self.i0 = mp.mpf(1.5 * r * r)
+
+    def inertia(self, t):
+        c1, c2 = (mp.mpf(x) for x in self.k[:2])
+        return self.i0 + c1 * t - c2 * mp.sin(t)
+
+    def p_q(self, t):
+        """W = -G P + C Q."""
+        _, _, e1, e2, e3 = (mp.mpf(x) for x in self.k)
+        r = mp.mpf(self.r)
+        return r * t + e1 * t * t / 2 - e2 * (1 - mp.cos(t)), e3 * t - e2 * mp.sin(t)
+
+    def w(self, t):
+        p, q = self.p_q(t)
+        return -self.G * p + self.C * q
+
+    def dw(self, t):
+        _, _, e1, e2, e3 = (mp.mpf(x) for x in self.k)
+        r = mp.mpf(self.r)
+        return -self.G * (r + e1 * t - e2 * mp.sin(t)) + self.C * (e3 - e2 * mp.cos(t))
+
+    def d2w(self, t):
+        _, _, e1, e2, _ = (mp.mpf(x) for x in self.k)
+        return -self.G * (e1 - e2 * mp.cos(t)) + self.C * e2 * mp.sin(t)
+
+    def w_max(self):
+        """The largest W on (0, 2 pi): a grid, then Newton on W' = 0."""
+        grid = [2 * mp.pi * i / 400 for i in range(1, 401)]
+        best = max(grid, key=self.w)
+        t = mp.findroot(self.dw, best)
+        check("W has an interior maximum", 0 < t < 2 * mp.pi and self.d2w(t) < 0, f"theta {t}")
+        return t, self.w(t)
+
+
+def stall_slope_deg(exact):
+    """alpha* in degrees: tan alpha* = max over theta of Q/P (turn 0 from rest, unit G and C)."""
+    turn = Turn(R0, B, exact, 1.0, 0.0)
+    ratio = lambda t: turn.p_q(t)[1] / turn.p_q(t)[0]
+    grid = [2 * mp.pi * i / 400 for i in range(1, 401)]
+    t = mp.findroot(lambda x: mp.diff(ratio, x), max(grid, key=ratio))
+    return mp.degrees(mp.atan(ratio(t)))
+
+
+def duration(turn, e0):
+    """t over [0, 2 pi] by tanh-sinh split at the minimum of E = e0 - 2W, with its error."""
+    t_min, w_max = turn.w_max()
+    e_min = e0 - 2 * w_max
+    check("E stays positive", e_min > 0, f"E_min {e_min}")
+    f = lambda t: mp.sqrt(turn.inertia(t) / (e0 - 2 * turn.w(t)))
+    value, err = mp.quad(f, [0, t_min, 2 * mp.pi], error=True, maxdegree=10)
+    check("quadrature error estimate", err < 1e-25 * value, f"{err} of {value}")
+    return t_min, e_min, value, err
+
+
+def main():
+    rows = []
+    for exact, name in [(False, "turns"), (True, "turns-exact")]:
+        alpha_star = stall_slope_deg(exact)
+        for delta in DELTAS:
+            # rest: alpha = alpha* + delta (a double), from rest
+            alpha_deg = float(alpha_star + delta)
+            alpha = alpha_deg * (math.pi / 180.0)
+            g_along, g_normal = GRAV * math.sin(alpha), GRAV * math.cos(alpha)
+            turn = Turn(R0, B, exact, g_along, g_normal)
+            t_min, e_min, t, err = duration(turn, mp.mpf(0))
+            rows.append((name, "rest", 0, delta, alpha_deg, 0.0, 0.0, R0, g_along, g_normal,
+                         turn.k, t_min, e_min, t, err))
+            # speed (turn 0) and later (turn 3) on 1 degree
+            alpha_deg = 1.0
+            alpha = alpha_deg * (math.pi / 180.0)
+            g_along, g_normal = GRAV * math.sin(alpha), GRAV * math.cos(alpha)
+            for case, k in [("speed", 0), ("later", 3)]:
+                r = R0 + k * B
+                turn = Turn(r, B, exact, g_along, g_normal)
+                _, w_max = turn.w_max()
+                w_star = mp.sqrt(2 * w_max / turn.i0)
+                if case == "speed":
+                    v0 = float(r * w_star * (1 + delta))
+                    omega0 = v0 / r
+                else:
+                    v0 = 0.0
+                    omega0 = float(w_star * (1 + delta))
+                e0 = 1.5 * r * r * omega0 * omega0
+                t_min, e_min, t, err = duration(turn, mp.mpf(e0))
+                rows.append((name, case, k, delta, alpha_deg, v0, omega0, r, g_along, g_normal,
+                             turn.k, t_min, e_min, t, err))
+        print(f"{name}: stall slope {mp.nstr(alpha_star, 16)} deg")
+    with open(OUT, "w") as out:
+        out.write("# made by scripts/derivations/near_stall_times.py: times of nearly stalling turns, "
+                  "b=0.01 m, r0=0.1 m, g=9.81, exact arithmetic (50 digits) on the program's doubles\n")
+        out.write("# cases: rest (turn 0 from rest, alpha = alpha* + delta deg), speed (turn 0, alpha 1 deg, "
+                  "v0 = v*(1 + delta)), later (turn 3, alpha 1 deg, omega0 = w*(1 + delta))\n")
+        out.write("model,case,turn,delta,alpha_deg,v0_m_s,omega0_rad_s,r_m,g_along,g_normal,"
+                  "c1,c2,e1,e2,e3,theta_min_rad,e_min,time_s,error_estimate_s\n")
+        for (name, case, k, delta, alpha_deg, v0, omega0, r, ga, gn, coef, t_min, e_min, t, err) in rows:
+            doubles = [alpha_deg, v0, omega0, r, ga, gn, *coef]
+            out.write(",".join([name, case, str(k), repr(delta)] + [repr(x) for x in doubles]
+                               + [mp.nstr(t_min, 20), mp.nstr(e_min, 20), mp.nstr(t, 25),
+                                  mp.nstr(err, 3)]) + "\n")
+    print(f"wrote {OUT}: {len(rows)} rows")
+    finish()
+
+
+if __name__ == "__main__":
+    main()
