@@ -124,7 +124,9 @@ impl TurnDynamics {
     /// integral of a turn started with `θ̇(0) = omega0`, if any
     /// ([`ContactRange::first_zero_normal`]): found from N(θ), not from the
     /// steps of an integrator, so a dip of N below 0 narrower than a step is
-    /// not stepped over and the answer does not depend on the tolerance.
+    /// not stepped over and, for a given `omega0`, the answer does not
+    /// depend on the tolerance (the integrator's path plans a hop its error
+    /// could decide from the closed form's `θ̇(0)`, `docs/contact-forces.md` §4.4).
     pub fn first_hop(&self, omega0: f64, theta_max: Radians) -> Option<Radians> {
         self.contact_range(omega0, theta_max).first_zero_normal
     }
