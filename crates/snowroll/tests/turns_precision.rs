@@ -134,13 +134,20 @@ fn nearly_stalling_first_turns_in_the_table_take_the_reference_time() {
         let want = x(17);
         let close = |have: f64, want: f64, what: &str| {
             let rel = (have - want).abs() / want.abs();
-            assert!(rel < 1e-10, "{line}: {what} {have} against {want} ({rel:e})");
+            assert!(
+                rel < 1e-10,
+                "{line}: {what} {have} against {want} ({rel:e})"
+            );
         };
         close(row.t_end_s, want, "t_end");
         let dv = row.v_end_m_s - row.v_start_m_s;
         close(row.mean_a_turn_m_s2, dv / want, "mean a");
         let dv = row.v_after_m_s - row.v_start_m_s;
-        close(row.mean_a_with_collision_m_s2, dv / want, "mean a with collision");
+        close(
+            row.mean_a_with_collision_m_s2,
+            dv / want,
+            "mean a with collision",
+        );
         rows += 1;
     }
     assert_eq!(rows, 32);

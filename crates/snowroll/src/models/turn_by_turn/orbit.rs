@@ -509,7 +509,9 @@ impl Dip {
     /// E(θ_m + u), m²/s² (not below E_m: past rounding a dip does not reach 0).
     fn energy(&self, u: f64) -> f64 {
         let half = (0.5 * u).sin();
-        let d_w = self.slope * u + self.quad * u * u + self.a * 2.0 * half * half
+        let d_w = self.slope * u
+            + self.quad * u * u
+            + self.a * 2.0 * half * half
             + self.b * sin_minus_x(u);
         (self.e_min - 2.0 * d_w).max(self.e_min)
     }
@@ -669,10 +671,14 @@ mod tests {
     /// the goal (the split quadrature meets ~1e-14).
     #[test]
     fn nearly_stalling_turns_take_the_reference_time() {
-        let text = include_str!("../../../../../scripts/derivations/reference/near_stall_times.csv");
+        let text =
+            include_str!("../../../../../scripts/derivations/reference/near_stall_times.csv");
         let mut worst = 0.0f64;
         let mut rows = 0;
-        for line in text.lines().filter(|l| !l.starts_with('#') && !l.starts_with("model")) {
+        for line in text
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("model"))
+        {
             let f: Vec<&str> = line.split(',').collect();
             let x = |i: usize| f[i].parse::<f64>().unwrap();
             let variant = match f[0] {
@@ -683,7 +689,11 @@ mod tests {
             let turn = TurnDynamics::new(variant, r, 0.01, g, c);
             let k = turn.coeffs;
             for (i, have) in [k.c1, k.c2, k.e1, k.e2, k.e3].into_iter().enumerate() {
-                assert_eq!(have.to_bits(), x(10 + i).to_bits(), "{line}: coefficient {i}");
+                assert_eq!(
+                    have.to_bits(),
+                    x(10 + i).to_bits(),
+                    "{line}: coefficient {i}"
+                );
             }
             let orbit = Orbit::new(&turn, omega0);
             assert_eq!(orbit.first_stall(TWO_PI), None, "{line}");

@@ -421,8 +421,14 @@ impl TurnSystem {
             return None;
         }
         let r = self.dynamics.radius();
-        after_collision(self.collision, r, self.b, self.g_normal, orbit.omega(TWO_PI))
-            .map(|(w, _)| w)
+        after_collision(
+            self.collision,
+            r,
+            self.b,
+            self.g_normal,
+            orbit.omega(TWO_PI),
+        )
+        .map(|(w, _)| w)
     }
 
     /// The turns computed ahead of the run, in order, from the current one on.
