@@ -38,56 +38,65 @@ fn paper_contact(r: f64, b: f64, g: f64, c: f64, w0: f64, th: f64) -> (f64, f64)
 /// Item 2: the slip of issue 32's example (`turns`, 65.4538°, b = 6.51 mm,
 /// r0 = 68.36 mm, μ = 2.3745) is where μN − |F| first reaches 0 in turn 3,
 /// found here by bisection to adjacent doubles on the forces written above,
-/// from the turn's start speed in the table. On both paths, the integrator
-/// at rtol 1e-13 (its θ̇(0) enters through the table's start speed, so the
-/// root is that of the path's own turn). Tolerance 1e-12 rad: the root of
-/// a margin with slope O(1) per rad and rounding ~1e-15 of μN is good to
-/// ~1e-14, the integrator's event on θ − θ_slip to its locator's 1e-13.
-/// Before the fix the slip was bisected to 1e-8 rad only (off by 5.8e-9).
+/// from the turn's start speed in the closed form's table. The closed path
+/// and the integrator's at rtol 1e-6, 1e-10 and 1e-13 (which plans the slip
+/// from the closed form's start speed, as the hop) stop there. Tolerance
+/// 1e-12 rad: the root of a margin with slope O(1) per rad and rounding
+/// ~1e-15 of μN is good to ~1e-14; the table's v_start/r_k and the run's
+/// θ̇(0) differ by a rounding; the integrator's event on θ − θ_slip is
+/// located to ~1e-13. Before the fix the slip was bisected to 1e-8 rad
+/// only (5.8e-9 past the root), and the integrator's path planned it from
+/// its own start speed (1e-11 off at rtol 1e-10, more at 1e-6).
 #[test]
 fn slip_angle_is_the_root_of_mu_n_minus_f_to_1e_12() {
     let (b, r0, mu) = (0.00651, 0.06836, 2.3745);
     let s = scenario(65.4538, b, r0, 0.0);
     let (g, c) = (s.g_along(), s.g_normal());
-    for method in [TurnMethod::Closed, TurnMethod::Ode] {
-        let opts = SimOptions {
-            turns: Some(3000),
-            t_end: 1e9,
-            mu: Some(mu),
-            tolerances: Tolerances {
-                rtol: 1e-13,
-                ..Tolerances::default()
-            },
-            ..SimOptions::default()
-        };
-        let table = run(method, &s, &opts);
-        assert_eq!(table.stop.reason, StopReason::Slip, "{method:?}");
-        let at = table.stop.turn.unwrap();
-        assert_eq!(at.turn, 3, "{method:?}");
-        let k = at.turn as usize;
-        let r = r0 + k as f64 * b;
-        let w0 = table.rows[k - 1].v_after_m_s / r;
-        let margin = |th: f64| {
-            let (n, f) = paper_contact(r, b, g, c, w0, th);
-            mu * n - f.abs()
-        };
-        // μN − |F| > 0 at 4.6 rad, ≤ 0 at 4.7 rad (one crossing between).
-        let (mut lo, mut hi) = (4.6, 4.7);
-        assert!(margin(lo) > 0.0 && margin(hi) <= 0.0);
-        loop {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            if margin(mid) <= 0.0 {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
+    let opts = |rtol: f64| SimOptions {
+        turns: Some(3000),
+        t_end: 1e9,
+        mu: Some(mu),
+        tolerances: Tolerances {
+            rtol,
+            ..Tolerances::default()
+        },
+        ..SimOptions::default()
+    };
+    let closed = run(TurnMethod::Closed, &s, &opts(1e-10));
+    let k = 3;
+    let r = r0 + k as f64 * b;
+    let w0 = closed.rows[k - 1].v_after_m_s / r;
+    let margin = |th: f64| {
+        let (n, f) = paper_contact(r, b, g, c, w0, th);
+        mu * n - f.abs()
+    };
+    // μN − |F| > 0 at 4.6 rad, ≤ 0 at 4.7 rad (one crossing between).
+    let (mut lo, mut hi) = (4.6, 4.7);
+    assert!(margin(lo) > 0.0 && margin(hi) <= 0.0);
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
         }
+        if margin(mid) <= 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let runs = [
+        ("closed", closed),
+        ("ode 1e-6", run(TurnMethod::Ode, &s, &opts(1e-6))),
+        ("ode 1e-10", run(TurnMethod::Ode, &s, &opts(1e-10))),
+        ("ode 1e-13", run(TurnMethod::Ode, &s, &opts(1e-13))),
+    ];
+    for (name, table) in runs {
+        assert_eq!(table.stop.reason, StopReason::Slip, "{name}");
+        let at = table.stop.turn.unwrap();
+        assert_eq!(at.turn, k as u64, "{name}");
         assert!(
             (at.theta_rad - hi).abs() < 1e-12,
-            "{method:?}: slip at {} against the root {hi} ({:e})",
+            "{name}: slip at {} against the root {hi} ({:e})",
             at.theta_rad,
             at.theta_rad - hi
         );

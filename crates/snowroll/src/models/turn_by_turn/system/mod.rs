@@ -366,9 +366,13 @@ impl TurnSystem {
             CollisionModel::Pivot => self.impact.theta_c,
             _ => TWO_PI,
         };
+        // On the integrator's path, from the closed form's θ̇(0) where it
+        // is carried along: the slip is then the closed form's whatever the
+        // tolerance, as the hop is (below).
+        let omega_plan = self.exact_omega0.unwrap_or(omega0);
         self.slip_theta = self
             .mu
-            .and_then(|mu| self.dynamics.first_slip(omega0, mu, theta_max));
+            .and_then(|mu| self.dynamics.first_slip(omega_plan, mu, theta_max));
         self.planned = None;
         self.hop_theta = None;
         if self.stop_on_hop {
