@@ -20,6 +20,8 @@ Cases, for both turn models (`turns`, eq. (73); `turns-exact`, the disk and annu
   speed: turn 0 on alpha = 1 degree from v0 = v* (1 + delta), v* the least start speed that
          clears the turn (E_min = 0);
   later: turn 3 (r = r0 + 3 b) on alpha = 1 degree from theta'_0 = w* (1 + delta) likewise;
+  stall: turn 0 from rest on alpha = alpha* - delta: the log stalls where E first reaches 0, at
+         theta_s (in the column theta_min_rad, e_min 0), and the time is the time to theta_s;
 delta = 1e-3 ... 1e-10.
 
 Run: python3 scripts/derivations/near_stall_times.py   (writes reference/near_stall_times.csv;
@@ -123,6 +125,26 @@ def duration(turn, e0):
     return t_min, e_min, value, err
 
 
+def time_to_stall(turn):
+    """From rest to the first zero theta_s of E = -2W (before the maximum of W): bisection at
+    50 digits, then tanh-sinh over [0, theta_s] (E ~ theta at 0, ~ theta_s - theta at the end)."""
+    t_max, w_max = turn.w_max()
+    check("E reaches 0 in the turn", w_max > 0, f"W_max {w_max}")
+    energy = lambda t: -2 * turn.w(t)
+    lo, hi = mp.mpf("0.5"), t_max
+    check("E > 0 at 0.5 rad", energy(lo) > 0)
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        if energy(mid) > 0:
+            lo = mid
+        else:
+            hi = mid
+    f = lambda t: mp.sqrt(turn.inertia(t) / energy(t))
+    value, err = mp.quad(f, [0, lo], error=True, maxdegree=10)
+    check("quadrature error estimate (stall)", err < 1e-25 * value, f"{err} of {value}")
+    return lo, value, err
+
+
 def main():
     rows = []
     for exact, name in [(False, "turns"), (True, "turns-exact")]:
@@ -136,6 +158,14 @@ def main():
             t_min, e_min, t, err = duration(turn, mp.mpf(0))
             rows.append((name, "rest", 0, delta, alpha_deg, 0.0, 0.0, R0, g_along, g_normal,
                          turn.k, t_min, e_min, t, err))
+            # stall: alpha = alpha* - delta, from rest: the time to the first zero of E
+            alpha_deg = float(alpha_star - delta)
+            alpha = alpha_deg * (math.pi / 180.0)
+            g_along, g_normal = GRAV * math.sin(alpha), GRAV * math.cos(alpha)
+            turn = Turn(R0, B, exact, g_along, g_normal)
+            theta_s, t, err = time_to_stall(turn)
+            rows.append((name, "stall", 0, delta, alpha_deg, 0.0, 0.0, R0, g_along, g_normal,
+                         turn.k, theta_s, mp.mpf(0), t, err))
             # speed (turn 0) and later (turn 3) on 1 degree
             alpha_deg = 1.0
             alpha = alpha_deg * (math.pi / 180.0)
@@ -160,7 +190,8 @@ def main():
         out.write("# made by scripts/derivations/near_stall_times.py: times of nearly stalling turns, "
                   "b=0.01 m, r0=0.1 m, g=9.81, exact arithmetic (50 digits) on the program's doubles\n")
         out.write("# cases: rest (turn 0 from rest, alpha = alpha* + delta deg), speed (turn 0, alpha 1 deg, "
-                  "v0 = v*(1 + delta)), later (turn 3, alpha 1 deg, omega0 = w*(1 + delta))\n")
+                  "v0 = v*(1 + delta)), later (turn 3, alpha 1 deg, omega0 = w*(1 + delta)), stall (turn 0 from rest, "
+                  "alpha = alpha* - delta: theta_min_rad is the stall angle, time_s the time to it)\n")
         out.write("model,case,turn,delta,alpha_deg,v0_m_s,omega0_rad_s,r_m,g_along,g_normal,"
                   "c1,c2,e1,e2,e3,theta_min_rad,e_min,time_s,error_estimate_s\n")
         for (name, case, k, delta, alpha_deg, v0, omega0, r, ga, gn, coef, t_min, e_min, t, err) in rows:
