@@ -24,8 +24,12 @@ Cases, for both turn models (`turns`, eq. (73); `turns-exact`, the disk and annu
          theta_s (in the column theta_min_rad, e_min 0), and the time is the time to theta_s;
 delta = 1e-3 ... 1e-10.
 
-Run: python3 scripts/derivations/near_stall_times.py   (writes reference/near_stall_times.csv;
-exits 1 on any FAIL; ~1 min)
+And the angle reached at t_end = 3, 8, 12, 16 s in turn 0 of `turns` from rest 1e-8 and 1e-10 degrees
+above the stall slope (before, close before, close after and past the minimum of E;
+reference/near_stall_angles.csv).
+
+Run: python3 scripts/derivations/near_stall_times.py   (writes reference/near_stall_times.csv and
+reference/near_stall_angles.csv; exits 1 on any FAIL; ~2 min)
 """
 
 import math
@@ -38,6 +42,7 @@ from _check import check, finish
 mp.mp.dps = 50
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "reference", "near_stall_times.csv")
+OUT_ANGLES = os.path.join(HERE, "reference", "near_stall_angles.csv")
 
 B, R0, GRAV = 0.01, 0.1, 9.81
 DELTAS = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10]
@@ -145,6 +150,26 @@ def time_to_stall(turn):
     return lo, value, err
 
 
+def angle_at_time(turn, t_end):
+    """The angle reached at t_end from rest: bisection on t(theta) - t_end to 1e-12 rad, then
+    Newton's method (d t/d theta = sqrt(I/E)); the quadrature split at the minimum of E."""
+    t_min, _ = turn.w_max()
+    f = lambda t: mp.sqrt(turn.inertia(t) / (-2 * turn.w(t)))
+    t_of = lambda th: mp.quad(f, [0, th] if th <= t_min else [0, t_min, th])
+    lo, hi = mp.mpf(0), 2 * mp.pi
+    while hi - lo > mp.mpf("1e-12"):
+        mid = (lo + hi) / 2
+        if t_of(mid) < t_end:
+            lo = mid
+        else:
+            hi = mid
+    th = (lo + hi) / 2
+    for _ in range(6):
+        th = th - (t_of(th) - t_end) / f(th)
+    check("angle at time", abs(t_of(th) - t_end) < mp.mpf("1e-30"), f"{th}")
+    return th
+
+
 def main():
     rows = []
     for exact, name in [(False, "turns"), (True, "turns-exact")]:
@@ -200,6 +225,21 @@ def main():
                                + [mp.nstr(t_min, 20), mp.nstr(e_min, 20), mp.nstr(t, 25),
                                   mp.nstr(err, 3)]) + "\n")
     print(f"wrote {OUT}: {len(rows)} rows")
+    # The angle reached at a given time inside a nearly stalling turn (`turns` from rest,
+    # 1e-8 and 1e-10 degrees above the stall slope): before, near and after the minimum of E.
+    alpha_star = stall_slope_deg(False)
+    with open(OUT_ANGLES, "w") as out:
+        out.write("# made by scripts/derivations/near_stall_times.py: the angle reached at t_end in turn 0 "
+                  "of turns from rest, alpha = alpha* + delta deg, b=0.01 m, r0=0.1 m, g=9.81, 50 digits\n")
+        out.write("delta,alpha_deg,t_end_s,theta_rad\n")
+        for delta in [1e-8, 1e-10]:
+            alpha_deg = float(alpha_star + delta)
+            alpha = alpha_deg * (math.pi / 180.0)
+            turn = Turn(R0, B, False, GRAV * math.sin(alpha), GRAV * math.cos(alpha))
+            for t_end in [3.0, 8.0, 12.0, 16.0]:
+                th = angle_at_time(turn, t_end)
+                out.write(f"{delta!r},{alpha_deg!r},{t_end!r},{mp.nstr(th, 20)}\n")
+    print(f"wrote {OUT_ANGLES}")
     finish()
 
 

@@ -188,10 +188,12 @@ impl<'a> Orbit<'a> {
                 return theta;
             }
             let next = x - e_at(x) / d1;
-            if !((next - theta).abs() <= STALL_REFINE_REACH) {
+            // A step that goes far (or is NaN) leaves the angle as found.
+            let reach = (next - theta).abs();
+            if reach.is_nan() || reach > STALL_REFINE_REACH {
                 return theta;
             }
-            if next == x {
+            if next.to_bits() == x.to_bits() {
                 break;
             }
             x = next;
@@ -264,7 +266,10 @@ impl<'a> Orbit<'a> {
             return 0.0;
         }
         let from_rest = self.e0 <= 0.0;
-        let dips = self.dips(theta1);
+        // A minimum of E just past θ₁ (an angle short of it asked for by
+        // [`Self::angle_at_time`]) peaks √(I/E) at θ₁ as one inside does.
+        let reach = if stalls { theta1 } else { theta1.max(TWO_PI) };
+        let dips = self.dips(reach);
         if !dips.is_empty() {
             return self.time_across_dips(theta1, stalls, &dips);
         }
@@ -334,7 +339,8 @@ impl<'a> Orbit<'a> {
                 continue;
             }
             let dip = Dip::at(self, theta);
-            if dip.e_min < DIP_FRACTION * top
+            if dip.positive
+                && dip.e_min < DIP_FRACTION * top
                 && dip.curvature > 0.0
                 && dips.last().is_none_or(|d| d.theta < theta)
             {
@@ -396,13 +402,17 @@ impl<'a> Orbit<'a> {
         let from_rest = self.e0 <= 0.0;
         let mut total = 0.0;
         let mut a = (0.0, if from_rest { End::Rest } else { End::Plain });
+        // The last piece ends at the stall, or next to a minimum past θ₁.
+        let last = match dips.iter().find(|d| d.theta >= theta1) {
+            _ if stalls => End::Stall,
+            Some(d) => End::Dip(d),
+            None => End::Plain,
+        };
         let ends = dips
             .iter()
+            .filter(|d| d.theta < theta1)
             .map(|d| (d.theta, End::Dip(d)))
-            .chain(std::iter::once((
-                theta1,
-                if stalls { End::Stall } else { End::Plain },
-            )));
+            .chain(std::iter::once((theta1, last)));
         for b in ends {
             let special = |e: &End| !matches!(e, End::Plain);
             if special(&a.1) && special(&b.1) {
@@ -426,17 +436,20 @@ impl<'a> Orbit<'a> {
                 0.0,
                 (b - a).sqrt(),
             ),
-            (End::Dip(d), _) => self.across_dip(d, b - a, 1.0),
-            (_, End::Dip(d)) => self.across_dip(d, b - a, -1.0),
+            (End::Dip(d), _) | (_, End::Dip(d)) => self.across_dip(d, a, b),
             _ => adaptive(|x| self.slowness(x), a, b),
         }
     }
 
-    /// ∫ √(I/E) dθ from the dip's θ_m over `length` on the side `sign`,
-    /// with θ = θ_m + sign w sinh v.
-    fn across_dip(&self, d: &Dip, length: f64, sign: f64) -> f64 {
+    /// ∫ √(I/E) dθ over [a, b], which lies on one side of the dip's θ_m,
+    /// with θ = θ_m ± w sinh v (+ where θ_m ≤ a, − where θ_m ≥ b).
+    fn across_dip(&self, d: &Dip, a: f64, b: f64) -> f64 {
         let w = d.half_width();
-        let v_max = (length / w).asinh();
+        let (sign, near, far) = if d.theta <= a {
+            (1.0, a - d.theta, b - d.theta)
+        } else {
+            (-1.0, d.theta - b, d.theta - a)
+        };
         adaptive(
             |v: f64| {
                 let u = sign * w * v.sinh();
@@ -445,8 +458,8 @@ impl<'a> Orbit<'a> {
                 let (i, _) = self.turn.inertia_sc(theta, s, c);
                 (i / d.energy(u)).sqrt() * w * v.cosh()
             },
-            0.0,
-            v_max,
+            (near.max(0.0) / w).asinh(),
+            (far / w).asinh(),
         )
     }
 
@@ -543,6 +556,8 @@ struct Dip {
     /// E_m, m²/s² (at least the smallest positive double: a minimum at
     /// 0 to rounding keeps a finite, if very long, time).
     e_min: f64,
+    /// Whether E_m > 0 as evaluated (not a minimum past a stall).
+    positive: bool,
     /// W′(θ_m), J/kg per rad (0 but for the rounding of θ_m).
     slope: f64,
     /// q = −G e₁/2, J/kg per rad².
@@ -567,6 +582,7 @@ impl Dip {
         Self {
             theta,
             e_min: e_min.max(f64::MIN_POSITIVE),
+            positive: e_min > 0.0,
             slope,
             quad,
             a,
