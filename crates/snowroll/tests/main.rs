@@ -18,4 +18,5 @@ mod sweep_regime;
 mod turn_ledger;
 mod turns;
 mod turns_closed;
+mod turns_precision;
 mod turns_reference;

@@ -125,7 +125,9 @@ impl TurnDynamics {
     /// integral of a turn started with `θ̇(0) = omega0`, if any
     /// ([`ContactRange::first_zero_normal`]): found from N(θ), not from the
     /// steps of an integrator, so a dip of N below 0 narrower than a step is
-    /// not stepped over and the answer does not depend on the tolerance.
+    /// not stepped over and, for a given `omega0`, the answer does not
+    /// depend on the tolerance (the integrator's path plans a hop its error
+    /// could decide from the closed form's `θ̇(0)`, `docs/contact-forces.md` §4.4).
     pub fn first_hop(&self, omega0: f64, theta_max: Radians) -> Option<Radians> {
         self.contact_range(omega0, theta_max).first_zero_normal
     }
@@ -364,7 +366,9 @@ impl TurnDynamics {
     /// integral of a turn started with `θ̇(0) = omega0`, if any: a grid of
     /// 32 intervals brackets a crossing, or the neighbourhood of
     /// the largest sampled |F| − μN holds a narrow peak (golden section finds
-    /// its top); bisection then refines the crossing to 1e-8 rad.
+    /// its top); bisection then narrows the crossing until its ends are
+    /// adjacent doubles, and the end where |F| ≥ μN is the slip (the root
+    /// of a margin of slope O(1) per rad, so to ~1e-15 rad).
     /// The slip event of a turn is `θ − θ_slip`, so that a peak of |F|/N
     /// barely above μ, narrower than a step, is not stepped over.
     pub fn first_slip(&self, omega0: f64, mu: f64, theta_max: Radians) -> Option<Radians> {
@@ -373,17 +377,10 @@ impl TurnDynamics {
             f.abs() - mu * n
         };
         let h = theta_max / FORCE_GRID as f64;
-        let bisect = |mut lo: f64, mut hi: f64| {
-            while hi - lo > FORCE_THETA_TOL {
-                let mid = 0.5 * (lo + hi);
-                if margin(mid) >= 0.0 {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                }
-            }
-            hi
-        };
+        // The crossing in (lo, hi], margin(lo) < 0 ≤ margin(hi): bisection
+        // to adjacent doubles, as for the hop ([`extremes::first_root`] on
+        // μN − |F|, which is ≤ 0 exactly where the log slips).
+        let bisect = |lo: f64, hi: f64| extremes::first_root(|theta| -margin(theta), lo, hi);
         if margin(0.0) >= 0.0 {
             return Some(0.0);
         }

@@ -35,6 +35,7 @@
 use crate::portable::Portable as _;
 mod collision;
 mod contact;
+mod dd;
 mod dynamics;
 mod extremes;
 mod jet;

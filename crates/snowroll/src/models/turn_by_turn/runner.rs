@@ -168,6 +168,7 @@ impl Model for TurnModel {
         self.check(scenario, opts)?;
         let mut system = TurnSystem::new(self.variant, scenario, opts);
         let y0 = Self::initial_state(scenario);
+        system.track_exact_starts(&y0);
         if let Some(reason) = system.start(&y0) {
             return stopped_at_start(&system, y0, reason, sink);
         }
@@ -223,6 +224,10 @@ impl TurnModel {
         let summary = SummaryBuilder::new(scenario.g_along(), opts.turns);
         let mut observer = TableObserver::new(sink, summary, opts.max_rows);
         let y0 = Self::initial_state(scenario);
+        let closed = self.method == TurnMethod::Closed && system.closed_form_covers(&y0);
+        if !closed {
+            system.track_exact_starts(&y0);
+        }
         if let Some(reason) = system.start(&y0) {
             // Stopped at its start: no turn was completed, so no row goes out.
             return Ok(TurnRunEnd {
@@ -232,7 +237,7 @@ impl TurnModel {
                 stats: Stats::default(),
             });
         }
-        let end = if self.method == TurnMethod::Closed && system.closed_form_covers(&y0) {
+        let end = if closed {
             run_closed(&mut system, y0, opts.t_end, &mut observer)?
         } else {
             run_observed(&mut system, y0, opts, &mut observer)?

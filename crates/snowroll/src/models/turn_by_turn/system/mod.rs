@@ -85,6 +85,12 @@ pub(crate) struct TurnSystem {
     ahead: std::collections::VecDeque<ahead::Prepared>,
     /// This turn as computed ahead, when it was for its `θ̇(0)`.
     current: Option<ahead::Prepared>,
+    /// On the integrator's path, `θ̇(0)` of this turn as the closed form
+    /// has it (the energy integral at θ = 2π and the collision from the
+    /// run's start, exact but for rounding), where the closed form covers
+    /// the run ([`Self::track_exact_starts`]): the hop of a turn whose
+    /// least N is within the integrator's error of 0 is planned from it.
+    exact_omega0: Option<f64>,
 }
 
 /// The energy bookkeeping of a turn run (`docs/snowball-and-losses.md`
@@ -135,6 +141,7 @@ impl TurnSystem {
             ledger: None,
             v_start: 0.0,
             ahead: std::collections::VecDeque::new(),
+            exact_omega0: None,
             current: None,
         };
         system.enter_turn(0);
@@ -360,9 +367,13 @@ impl TurnSystem {
             CollisionModel::Pivot => self.impact.theta_c,
             _ => TWO_PI,
         };
+        // On the integrator's path, from the closed form's θ̇(0) where it
+        // is carried along: the slip is then the closed form's whatever the
+        // tolerance, as the hop is (below).
+        let omega_plan = self.exact_omega0.unwrap_or(omega0);
         self.slip_theta = self
             .mu
-            .and_then(|mu| self.dynamics.first_slip(omega0, mu, theta_max));
+            .and_then(|mu| self.dynamics.first_slip(omega_plan, mu, theta_max));
         self.planned = None;
         self.hop_theta = None;
         if self.stop_on_hop {
@@ -370,7 +381,59 @@ impl TurnSystem {
             let extremes = self.rolling_extremes(omega_table);
             self.hop_theta = extremes.contact.first_zero_normal;
             self.planned = Some((omega_table, extremes));
+            if let Some(exact) = self.exact_omega0 {
+                // The integrator's θ̇(0) is off by its error: where that
+                // could decide whether (or where) the turn hops, the hop is
+                // the closed form's, from the exact θ̇(0).
+                let margin = self.hop_margin(omega_table, exact);
+                let c = extremes.contact;
+                if c.first_zero_normal.is_some() || c.min_normal_per_mk <= margin {
+                    self.hop_theta = self.dynamics.first_hop(exact, theta_max);
+                }
+            }
         }
+    }
+
+    /// How far the least N per unit m_k of this turn can move when `θ̇(0)`
+    /// goes from `omega` to `exact`, m/s²: N is affine in E(0) = I(0)θ̇₀²
+    /// at each θ (θ̇² = (E(0) − 2W)/I and θ̈ = (−W′ − ½I′θ̇²)/I), with
+    /// ∂N/∂E(0) = e₂[sin θ/I − (1 − cos θ)I′/(2I²)], at most
+    /// |e₂|(1/I_min + |I′|max/I_min²) with I ≥ 3r²/2 − |c₂| and
+    /// |I′| ≤ |c₁| + |c₂|; twice that, plus 1e-12 C for the rounding of the
+    /// refined minimum.
+    fn hop_margin(&self, omega: f64, exact: f64) -> f64 {
+        let k = self.dynamics.coefficients();
+        let r = self.dynamics.radius();
+        let i_min = 1.5 * r * r - k.c2.abs();
+        let slope = k.e2.abs() * (1.0 / i_min + (k.c1.abs() + k.c2.abs()) / (i_min * i_min));
+        let shift = 1.5 * r * r * (omega * omega - exact * exact).abs();
+        2.0 * slope * shift + 1e-12 * self.g_normal.abs()
+    }
+
+    /// Has the integrator's path carry the closed form's `θ̇(0)` of each
+    /// turn along (`exact_omega0`), from the start `y0`, where the closed
+    /// form covers the run; before [`Self::start`].
+    pub(crate) fn track_exact_starts(&mut self, y0: &[f64; 2]) {
+        self.exact_omega0 = self.closed_form_covers(y0).then_some(y0[1]);
+    }
+
+    /// The closed form's `θ̇(0)` of the turn after this one, from this
+    /// one's ([`Self::track_exact_starts`]); `None` when it stalls or the
+    /// log is stuck at the step.
+    fn exact_next(&self, omega0: f64) -> Option<f64> {
+        let orbit = super::orbit::Orbit::new(&self.dynamics, omega0);
+        if orbit.first_stall(TWO_PI).is_some() {
+            return None;
+        }
+        let r = self.dynamics.radius();
+        after_collision(
+            self.collision,
+            r,
+            self.b,
+            self.g_normal,
+            orbit.omega(TWO_PI),
+        )
+        .map(|(w, _)| w)
     }
 
     /// The turns computed ahead of the run, in order, from the current one on.

@@ -100,6 +100,7 @@ impl OdeSystem<2> for TurnSystem {
                     self.pivot_shift += r * p.theta_c + p.d - TWO_PI * r;
                 }
                 let v_start = self.speed_after(y_before[1]);
+                self.exact_omega0 = self.exact_omega0.and_then(|w| self.exact_next(w));
                 self.enter_turn(self.turn + 1);
                 self.plan_turn(y_after[1], v_start);
             }
