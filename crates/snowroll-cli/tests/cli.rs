@@ -1434,6 +1434,13 @@ fn regression_32_no_help_shows_source_syntax() {
         texts.push((format!("{c} -h"), help(&[c, "-h"])));
     }
     for (args, text) in &texts {
+        // IPv6 addresses (`::1`, `[::1]`, `::`) are what `serve --host` takes,
+        // not a Rust path: they are taken out before `::` is looked for.
+        let text = &text
+            .replace("[::1]", "")
+            .replace("::1", "")
+            .replace(" :: ", " ")
+            .replace(" ::\n", "\n");
         for syntax in ["[`", "`]", "::", "](", "#[", "///", "//!", "crate", "Self"] {
             assert!(
                 !text.contains(syntax),
