@@ -276,11 +276,16 @@ fn cells(line: &str) -> Vec<String> {
     record.iter().map(str::to_string).collect()
 }
 
-/// The header lines of a sweep file, the column names included.
+/// The header lines of a sweep file, the column names included, without
+/// its `# command:` line: that is provenance, which `--resume` does not
+/// compare by design (`-o ./out.csv` resumes `-o out.csv`) and keeps from
+/// the partial file, and which `merge` writes from shard 0's.
 fn header_of(text: &str) -> String {
     let mut header = String::new();
     for line in text.split_inclusive('\n') {
-        header.push_str(line);
+        if !line.starts_with("# command: ") {
+            header.push_str(line);
+        }
         if !line.starts_with('#') {
             break;
         }
