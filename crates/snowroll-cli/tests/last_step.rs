@@ -481,3 +481,58 @@ fn regression_33_merge_refuses_a_shard_that_is_not_a_regular_file() {
         assert!(!d.join("m.csv").exists());
     }
 }
+
+/// Issue 33's campaign: a partial file whose `# command:` line was not a
+/// sweep's (`# command: end-time`) was resumed into a file that `merge`
+/// then refused. The command line is provenance and not compared, but it
+/// must be a `snowroll sweep` command, in a partial file and in every
+/// shard (merge checked shard 0's only).
+#[test]
+fn regression_33_a_command_line_that_is_not_a_sweep_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (paths, _) = many_shards(d, 2);
+    let good: Vec<String> = paths
+        .iter()
+        .map(|p| fs::read_to_string(p).unwrap())
+        .collect();
+    let edit = |text: &str| {
+        let line = text.lines().nth(1).unwrap().to_string();
+        assert!(line.starts_with("# command: snowroll sweep"), "{line}");
+        text.replacen(&line, "# command: end-time", 1)
+    };
+    // Shard 1 edited: merge refuses it, naming it.
+    fs::write(&paths[1], edit(&good[1])).unwrap();
+    let e = fails_in(d, &["merge", "s000.csv", "s001.csv", "-o", "m.csv"]);
+    assert!(
+        e.contains("s001.csv: its command line `end-time` does not parse"),
+        "{e}"
+    );
+    assert!(!d.join("m.csv").exists());
+    fs::write(&paths[1], &good[1]).unwrap();
+    // Shard 0 as a partial file to resume: refused, kept.
+    let partial = d.join("s000.csv.partial");
+    let text = edit(&good[0]);
+    fs::write(&partial, &text).unwrap();
+    let e = fails_in(
+        d,
+        &[
+            "sweep",
+            "--model",
+            "eq4,energy",
+            "--alpha-deg",
+            "5:60:22",
+            "-q",
+            "--shard",
+            "0/2",
+            "-o",
+            "s000.csv",
+            "--resume",
+        ],
+    );
+    assert!(
+        e.contains("its command line `end-time` does not parse"),
+        "{e}"
+    );
+    assert_eq!(fs::read_to_string(&partial).unwrap(), text);
+}

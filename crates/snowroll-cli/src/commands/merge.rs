@@ -20,15 +20,13 @@ use std::io::{BufReader, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
-use clap::Parser;
 use snowroll::sweep::shard_range;
 
 use super::sweep::{command_line, format_of, COMMAND_KEY, SHARD_KEY};
-use super::sweep_check::{check_rows, warnings_text, Recorded, WARNINGS};
+use super::sweep_check::{check_rows, sweep_command, warnings_text, Recorded, WARNINGS};
 use super::sweep_partial::kind_name;
-use crate::args::{Args, Command, MergeArgs, OutputArgs, SweepArgs, SweepFormat};
+use crate::args::{MergeArgs, OutputArgs, SweepArgs, SweepFormat};
 use crate::clash::{refuse_clashes, RunFile};
-use crate::shell::shell_words;
 use crate::sink::Sink;
 
 /// One shard file, its header read. The file is not kept open: the rows
@@ -167,22 +165,11 @@ fn one_process(first: &Shard, output: Option<&Path>) -> Result<SweepArgs> {
     let line = (first.recorded.header.iter())
         .find_map(|l| l.strip_prefix(COMMAND_KEY))
         .ok_or_else(|| anyhow!("{shown}: its header has no `{}` line", COMMAND_KEY.trim()))?;
-    let bad = |why: String| anyhow!("{shown}: its command line `{line}` {why}");
-    let words = shell_words(line).map_err(|e| bad(format!("cannot be split into words: {e}")))?;
-    let parsed = Args::try_parse_from(&words).map_err(|e| {
-        let why = e.to_string();
-        bad(format!(
-            "does not parse: {}",
-            why.lines().next().unwrap_or_default()
-        ))
-    })?;
-    let Command::Sweep(mut sweep) = parsed.command else {
-        return Err(bad("is not a `snowroll sweep` command".into()));
-    };
+    let mut sweep = sweep_command(line).map_err(|why| anyhow!("{shown}: {why}"))?;
     sweep.shard = None;
     sweep.resume = false;
     sweep.output = output.map(Path::to_path_buf);
-    Ok(*sweep)
+    Ok(sweep)
 }
 
 /// Writes `header` and the shards' rows as Parquet through `sink` (a

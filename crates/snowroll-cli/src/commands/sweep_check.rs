@@ -15,13 +15,15 @@ use std::io::{BufRead, Read};
 use std::ops::Range;
 
 use anyhow::{anyhow, bail, Context, Result};
+use clap::Parser;
 use snowroll::params::Value;
 use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
 use snowroll_io::VERSION;
 
 use super::sweep_csv::RowWriter;
 use super::sweep_grid::{grid_of, is_grid_key, recorded_method};
-use crate::args::sweep_axes;
+use crate::args::{sweep_axes, Args, Command, SweepArgs};
+use crate::shell::shell_words;
 
 /// Longest header line read (an axis may be a long list).
 const MAX_HEADER_LINE: u64 = crate::bounded::MAX_HEADER;
@@ -141,6 +143,11 @@ impl Recorded {
         // order, as snowroll writes them: `merge` copies the first shard's
         // header, so an edit (`1.0` for `1`, a line moved) would pass into
         // the merged file (issue 33, item 5).
+        // The command line is provenance, not compared, but it must be a
+        // sweep's: `merge` parses shard 0's, and a resumed file keeps its
+        // own (a `# command: end-time` once passed through `--resume` into
+        // a file that `merge` then refused; issue 33's campaign).
+        sweep_command(get("command")?).map_err(|why| anyhow!("{shown}: {why}"))?;
         let want = header_text(&version, get("command")?, &grid, shard, &rows, warnings);
         let got_len: usize = header.iter().map(|l| l.len() + 1).sum();
         if got_len != want.len() || header.iter().zip(want.lines()).any(|(a, b)| a != b) {
@@ -256,6 +263,27 @@ pub fn header_text(
     h.push_str(&SweepRow::COLUMNS.join(","));
     h.push('\n');
     h
+}
+
+/// The `snowroll sweep` command of a recorded `# command:` line, parsed
+/// as a shell would split it.
+///
+/// # Errors
+/// Why it is not one (an edited header), quoting the line.
+pub fn sweep_command(line: &str) -> Result<SweepArgs, String> {
+    let bad = |why: String| format!("its command line `{}` {why}", cut(line));
+    let words = shell_words(line).map_err(|e| bad(format!("cannot be split into words: {e}")))?;
+    let parsed = Args::try_parse_from(&words).map_err(|e| {
+        let why = e.to_string();
+        bad(format!(
+            "does not parse: {}",
+            why.lines().next().unwrap_or_default()
+        ))
+    })?;
+    match parsed.command {
+        Command::Sweep(sweep) => Ok(*sweep),
+        _ => Err(bad("is not a `snowroll sweep` command".into())),
+    }
 }
 
 /// The first line of `got` (a header as read, `lines` its lines) that is
