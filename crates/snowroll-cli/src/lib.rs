@@ -131,8 +131,8 @@ const MIN_THREAD_CAP: usize = 16;
 
 /// Starts the global worker pool before any command runs (issue 33, item
 /// 4). `RAYON_NUM_THREADS` (set, e.g., from a Slurm task's
-/// `SLURM_CPUS_PER_TASK`) is honoured up to [`THREADS_PER_CPU`] times the
-/// CPUs this process may use (at least [`MIN_THREAD_CAP`]); more are
+/// `SLURM_CPUS_PER_TASK`) is honoured up to 4 (`THREADS_PER_CPU`) times the
+/// CPUs this process may use (at least 16, `MIN_THREAD_CAP`); more are
 /// pointless for CPU-bound work and could not all start under a memory cap
 /// (`ulimit -v`): rayon then panicked at the first parallel loop with a
 /// backtrace. Returns a note to print when the request was cut; an error
