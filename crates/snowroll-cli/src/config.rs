@@ -294,6 +294,7 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
     let cannot_read = || format!("cannot read config file {shown}");
     let file = File::open(path).with_context(cannot_read)?;
     let mut reader = BufReader::new(Bounded::new(file, MAX_HEADER, "the header of an output"));
+    skip_bom(&mut reader).with_context(cannot_read)?;
     let (prefix, start) = sniff(&mut reader).with_context(cannot_read)?;
     let first = start.map(|i| prefix[i]);
     let starts_csv = start.is_some_and(|i| prefix[i..].starts_with(CSV_MARK));
@@ -319,6 +320,38 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
         bail!("config file {shown}: `times` and `dt` conflict, give one of them");
     }
     Ok((file, origin))
+}
+
+/// The UTF-8 byte order mark that some editors put at the start of a file.
+const BOM: &[u8] = b"\xEF\xBB\xBF";
+
+/// Skips a UTF-8 byte order mark at the start of `reader` (issue 33, item
+/// 5): a JSON or CSV file saved by such an editor is still that format,
+/// where the mark used to make it look like TOML.
+fn skip_bom(reader: &mut impl BufRead) -> io::Result<()> {
+    let mut start = Vec::with_capacity(BOM.len());
+    while start.len() < BOM.len() {
+        let buf = reader.fill_buf()?;
+        if buf.is_empty() {
+            break;
+        }
+        let want = BOM.len() - start.len();
+        let take = want.min(buf.len());
+        if buf[..take] != BOM[start.len()..start.len() + take] {
+            // Not a mark: nothing consumed beyond what matched so far,
+            // which is only possible within the first buffer.
+            break;
+        }
+        start.extend_from_slice(&buf[..take]);
+        reader.consume(take);
+    }
+    if !start.is_empty() && start.len() < BOM.len() {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidData,
+            "it starts with a cut-off byte order mark",
+        ));
+    }
+    Ok(())
 }
 
 /// How a CSV output of snowroll starts.

@@ -9,9 +9,9 @@
 //!   command, except that a reader who went away (`| head -1`, EPIPE) is
 //!   remembered ([`reader_gone`]) so that the run ends quietly with success
 //!   instead of an error message.
-//! - A standard output that cannot take results (closed when the program
-//!   started, or open for reading only) is an error at the first write,
-//!   never results silently lost ([`stdout_unusable`]).
+//! - A standard output that cannot take results (open for reading only) is
+//!   an error at the first write, never results silently lost
+//!   ([`stdout_unusable`]).
 
 use std::cell::RefCell;
 use std::fmt;
@@ -19,7 +19,7 @@ use std::io::{self, IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::OnceLock;
 
-use rustix::fs::{FileType, OFlags};
+use rustix::fs::OFlags;
 
 /// Bytes written to stdout and stderr while [`capture`] ran.
 #[derive(Debug, Default, Clone, PartialEq, Eq)]
@@ -145,40 +145,30 @@ pub fn check_stdout() -> io::Result<()> {
     }
 }
 
-/// Major and minor device numbers of `/dev/null` on Linux.
-const DEV_NULL: (u32, u32) = (1, 3);
-
 /// Why results written to standard output would be lost, or `None` when it
 /// can take them; judged once per process, at the first write.
 ///
-/// Rust's runtime puts `/dev/null`, opened for reading and writing, in place
-/// of a descriptor 0 to 2 that is closed when the program starts (`>&-`), and
-/// its stdout reports a write to a descriptor open for reading only (`1<&0`)
-/// as done; either way every byte would vanish and the run end with success.
-/// The first is told from a shell's `> /dev/null` by the access mode, which
-/// a shell's `>` makes write-only. The one other way to get that descriptor,
-/// `1<>/dev/null` (or a daemon's stdio), is refused as well: give `-o
-/// /dev/null` or `> /dev/null` to discard results.
+/// A descriptor open for reading only (`1<&0`, `1</dev/null`) takes no
+/// results, yet Rust's stdout reports a write to it as done: refused.
+///
+/// A stdout that was closed when the program started (`>&-`) cannot be
+/// told apart from `/dev/null` opened for reading and writing: Rust's
+/// runtime puts exactly that in place of a closed descriptor 0 to 2 before
+/// `main`, and only code run before the runtime (which this workspace's
+/// `unsafe_code = "forbid"` rules out) could see the difference. Issue 20
+/// refused every read-write `/dev/null`; issue 33 (item 4) found that this
+/// fails every command run with Python's `subprocess.DEVNULL` or under a
+/// daemon's stdio, which are read-write `/dev/null` and ask for exactly
+/// what they get. So such a stdout is accepted: its results are
+/// discarded, as for `> /dev/null`, and a closed one is treated alike.
 pub fn stdout_unusable() -> Option<&'static str> {
     static WHY: OnceLock<Option<&'static str>> = OnceLock::new();
     *WHY.get_or_init(|| {
         let out = io::stdout();
         let flags = rustix::fs::fcntl_getfl(&out).ok()?;
         let mode = flags & (OFlags::RDONLY | OFlags::WRONLY | OFlags::RDWR);
-        if mode == OFlags::RDONLY {
-            return Some(
-                "standard output is open for reading only: nothing written to it would arrive",
-            );
-        }
-        let stat = rustix::fs::fstat(&out).ok()?;
-        let device = (
-            rustix::fs::major(stat.st_rdev),
-            rustix::fs::minor(stat.st_rdev),
-        );
-        let is_null = FileType::from_raw_mode(stat.st_mode) == FileType::CharacterDevice
-            && device == DEV_NULL;
-        (is_null && mode == OFlags::RDWR).then_some(
-            "standard output is closed (descriptor 1 was closed when snowroll started): \
+        (mode == OFlags::RDONLY).then_some(
+            "standard output is open for reading only: nothing written to it would arrive; \
              redirect it to a file, or to /dev/null to discard the results, or give -o FILE",
         )
     })

@@ -122,6 +122,55 @@ fn clip_long_words(text: &str) -> String {
     out
 }
 
+/// Most worker threads per CPU that this process may use: the work is
+/// CPU-bound, so more threads than CPUs only cost memory (each has its own
+/// stack).
+const THREADS_PER_CPU: usize = 4;
+/// Fewest threads always allowed, whatever the CPU count.
+const MIN_THREAD_CAP: usize = 16;
+
+/// Starts the global worker pool before any command runs (issue 33, item
+/// 4). `RAYON_NUM_THREADS` (set, e.g., from a Slurm task's
+/// `SLURM_CPUS_PER_TASK`) is honoured up to 4 (`THREADS_PER_CPU`) times the
+/// CPUs this process may use (at least 16, `MIN_THREAD_CAP`); more are
+/// pointless for CPU-bound work and could not all start under a memory cap
+/// (`ulimit -v`): rayon then panicked at the first parallel loop with a
+/// backtrace. Returns a note to print when the request was cut; an error
+/// when even that many threads cannot start.
+///
+/// # Errors
+/// The pool cannot start (the system refuses the threads): the message
+/// says how many and what to change.
+pub fn start_threads() -> Result<Option<String>, String> {
+    let cpus = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+    let cap = (THREADS_PER_CPU * cpus).max(MIN_THREAD_CAP);
+    let asked = std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0);
+    let (threads, note) = match asked {
+        Some(n) if n > cap => (
+            cap,
+            Some(format!(
+                "note: RAYON_NUM_THREADS={n} is more than {THREADS_PER_CPU} threads for each of \
+                 the {cpus} CPUs this process may use: {cap} threads are used"
+            )),
+        ),
+        Some(n) => (n, None),
+        None => (cpus, None),
+    };
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build_global()
+        .map_err(|e| {
+            format!(
+                "cannot start {threads} worker threads ({e}): lower RAYON_NUM_THREADS (e.g. \
+                 RAYON_NUM_THREADS=1) or raise the memory limit (ulimit -v)"
+            )
+        })?;
+    Ok(note)
+}
+
 /// Removes the run's temporary files on SIGINT, SIGTERM and SIGHUP, then
 /// exits with 128 + the signal's number (130, 143, 129), as a shell reports
 /// a process killed by it. A second signal while that clean-up runs (stuck

@@ -1,4 +1,5 @@
-//! The `snowroll` program: signal handlers, then [`snowroll_cli::run_from`].
+//! The `snowroll` program: signal handlers, the worker threads, then
+//! [`snowroll_cli::run_from`].
 
 use std::process::ExitCode;
 
@@ -10,6 +11,18 @@ fn main() -> ExitCode {
             std::io::stderr(),
             "warning: temporary files will not be removed on SIGINT or SIGTERM: {e}"
         );
+    }
+    match snowroll_cli::start_threads() {
+        Ok(None) => {}
+        Ok(Some(note)) => {
+            use std::io::Write;
+            let _ = writeln!(std::io::stderr(), "{note}");
+        }
+        Err(e) => {
+            use std::io::Write;
+            let _ = writeln!(std::io::stderr(), "error: {e}");
+            return ExitCode::from(1);
+        }
     }
     ExitCode::from(snowroll_cli::run_from(std::env::args_os()))
 }

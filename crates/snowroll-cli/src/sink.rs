@@ -150,6 +150,43 @@ impl Sink {
         }
     }
 
+    /// Puts the file `from` (open as `file`, in the target's directory)
+    /// in place of the output instead of what was written here: it gets
+    /// the permission bits and owner the temporary file was given (those
+    /// of the file it replaces, or of a new file), is synced, and renamed
+    /// over the target; the temporary file is removed. A rename needs no
+    /// room on the disk, so a full disk cannot make the output fail here.
+    /// Only for a [`Sink::Replace`]; any other sink is an error.
+    ///
+    /// # Errors
+    /// The system's error, naming no temporary path.
+    pub fn commit_by_rename(self, file: &File, from: &Path) -> io::Result<()> {
+        let Sink::Replace {
+            file: written,
+            scratch,
+            target,
+            ..
+        } = self
+        else {
+            return Err(io::Error::other("the output is not a file to replace"));
+        };
+        drop(written);
+        let meta = fs::symlink_metadata(scratch.path()).map_err(plain)?;
+        let mut mode = meta.mode() & MODE_BITS;
+        if std::os::unix::fs::fchown(file, Some(meta.uid()), Some(meta.gid())).is_err() {
+            mode &= !SET_ID_BITS;
+        }
+        file.set_permissions(fs::Permissions::from_mode(mode))
+            .map_err(plain)?;
+        file.sync_all().map_err(plain)?;
+        fs::rename(from, &target).map_err(plain)?;
+        drop(scratch);
+        if let Ok(dir) = File::open(parent_or_dot(&target)) {
+            let _ = dir.sync_all();
+        }
+        Ok(())
+    }
+
     /// A description for error messages: the path as given, or stdout.
     pub fn name(&self) -> String {
         match self {

@@ -4,9 +4,11 @@
 mod cli;
 mod crash_safety;
 mod determinism;
+mod edges;
 mod fuzz_findings;
 mod guards;
 mod inputs;
+mod last_step;
 mod merge_bytes;
 mod model_list;
 mod output_files;

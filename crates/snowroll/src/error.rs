@@ -76,6 +76,23 @@ pub enum ParamError {
         /// The end time, s.
         t_end: f64,
     },
+    /// An end distance shorter than the absolute tolerance: the integrator
+    /// knows positions only to `atol`, so such an end cannot be located
+    /// (issue 33, item 4: `--x-end 1e-100` stopped at x = 1.6e-8 m and
+    /// reported the end distance reached).
+    #[error(
+        "invalid x_end (m) = {}: expected x_end >= atol = {} (positions are computed to within \
+         atol, so a shorter end distance cannot be located); give a smaller --atol or a longer \
+         --x-end",
+        number(*x_end),
+        number(*atol)
+    )]
+    EndBelowTolerance {
+        /// The end distance, m.
+        x_end: f64,
+        /// The absolute tolerance.
+        atol: f64,
+    },
     /// A run whose row count, known before it starts, exceeds the limit.
     #[error(
         "the run would record {} rows, more than max_rows = {max_rows}",

@@ -16,44 +16,79 @@
 //! `.parquet` (in a build with the `parquet` feature), else CSV.
 
 use std::fs::File;
-use std::io::{BufReader, Write};
+use std::io::{BufReader, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
-use clap::Parser;
 use snowroll::sweep::shard_range;
 
 use super::sweep::{command_line, format_of, COMMAND_KEY, SHARD_KEY};
-use super::sweep_check::{check_rows, warnings_text, Recorded, WARNINGS};
-use crate::args::{Args, Command, MergeArgs, OutputArgs, SweepArgs, SweepFormat};
+use super::sweep_check::{check_rows, sweep_command, warnings_text, Recorded, WARNINGS};
+use super::sweep_partial::kind_name;
+use crate::args::{MergeArgs, OutputArgs, SweepArgs, SweepFormat};
 use crate::clash::{refuse_clashes, RunFile};
-use crate::shell::shell_words;
 use crate::sink::Sink;
 
-/// One shard file, its header read.
+/// One shard file, its header read. The file is not kept open: the rows
+/// are read later, one shard after another ([`Shard::rows`]), so a merge
+/// of more shards than the open-file limit allows works (issue 33, item 5).
 struct Shard {
     path: PathBuf,
-    reader: BufReader<File>,
     /// Its header, parsed.
     recorded: Recorded,
+    /// Its device and inode, to check that the file read for its rows is
+    /// the one whose header was read.
+    id: (u64, u64),
 }
 
 impl Shard {
     fn open(path: &Path) -> Result<Shard> {
         let shown = path.display().to_string();
-        let file = File::open(path).with_context(|| format!("reading {shown}"))?;
+        let (file, id) = open_regular(path)?;
         let mut reader = BufReader::new(file);
         let recorded = Recorded::read(&mut reader, &shown)?;
         Ok(Shard {
             path: path.to_path_buf(),
-            reader,
             recorded,
+            id,
         })
     }
 
     fn shard(&self) -> u64 {
         self.recorded.shard.0
     }
+
+    /// The file again, positioned at its first row.
+    fn rows(&self) -> Result<BufReader<File>> {
+        let shown = self.path.display();
+        let (mut file, id) = open_regular(&self.path)?;
+        if id != self.id {
+            bail!("{shown} was replaced while the shards were merged");
+        }
+        file.seek(SeekFrom::Start(self.recorded.len))
+            .with_context(|| format!("reading {shown}"))?;
+        Ok(BufReader::new(file))
+    }
+}
+
+/// `path` opened for reading, if it is a regular file (a shard is read
+/// twice, its header then its rows; a device such as `/dev/zero`, a FIFO
+/// or a directory is refused by name), with its device and inode.
+fn open_regular(path: &Path) -> Result<(File, (u64, u64))> {
+    use std::os::unix::fs::MetadataExt;
+    let shown = path.display();
+    let file = File::open(path).with_context(|| format!("reading {shown}"))?;
+    let meta = file
+        .metadata()
+        .with_context(|| format!("reading {shown}"))?;
+    if !meta.is_file() {
+        bail!(
+            "cannot merge {shown}: it is {}, not a regular file (a shard is a file written by \
+             `snowroll sweep --shard`)",
+            kind_name(&meta.file_type())
+        );
+    }
+    Ok((file, (meta.dev(), meta.ino())))
 }
 
 /// Checks and joins the shards.
@@ -105,11 +140,11 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         SweepFormat::Csv => {
             sink.write_all(header.as_bytes())
                 .with_context(|| format!("writing {name}"))?;
-            for s in &mut shards {
+            for s in &shards {
                 copy_rows(s, &mut sink, &name)?;
             }
         }
-        SweepFormat::Parquet => sink = to_parquet(&mut shards, &header, sink)?,
+        SweepFormat::Parquet => sink = to_parquet(&shards, &header, sink)?,
     }
     sink.commit().with_context(|| format!("writing {name}"))?;
     Ok(())
@@ -130,29 +165,18 @@ fn one_process(first: &Shard, output: Option<&Path>) -> Result<SweepArgs> {
     let line = (first.recorded.header.iter())
         .find_map(|l| l.strip_prefix(COMMAND_KEY))
         .ok_or_else(|| anyhow!("{shown}: its header has no `{}` line", COMMAND_KEY.trim()))?;
-    let bad = |why: String| anyhow!("{shown}: its command line `{line}` {why}");
-    let words = shell_words(line).map_err(|e| bad(format!("cannot be split into words: {e}")))?;
-    let parsed = Args::try_parse_from(&words).map_err(|e| {
-        let why = e.to_string();
-        bad(format!(
-            "does not parse: {}",
-            why.lines().next().unwrap_or_default()
-        ))
-    })?;
-    let Command::Sweep(mut sweep) = parsed.command else {
-        return Err(bad("is not a `snowroll sweep` command".into()));
-    };
+    let mut sweep = sweep_command(line).map_err(|why| anyhow!("{shown}: {why}"))?;
     sweep.shard = None;
     sweep.resume = false;
     sweep.output = output.map(Path::to_path_buf);
-    Ok(*sweep)
+    Ok(sweep)
 }
 
 /// Writes `header` and the shards' rows as Parquet through `sink` (a
 /// regular file), the way `sweep` does: the CSV first, to a temporary file
 /// beside the output, then converted ([`super::parquet::write`]).
 #[cfg(feature = "parquet")]
-fn to_parquet(shards: &mut [Shard], header: &str, sink: Sink) -> Result<Sink> {
+fn to_parquet(shards: &[Shard], header: &str, sink: Sink) -> Result<Sink> {
     use crate::scratch::Scratch;
     use crate::sink::parent_or_dot;
     let Sink::Replace { target, .. } = &sink else {
@@ -165,7 +189,7 @@ fn to_parquet(shards: &mut [Shard], header: &str, sink: Sink) -> Result<Sink> {
     let mut csv = std::io::BufWriter::new(file);
     csv.write_all(header.as_bytes())
         .with_context(|| format!("writing {csv_name}"))?;
-    for s in shards.iter_mut() {
+    for s in shards {
         copy_rows(s, &mut csv, &csv_name)?;
     }
     csv.flush().with_context(|| format!("writing {csv_name}"))?;
@@ -177,7 +201,7 @@ fn to_parquet(shards: &mut [Shard], header: &str, sink: Sink) -> Result<Sink> {
 }
 
 #[cfg(not(feature = "parquet"))]
-fn to_parquet(_: &mut [Shard], _: &str, _: Sink) -> Result<Sink> {
+fn to_parquet(_: &[Shard], _: &str, _: Sink) -> Result<Sink> {
     bail!("this snowroll was built without Parquet")
 }
 
@@ -249,12 +273,13 @@ fn check_tiling(shards: &[Shard]) -> Result<()> {
 
 /// Copies the rows of `s` to `out` (`name` in messages), each checked
 /// ([`check_rows`]), and checks that they are all of its shard's rows.
-fn copy_rows(s: &mut Shard, out: &mut impl Write, name: &str) -> Result<()> {
+fn copy_rows(s: &Shard, out: &mut impl Write, name: &str) -> Result<()> {
     let shown = s.path.display().to_string();
     let rows = s.recorded.rows.clone();
     let mut warned = 0u64;
+    let mut reader = s.rows()?;
     let end = check_rows(
-        &mut s.reader,
+        &mut reader,
         &s.recorded.grid,
         &rows,
         s.recorded.lines + 1,

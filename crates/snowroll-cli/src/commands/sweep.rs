@@ -1,19 +1,22 @@
 //! `snowroll sweep`: many trajectories over a grid, one row each.
 //!
 //! To a file, rows go to `FILE.partial` (locked while a sweep writes it;
-//! `sweep_partial.rs`) a chunk at a time; at the end they are copied
-//! through the output [`Sink`] (temporary file, renamed into place) and the
-//! partial file is removed. A sweep that was killed leaves `FILE.partial`;
+//! `sweep_partial.rs`) a chunk at a time; at the end the partial file,
+//! which then holds the output's bytes, is renamed into place (a Parquet
+//! output is converted from it, and it is removed after). Every output
+//! (`-o`, the partial file, `--plot`) is opened before the first row is
+//! computed, and a complete partial file is never removed on an error. A sweep that was killed leaves `FILE.partial`;
 //! `--resume` checks that its header records the same grid and settings
 //! (parsed, not compared as bytes) and that its rows are whole, in order
 //! and those of the grid, drops a torn last line and continues after the
 //! last complete row, so the result is the same bytes as an uninterrupted
 //! run. Without `--resume` an existing partial file is refused, never
-//! overwritten. A run that fails removes the partial file it created.
+//! overwritten. A run that fails before its rows are complete removes the
+//! partial file it created.
 
 use std::io::{self, Seek, SeekFrom, Write};
 use std::ops::Range;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, bail, Context, Result};
@@ -24,7 +27,7 @@ use snowroll::sweep::{
 };
 use snowroll_io::VERSION;
 
-use super::sweep_check::{warnings_text, Recorded, WARNINGS};
+use super::sweep_check::{header_text, Recorded};
 use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid, run_files, with_config};
 use super::sweep_partial::{partial_path, Partial};
@@ -89,13 +92,18 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     match partial_path {
         None => to_stream(args, &grid, range, &header, sink, &bar)?,
         Some(path) => {
+            // Every output is opened before the first row is computed: a
+            // map that cannot be written is refused now, not after hours.
+            let plot = match plot {
+                Some((plan, path)) => Some((plan, super::sweep_plot::open(path)?)),
+                None => None,
+            };
             let run = Run {
                 recorded: &recorded,
                 header: &header,
                 format,
-                plot,
             };
-            to_partial(args, &run, sink, &bar, &path)?;
+            to_partial(args, &run, (sink, plot), &bar, &path)?;
         }
     }
     if warned > 0 {
@@ -171,42 +179,52 @@ struct Run<'a> {
     /// Its header's text.
     header: &'a str,
     format: SweepFormat,
-    plot: Option<(super::sweep_plot::Plan, &'a PathBuf)>,
 }
+
+/// The outputs of a sweep to a file, opened before its rows are computed:
+/// the `-o` file and the map, if any.
+type Outputs = (Sink, Option<(super::sweep_plot::Plan, Sink)>);
 
 /// Writes the sweep's rows to `path` (FILE.partial) as they are computed,
 /// synced every [`SYNC_EVERY`]; resumes from the rows already there with
-/// `--resume`; then draws the map and writes the finished file through
-/// `sink`, and removes the partial file. On an error the partial file is
-/// removed if this run created it (a full disk is not left fuller), and
-/// kept if it holds an earlier run's rows.
+/// `--resume`; then draws the map and puts the finished file in place.
+///
+/// An error while the rows are computed removes the partial file if this
+/// run created it (a full disk is not left fuller), and keeps it if it
+/// holds an earlier run's rows. Once every row is there the partial file
+/// is never removed on an error (issue 33, item 1): it is kept, and said
+/// to be kept, for `--resume`, which then only writes the outputs.
 fn to_partial(
     args: &SweepArgs,
     run: &Run,
-    sink: Sink,
+    (sink, plot): Outputs,
     bar: &ProgressBar,
     path: &Path,
 ) -> Result<()> {
     let mut partial = Partial::open(path, run.header, run.recorded, args.resume)?;
-    match fill_and_finish(args, run, &mut partial, sink, bar, path) {
-        Ok(()) => partial.remove(),
-        Err(e) => {
-            partial.remove_if_created();
-            Err(e)
-        }
+    if let Err(e) = fill(args, run, &mut partial, bar, path) {
+        partial.remove_if_created();
+        return Err(e);
     }
+    let rows = run.recorded.rows.end - run.recorded.rows.start;
+    let name = sink.name();
+    finish(run, partial, sink, plot).inspect_err(|_| {
+        report!(
+            "note: the {rows} rows are complete in {}, which is kept: once the cause is \
+             fixed, the same command with --resume writes {name} without computing them again",
+            path.display()
+        );
+    })
 }
 
-/// The rows of `run` not yet in `partial`, then the map and the output.
-fn fill_and_finish(
+/// The rows of `run` not yet in `partial`, flushed to it.
+fn fill(
     args: &SweepArgs,
     run: &Run,
     partial: &mut Partial,
-    sink: Sink,
     bar: &ProgressBar,
     path: &Path,
 ) -> Result<()> {
-    let name = sink.name();
     let grid = &run.recorded.grid;
     let range = run.recorded.rows.clone();
     let chunk = args.chunk_rows.map_or(DEFAULT_CHUNK, |n| n as usize);
@@ -238,40 +256,51 @@ fn fill_and_finish(
     writer.flush().with_context(|| format!("writing {shown}"))?;
     drop(writer);
     bar.finish_and_clear();
-    partial
-        .file
-        .seek(SeekFrom::Start(0))
-        .with_context(|| format!("reading {shown}"))?;
-    if let Some((plan, plot)) = &run.plot {
-        super::sweep_plot::draw(*plan, grid, &partial.file, plot)?;
+    Ok(())
+}
+
+/// The map of the complete partial file, then the output: for CSV the
+/// partial file itself, renamed into place (it holds the output's bytes;
+/// a rename needs no room on the disk, where a copy needs as much again);
+/// for Parquet the rows converted through `sink`, and the partial file
+/// removed once the output is in place.
+fn finish(
+    run: &Run,
+    mut partial: Partial,
+    sink: Sink,
+    plot: Option<(super::sweep_plot::Plan, Sink)>,
+) -> Result<()> {
+    let shown = partial.path().display().to_string();
+    let name = sink.name();
+    if let Some((plan, plot)) = plot {
         partial
             .file
             .seek(SeekFrom::Start(0))
             .with_context(|| format!("reading {shown}"))?;
+        super::sweep_plot::draw(plan, &run.recorded.grid, &partial.file, plot)?;
     }
-    finish(run.format, partial, sink).with_context(|| format!("writing {name}"))?;
-    Ok(())
-}
-
-/// Writes the rows of the partial file (positioned at its start) to `sink`
-/// in `format`, and renames the output into place.
-fn finish(format: SweepFormat, partial: &mut Partial, mut sink: Sink) -> Result<()> {
-    match format {
+    match run.format {
         SweepFormat::Csv => {
-            io::copy(&mut partial.file, &mut sink)?;
+            let path = partial.path().to_path_buf();
+            sink.commit_by_rename(&partial.file, &path)
+                .with_context(|| format!("writing {name}"))?;
+            Ok(())
         }
         #[cfg(feature = "parquet")]
         SweepFormat::Parquet => {
             let mut header = vec![0u8; partial.header_len as usize];
+            partial.file.seek(SeekFrom::Start(0))?;
             io::Read::read_exact(&mut partial.file, &mut header)?;
             partial.file.seek(SeekFrom::Start(0))?;
             let header = String::from_utf8_lossy(&header).into_owned();
-            sink = super::parquet::write(&partial.file, &header, sink)?;
+            let sink = super::parquet::write(&partial.file, &header, sink)
+                .with_context(|| format!("writing {name}"))?;
+            sink.commit().with_context(|| format!("writing {name}"))?;
+            partial.remove()
         }
         #[cfg(not(feature = "parquet"))]
         SweepFormat::Parquet => bail!("this snowroll was built without Parquet"),
     }
-    Ok(sink.commit()?)
 }
 
 /// Runs `range` and writes its rows as CSV records to `out`, calling
@@ -396,31 +425,7 @@ fn header(
     warned: u64,
 ) -> String {
     let command = recorded.map_or_else(|| command_line(args), str::to_string);
-    let models: Vec<&str> = grid.models().iter().map(|m| m.id()).collect();
-    let mut h = format!("# snowroll sweep, version {VERSION}\n{COMMAND_KEY}{command}\n");
-    h.push_str(&format!("# model: {}\n", models.join(",")));
-    let ids = |v: Vec<&str>| v.join(",");
-    let choices = grid.choices();
-    h.push_str(&format!(
-        "# collision: {}\n",
-        ids(choices.collision.iter().map(|c| c.id()).collect())
-    ));
-    h.push_str(&format!(
-        "# on_hop: {}\n",
-        ids(choices.on_hop.iter().map(|c| c.id()).collect())
-    ));
-    for axis in grid.axes() {
-        h.push_str(&format!("# {}: {}\n", axis.param.key(), axis.values));
-    }
-    h.push_str(&format!("# points: {}\n", grid.len()));
-    h.push_str(&format!(
-        "{SHARD_KEY}{shard}/{shards}, rows {}..{}\n",
-        range.start, range.end
-    ));
-    h.push_str(&format!("# {WARNINGS}: {}\n", warnings_text(warned)));
-    h.push_str(&SweepRow::COLUMNS.join(","));
-    h.push('\n');
-    h
+    header_text(VERSION, &command, grid, (shard, shards), range, warned)
 }
 
 #[cfg(test)]

@@ -15,12 +15,15 @@ use std::io::{BufRead, Read};
 use std::ops::Range;
 
 use anyhow::{anyhow, bail, Context, Result};
+use clap::Parser;
 use snowroll::params::Value;
 use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
 use snowroll_io::VERSION;
 
+use super::sweep_csv::RowWriter;
 use super::sweep_grid::{grid_of, is_grid_key, recorded_method};
-use crate::args::sweep_axes;
+use crate::args::{sweep_axes, Args, Command, SweepArgs};
+use crate::shell::shell_words;
 
 /// Longest header line read (an axis may be a long list).
 const MAX_HEADER_LINE: u64 = crate::bounded::MAX_HEADER;
@@ -136,6 +139,27 @@ impl Recorded {
         let n_lines = lines.len() as u64 + 1;
         let mut header = lines.clone();
         header.push(columns);
+        // Every value was read; the lines must also be spelt, and in the
+        // order, as snowroll writes them: `merge` copies the first shard's
+        // header, so an edit (`1.0` for `1`, a line moved) would pass into
+        // the merged file (issue 33, item 5).
+        // The command line is provenance, not compared, but it must be a
+        // sweep's: `merge` parses shard 0's, and a resumed file keeps its
+        // own (a `# command: end-time` once passed through `--resume` into
+        // a file that `merge` then refused; issue 33's campaign).
+        sweep_command(get("command")?).map_err(|why| anyhow!("{shown}: {why}"))?;
+        let want = header_text(&version, get("command")?, &grid, shard, &rows, warnings);
+        let got_len: usize = header.iter().map(|l| l.len() + 1).sum();
+        if got_len != want.len() || header.iter().zip(want.lines()).any(|(a, b)| a != b) {
+            let (k, got, wanted) = first_edit(&header, &want);
+            bail!(
+                "{shown}: line {k}: `{}` is not as snowroll writes it (`{}`): an edited header \
+                 is refused, as the edit would pass into the output; write it back as it was, \
+                 or run the sweep again",
+                cut(&got),
+                cut(&wanted)
+            );
+        }
         Ok(Recorded {
             version,
             grid,
@@ -201,6 +225,80 @@ impl Recorded {
             .map(|((key, a), (_, b))| format!("{key}: {a} in {}, {b} in {}", names.0, names.1))
             .collect()
     }
+}
+
+/// The header a sweep writes, `#` lines and column names, each line ended
+/// by a newline: written by `sweep`, and the one form `--resume` and
+/// `merge` accept (an edited header is refused: [`Recorded::read`]).
+pub fn header_text(
+    version: &str,
+    command: &str,
+    grid: &Grid,
+    (shard, shards): (u64, u64),
+    range: &Range<u64>,
+    warned: u64,
+) -> String {
+    let models: Vec<&str> = grid.models().iter().map(|m| m.id()).collect();
+    let mut h = format!("{VERSION_KEY}{version}\n# command: {command}\n");
+    h.push_str(&format!("# model: {}\n", models.join(",")));
+    let ids = |v: Vec<&str>| v.join(",");
+    let choices = grid.choices();
+    h.push_str(&format!(
+        "# collision: {}\n",
+        ids(choices.collision.iter().map(|c| c.id()).collect())
+    ));
+    h.push_str(&format!(
+        "# on_hop: {}\n",
+        ids(choices.on_hop.iter().map(|c| c.id()).collect())
+    ));
+    for axis in grid.axes() {
+        h.push_str(&format!("# {}: {}\n", axis.param.key(), axis.values));
+    }
+    h.push_str(&format!("# points: {}\n", grid.len()));
+    h.push_str(&format!(
+        "# shard: {shard}/{shards}, rows {}..{}\n",
+        range.start, range.end
+    ));
+    h.push_str(&format!("# {WARNINGS}: {}\n", warnings_text(warned)));
+    h.push_str(&SweepRow::COLUMNS.join(","));
+    h.push('\n');
+    h
+}
+
+/// The `snowroll sweep` command of a recorded `# command:` line, parsed
+/// as a shell would split it.
+///
+/// # Errors
+/// Why it is not one (an edited header), quoting the line.
+pub fn sweep_command(line: &str) -> Result<SweepArgs, String> {
+    let bad = |why: String| format!("its command line `{}` {why}", cut(line));
+    let words = shell_words(line).map_err(|e| bad(format!("cannot be split into words: {e}")))?;
+    let parsed = Args::try_parse_from(&words).map_err(|e| {
+        let why = e.to_string();
+        bad(format!(
+            "does not parse: {}",
+            why.lines().next().unwrap_or_default()
+        ))
+    })?;
+    match parsed.command {
+        Command::Sweep(sweep) => Ok(*sweep),
+        _ => Err(bad("is not a `snowroll sweep` command".into())),
+    }
+}
+
+/// The first line of `got` (a header as read, `lines` its lines) that is
+/// not the one of `want` (the header snowroll writes for it), with its
+/// number, for the message refusing an edited header.
+fn first_edit(lines: &[String], want: &str) -> (usize, String, String) {
+    let mut want_lines = want.lines();
+    for (k, line) in lines.iter().enumerate() {
+        let w = want_lines.next().unwrap_or_default();
+        if line != w {
+            return (k + 1, line.clone(), w.to_string());
+        }
+    }
+    let extra = want_lines.next().unwrap_or_default().to_string();
+    (lines.len() + 1, String::new(), extra)
 }
 
 /// The `#` lines of a header and its column line (without newlines), and
@@ -337,6 +435,8 @@ pub fn check_rows(
 ) -> Result<u64> {
     let mut next = rows.start;
     let mut buf = Vec::new();
+    let mut canonical = Vec::new();
+    let mut writer = RowWriter::new();
     loop {
         buf.clear();
         let n = (&mut *input)
@@ -373,9 +473,49 @@ pub fn check_rows(
             );
         }
         check_point(&row, grid).map_err(|e| anyhow!("{shown}: line {line}: {e}"))?;
+        // The row must be spelt as snowroll writes it: the line is copied
+        // as it is, so `1.00` for `1` or a needlessly quoted cell would
+        // change the output's bytes (issue 33, item 5).
+        canonical.clear();
+        writer
+            .write(&mut canonical, &row)
+            .with_context(|| format!("{shown}: line {line}"))?;
+        if canonical != buf {
+            bail!(
+                "{shown}: line {line}: row {} is not spelt as snowroll writes it ({}): an \
+                 edited file is refused, as the edit would pass into the output",
+                row.index,
+                spelling_difference(&buf, &canonical)
+            );
+        }
         each(&buf, &row)?;
         next += 1;
         line += 1;
+    }
+}
+
+/// Where `got` and `want` (two lines) first differ, as the text around it
+/// in each: "`,1.00,` where snowroll writes `,1,`".
+fn spelling_difference(got: &[u8], want: &[u8]) -> String {
+    /// Bytes shown on each side of the first difference.
+    const AROUND: usize = 16;
+    let at = got.iter().zip(want).take_while(|(a, b)| a == b).count();
+    let show = |line: &[u8]| {
+        let line = line.strip_suffix(b"\n").unwrap_or(line);
+        let lo = at.saturating_sub(AROUND).min(line.len());
+        let hi = (at + AROUND).min(line.len());
+        String::from_utf8_lossy(&line[lo..hi]).into_owned()
+    };
+    format!("`{}` where snowroll writes `{}`", show(got), show(want))
+}
+
+/// At most 120 characters of `text`, for messages.
+fn cut(text: &str) -> String {
+    /// Characters of a line shown in a message.
+    const SHOWN: usize = 120;
+    match text.char_indices().nth(SHOWN) {
+        Some((i, _)) => format!("{}...", &text[..i]),
+        None => text.to_string(),
     }
 }
 

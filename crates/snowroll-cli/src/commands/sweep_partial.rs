@@ -78,7 +78,13 @@ impl Partial {
     /// record the same sweep as `run` (the differing settings are named).
     pub fn open(path: &Path, header: &str, run: &Recorded, resume: bool) -> Result<Partial> {
         let shown = path.display().to_string();
+        refuse_unless_regular(path)?;
         let (file, created) = open_or_create(path)?;
+        // Checked again on the open file: it may have been replaced since.
+        let kind = file.metadata()?.file_type();
+        if !kind.is_file() {
+            bail!("{}", not_regular(path, &kind));
+        }
         flock(&file, FlockOperation::NonBlockingLockExclusive)
             .map_err(|_| anyhow!("{shown} is being written by another sweep"))?;
         let mut partial = Partial {
@@ -160,18 +166,76 @@ impl Partial {
         }
     }
 
-    /// Removes the file of a finished sweep.
+    /// Its path.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Removes the file of a finished sweep whose output was converted
+    /// from it (Parquet); a CSV output is the file itself, renamed.
+    #[cfg(feature = "parquet")]
     pub fn remove(self) -> Result<()> {
         fs::remove_file(&self.path).with_context(|| format!("removing {}", self.path.display()))
     }
 }
 
-/// Opens `path` read-write, creating it if it does not exist; says whether
-/// it was created.
+/// Refuses a partial file that is there and is not a regular file: a
+/// symbolic link (to `/dev/null`, whose rows would vanish, or to another
+/// file, which the finished output would be renamed over), a device such
+/// as `/dev/zero` (endless), a FIFO, a socket or a directory (issue 33,
+/// item 2). Nothing is opened.
+fn refuse_unless_regular(path: &Path) -> Result<()> {
+    match fs::symlink_metadata(path) {
+        Ok(meta) if !meta.file_type().is_file() => {
+            bail!("{}", not_regular(path, &meta.file_type()))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The message for a partial file of kind `kind`, not a regular file.
+fn not_regular(path: &Path, kind: &fs::FileType) -> String {
+    format!(
+        "cannot use {} as the rows file of this sweep: it is {}, not a regular file (a \
+         sweep's partial file holds its rows and becomes its output); remove it, or give \
+         another -o",
+        path.display(),
+        kind_name(kind)
+    )
+}
+
+/// What a file of kind `kind` is, for messages.
+pub fn kind_name(kind: &fs::FileType) -> &'static str {
+    use std::os::unix::fs::FileTypeExt;
+    if kind.is_symlink() {
+        "a symbolic link"
+    } else if kind.is_dir() {
+        "a directory"
+    } else if kind.is_char_device() {
+        "a character device"
+    } else if kind.is_block_device() {
+        "a block device"
+    } else if kind.is_fifo() {
+        "a FIFO"
+    } else if kind.is_socket() {
+        "a socket"
+    } else if kind.is_file() {
+        "a regular file"
+    } else {
+        "of an unknown kind"
+    }
+}
+
+/// Opens `path` read-write, creating it if it does not exist, never
+/// through a symbolic link; says whether it was created.
 fn open_or_create(path: &Path) -> Result<(File, bool)> {
+    use std::os::unix::fs::OpenOptionsExt;
     let shown = path.display();
     let mut options = OpenOptions::new();
-    options.read(true).write(true);
+    options
+        .read(true)
+        .write(true)
+        .custom_flags(rustix::fs::OFlags::NOFOLLOW.bits() as i32);
     match options.clone().create_new(true).open(path) {
         Ok(f) => Ok((f, true)),
         Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {

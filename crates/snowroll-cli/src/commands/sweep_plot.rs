@@ -74,9 +74,22 @@ pub fn plan(args: &SweepArgs, grid: &Grid) -> Result<Plan> {
     Ok(Plan { x, y, color })
 }
 
+/// Opens the map's output `path` (a temporary file beside it) before any
+/// row is computed, so that a path that cannot be written (a missing
+/// directory, a read-only one) is refused at once, not after the rows.
+pub fn open(path: &Path) -> Result<Sink> {
+    Sink::open(&OutputArgs {
+        format: None,
+        output: Some(path.to_path_buf()),
+        config: None,
+        plot: None,
+    })
+}
+
 /// Reads the rows of the sweep CSV `csv` (its `#` header included), draws
-/// their map and writes it to `path` (temporary file, renamed).
-pub fn draw(plan: Plan, grid: &Grid, csv: impl Read, path: &Path) -> Result<()> {
+/// their map and writes it to `sink` (opened by [`open`]; a temporary
+/// file, renamed).
+pub fn draw(plan: Plan, grid: &Grid, csv: impl Read, mut sink: Sink) -> Result<()> {
     let Plan { x, y, color } = plan;
     let mut reader = csv::ReaderBuilder::new()
         .comment(Some(b'#'))
@@ -102,12 +115,6 @@ pub fn draw(plan: Plan, grid: &Grid, csv: impl Read, path: &Path) -> Result<()> 
         params,
     };
     let svg = map.render_svg(&provenance)?;
-    let mut sink = Sink::open(&OutputArgs {
-        format: None,
-        output: Some(path.to_path_buf()),
-        config: None,
-        plot: None,
-    })?;
     let name = sink.name();
     std::io::Write::write_all(&mut sink, svg.as_bytes())
         .with_context(|| format!("writing {name}"))?;

@@ -65,10 +65,17 @@ impl<'de> Visitor<'de> for JsonHeadSeed<'_> {
     }
 
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        let mut seen = std::collections::HashSet::new();
         while let Some(key) = map.next_key::<String>()? {
+            if !seen.insert(key.clone()) {
+                return Err(A::Error::custom(duplicate(&key)));
+            }
             match key.as_str() {
-                "model" => self.0.model = Some(map.next_value()?),
-                "params" => self.0.params = Some(map.next_value()?),
+                "model" => self.0.model = Some(map.next_value_seed(Unique)?),
+                "params" => match map.next_value_seed(Unique)? {
+                    serde_json::Value::Object(params) => self.0.params = Some(params),
+                    _ => return Err(A::Error::custom("`params` is not an object")),
+                },
                 _ => {
                     map.next_value::<IgnoredAny>()?;
                 }
@@ -79,6 +86,93 @@ impl<'de> Visitor<'de> for JsonHeadSeed<'_> {
             }
         }
         Ok(())
+    }
+}
+
+/// The message for a key given twice in one JSON object.
+fn duplicate(key: &str) -> String {
+    format!(
+        "the key `{key}` is given twice in one object: a config file sets each key once \
+         (TOML refuses this too)"
+    )
+}
+
+/// A JSON value read with every object's keys checked to be distinct
+/// (issue 33, item 5): serde_json keeps the last of two equal keys, so a
+/// `model` or a parameter given twice would silently take the second.
+struct Unique;
+
+impl<'de> DeserializeSeed<'de> for Unique {
+    type Value = serde_json::Value;
+
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Unique {
+    type Value = serde_json::Value;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+
+    fn visit_bool<E>(self, v: bool) -> Result<Self::Value, E> {
+        Ok(v.into())
+    }
+
+    fn visit_i64<E>(self, v: i64) -> Result<Self::Value, E> {
+        Ok(v.into())
+    }
+
+    fn visit_u64<E>(self, v: u64) -> Result<Self::Value, E> {
+        Ok(v.into())
+    }
+
+    fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Self::Value, E> {
+        serde_json::Number::from_f64(v)
+            .map(serde_json::Value::Number)
+            .ok_or_else(|| E::custom("a number that is not finite"))
+    }
+
+    fn visit_str<E>(self, v: &str) -> Result<Self::Value, E> {
+        Ok(v.into())
+    }
+
+    fn visit_string<E>(self, v: String) -> Result<Self::Value, E> {
+        Ok(v.into())
+    }
+
+    fn visit_unit<E>(self) -> Result<Self::Value, E> {
+        Ok(serde_json::Value::Null)
+    }
+
+    fn visit_none<E>(self) -> Result<Self::Value, E> {
+        Ok(serde_json::Value::Null)
+    }
+
+    fn visit_some<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
+        d.deserialize_any(self)
+    }
+
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+        let mut items = Vec::new();
+        while let Some(item) = seq.next_element_seed(Unique)? {
+            items.push(item);
+        }
+        Ok(serde_json::Value::Array(items))
+    }
+
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+        let mut out = Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            if out.contains_key(&key) {
+                return Err(A::Error::custom(duplicate(&key)));
+            }
+            let value = map.next_value_seed(Unique)?;
+            out.insert(key, value);
+        }
+        Ok(serde_json::Value::Object(out))
     }
 }
 
@@ -129,7 +223,10 @@ pub fn from_json_output(reader: impl Read) -> Result<(ConfigFile, Origin)> {
 pub fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
     let mut keys = Map::new();
     let mut origin = Origin::Simulate;
-    for line in text.lines() {
+    // Every setting's line, by key: a key given twice is refused, as TOML
+    // and JSON refuse it, instead of the last line winning (issue 33, item 5).
+    let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    for (line_no, line) in (1..).zip(text.lines()) {
         let Some(comment) = line.strip_prefix('#') else {
             // The column header: several models' output leads with `model`.
             if line.starts_with("model,") {
@@ -150,6 +247,14 @@ pub fn from_csv_output(text: &str) -> Result<(ConfigFile, Origin)> {
             .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == b'_')
         {
             continue; // a sentence (the turn table's summary), not a setting
+        }
+        if !RECORD_ONLY.contains(&key) {
+            if let Some(first) = seen.insert(key.to_string(), line_no) {
+                bail!(
+                    "line {line_no}: the key `{key}` is given twice (`# {key} = ...` on lines \
+                     {first} and {line_no}): a config file sets each key once"
+                );
+            }
         }
         let value = match key {
             "model" => {

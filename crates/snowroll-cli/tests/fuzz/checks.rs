@@ -102,11 +102,21 @@ pub(crate) fn named_outputs(case: &Case) -> Vec<String> {
         }
     }
     // The config's `output`, however the document spells it.
-    let config_output = case
-        .config
-        .as_deref()
-        .and_then(|doc| toml::from_str::<toml::Table>(doc).ok())
-        .and_then(|table| table.get("output")?.as_str().map(str::to_string));
+    let config_output = case.config.as_deref().and_then(|doc| {
+        match toml::from_str::<toml::Table>(doc) {
+            Ok(table) => table.get("output")?.as_str().map(str::to_string),
+            // A document the program reads but a generic table does not: an
+            // integer past i64 (`max-steps = 18446744073709551615`, which
+            // the program reads as a count). Its `output` line, if a basic
+            // string (issue 33's campaign: the harness's own alarm).
+            Err(_) => doc.lines().find_map(|line| {
+                let (key, value) = line.split_once('=')?;
+                let value = value.trim();
+                (key.trim() == "output" && value.len() >= 2 && value.starts_with('"'))
+                    .then(|| value.trim_matches('"').to_string())
+            }),
+        }
+    });
     named.extend(config_output);
     // `link.csv` and `dangling.csv` write their targets.
     if named.iter().any(|n| n == "link.csv") {

@@ -3,7 +3,8 @@
 //! a sweep, `merge` of shards) and `sweep --grid` TOML files, each taken
 //! from a real output made at the start and then corrupted (a byte changed,
 //! inserted or cut, the file truncated, lines dropped, repeated or swapped,
-//! a number replaced by an odd one), made adversarial (a 2 MiB line, 9 MiB
+//! a number replaced by an odd one, a byte order mark put before it, a key
+//! given twice), made adversarial (a 2 MiB line, 9 MiB
 //! of blanks, 10^5 header lines), or replaced by an endless device
 //! (`/dev/zero`, `/dev/urandom`). Outputs are drawn so that they often clash
 //! with the input or with each other (`-o` the input however spelt, `--plot`
@@ -143,6 +144,7 @@ const ODD: &[&str] = &[
     "99999999999999999999999",
     "1e15",
     "4.9e-324",
+    "1e-310",
     "1,2",
     "5:60:0",
     "1:2:3:4",
@@ -211,11 +213,47 @@ fn corrupt(bytes: Vec<u8>) -> BoxedStrategy<Vec<u8>> {
         }
         b
     });
+    // Issue 33, item 5: a byte order mark before the file (a JSON or CSV
+    // output must still read as one), and a key given twice with another
+    // value (refused in every format).
+    let bom = Just([&b"\xEF\xBB\xBF"[..], &bytes].concat());
+    let twice = (0..64usize).prop_map(move |k| key_twice(&bytes, k));
     prop_oneof![
         3 => whole, 3 => truncated, 3 => changed, 2 => inserted, 3 => lines,
-        3 => number, 1 => adversarial,
+        3 => number, 1 => adversarial, 1 => bom, 1 => twice,
     ]
     .boxed()
+}
+
+/// `bytes` with one of its keys given twice, the second time with another
+/// value: in a CSV header the `k`-th `# key = value` line is repeated with
+/// `1` as its value; in JSON the `k`-th `"key":` is given again as
+/// `"key":1,` before it; in TOML the `k`-th `key = value` line repeated.
+fn key_twice(bytes: &[u8], k: usize) -> Vec<u8> {
+    let text = String::from_utf8_lossy(bytes).into_owned();
+    if text.trim_start().starts_with('{') {
+        let keys: Vec<usize> = text.match_indices("\":").map(|(i, _)| i).collect();
+        let Some(&end) = keys.get(k % keys.len().max(1)) else {
+            return bytes.to_vec();
+        };
+        let start = text[..end].rfind('"').unwrap_or(end);
+        let key = &text[start..end + 2];
+        let mut out = text.clone();
+        out.insert_str(start, &format!("{key}1,"));
+        return out.into_bytes();
+    }
+    let lines: Vec<&str> = text.split_inclusive('\n').collect();
+    let keyed: Vec<usize> = (0..lines.len())
+        .filter(|&i| lines[i].contains(" = "))
+        .collect();
+    let Some(&i) = keyed.get(k % keyed.len().max(1)) else {
+        return bytes.to_vec();
+    };
+    let (key, _) = lines[i].split_once(" = ").unwrap_or_default();
+    let again = format!("{key} = 1\n");
+    let mut out: Vec<&str> = lines.clone();
+    out.insert(i + 1, &again);
+    out.concat().into_bytes()
 }
 
 /// `bytes` with its `k`-th number (a run of digits, modulo their count)

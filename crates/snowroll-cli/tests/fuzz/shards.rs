@@ -3,16 +3,19 @@
 //! one to three random edits (truncation, a flipped or inserted byte, a
 //! line deleted, repeated, swapped or inserted, a cell or a header value
 //! replaced by an adversarial token, a renamed column, a swapped model, a
-//! torn tail), and shards given in any order, twice, missing, or with
-//! `/dev/zero`, a directory or a missing path among them. Every case must
+//! torn tail, a cell spelt otherwise with its value or quoted), and shards
+//! given in any order, twice, missing, or with `/dev/zero`, a directory or
+//! a missing path among them; the partial file is now and then a symbolic
+//! link to a device or a FIFO (issue 33). Every case must
 //!
 //! - end with status 0 or 1 (one `error:` line), never panic;
 //! - on failure, leave no output, and every input byte for byte as it was
 //!   (a partial file included: a torn tail is cut only on success);
 //! - on success, give all 48 rows, in order, each with the parameters of
 //!   the uninterrupted sweep's row (index, model, choices and every
-//!   parameter, by value), every number finite, and an output that `merge`
-//!   reads back. A result cell may differ from the sweep's (an edit of a
+//!   parameter, by value), every number finite, the sweep's header and
+//!   every cell of the sweep's value in the sweep's spelling (issue 33),
+//!   and an output that `merge` reads back. A result cell may differ from the sweep's (an edit of a
 //!   digit there cannot be told from a result without running the point
 //!   again); such cases are counted.
 //!
@@ -124,7 +127,7 @@ fn damage(bytes: &mut Vec<u8>, rng: &mut Rng) -> &'static str {
     };
     let mut ls = lines(bytes);
     let n = ls.len();
-    let kind = rng.below(12);
+    let kind = rng.below(14);
     let name = match kind {
         0 => {
             bytes.truncate(rng.below(bytes.len() + 1));
@@ -205,6 +208,34 @@ fn damage(bytes: &mut Vec<u8>, rng: &mut Rng) -> &'static str {
             ls[i] = text.replacen(a, b, 1).into_bytes();
             "word swapped"
         }
+        12 | 13 if n > 0 => {
+            // Issue 33, item 5: a cell spelt otherwise with the same value
+            // (`5.0` as `5.00`, `1e-10` as `1.0e-10`) or quoted.
+            let i = rng.below(n);
+            let text = String::from_utf8_lossy(&ls[i]).into_owned();
+            let mut cells: Vec<String> = text
+                .trim_end_matches('\n')
+                .split(',')
+                .map(str::to_string)
+                .collect();
+            let k = rng.below(cells.len());
+            let c = &cells[k];
+            cells[k] = if kind == 13 {
+                format!("\"{c}\"")
+            } else if let Some((m, e)) = c.split_once('e') {
+                format!("{m}.0e{e}")
+            } else if c.contains('.') {
+                format!("{c}0")
+            } else {
+                format!("{c}.0")
+            };
+            ls[i] = (cells.join(",") + "\n").into_bytes();
+            if kind == 13 {
+                "cell quoted"
+            } else {
+                "cell respelt"
+            }
+        }
         _ if n > 0 => {
             let i = rng.below(n);
             let mut l = ls[i].clone();
@@ -245,19 +276,55 @@ fn cells(line: &str) -> Vec<String> {
     record.iter().map(str::to_string).collect()
 }
 
+/// The header lines of a sweep file, the column names included, without
+/// its `# command:` line: that is provenance, which `--resume` does not
+/// compare by design (`-o ./out.csv` resumes `-o out.csv`) and keeps from
+/// the partial file, and which `merge` writes from shard 0's.
+fn header_of(text: &str) -> String {
+    let mut header = String::new();
+    for line in text.split_inclusive('\n') {
+        if !line.starts_with("# command: ") {
+            header.push_str(line);
+        }
+        if !line.starts_with('#') {
+            break;
+        }
+    }
+    header
+}
+
 /// Checks a successful run's output against the uninterrupted sweep's
-/// rows; true when a result cell differs.
-fn check_output(out: &Path, reference: &[&str], context: &str) -> bool {
+/// header (`full`'s) and rows; true when a result cell differs. A cell
+/// whose value is the sweep's must be spelt as the sweep spells it, and
+/// the header must be the sweep's byte for byte (issue 33, item 5: an
+/// edited spelling or header line passed into the output).
+fn check_output(out: &Path, full: &str, reference: &[&str], context: &str) -> bool {
     let text = fs::read_to_string(out).unwrap_or_else(|e| panic!("{context}: {e}"));
+    assert_eq!(
+        header_of(&text),
+        header_of(full),
+        "{context}: the header is not the sweep's"
+    );
     let got = rows(&text);
     assert_eq!(got.len(), POINTS, "{context}: rows");
     let mut results_differ = false;
-    for (g, want) in got.iter().zip(reference) {
-        let (g, w) = (cells(g), cells(want));
+    for (line, want) in got.iter().zip(reference) {
+        let (g, w) = (cells(line), cells(want));
+        // The same cells in another spelling (a quoted cell): refused.
+        assert!(
+            g != w || line == want,
+            "{context}: a row spelt otherwise passed: {line} for {want}"
+        );
         assert_eq!(g.len(), w.len(), "{context}: {g:?}");
         for k in 0..g.len() {
-            let same = g[k] == w[k]
-                || matches!((g[k].parse::<f64>(), w[k].parse::<f64>()), (Ok(a), Ok(b)) if a.to_bits() == b.to_bits());
+            let same = g[k] == w[k];
+            let same_value = matches!((g[k].parse::<f64>(), w[k].parse::<f64>()), (Ok(a), Ok(b)) if a.to_bits() == b.to_bits());
+            assert!(
+                same || !same_value,
+                "{context}: a cell spelt otherwise passed: {} for {}",
+                g[k],
+                w[k]
+            );
             // The warnings, last, depend on the point alone, like its parameters.
             if k < POINT_COLUMNS || k + 1 == g.len() {
                 assert!(
@@ -309,7 +376,13 @@ fn one_error_line(status: u8, stderr: &str, context: &str) {
 
 /// One `merge` case: damaged shards, in a random order, perhaps with one
 /// missing, repeated or replaced by an endless or odd path.
-fn merge_case(dir: &Path, good: &[Vec<u8>], reference: &[&str], rng: &mut Rng, t: &mut Tally) {
+fn merge_case(
+    dir: &Path,
+    good: &[Vec<u8>],
+    (full, reference): (&str, &[&str]),
+    rng: &mut Rng,
+    t: &mut Tally,
+) {
     let mut files = good.to_vec();
     for _ in 0..1 + rng.below(3) {
         let k = rng.below(files.len());
@@ -341,7 +414,7 @@ fn merge_case(dir: &Path, good: &[Vec<u8>], reference: &[&str], rng: &mut Rng, t
     let context = format!("{argv:?}");
     one_error_line(status, &e, &context);
     if status == 0 {
-        let differ = check_output(&out, reference, &context);
+        let differ = check_output(&out, full, reference, &context);
         fs::remove_file(&out).unwrap();
         t.count(format!(
             "merge accepted{}",
@@ -387,6 +460,10 @@ fn resume_case(dir: &Path, full: &str, reference: &[&str], rng: &mut Rng, t: &mu
         *t.edits.entry(edit).or_default() += 1;
     }
     let partial = dir.join("out.csv.partial");
+    if rng.below(16) == 0 {
+        not_regular_partial(dir, &partial, rng, t);
+        return;
+    }
     fs::write(&partial, &text).unwrap();
     let mut argv = strings(&GRID);
     argv.extend([
@@ -399,7 +476,7 @@ fn resume_case(dir: &Path, full: &str, reference: &[&str], rng: &mut Rng, t: &mu
     one_error_line(status, &e, &context);
     if status == 0 {
         assert!(!partial.exists(), "{context}: the partial file is left");
-        let differ = check_output(&out, reference, &context);
+        let differ = check_output(&out, full, reference, &context);
         fs::remove_file(&out).unwrap();
         t.count(format!(
             "resume accepted{}",
@@ -419,6 +496,42 @@ fn resume_case(dir: &Path, full: &str, reference: &[&str], rng: &mut Rng, t: &mu
         fs::remove_file(&partial).unwrap();
         t.count("resume refused".to_string());
     }
+}
+
+/// Issue 33, item 2: a partial file that is a symbolic link (to
+/// `/dev/null`, `/dev/zero`, `/dev/urandom` or a file) or a FIFO is refused,
+/// with or without `--resume`, and left as it was; no output is made.
+fn not_regular_partial(dir: &Path, partial: &Path, rng: &mut Rng, t: &mut Tally) {
+    let kind = ["/dev/null", "/dev/zero", "/dev/urandom", "full.csv", "fifo"][rng.below(5)];
+    if kind == "fifo" {
+        let made = std::process::Command::new("mkfifo")
+            .arg(partial)
+            .status()
+            .is_ok_and(|s| s.success());
+        if !made {
+            return;
+        }
+    } else {
+        std::os::unix::fs::symlink(kind, partial).unwrap();
+    }
+    let out = dir.join("out.csv");
+    let mut argv = strings(&GRID);
+    argv.extend(["-o".to_string(), out.display().to_string()]);
+    if rng.below(2) == 0 {
+        argv.push("--resume".to_string());
+    }
+    let (status, e) = run(&argv);
+    let context = format!("{argv:?} with the partial file {kind}");
+    one_error_line(status, &e, &context);
+    assert_eq!(status, 1, "{context}: accepted");
+    assert!(e.contains("not a regular file"), "{context}: {e}");
+    assert!(!out.exists(), "{context}: an output");
+    assert!(
+        !fs::symlink_metadata(partial).unwrap().is_file(),
+        "{context}: the partial file was replaced"
+    );
+    fs::remove_file(partial).unwrap();
+    t.count("resume refused a partial file that is not a regular file".to_string());
 }
 
 #[test]
@@ -483,7 +596,7 @@ fn fuzz_merge_and_resume_with_damaged_files() {
     let started = std::time::Instant::now();
     for _ in 0..cases {
         if rng.below(5) < 3 {
-            merge_case(dir, &good, &reference, &mut rng, &mut t);
+            merge_case(dir, &good, (&full, &reference), &mut rng, &mut t);
         } else {
             resume_case(dir, &full, &reference, &mut rng, &mut t);
         }

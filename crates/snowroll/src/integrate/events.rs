@@ -147,22 +147,39 @@ pub(super) fn locate(
     if g_lo == 0.0 {
         return t_lo;
     }
+    /// Illinois iterations; a crossing not found by then is bisected.
+    const ILLINOIS: usize = 200;
+    /// Iterations allowed in all: enough for bisection alone to shrink any
+    /// bracket of finite times to a few ulps (about 2100 halvings take
+    /// 1e308 to the smallest subnormal), so the loop never gives up on a
+    /// crossing it has bracketed. Before, it returned the bracket's end
+    /// after the Illinois iterations (issue 33, item 4: a crossing 1e-50 s
+    /// into a step of 1e-4 s, where the function is 1e92 times smaller on
+    /// one side than on the other, needs hundreds of Illinois steps; the
+    /// end of the step was returned and `--x-end 1e-100` reported reached
+    /// at x = 1.6e-8 m). Crossings found within the Illinois iterations
+    /// are found exactly as before.
+    const MAX_ITERATIONS: usize = 2400;
     // Side that was kept last: -1 low, +1 high, 0 none yet.
     let mut side = 0i8;
-    for _ in 0..200 {
+    // The sign on the low side, fixed: the Illinois halvings of `g_lo` may
+    // take it to zero (1e-300 halved 80 times), and a sign read from it
+    // then put points past the crossing on the low side.
+    let low_negative = g_lo < 0.0;
+    for k in 0..MAX_ITERATIONS {
         let width = t_hi - t_lo;
         if width <= 4.0 * f64::EPSILON * t_lo.abs().max(t_hi.abs()).max(f64::MIN_POSITIVE) {
             break;
         }
         let mut t_mid = (t_lo * g_hi - t_hi * g_lo) / (g_hi - g_lo);
-        if !(t_mid > t_lo && t_mid < t_hi) {
+        if k >= ILLINOIS || !(t_mid > t_lo && t_mid < t_hi) {
             t_mid = 0.5 * (t_lo + t_hi);
         }
         let g_mid = g(t_mid);
         if g_mid == 0.0 {
             return t_mid;
         }
-        if (g_mid < 0.0) == (g_lo < 0.0) {
+        if (g_mid < 0.0) == low_negative {
             t_lo = t_mid;
             g_lo = g_mid;
             if side == -1 {
@@ -204,5 +221,21 @@ mod tests {
             (t - 0.3).powi(3)
         });
         assert!((t - 0.3).abs() < 1e-5, "{t}");
+    }
+
+    /// Issue 33, item 4: x(t) = t² − 1e-100 crosses at t = 1e-50, bracketed
+    /// by a step [0, 1e-4] where |g| is 1e92 times larger at the far end.
+    /// The root is known in closed form; it must be found to the
+    /// locator's tolerance, not the step's end returned (which it was).
+    #[test]
+    fn regression_33_a_crossing_far_below_the_step_is_found() {
+        for (root, h) in [(1e-50, 1e-4), (1e-150, 1.0), (3e-20, 10.0)] {
+            let g = |t: f64| t * t - root * root;
+            let t = locate(0.0, h, g(0.0), g(h), g);
+            assert!(
+                (t - root).abs() <= 4.0 * TIME_TOL * root,
+                "root {root} in [0, {h}]: found {t}"
+            );
+        }
     }
 }

@@ -62,6 +62,11 @@ impl RowBudget {
         self.failed.is_some() || self.rows >= self.max_rows
     }
 
+    /// Whether the sink failed.
+    pub(crate) fn failed(&self) -> bool {
+        self.failed.is_some()
+    }
+
     /// Books the sending of one row: counted if it went out, kept as the
     /// run's failure if not. Returns whether it went out.
     pub(crate) fn book(&mut self, sent: Result<(), SinkError>) -> bool {
@@ -186,8 +191,16 @@ impl<const N: usize, M: OdeModel<N>> Observer<M, N> for Recorder<'_> {
 
     fn event(&mut self, _model: &M, _event: &EventRecord<N>) {}
 
+    /// The sink failed, or the row limit is reached with another row still
+    /// due: a list of times whose last one was the last row allowed runs on
+    /// to its end (issue 33, item 4: `--times 0.5,1,2 --max-rows 3` stopped
+    /// at the row limit).
     fn stop_requested(&self) -> bool {
-        self.budget.full()
+        let more_due = match self.sampling {
+            Sampling::Times(_) | Sampling::Every(_) => self.requested(self.next).is_some(),
+            Sampling::Steps | Sampling::Ends => true,
+        };
+        self.budget.failed() || (self.budget.full() && more_due)
     }
 }
 

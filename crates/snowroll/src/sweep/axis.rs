@@ -124,8 +124,9 @@ pub enum GridError {
     NoModel,
     /// Too many points.
     #[error(
-        "the grid has {points} points, more than the limit of {limit}: fewer values on some axis, \
-         or several sweeps"
+        "the grid has {} points, more than the limit of {limit}: fewer values on some axis, \
+         or several sweeps",
+        count_text(*points)
     )]
     TooLarge {
         /// The product of the axis lengths (saturating).
@@ -133,6 +134,22 @@ pub enum GridError {
         /// [`MAX_GRID_POINTS`](super::MAX_GRID_POINTS).
         limit: u64,
     },
+}
+
+/// A count as the outputs write numbers: whole up to 10^15, beyond that
+/// in the shortest exponent form that reads back to the same `f64` (`1e24`,
+/// not 25 digits; issue 33, item 5). A saturated count (`u128::MAX`) is
+/// "more than 3.4e38".
+pub(crate) fn count_text(n: u128) -> String {
+    /// Counts printed whole: every one of them is exact in an `f64`.
+    const WHOLE: u128 = 1_000_000_000_000_000;
+    if n <= WHOLE {
+        n.to_string()
+    } else if n == u128::MAX {
+        "more than 3.4e38".to_string()
+    } else {
+        format!("{:e}", n as f64)
+    }
 }
 
 /// The values of one axis: a list, or an evenly spaced range that is never

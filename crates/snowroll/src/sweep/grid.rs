@@ -419,6 +419,26 @@ mod tests {
                 .contains("10000000000 points, more than the limit of 1000000000"),
             "{e}"
         );
+        // Issue 33, item 5: a huge count is written as the outputs write
+        // numbers, not as 25 digits.
+        let e = Grid::new(
+            m.clone(),
+            vec![
+                axis(Param::AlphaDeg, "10:80:1000000000000"),
+                axis(Param::SnowDepth, "0:1:1000000000000"),
+            ],
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("the grid has 1e24 points, more than"), "{e}");
+        assert_eq!(
+            super::super::axis::count_text(1_000_000_000_000_000),
+            "1000000000000000"
+        );
+        assert_eq!(
+            super::super::axis::count_text(1_234_500_000_000_000_000),
+            "1.2345e18"
+        );
         // Exactly at the limit is allowed (nothing is expanded).
         let g = Grid::new(m, vec![axis(Param::AlphaDeg, "10:80:1000000000")]).unwrap();
         assert_eq!(g.len(), MAX_GRID_POINTS);

@@ -92,9 +92,25 @@ impl SimOptions {
         if !(self.t_end.is_finite() && self.t_end > 0.0) {
             return Err(bad("t_end (s)", self.t_end, "0 < t_end < infinity s"));
         }
+        // An end that is subnormal cannot be reached by steps that carry a
+        // time's full precision (issue 33, item 4).
+        if !self.t_end.is_normal() {
+            return Err(bad(
+                "t_end (s)",
+                self.t_end,
+                "0 < t_end < infinity s, at least 2.2250738585072014e-308 s (not subnormal)",
+            ));
+        }
         if let Some(x) = self.x_end {
             if !(x.is_finite() && x > 0.0) {
                 return Err(bad("x_end (m)", x, "0 < x_end < infinity m"));
+            }
+            if !x.is_normal() {
+                return Err(bad(
+                    "x_end (m)",
+                    x,
+                    "0 < x_end < infinity m, at least 2.2250738585072014e-308 m (not subnormal)",
+                ));
             }
         }
         if let Sampling::Times(ts) = &self.sampling {
@@ -118,6 +134,12 @@ impl SimOptions {
             return Err(bad("turns", 0.0, "turns >= 1"));
         }
         self.tolerances.validate()?;
+        if let Some(x_end) = self.x_end.filter(|&x| x < self.tolerances.atol) {
+            return Err(ParamError::EndBelowTolerance {
+                x_end,
+                atol: self.tolerances.atol,
+            });
+        }
         if self.max_rows == 0 {
             return Err(bad("max_rows", 0.0, "max_rows >= 1"));
         }

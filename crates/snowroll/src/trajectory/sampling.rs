@@ -30,19 +30,36 @@ pub enum Sampling {
 /// t_end = 0.3: 0.3/0.1 = 2.9999999999999996, yet 0.3 is a point, so 4
 /// rows). Beyond 2^52 points the quotient itself is the count.
 fn grid_rows(dt: Seconds, t_end: Seconds) -> f64 {
+    /// Points looked at on either side of `t_end/dt`: the decimal grid
+    /// points are within an ulp or two of `i dt` for a normal `dt`, so the
+    /// last one is within a step or two of the quotient. The bound keeps a
+    /// step that is not normal (refused by [`Sampling::validate`]) from
+    /// searching for ever.
+    const SEARCH: usize = 64;
     let n = (t_end / dt).floor();
     if !(0.0..4.0e15).contains(&n) {
         return n + 1.0;
     }
     let mut last = n as usize;
-    while Sampling::grid_time(dt, last + 1, t_end).is_some() {
+    for _ in 0..SEARCH {
+        if Sampling::grid_time(dt, last + 1, t_end).is_none() {
+            break;
+        }
         last += 1;
     }
-    while last > 0 && Sampling::grid_time(dt, last, t_end).is_none() {
+    for _ in 0..SEARCH {
+        if last == 0 || Sampling::grid_time(dt, last, t_end).is_some() {
+            break;
+        }
         last -= 1;
     }
     last as f64 + 1.0
 }
+
+/// The range of a grid step that is not normal.
+pub(crate) const NORMAL_DT: &str =
+    "dt > 0 s, at least 2.2250738585072014e-308 s (a smaller, subnormal, step has too few \
+     significant bits to count time by)";
 
 impl Sampling {
     /// Point `i` of the regular grid `0, dt, 2dt, …` that ends at `t_end`, s;
@@ -107,6 +124,14 @@ impl Sampling {
                     expected: "dt > 0 s",
                 })
             }
+            // A subnormal step carries a few bits at most: its multiples
+            // are not the decimals asked for, and counting them took
+            // forever (issue 33, item 4: `--dt 5e-324 --t-end 1e-308`).
+            Sampling::Every(dt) if !dt.is_normal() => Err(ParamError::InvalidParameter {
+                name: "dt (s)",
+                value: *dt,
+                expected: NORMAL_DT,
+            }),
             _ => Ok(()),
         }
     }
@@ -148,6 +173,19 @@ fn decimal_multiple(dt: f64, i: usize) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn regression_33_a_subnormal_step_is_refused_and_its_count_ends() {
+        // `--dt 5e-324 --t-end 1e-308`: counting the grid's points looked
+        // at some 10^13 of them one by one. Refused by the check, and the
+        // count, should anyone ask, ends (bounded search).
+        let e = Sampling::Every(5e-324).validate().unwrap_err().to_string();
+        assert!(e.contains("2.2250738585072014e-308"), "{e}");
+        assert!(Sampling::Every(1e-310).validate().is_err());
+        assert!(Sampling::Every(f64::MIN_POSITIVE).validate().is_ok());
+        let n = Sampling::Every(5e-324).known_rows(1e-308).unwrap();
+        assert!(n > 1e15, "{n}");
+    }
 
     /// The count known before the run is the number of points the grid
     /// writes (issue 20: 0.3/0.1 rounds below 3, yet 0.3 is a point).
