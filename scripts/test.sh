@@ -6,7 +6,8 @@
 # expects) and the browser test of the report it writes (installs
 # Debian's chromium first if it is missing; needs root or sudo for that) and
 # of `snowroll serve`'s page (.ci/serve-browser-test.sh), then
-# scripts/check-guide.py (links of the docs, the user guide's examples).
+# scripts/check-guide.py (links of the docs, the user guide's examples),
+# and last a check that no test left a file in the tree.
 #
 # On 2 cores the order is chosen so that waiting overlaps work (issue 19,
 # item 4; the whole took 412 s from a fresh clone when each step ran after
@@ -31,6 +32,24 @@ cleanup() {
     rm -rf "${files[@]}"
 }
 trap cleanup EXIT
+
+# The files in the tree that git does not track, ignored ones included
+# (outputs such as *.csv are ignored, so `git status` would not show them),
+# each wholly untracked directory as one line; the build's directory and
+# Python's caches are expected. Listed at the start and compared at the end
+# (issue 33, item 7: two sweep outputs had been committed at the root).
+target_in_tree=${CARGO_TARGET_DIR:-target}
+target_in_tree=${target_in_tree#"$(pwd)"/}
+untracked() {
+    git ls-files --others --directory --no-empty-directory \
+        | grep -v -x -F -e "target/" -e "${target_in_tree%/}/" \
+        | grep -v -E '(^|/)__pycache__/$' | sort || true
+}
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    untracked_before=$(untracked)
+else
+    untracked_before=none
+fi
 
 # When each background job started (seconds of this script), by its pid.
 declare -A started
@@ -135,3 +154,17 @@ finish "$slurm" "$slurm_log" "scripts/test-slurm.sh" show
 # The user guide: every link of the README and docs/ resolves, and every
 # example of docs/guide/ runs (the Python ones with the wheel just tested).
 python3 scripts/check-guide.py "$cli" --python "$target/pyenv-test/bin/python"
+
+# No test left a file in the tree: what is untracked now was untracked
+# before the tests.
+if [ "$untracked_before" = none ]; then
+    echo "test: not a git work tree, the check for files left in the tree is skipped"
+else
+    left=$(comm -13 <(printf '%s\n' "$untracked_before") <(untracked))
+    if [ -n "$left" ]; then
+        echo "test: FAIL: the tests left files in the tree (remove them; write outputs to a temporary directory):" >&2
+        sed 's/^/  /' <<<"$left" >&2
+        exit 1
+    fi
+    echo "test: no file left in the tree"
+fi
