@@ -129,8 +129,10 @@ pytest_job=$job pytest_log=$log
 
 # examples/slurm-sweep.sh on a one-node Slurm cluster started here (installs
 # Debian's slurm-wlm and munge first if missing; needs root or sudo, else it
-# says so and skips). It mostly waits on the scheduler.
-start bash scripts/test-slurm.sh "$cli"
+# says so and skips), two copies at once, each its own cluster on ports
+# picked free (issue 33, item 6: a second cluster on the machine had made
+# the test fail). It mostly waits on the scheduler.
+start bash scripts/test-slurm.sh --pair "$cli"
 slurm=$job slurm_log=$log
 
 report_dir=$(mktemp -d)
