@@ -40,35 +40,26 @@ trap cleanup EXIT
 
 "$snowroll" serve --port 0 >"$work/serve.out" 2>"$work/serve.err" &
 server_pid=$!
-for _ in $(seq 50); do
+# Waits (a minute at most: a busy machine may be slow to start a debug
+# build) for the server's URL; it chose a free port itself (--port 0).
+for _ in $(seq 300); do
     grep -q "http://" "$work/serve.out" 2>/dev/null && break
-    sleep 0.1
+    kill -0 "$server_pid" 2>/dev/null || break
+    sleep 0.2
 done
 url=$(grep -o 'http://[^ ]*' "$work/serve.out") || fail "the server printed no URL: $(cat "$work/serve.err")"
 echo "serve-browser-test: $chromium on $url"
 
-# One headless run with a fresh profile; retried (up to 3 times) only when
-# chromium itself dies before the page is read, as in .ci/browser-test.sh.
-run_chromium() {
-    local name=$1 attempt
-    shift
-    for attempt in 1 2 3; do
-        rm -rf "$work/profile-$name"
-        if timeout 60 "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
-            --disable-background-networking --disable-component-update --disable-sync \
-            --user-data-dir="$work/profile-$name" --enable-logging=stderr --v=0 \
-            --hide-scrollbars --virtual-time-budget=4000 "$@" 2>"$work/$name.log"; then
-            return 0
-        fi
-        echo "serve-browser-test: chromium ($name) exited non-zero, attempt $attempt of 3" >&2
-    done
-    return 1
-}
+# Every Chromium run as in .ci/browser-test.sh: bounded tries, a try that
+# wrote its output but does not exit ended, failed tries' logs kept and shown.
+# shellcheck source=browser/chromium.sh
+. "$here/browser/chromium.sh"
 
-run_chromium dom --window-size=1400,1000 --dump-dom "${url}?models=torque-cm,loney#selftest" >"$work/dom.html" \
-    || fail "chromium failed: $(tail -5 "$work/dom.log")"
-run_chromium desktop --window-size=1400,1300 --screenshot="$out/serve-desktop.png" "${url}?models=torque-cm,loney,turns&ball=1&alpha_deg=65" >/dev/null \
-    || fail "desktop screenshot failed"
+run_chromium dom "$work/dom.html" --virtual-time-budget=4000 --window-size=1400,1000 --dump-dom \
+    "${url}?models=torque-cm,loney#selftest" || fail "chromium failed (its log is above)"
+run_chromium desktop "$out/serve-desktop.png" --virtual-time-budget=4000 --window-size=1400,1300 \
+    --screenshot="$out/serve-desktop.png" "${url}?models=torque-cm,loney,turns&ball=1&alpha_deg=65" \
+    || fail "desktop screenshot failed (its log is above)"
 # At a phone's width: headless Chromium keeps a window at least 500 px wide,
 # so the page is shown in a 400 px frame (as .ci/browser-test.sh does). The
 # frame's page comes from a second local server: a file:// page's frame does
@@ -81,14 +72,16 @@ cat >"$work/wrap/phone.html" <<HTML
 HTML
 python3 -u -m http.server 0 --bind 127.0.0.1 --directory "$work/wrap" >"$work/wrap.out" 2>/dev/null &
 wrap_pid=$!
-for _ in $(seq 50); do
+for _ in $(seq 300); do
     grep -q "port" "$work/wrap.out" 2>/dev/null && break
-    sleep 0.1
+    kill -0 "$wrap_pid" 2>/dev/null || break
+    sleep 0.2
 done
 wrap_port=$(sed -n 's/.* port \([0-9]*\).*/\1/p' "$work/wrap.out" | head -1)
 [ -n "$wrap_port" ] || fail "the frame's server did not start"
-run_chromium phone --window-size=400,1800 --screenshot="$out/serve-phone.png" "http://127.0.0.1:$wrap_port/phone.html" >/dev/null \
-    || fail "phone screenshot failed"
+run_chromium phone "$out/serve-phone.png" --virtual-time-budget=4000 --window-size=400,1800 \
+    --screenshot="$out/serve-phone.png" "http://127.0.0.1:$wrap_port/phone.html" \
+    || fail "phone screenshot failed (its log is above)"
 for shot in serve-desktop.png serve-phone.png; do
     [ -s "$out/$shot" ] || fail "no screenshot $shot"
 done

@@ -94,6 +94,11 @@ finish() {
 start bash scripts/test-python.sh --setup
 py_setup=$job py_setup_log=$log
 
+# How the browser tests start Chromium (.ci/browser/chromium.sh), with
+# stand-in browsers that hang or die as Chromium has: about 15 s of waiting.
+start bash .ci/browser/test-chromium.sh
+chromium_unit=$job chromium_unit_log=$log
+
 cargo test --workspace --all-features --no-run
 stamp "the test build"
 
@@ -150,6 +155,7 @@ echo "browser test artifacts: target/browser-test/"
 echo "browser: 2 passed, 0 failed"
 stamp "paper and the browser tests"
 
+finish "$chromium_unit" "$chromium_unit_log" ".ci/browser/test-chromium.sh" show
 finish "$pytest_job" "$pytest_log" "scripts/test-python.sh --tests" show
 finish "$slurm" "$slurm_log" "scripts/test-slurm.sh" show
 
