@@ -348,7 +348,7 @@ impl Columns {
 /// Every setting of a sweep, by name, as text, as `merge` compares two
 /// shards' headers: the models, each sweep parameter (its values, or its
 /// default when the grid does not vary it), the collision laws and hop
-/// settings, and the method. [`SweepResult.concat`] refuses parts whose
+/// settings, and the method. `SweepResult.concat` refuses parts whose
 /// settings differ, naming each difference.
 fn settings(grid: &Grid, method: Method) -> Vec<(String, String)> {
     let ids = |v: Vec<&str>| v.join(",");
