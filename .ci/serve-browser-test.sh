@@ -52,12 +52,15 @@ echo "serve-browser-test: $chromium on $url"
 
 # Every Chromium run as in .ci/browser-test.sh: bounded tries, a try that
 # wrote its output but does not exit ended, failed tries' logs kept and shown.
+# No host name is looked up (the browser's own requests at start, the network
+# time and the updaters, fail at once); the pages are on 127.0.0.1.
 # shellcheck source=browser/chromium.sh
 . "$here/browser/chromium.sh"
+no_lookup="--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1"
 
-run_chromium dom "$work/dom.html" --virtual-time-budget=4000 --window-size=1400,1000 --dump-dom \
+run_chromium dom "$work/dom.html" "$no_lookup" --virtual-time-budget=4000 --window-size=1400,1000 --dump-dom \
     "${url}?models=torque-cm,loney#selftest" || fail "chromium failed (its log is above)"
-run_chromium desktop "$out/serve-desktop.png" --virtual-time-budget=4000 --window-size=1400,1300 \
+run_chromium desktop "$out/serve-desktop.png" "$no_lookup" --virtual-time-budget=4000 --window-size=1400,1300 \
     --screenshot="$out/serve-desktop.png" "${url}?models=torque-cm,loney,turns&ball=1&alpha_deg=65" \
     || fail "desktop screenshot failed (its log is above)"
 # At a phone's width: headless Chromium keeps a window at least 500 px wide,
@@ -79,7 +82,7 @@ for _ in $(seq 300); do
 done
 wrap_port=$(sed -n 's/.* port \([0-9]*\).*/\1/p' "$work/wrap.out" | head -1)
 [ -n "$wrap_port" ] || fail "the frame's server did not start"
-run_chromium phone "$out/serve-phone.png" --virtual-time-budget=4000 --window-size=400,1800 \
+run_chromium phone "$out/serve-phone.png" "$no_lookup" --virtual-time-budget=4000 --window-size=400,1800 \
     --screenshot="$out/serve-phone.png" "http://127.0.0.1:$wrap_port/phone.html" \
     || fail "phone screenshot failed (its log is above)"
 for shot in serve-desktop.png serve-phone.png; do
