@@ -143,6 +143,8 @@ slurm=$job slurm_log=$log
 report_dir=$(mktemp -d)
 files+=("$report_dir")
 "$cli" paper --strict --quiet --out "$report_dir"
+# A Chromium try that fails keeps its whole log there too.
+export CHROMIUM_FAILED_LOGS=$(pwd)/target/browser-test
 bash .ci/browser-test.sh "$report_dir"
 # Keep the screenshots as artifacts of the run.
 mkdir -p target/browser-test

@@ -19,20 +19,32 @@ run_chromium() {
     local name=$1 out=$2
     shift 2
     local attempt pid start done_at status why dump=1 limit=${CHROMIUM_TRY_SECONDS:-45}
+    # Extra flags for a diagnosis (e.g. --vmodule=...), from the environment.
+    local extra=()
+    read -r -a extra <<<"${CHROMIUM_EXTRA_FLAGS:-}"
     case " $* " in *" --screenshot="*) dump=0 ;; esac
     for attempt in 1 2 3; do
-        rm -rf "$work/profile-$name" "$out"
-        mkdir -p "$work/profile-$name"
+        rm -rf "$work/profile-$name" "$work/home-$name" "$out"
+        mkdir -p "$work/profile-$name" "$work/home-$name"
+        # A home of its own besides the profile: Chromium keeps its crash
+        # database (~/.config/chromium/Crash Reports), certificate store
+        # (~/.pki) and caches in the user's home whatever --user-data-dir
+        # says, shared with every other Chromium of that user on the
+        # machine (another checkout's tests, another user's browser).
         if [ "$dump" = 1 ]; then
-            "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
+            HOME=$work/home-$name XDG_CONFIG_HOME=$work/home-$name/.config \
+                XDG_CACHE_HOME=$work/home-$name/.cache \
+                "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
                 --disable-background-networking --disable-component-update --disable-sync \
                 --user-data-dir="$work/profile-$name" --enable-logging=stderr --v=0 \
-                --hide-scrollbars "$@" >"$out" 2>"$work/$name.try" &
+                --hide-scrollbars "${extra[@]}" "$@" >"$out" 2>"$work/$name.try" &
         else
-            "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
+            HOME=$work/home-$name XDG_CONFIG_HOME=$work/home-$name/.config \
+                XDG_CACHE_HOME=$work/home-$name/.cache \
+                "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
                 --disable-background-networking --disable-component-update --disable-sync \
                 --user-data-dir="$work/profile-$name" --enable-logging=stderr --v=0 \
-                --hide-scrollbars "$@" >/dev/null 2>"$work/$name.try" &
+                --hide-scrollbars "${extra[@]}" "$@" >/dev/null 2>"$work/$name.try" &
         fi
         pid=$!
         start=$SECONDS done_at="" why=""
@@ -50,6 +62,9 @@ run_chromium() {
             fi
             sleep 0.2
         done
+        if [ -n "$why" ] && [ -z "$done_at" ]; then
+            chromium_snapshot "$pid" >"$work/$name.snapshot" 2>&1
+        fi
         if [ -n "$why" ]; then
             kill "$pid" 2>/dev/null
             for _ in $(seq 15); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
@@ -68,7 +83,18 @@ run_chromium() {
         fi
         echo "chromium ($name): ${why:-exited with status $status}, attempt $attempt of 3, after $((SECONDS - start)) s; the last lines of its log:" >&2
         tail -n 15 "$work/$name.try" | sed 's/^/    /' >&2
+        if [ -s "$work/$name.snapshot" ]; then
+            echo "  its processes when it was ended (CPU seconds over the last second, threads by state):" >&2
+            sed 's/^/    /' "$work/$name.snapshot" >&2
+            cat "$work/$name.snapshot" >>"$work/$name.try"
+            rm -f "$work/$name.snapshot"
+        fi
         mv "$work/$name.try" "$work/$name-try$attempt.failed"
+        # Kept whole where the caller asks (scripts/test.sh: target/browser-test/).
+        if [ -n "${CHROMIUM_FAILED_LOGS:-}" ]; then
+            mkdir -p "$CHROMIUM_FAILED_LOGS"
+            cp "$work/$name-try$attempt.failed" "$CHROMIUM_FAILED_LOGS/chromium-$name-$(date +%H%M%S)-try$attempt.log"
+        fi
     done
     return 1
 }
@@ -82,4 +108,32 @@ chromium_output_complete() {
     else
         [ "$(tail -c 8 "$1" | head -c 4)" = IEND ]
     fi
+}
+
+# What each process of a hung browser (PID $1 and its descendants) is
+# doing: its kind (--type=), the CPU time it used over one second, and its
+# threads by name and state, from /proc (no debugger needed). Says whether
+# the browser waits (every process asleep) or works (one is busy).
+chromium_snapshot() {
+    local tree=("$1") pid kind
+    local -A cpu
+    while read -r pid ppid; do
+        for k in "${tree[@]}"; do
+            [ "$ppid" = "$k" ] && tree+=("$pid") && break
+        done
+    done < <(ps -e -o pid=,ppid= --sort=start_time)
+    ticks() { awk '{print $14 + $15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
+    for pid in "${tree[@]}"; do cpu[$pid]=$(ticks "$pid"); done
+    sleep 1
+    for pid in "${tree[@]}"; do
+        [ -d "/proc/$pid" ] || continue
+        # (Chromium rewrites its children's command lines into one string.)
+        kind=$(grep -ao -e '--type=[a-z-]*' -e '--utility-sub-type=[a-zA-Z.]*' "/proc/$pid/cmdline" 2>/dev/null \
+            | sed 's/^--[a-z-]*=//' | paste -sd' ' -)
+        printf '%s %s: %s s CPU in 1 s; threads: %s\n' "${kind:-browser}" "$pid" \
+            "$(awk -v a="${cpu[$pid]}" -v b="$(ticks "$pid")" -v hz="$(getconf CLK_TCK)" 'BEGIN { printf "%.2f", (b - a) / hz }')" \
+            "$(for t in /proc/"$pid"/task/*; do
+                printf '%s:%s\n' "$(cat "$t/comm" 2>/dev/null)" "$(awk '{ sub(/.*\) /, ""); print $1 }' "$t/stat" 2>/dev/null)"
+            done | sort | uniq -c | awk '{ printf "%s%s x%s", sep, $2, $1; sep = ", " }')"
+    done
 }
