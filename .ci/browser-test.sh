@@ -40,44 +40,20 @@ budget_ms=3000
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# run_chromium NAME ARGS...: one headless run with a fresh, empty profile;
-# stderr (with the page's console) goes to $work/NAME.log. Headless Chromium
-# on a loaded machine now and then dies in its own process setup ("zygote ...
-# Connection reset") before the page is read; such a crash says nothing about
-# the report, so a run that exits non-zero is tried again, up to three times,
-# each with a fresh profile. What the page shows is checked after the run,
-# never by the exit status, so a retry cannot hide a failing check. It may
-# also hang instead (in two of three fresh-clone CI runs on 2026-11-27 the
-# desktop screenshot's first try did, and was ended by the timeout 120 s
-# later): a try is given 45 s, against 3.5 s on a quiet machine and about
-# three times that beside the Python and Slurm tests.
-run_chromium() {
-    local name=$1
-    shift
-    local attempt
-    for attempt in 1 2 3; do
-        rm -rf "$work/profile-$name"
-        mkdir -p "$work/profile-$name"
-        if timeout 45 "$chromium" \
-            --headless --no-sandbox --disable-gpu --no-first-run \
-            --disable-background-networking --disable-component-update --disable-sync \
-            --user-data-dir="$work/profile-$name" \
-            --host-resolver-rules="MAP * ~NOTFOUND" \
-            --enable-logging=stderr --v=0 \
-            --hide-scrollbars \
-            --virtual-time-budget="$budget_ms" \
-            "$@" "file://$page" 2>"$work/$name.log"; then
-            return 0
-        fi
-        echo "browser-test: chromium ($name) exited non-zero, attempt $attempt of 3" >&2
-    done
-    return 1
-}
+# Every Chromium run of this test is started by run_chromium (below, from
+# .ci/browser/chromium.sh, shared with .ci/serve-browser-test.sh): a fresh
+# profile, each try bounded, a try that wrote its whole output but does not
+# exit ended 5 s later, a try that hangs or dies run again (three tries),
+# and each failed try's log kept and shown. What the page shows is checked
+# after the run, never by the exit status, so a retry cannot hide a failing
+# check.
+# shellcheck source=browser/chromium.sh
+. "$here/browser/chromium.sh"
+chromium_flags=(--host-resolver-rules="MAP * ~NOTFOUND" --virtual-time-budget="$budget_ms")
 
 echo "browser-test: $chromium on $page"
-run_chromium dom --window-size=1400,900 --dump-dom >"$work/dom.html" \
-    || fail "chromium exited with an error while loading the page (see below)
-$(tail -20 "$work/dom.log")"
+run_chromium dom "$work/dom.html" "${chromium_flags[@]}" --window-size=1400,900 --dump-dom "file://$page" \
+    || fail "chromium failed while loading the page (its log is above)"
 [ -s "$work/dom.html" ] || fail "chromium returned an empty DOM"
 
 # At a phone's width: headless Chromium keeps a window at least 500 px wide,
@@ -100,18 +76,16 @@ function copy() {
 f.addEventListener('load', copy);
 </script></body></html>
 EOF
-timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --no-first-run \
-    --disable-background-networking --disable-component-update --disable-sync \
-    --user-data-dir="$work/profile-phonedom" --host-resolver-rules="MAP * ~NOTFOUND" \
-    --allow-file-access-from-files --enable-logging=stderr --v=0 --hide-scrollbars \
-    --virtual-time-budget="$budget_ms" --window-size=1280,1900 --dump-dom \
-    "file://$work/phone.html" >"$work/phone-dom.html" 2>"$work/phonedom.log" \
-    || fail "chromium exited with an error while loading the page in a phone-wide frame"
+run_chromium phonedom "$work/phone-dom.html" "${chromium_flags[@]}" --allow-file-access-from-files \
+    --window-size=1280,1900 --dump-dom "file://$work/phone.html" \
+    || fail "chromium failed while loading the page in a phone-wide frame (its log is above)"
 
-run_chromium desktop --window-size=1400,2400 --screenshot="$report_dir/browser-desktop.png" >/dev/null \
-    || fail "desktop screenshot failed: $(tail -5 "$work/desktop.log")"
-run_chromium phone --window-size=400,1800 --screenshot="$report_dir/browser-phone.png" >/dev/null \
-    || fail "phone screenshot failed: $(tail -5 "$work/phone.log")"
+run_chromium desktop "$report_dir/browser-desktop.png" "${chromium_flags[@]}" --window-size=1400,2400 \
+    --screenshot="$report_dir/browser-desktop.png" "file://$page" \
+    || fail "desktop screenshot failed (its log is above)"
+run_chromium phone "$report_dir/browser-phone.png" "${chromium_flags[@]}" --window-size=400,1800 \
+    --screenshot="$report_dir/browser-phone.png" "file://$page" \
+    || fail "phone screenshot failed (its log is above)"
 for shot in browser-desktop.png browser-phone.png; do
     [ -s "$report_dir/$shot" ] || fail "no screenshot $shot"
 done

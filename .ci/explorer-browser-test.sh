@@ -30,6 +30,13 @@ if [ ! -f "$node_dir/node_modules/playwright-core/package.json" ]; then
     npm install --prefix "$node_dir" --no-audit --no-fund --silent playwright-core@1.57.0 >&2 \
         || fail "npm could not install playwright-core"
 fi
-PLAYWRIGHT_CORE=$node_dir/node_modules/playwright-core \
+# Chromium keeps its crash database, certificate store and caches under
+# HOME whatever its --user-data-dir (see .ci/browser/chromium.sh): this run
+# gets a home of its own, so that it shares none of them with another
+# Chromium of the same user on the machine.
+home=$(mktemp -d)
+trap 'rm -rf "$home"' EXIT
+HOME=$home XDG_CONFIG_HOME=$home/.config XDG_CACHE_HOME=$home/.cache \
+    PLAYWRIGHT_CORE=$node_dir/node_modules/playwright-core \
     timeout 300 "$node" "$root/scripts/explorer/browser-test.js" --chromium "$chromium" --cli "$snowroll" \
     --page "$page" --serve --shots "$out"

@@ -20,10 +20,47 @@
 # merge's directory, --output ./sweep.csv in the reference's). The cluster is
 # torn down on exit, also on failure. Skips (exit 0, saying why) only without root and sudo, or
 # without apt-get.
+#
+# A busy machine cannot break it (issue 33, item 6): the cluster's two ports
+# are picked free at run time (another cluster on the machine, or a second
+# copy of this test, had made the controller die with "Address already in
+# use" on the fixed 6817/6818), and picked again if a daemon still finds its
+# port taken; its state, spool, munge socket and logs are in a private
+# temporary directory; every wait is bounded by the clock (a minute at most,
+# each Slurm command under `timeout`), and a daemon that dies ends the wait
+# at once; on failure the daemons' logs are printed.
+#
+#   bash scripts/test-slurm.sh --pair [SNOWROLL]   # two copies at once, each its own cluster
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 started=$SECONDS
+
+# Two copies of this test at once (scripts/test.sh runs it so): both must
+# pass, each on its own cluster; their outputs are shown one after the other.
+if [ "${1:-}" = --pair ]; then
+    shift
+    if [ "$(id -u)" -eq 0 ] || sudo -n true 2>/dev/null; then
+        command -v apt-get >/dev/null 2>&1 && bash .ci/install-slurm.sh
+    fi
+    logs=$(mktemp -d)
+    trap 'rm -rf "$logs"' EXIT
+    bash "$0" "$@" >"$logs/1" 2>&1 &
+    first=$!
+    bash "$0" "$@" >"$logs/2" 2>&1 &
+    second=$!
+    status=0
+    wait "$first" || status=1
+    wait "$second" || status=1
+    sed 's/^/[copy 1] /' "$logs/1"
+    sed 's/^/[copy 2] /' "$logs/2"
+    if [ "$status" -ne 0 ]; then
+        echo "test-slurm: FAIL: of two copies run at once, one or both failed (above)" >&2
+        exit 1
+    fi
+    echo "test-slurm: two copies at once passed, in $((SECONDS - started)) s"
+    exit 0
+fi
 
 cli=${1:-${SNOWROLL_CLI:-$root/${CARGO_TARGET_DIR:-target}/release/snowroll}}
 case $cli in
@@ -61,33 +98,61 @@ export SNOWROLL=$cli
 tmp=$(mktemp -d /tmp/snowroll-slurm.XXXXXX)
 chmod 755 "$tmp"
 pids=()
-teardown() {
-    local status=$?
-    set +e
-    if [ -n "${SLURM_CONF:-}" ] && [ -e "$tmp/slurmctld.started" ]; then
-        scancel --quiet --user="$(id -un)" 2>/dev/null
-        for _ in $(seq 100); do
-            [ -z "$(squeue -h 2>/dev/null)" ] && break
-            sleep 0.1
-        done
-    fi
-    # The daemons, newest first, each by the id it was started with.
+
+# The slowest a Slurm command may answer (a controller that is down makes
+# sinfo and squeue retry for tens of seconds), and the longest any wait of
+# this test lasts.
+answer=10
+minute=60
+
+# Runs a Slurm command, bounded by $answer seconds.
+bounded() { timeout "$answer" "$@"; }
+
+# Stops the daemons, newest first, each by the id it was started with.
+stop_daemons() {
+    local k pid
     for ((k = ${#pids[@]} - 1; k >= 0; k--)); do
         $sudo kill "${pids[k]}" 2>/dev/null
     done
     for pid in "${pids[@]}"; do
-        for _ in $(seq 100); do
+        for _ in $(seq 50); do
             kill -0 "$pid" 2>/dev/null || break
-            sleep 0.1
+            sleep 0.2
         done
         if kill -0 "$pid" 2>/dev/null; then
             echo "test-slurm: process $pid did not stop on SIGTERM, killing it" >&2
             $sudo kill -9 "$pid" 2>/dev/null
         fi
+        wait "$pid" 2>/dev/null
     done
+    pids=()
+}
+
+# The daemons' logs and the tasks' outputs, to stderr (the logs are root's
+# when the daemons ran under sudo).
+print_logs() {
+    local f
+    for f in "$tmp"/*.log "$tmp"/*.out "$tmp"/out*/slurm-*.out; do
+        [ -e "$f" ] || continue
+        echo "---- $f (last 40 lines)" >&2
+        $sudo tail -n 40 "$f" >&2
+    done
+}
+
+teardown() {
+    local status=$?
+    set +e
+    if [ -n "${SLURM_CONF:-}" ] && [ -e "$tmp/slurmctld.started" ]; then
+        bounded scancel --quiet --user="$(id -un)" 2>/dev/null
+        for _ in $(seq 20); do
+            [ -z "$(bounded squeue -h 2>/dev/null)" ] && break
+            sleep 0.5
+        done
+    fi
+    stop_daemons
     if [ "$status" -ne 0 ]; then
         echo "test-slurm: FAIL (exit $status); the logs:" >&2
-        tail -n 20 "$tmp"/*.log "$tmp"/out*/slurm-*.out 2>/dev/null >&2
+        print_logs
     fi
     $sudo rm -rf "$tmp"
     echo "test-slurm: took $((SECONDS - started)) s"
@@ -95,6 +160,46 @@ teardown() {
 }
 trap teardown EXIT
 trap 'exit 130' INT TERM
+
+# Fails naming $1 unless every daemon started is still running.
+daemons_alive() {
+    local pid
+    for pid in "${pids[@]}"; do
+        if ! kill -0 "$pid" 2>/dev/null; then
+            echo "test-slurm: a daemon (process $pid) has exited while waiting for $1" >&2
+            return 1
+        fi
+    done
+}
+
+# Runs `$3...` every 0.2 s until it succeeds; fails when $1 seconds have
+# passed or a daemon has died (waiting for $2).
+wait_for() {
+    local limit=$1 what=$2 end=$((SECONDS + $1))
+    shift 2
+    until "$@"; do
+        daemons_alive "$what" || return 1
+        if [ "$SECONDS" -ge "$end" ]; then
+            echo "test-slurm: $what: not there after $limit s" >&2
+            return 1
+        fi
+        sleep 0.2
+    done
+}
+
+# N TCP ports free on every address at this moment, all different: bound to
+# port 0 together, so the kernel picks them, then released for the daemons.
+free_ports() {
+    python3 -c '
+import socket, sys
+held = []
+for _ in range(int(sys.argv[1])):
+    s = socket.socket()
+    s.bind(("", 0))
+    held.append(s)
+print(" ".join(str(s.getsockname()[1]) for s in held))
+' "$1"
+}
 
 # munge: a fresh key and its own socket, in the temporary directory.
 mkdir -m 700 "$tmp/munge"
@@ -105,14 +210,22 @@ $sudo munged --foreground --force --key-file="$tmp/munge/munge.key" \
     --seed-file="$tmp/munge/munged.seed" --log-file="$tmp/munged.log" \
     >"$tmp/munged.out" 2>&1 &
 pids+=($!)
+munge_pid=$!
+wait_for 10 "munged's socket" test -S "$tmp/munge/munge.socket"
 
 node=$(hostname -s)
 user=$(id -un)
 mkdir -p "$tmp/state" "$tmp/spool"
-cat >"$tmp/slurm.conf" <<EOF
-# Generated by scripts/test-slurm.sh: one node, no cgroups, no accounting.
+
+# Writes slurm.conf with the controller's port $1 and the node's $2.
+write_conf() {
+    cat >"$tmp/slurm.conf" <<CONF
+# Generated by scripts/test-slurm.sh: one node, no cgroups, no accounting,
+# ports picked free at run time.
 ClusterName=snowrolltest
 SlurmctldHost=localhost
+SlurmctldPort=$1
+SlurmdPort=$2
 SlurmUser=$user
 SlurmdUser=root
 AuthType=auth/munge
@@ -139,45 +252,50 @@ MinJobAge=600
 KillWait=5
 NodeName=$node NodeAddr=127.0.0.1 CPUs=2 State=UNKNOWN
 PartitionName=test Nodes=$node Default=YES MaxTime=INFINITE State=UP
-EOF
+CONF
+}
 export SLURM_CONF=$tmp/slurm.conf
 
-for _ in $(seq 50); do [ -S "$tmp/munge/munge.socket" ] && break; sleep 0.1; done
-[ -S "$tmp/munge/munge.socket" ] || { echo "test-slurm: munged did not start" >&2; exit 1; }
+node_idle() {
+    [ "$(bounded sinfo -h -n "$node" -o %T 2>/dev/null)" = idle ]
+}
 
-$sudo slurmctld -D -f "$SLURM_CONF" >"$tmp/slurmctld.out" 2>&1 &
-pids+=($!)
-touch "$tmp/slurmctld.started"
-$sudo slurmd -D -f "$SLURM_CONF" >"$tmp/slurmd.out" 2>&1 &
-pids+=($!)
-
-# Ready when the node is idle.
-state=""
-for _ in $(seq 300); do
-    state=$(sinfo -h -n "$node" -o %T 2>/dev/null || true)
-    [ "$state" = idle ] && break
-    sleep 0.1
-done
-if [ "$state" != idle ]; then
-    echo "test-slurm: the node did not come up (state: '${state:-none}')" >&2
+# The controller and the node's daemon on ports free a moment ago; ready
+# when the node is idle. A port taken in between (by another cluster's
+# daemon) makes a daemon exit with "Address already in use": the daemons are
+# then started again on other ports, up to three times.
+for attempt in 1 2 3; do
+    read -r ctld_port slurmd_port <<<"$(free_ports 2)"
+    write_conf "$ctld_port" "$slurmd_port"
+    rm -f "$tmp"/slurmctld.* "$tmp"/slurmd.*
+    $sudo slurmctld -D -f "$SLURM_CONF" >"$tmp/slurmctld.out" 2>&1 &
+    pids+=($!)
+    touch "$tmp/slurmctld.started"
+    $sudo slurmd -D -f "$SLURM_CONF" >"$tmp/slurmd.out" 2>&1 &
+    pids+=($!)
+    if wait_for "$minute" "the node to come up (ports $ctld_port, $slurmd_port)" node_idle; then
+        break
+    fi
+    if [ "$attempt" -lt 3 ] && $sudo grep -qs "Address already in use" "$tmp"/slurm*.log "$tmp"/slurm*.out; then
+        echo "test-slurm: a port was taken in the meantime; again on other ports" >&2
+        # Only the Slurm daemons: munged (the first) keeps running.
+        pids=("${pids[@]:1}")
+        stop_daemons
+        pids=("$munge_pid")
+        continue
+    fi
     exit 1
-fi
-echo "test-slurm: one-node cluster up ($(sinfo -V), node $node, 2 CPUs)"
+done
+echo "test-slurm: one-node cluster up ($(bounded sinfo -V), node $node, 2 CPUs, ports $ctld_port and $slurmd_port)"
 
-# Waits until no task of job $1 is pending or running (timeout $2 s), then
+# Waits until no task of job $1 is pending or running (at most $2 s), then
 # checks that every task listed in $3 ended in state $4.
+job_gone() { [ -z "$(bounded squeue -h -j "$1" 2>/dev/null)" ]; }
 wait_job() {
     local job=$1 timeout=$2 tasks=$3 want=$4 t got
-    for ((t = 0; t < timeout * 10; t++)); do
-        [ -z "$(squeue -h -j "$job" 2>/dev/null)" ] && break
-        sleep 0.1
-    done
-    if [ -n "$(squeue -h -j "$job" 2>/dev/null)" ]; then
-        echo "test-slurm: job $job still running after $timeout s" >&2
-        exit 1
-    fi
+    wait_for "$timeout" "job $job to end" job_gone "$job" || exit 1
     for t in $tasks; do
-        got=$(scontrol show job "${job}_$t" | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p' | head -1)
+        got=$(bounded scontrol show job "${job}_$t" | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p' | head -1)
         if [ "$got" != "$want" ]; then
             echo "test-slurm: task ${job}_$t ended $got, expected $want" >&2
             exit 1
@@ -205,10 +323,10 @@ mkdir "$tmp/whole" "$tmp/whole-cancel"
 
 # 1. Four tasks, one CPU each (two at a time on the two CPUs).
 mkdir "$tmp/out4"
-job=$(cd "$tmp/out4" && SHARDS=4 OUT="$tmp/out4" sbatch --parsable --array=0-3 \
+job=$(cd "$tmp/out4" && SHARDS=4 OUT="$tmp/out4" bounded sbatch --parsable --array=0-3 \
     --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
 echo "test-slurm: submitted job array $job (4 tasks)"
-wait_job "$job" 120 "0 1 2 3" COMPLETED
+wait_job "$job" "$minute" "0 1 2 3" COMPLETED
 (cd "$tmp/out4" && SHARDS=4 OUT=. bash "$root/examples/slurm-sweep.sh" merge)
 same_bytes "$tmp/out4/sweep.csv" "$tmp/whole/sweep.csv"
 
@@ -216,33 +334,36 @@ same_bytes "$tmp/out4/sweep.csv" "$tmp/whole/sweep.csv"
 # resubmitted.
 mkdir "$tmp/out2"
 export GRID_FLAGS=$cancel_grid
-job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" sbatch --parsable --array=0-1 \
+job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" bounded sbatch --parsable --array=0-1 \
     --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
 echo "test-slurm: submitted job array $job (2 tasks)"
 partial=$tmp/out2/sweep-1.csv.partial
+# Looked at every 0.02 s (not wait_for's 0.2 s), to cancel the task early in its run.
 rows=0
-for _ in $(seq 600); do
+end=$((SECONDS + minute))
+while [ "$SECONDS" -lt "$end" ]; do
     [ -e "$partial" ] && rows=$(grep -vc '^#' "$partial" || true)
     [ "$rows" -gt 1 ] && break
+    daemons_alive "rows in $partial" || exit 1
     sleep 0.02
 done
 if [ "$rows" -le 1 ]; then
-    echo "test-slurm: task ${job}_1 wrote no rows to $partial in 30 s" >&2
+    echo "test-slurm: task ${job}_1 wrote no rows to $partial in $minute s" >&2
     exit 1
 fi
-scancel "${job}_1"
-wait_job "$job" 60 "0" COMPLETED
-wait_job "$job" 60 "1" CANCELLED
+bounded scancel "${job}_1"
+wait_job "$job" "$minute" "0" COMPLETED
+wait_job "$job" "$minute" "1" CANCELLED
 if [ -e "$tmp/out2/sweep-1.csv" ] || [ ! -e "$partial" ]; then
     echo "test-slurm: task ${job}_1 finished before it was cancelled (make its shard larger)" >&2
     exit 1
 fi
 left=$(grep -vc '^#' "$partial")
 echo "test-slurm: cancelled ${job}_1 with $((left - 1)) of 40000 rows in its partial file"
-job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" sbatch --parsable --array=1 \
+job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" bounded sbatch --parsable --array=1 \
     --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
 echo "test-slurm: resubmitted task 1 as job $job"
-wait_job "$job" 120 "1" COMPLETED
+wait_job "$job" "$minute" "1" COMPLETED
 [ ! -e "$partial" ] || { echo "test-slurm: $partial left behind" >&2; exit 1; }
 (cd "$tmp/out2" && SHARDS=2 OUT=. bash "$root/examples/slurm-sweep.sh" merge)
 same_bytes "$tmp/out2/sweep.csv" "$tmp/whole-cancel/sweep.csv"

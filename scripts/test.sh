@@ -8,7 +8,8 @@
 # of the explorer (scripts/build-explorer.sh, its WebAssembly against the
 # CLI, and .ci/explorer-browser-test.sh: the page from file:// and under
 # `snowroll serve`), then
-# scripts/check-guide.py (links of the docs, the user guide's examples).
+# scripts/check-guide.py (links of the docs, the user guide's examples),
+# and last a check that no test left a file in the tree.
 #
 # On 2 cores the order is chosen so that waiting overlaps work (issue 19,
 # item 4; the whole took 412 s from a fresh clone when each step ran after
@@ -33,6 +34,24 @@ cleanup() {
     rm -rf "${files[@]}"
 }
 trap cleanup EXIT
+
+# The files in the tree that git does not track, ignored ones included
+# (outputs such as *.csv are ignored, so `git status` would not show them),
+# each wholly untracked directory as one line; the build's directory and
+# Python's caches are expected. Listed at the start and compared at the end
+# (issue 33, item 7: two sweep outputs had been committed at the root).
+target_in_tree=${CARGO_TARGET_DIR:-target}
+target_in_tree=${target_in_tree#"$(pwd)"/}
+untracked() {
+    git ls-files --others --directory --no-empty-directory \
+        | grep -v -x -F -e "target/" -e "${target_in_tree%/}/" \
+        | grep -v -E '(^|/)__pycache__/$' | sort || true
+}
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    untracked_before=$(untracked)
+else
+    untracked_before=none
+fi
 
 # When each background job started (seconds of this script), by its pid.
 declare -A started
@@ -77,6 +96,11 @@ finish() {
 start bash scripts/test-python.sh --setup
 py_setup=$job py_setup_log=$log
 
+# How the browser tests start Chromium (.ci/browser/chromium.sh), with
+# stand-in browsers that hang or die as Chromium has: about 15 s of waiting.
+start bash .ci/browser/test-chromium.sh
+chromium_unit=$job chromium_unit_log=$log
+
 cargo test --workspace --all-features --no-run
 stamp "the test build"
 
@@ -120,13 +144,17 @@ pytest_job=$job pytest_log=$log
 
 # examples/slurm-sweep.sh on a one-node Slurm cluster started here (installs
 # Debian's slurm-wlm and munge first if missing; needs root or sudo, else it
-# says so and skips). It mostly waits on the scheduler.
-start bash scripts/test-slurm.sh "$cli"
+# says so and skips), two copies at once, each its own cluster on ports
+# picked free (issue 33, item 6: a second cluster on the machine had made
+# the test fail). It mostly waits on the scheduler.
+start bash scripts/test-slurm.sh --pair "$cli"
 slurm=$job slurm_log=$log
 
 report_dir=$(mktemp -d)
 files+=("$report_dir")
 "$cli" paper --strict --quiet --out "$report_dir"
+# A Chromium try that fails keeps its whole log there too.
+export CHROMIUM_FAILED_LOGS=$(pwd)/target/browser-test
 bash .ci/browser-test.sh "$report_dir"
 # Keep the screenshots as artifacts of the run.
 mkdir -p target/browser-test
@@ -142,9 +170,24 @@ echo "browser test artifacts: target/browser-test/"
 echo "browser: 2 passed, 0 failed"
 stamp "paper and the browser tests"
 
+finish "$chromium_unit" "$chromium_unit_log" ".ci/browser/test-chromium.sh" show
 finish "$pytest_job" "$pytest_log" "scripts/test-python.sh --tests" show
 finish "$slurm" "$slurm_log" "scripts/test-slurm.sh" show
 
 # The user guide: every link of the README and docs/ resolves, and every
 # example of docs/guide/ runs (the Python ones with the wheel just tested).
 python3 scripts/check-guide.py "$cli" --python "$target/pyenv-test/bin/python"
+
+# No test left a file in the tree: what is untracked now was untracked
+# before the tests.
+if [ "$untracked_before" = none ]; then
+    echo "test: not a git work tree, the check for files left in the tree is skipped"
+else
+    left=$(comm -13 <(printf '%s\n' "$untracked_before") <(untracked))
+    if [ -n "$left" ]; then
+        echo "test: FAIL: the tests left files in the tree (remove them; write outputs to a temporary directory):" >&2
+        sed 's/^/  /' <<<"$left" >&2
+        exit 1
+    fi
+    echo "test: no file left in the tree"
+fi

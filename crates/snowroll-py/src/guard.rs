@@ -6,6 +6,15 @@
 //!
 //! The rows are counted by sinks that wrap the library's own collectors
 //! ([`GuardedSamples`], [`GuardedTurns`]); the sweep counts its chunks.
+//!
+//! A `max_memory` raised past what the machine has must still end in
+//! `MemoryError`, never in an aborted interpreter (issue 33, item 3: Rust's
+//! infallible allocation aborts the process, rc 134, a dead Jupyter kernel).
+//! So every buffer of a result is allocated fallibly ([`grow`],
+//! [`try_vec`]), and each growth, and each count known up front, is first
+//! compared with the memory the machine has available ([`available_memory`]):
+//! with the kernel's overcommit a reservation larger than what is free may
+//! succeed and the process be killed later when it touches the pages.
 
 use std::mem::size_of;
 use std::time::{Duration, Instant};
@@ -16,6 +25,7 @@ use snowroll::error::SinkError;
 use snowroll::trajectory::{Collected, Sample, SampleSink, TurnState};
 use snowroll::LedgerRow;
 use snowroll::{TurnRow, TurnSink};
+use std::collections::TryReserveError;
 
 /// The default of the `max_memory` keyword, bytes: 2 GiB, a tenth of a
 /// common workstation's memory and more than any run of the defaults needs
@@ -43,6 +53,8 @@ pub(crate) struct Guard {
     limit: u64,
     per_row: u64,
     rows: u64,
+    /// Bytes held besides the rows' `per_row` each.
+    extra: u64,
     last_check: Instant,
     /// Why the run was stopped, raised when the call returns.
     stop: Option<PyErr>,
@@ -68,6 +80,7 @@ impl Guard {
             limit,
             per_row,
             rows: 0,
+            extra: 0,
             last_check: Instant::now(),
             stop: None,
         }
@@ -85,19 +98,51 @@ impl Guard {
         ))
     }
 
-    /// Refuses, before the run, a result of `rows` rows that cannot fit.
+    /// Refuses, before the run, a result of `rows` rows that cannot fit in
+    /// `max_memory`, or in the memory the machine has available.
     pub(crate) fn check_up_front(&self, rows: f64, what: &str) -> PyResult<()> {
-        if rows * self.per_row as f64 > self.limit as f64 {
+        let bytes = rows * self.per_row as f64;
+        if bytes > self.limit as f64 {
             return Err(self.too_big(rows, what));
         }
+        if let Some(free) = (bytes > CHECK_FROM as f64).then(available_memory).flatten() {
+            if bytes > free as f64 {
+                return Err(PyMemoryError::new_err(format!(
+                    "{what} would hold about {rows:.3e} rows of {} bytes, {:.2} GB, more than this machine has \
+                     available ({:.2} GB); ask for fewer rows (a coarser dt, fewer turns, a shard of the grid)",
+                    self.per_row,
+                    bytes / 1e9,
+                    free as f64 / 1e9,
+                )));
+            }
+        }
         Ok(())
+    }
+
+    /// Records `e` as the reason the run stopped, for [`Guard::outcome`],
+    /// and returns the sink error that ends the library's run.
+    pub(crate) fn stop_with(&mut self, e: PyErr) -> SinkError {
+        self.stop = Some(e);
+        SinkError::new(Stopped("memory"))
+    }
+
+    /// Counts `bytes` more held besides the rows' own (a failed sweep row's
+    /// message): an error ends the run when the whole does not fit.
+    pub(crate) fn bytes(&mut self, bytes: u64, what: &str) -> Result<(), SinkError> {
+        self.extra = self.extra.saturating_add(bytes);
+        self.rows(0, what)
     }
 
     /// Counts `n` more rows: an error ends the run when they do not fit or
     /// a signal is pending.
     pub(crate) fn rows(&mut self, n: u64, what: &str) -> Result<(), SinkError> {
         self.rows += n;
-        if self.rows.saturating_mul(self.per_row) > self.limit {
+        if self
+            .rows
+            .saturating_mul(self.per_row)
+            .saturating_add(self.extra)
+            > self.limit
+        {
             self.stop = Some(self.too_big(self.rows as f64, what));
             return Err(SinkError::new(Stopped("max_memory")));
         }
@@ -135,10 +180,16 @@ pub(crate) struct GuardedSamples {
 impl SampleSink for GuardedSamples {
     fn sample(&mut self, sample: &Sample, turn: Option<&TurnState>) -> Result<(), SinkError> {
         self.guard.rows(1, "simulate()")?;
+        let room = grow(&mut self.collected.samples, "simulate()").and_then(|()| match turn {
+            Some(_) => grow(&mut self.collected.turn_states, "simulate()"),
+            None => Ok(()),
+        });
+        room.map_err(|e| self.guard.stop_with(e))?;
         self.collected.sample(sample, turn)
     }
 
     fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        grow(&mut self.collected.ledger, "simulate()").map_err(|e| self.guard.stop_with(e))?;
         self.collected.ledger(row)
     }
 }
@@ -153,12 +204,84 @@ pub(crate) struct GuardedTurns {
 impl TurnSink for GuardedTurns {
     fn turn(&mut self, row: &TurnRow) -> Result<(), SinkError> {
         self.guard.rows(1, "turns()")?;
+        grow(&mut self.rows, "turns()").map_err(|e| self.guard.stop_with(e))?;
         self.rows.push(*row);
         Ok(())
     }
 
     fn ledger(&mut self, row: &LedgerRow) -> Result<(), SinkError> {
+        grow(&mut self.ledger, "turns()").map_err(|e| self.guard.stop_with(e))?;
         self.ledger.push(*row);
         Ok(())
     }
+}
+
+/// Below this many bytes an allocation is not compared with the memory
+/// available (reading it costs a few file reads, too much for every small
+/// call; an allocation this small cannot be what exhausts a machine).
+const CHECK_FROM: u64 = 64 << 20;
+
+/// Bytes this process may still take: the kernel's `MemAvailable`
+/// (`/proc/meminfo`), or less when a cgroup (v2) limit leaves less
+/// (`memory.max` less `memory.current`); `None` where neither can be read
+/// (not Linux), and then only the allocations themselves can fail.
+pub(crate) fn available_memory() -> Option<u64> {
+    let meminfo = std::fs::read_to_string("/proc/meminfo").ok();
+    let free = meminfo.as_deref().and_then(|text| {
+        let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+        let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+        kib.checked_mul(1024)
+    });
+    let read = |name: &str| -> Option<u64> {
+        std::fs::read_to_string(format!("/sys/fs/cgroup/{name}"))
+            .ok()?
+            .trim()
+            .parse()
+            .ok()
+    };
+    let cgroup =
+        read("memory.max").map(|max| max.saturating_sub(read("memory.current").unwrap_or(0)));
+    match (free, cgroup) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    }
+}
+
+/// The `MemoryError` of an allocation of `bytes` that failed.
+pub(crate) fn alloc_failed(what: &str, bytes: u64, why: &dyn std::fmt::Display) -> PyErr {
+    PyMemoryError::new_err(format!(
+        "{what} could not allocate {:.2} GB for its result ({why}); ask for fewer rows \
+         (a coarser dt, fewer turns, a shard of the grid)",
+        bytes as f64 / 1e9
+    ))
+}
+
+/// Makes room for one more item in `v` without aborting: where `v` is full
+/// it doubles (at least 64 items), after checking that the machine has the
+/// bytes available, with a fallible reservation.
+pub(crate) fn grow<T>(v: &mut Vec<T>, what: &str) -> PyResult<()> {
+    if v.len() < v.capacity() {
+        return Ok(());
+    }
+    let more = v.capacity().max(64);
+    let bytes = (more as u64).saturating_mul(size_of::<T>() as u64);
+    if let Some(free) = (bytes > CHECK_FROM).then(available_memory).flatten() {
+        if bytes > free {
+            return Err(alloc_failed(
+                what,
+                bytes,
+                &format_args!("{:.2} GB available on this machine", free as f64 / 1e9),
+            ));
+        }
+    }
+    v.try_reserve(more)
+        .map_err(|e: TryReserveError| alloc_failed(what, bytes, &e))
+}
+
+/// An empty vector with room for exactly `n` items, allocated fallibly.
+pub(crate) fn try_vec<T>(n: usize, what: &str) -> PyResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|e| alloc_failed(what, (n as u64).saturating_mul(size_of::<T>() as u64), &e))?;
+    Ok(v)
 }

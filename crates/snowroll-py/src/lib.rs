@@ -226,7 +226,8 @@ pub(crate) fn column<'py, T, E>(
 where
     E: numpy::Element,
 {
-    let values: Vec<E> = items.iter().map(f).collect();
+    let mut values: Vec<E> = guard::try_vec(items.len(), "building a column")?;
+    values.extend(items.iter().map(f));
     columns.set_item(name, values.into_pyarray(py))
 }
 
@@ -241,9 +242,13 @@ pub(crate) fn masked_column<'py, T>(
     items: &[T],
     f: impl Fn(&T) -> Option<f64>,
 ) -> PyResult<()> {
-    let values: Vec<Option<f64>> = items.iter().map(f).collect();
-    let data: Vec<f64> = values.iter().map(|v| v.unwrap_or(0.0)).collect();
-    let mask: Vec<bool> = values.iter().map(Option::is_none).collect();
+    let mut data: Vec<f64> = guard::try_vec(items.len(), "building a column")?;
+    let mut mask: Vec<bool> = guard::try_vec(items.len(), "building a column")?;
+    for item in items {
+        let v = f(item);
+        data.push(v.unwrap_or(0.0));
+        mask.push(v.is_none());
+    }
     let kwargs = PyDict::new(py);
     kwargs.set_item("mask", mask.into_pyarray(py))?;
     let array = py.import("numpy.ma")?.call_method(
@@ -392,13 +397,13 @@ fn simulate<'py>(
     }
     let (scenario, opts) = inputs(&given, base)?;
     let guard = guard::Guard::new(max_memory, guard::sample_bytes());
+    let mut collected = Collected::default();
     if let Some(rows) = opts.known_rows() {
         guard.check_up_front(rows, "simulate()")?;
+        // The rows' room at once, fallibly (no doubling to pay for).
+        collected.samples = guard::try_vec(rows as usize, "simulate()")?;
     }
-    let mut sink = guard::GuardedSamples {
-        collected: Collected::default(),
-        guard,
-    };
+    let mut sink = guard::GuardedSamples { collected, guard };
     let end = py.detach(|| kind.build().simulate_into(&scenario, &opts, &mut sink));
     let guard::GuardedSamples { collected, guard } = sink;
     let traj = collected.into_trajectory(kind, guard.outcome(end, sim_error)?);
@@ -451,7 +456,8 @@ fn turns<'py>(
     let guard = guard::Guard::new(max_memory, guard::turn_bytes());
     guard.check_up_front(wanted as f64, "turns()")?;
     let mut sink = guard::GuardedTurns {
-        rows: Vec::new(),
+        // The turns' room at once, fallibly (no doubling to pay for).
+        rows: guard::try_vec(usize::try_from(wanted).unwrap_or(usize::MAX), "turns()")?,
         ledger: Vec::new(),
         guard,
     };
@@ -487,6 +493,13 @@ fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", snowroll_io::VERSION)?;
     m.add("PARAMS", param_table(m.py())?)?;
     m.add("MAX_MEMORY", guard::MAX_MEMORY_DEFAULT)?;
+    m.add(
+        "SWEEP_AXES",
+        snowroll::sweep::Param::ALL
+            .map(snowroll::sweep::Param::key)
+            .to_vec(),
+    )?;
+    m.add("SWEEP_ROW_BYTES", sweep::SWEEP_ROW_BYTES)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(turns, m)?)?;
     m.add_function(wrap_pyfunction!(models::models, m)?)?;

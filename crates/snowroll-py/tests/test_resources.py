@@ -90,7 +90,7 @@ def test_a_result_that_cannot_fit_is_refused_before_it_starts():
     with pytest.raises(MemoryError, match="max_memory"):
         snowroll.turns("turns", turns=10**8)
     with pytest.raises(MemoryError, match="max_memory"):
-        snowroll.sweep({"model": "torque-cm", "alpha_deg": "1:80:10000", "snow_depth": "0.001:0.1:1000"})
+        snowroll.sweep({"model": "torque-cm", "alpha_deg": "1:80:20000", "snow_depth": "0.001:0.1:1000"})
     # Refused up front: no turn and no sweep row was computed (either would
     # take seconds).
     assert time.monotonic() - t < 1.0

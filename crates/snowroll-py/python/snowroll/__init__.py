@@ -24,6 +24,7 @@ calling these functions run in parallel.
 
 from __future__ import annotations
 
+import functools as _functools
 import inspect as _inspect
 import numbers as _numbers
 import warnings as _warnings
@@ -40,6 +41,63 @@ __version__: str = _snowroll.__version__
 MAX_MEMORY: int = _snowroll.MAX_MEMORY
 
 __all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "Results", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
+
+
+def _jaro(a: str, b: str) -> float:
+    """The Jaro similarity of two strings (0 to 1), as the ``strsim`` crate
+    computes it for the command line's suggestions."""
+    if a == b:
+        return 1.0
+    if not a or not b:
+        return 0.0
+    reach = max(len(a), len(b)) // 2 - 1
+    reach = max(reach, 0)
+    used_b = [False] * len(b)
+    matched_a = []
+    for i, c in enumerate(a):
+        for j in range(max(0, i - reach), min(len(b), i + reach + 1)):
+            if not used_b[j] and b[j] == c:
+                used_b[j] = True
+                matched_a.append(c)
+                break
+    m = len(matched_a)
+    if m == 0:
+        return 0.0
+    matched_b = [c for c, used in zip(b, used_b) if used]
+    half_swaps = sum(x != y for x, y in zip(matched_a, matched_b)) / 2
+    return (m / len(a) + m / len(b) + (m - half_swaps) / m) / 3
+
+
+def _nearest(name: str, names: Sequence[str]) -> Optional[str]:
+    """The name of ``names`` most like ``name``, when one is alike enough:
+    the command line's rule (clap's), a Jaro similarity above 0.7."""
+    scored = [(_jaro(name, n), n) for n in names]
+    best = max(scored, default=(0.0, ""))
+    return best[1] if best[0] > 0.7 else None
+
+
+def _unexpected(function: str, key: str, names: Sequence[str]) -> str:
+    """The message of an unknown keyword, with the nearest known one as the
+    command line suggests a flag (``tip: a similar argument exists``)."""
+    message = f"{function}() got an unexpected keyword argument {key!r}"
+    near = _nearest(key, names)
+    return message + (f"; a similar keyword exists: {near!r}" if near else "")
+
+
+def _suggesting(f: Any) -> Any:
+    """``f`` (a function with fixed keywords) with an unknown keyword
+    refused as :func:`_unexpected` words it, naming the nearest keyword."""
+    sig = _inspect.signature(f)
+    names = [n for n, p in sig.parameters.items() if p.kind != p.POSITIONAL_ONLY]
+
+    @_functools.wraps(f)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        for k in kwargs:
+            if k not in sig.parameters:
+                raise TypeError(_unexpected(f.__name__, k, names))
+        return f(*args, **kwargs)
+
+    return wrapper
 
 
 class _Columns:
@@ -267,14 +325,18 @@ class SweepResult(_Columns):
     TEXT_COLUMNS = ("model", "on_hop", "collision", "stop", "error", "warnings")
 
     def __init__(self, raw: Dict[str, Any]) -> None:
-        cols = raw["columns"]
-        for name in self.TEXT_COLUMNS:
-            arr = _np.empty(len(cols[name]), dtype=object)
-            arr[:] = cols[name]
-            cols[name] = arr
-        self._columns = cols
+        # The native module returns the text columns as object arrays whose
+        # cells share one string per distinct value (a row costs 8 bytes a
+        # text column, not a string object of its own).
+        self._columns = raw["columns"]
         self.grid_len: int = raw["len"]
         self.shard: Tuple[int, int] = tuple(raw["shard"])
+        #: The grid indices ``(start, end)`` of the rows (end excluded).
+        self.rows: Tuple[int, int] = tuple(raw["rows"])
+        #: Every setting of the sweep as text, by name, as the CLI's header
+        #: records it: the models, each parameter (its values, or its
+        #: default), ``collision``, ``on_hop`` and ``method``.
+        self.settings: Dict[str, str] = dict(raw["settings"])
         self.version: str = raw["version"]
         # No `params`, `stop` or `model` attributes: `r.model` and `r.stop`
         # are the columns of those names.
@@ -285,27 +347,90 @@ class SweepResult(_Columns):
 
     @staticmethod
     def concat(parts: Sequence["SweepResult"]) -> "SweepResult":
-        """The rows of several shards of one grid, in grid order (by ``index``)."""
+        """The shards of one sweep joined in grid order: the whole sweep,
+        bit for bit. Checked as the CLI's ``snowroll merge`` checks shard
+        files, and refused with ``ValueError`` naming what is wrong: parts of
+        different sweeps (each differing setting named with both values:
+        ``alpha_deg: 10,20 in part 0, 70,80 in part 1``), of different shard
+        counts, a shard given twice, a missing shard (named with its rows:
+        ``missing shards: 1/3 (rows 16..32) of the 48 points``), and a part
+        whose rows are not all of its shard's (rows dropped or reordered
+        since). There is no way to join an incomplete set: run the missing
+        shards. The parts may come in any order."""
+        parts = list(parts)
         if not parts:
             raise ValueError("concat() needs at least one SweepResult")
-        cols = {
-            name: _np.concatenate([p[name] for p in parts]) for name in parts[0].columns
-        }
-        order = _np.argsort(cols["index"], kind="stable")
-        merged = {name: col[order] for name, col in cols.items()}
-        if len(_np.unique(merged["index"])) != len(order):
-            raise ValueError("concat(): the parts overlap (an index appears twice)")
+        for k, p in enumerate(parts):
+            if not isinstance(p, SweepResult):
+                raise TypeError(f"concat(): part {k} is a {type(p).__name__}, not a SweepResult")
+        first = parts[0]
+        n = first.shard[1]
+        for k, p in enumerate(parts[1:], 1):
+            differs = [
+                f"{key}: {mine} in part 0, {p.settings.get(key, 'none')} in part {k}"
+                for key, mine in first.settings.items()
+                if p.settings.get(key) != mine
+            ]
+            if p.version != first.version:
+                differs.insert(0, f"version: {first.version} in part 0, {p.version} in part {k}")
+            if p.shard[1] != n:
+                differs.append(f"shards: {n} in part 0, {p.shard[1]} in part {k}")
+            if differs:
+                raise ValueError(
+                    f"concat(): parts 0 and {k} are not shards of the same sweep: " + "; ".join(differs)
+                )
+        by_shard: Dict[int, int] = {}
+        for k, p in enumerate(parts):
+            i = p.shard[0]
+            if i in by_shard:
+                raise ValueError(f"concat(): shard {i}/{n} is given twice: parts {by_shard[i]} and {k}")
+            by_shard[i] = k
+        points = first.grid_len
+
+        def cut(i: int) -> int:
+            # The first row of shard i of n, as the library splits a grid.
+            return points * i // n
+
+        if len(by_shard) < n:
+            # The first few missing shards by name (n may be far larger than
+            # the parts given), then how many in all.
+            missing: List[str] = []
+            i = 0
+            while len(missing) < 5 and i < n:
+                if i not in by_shard:
+                    missing.append(f"{i}/{n} (rows {cut(i)}..{cut(i + 1)})")
+                i += 1
+            more = n - len(by_shard) - len(missing)
+            tail = f" and {more} more" if more else ""
+            raise ValueError(
+                f"concat(): missing shards: {', '.join(missing)}{tail} of the {points} points"
+            )
+        ordered = [parts[by_shard[i]] for i in range(n)]
+        for i, p in enumerate(ordered):
+            want = _np.arange(cut(i), cut(i + 1), dtype=_np.uint64)
+            if p.rows != (cut(i), cut(i + 1)) or not _np.array_equal(p["index"], want):
+                raise ValueError(
+                    f"concat(): part {by_shard[i]} (shard {i}/{n}) does not hold the rows "
+                    f"{cut(i)}..{cut(i + 1)} of its shard in order (it has {len(p)} rows)"
+                )
+            if p.columns != first.columns:
+                raise ValueError(f"concat(): part {by_shard[i]} has other columns than part 0")
         out = SweepResult.__new__(SweepResult)
-        out._columns = merged
-        out.grid_len = parts[0].grid_len
+        out._columns = {
+            name: _np.concatenate([p[name] for p in ordered]) for name in first.columns
+        }
+        out.grid_len = points
         out.shard = (0, 1)
-        out.version = parts[0].version
+        out.rows = (0, points)
+        out.settings = dict(first.settings)
+        out.version = first.version
         return out
 
     def _frame_attrs(self) -> Dict[str, Any]:
         return {"grid_len": self.grid_len, "shard": self.shard, "version": self.version}
 
 
+@_suggesting
 def sweep(
     grid: Mapping[str, Any],
     *,
@@ -357,7 +482,7 @@ def sweep(
         shard = (i, n)
     return SweepResult(
         _snowroll.sweep(
-            dict(grid),
+            _grid(grid),
             shard=shard,
             method=_text("method", method),
             max_memory=_count("max_memory", max_memory),
@@ -365,6 +490,7 @@ def sweep(
     )
 
 
+@_suggesting
 def sweep_chunks(
     grid: Mapping[str, Any],
     *,
@@ -379,7 +505,7 @@ def sweep_chunks(
     as it comes.
     """
     per = _count("rows", rows, 1)
-    total = _snowroll.grid_len(dict(grid))
+    total = _snowroll.grid_len(_grid(grid))
     shards = max(1, -(-total // per))
     for i in range(shards):
         yield sweep(grid, shard=(i, shards), method=method)
@@ -387,6 +513,48 @@ def sweep_chunks(
 
 # The largest count the library takes (a u64).
 _COUNT_MAX = 2**64 - 1
+
+
+def _axis(key: str, value: Any) -> Any:
+    """A sweep axis's values, checked as :func:`simulate` checks a number:
+    a string (``"a,b,c"``, ``"start:end:count"``), a real number, or a
+    sequence or array of them. ``TypeError`` naming the axis for anything
+    else: a bool, a complex number, an array of bools or complex numbers
+    (numpy would make them 1.0 and 0.0, or drop the imaginary part)."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, _np.ndarray):
+        if value.dtype.kind not in "iuf":
+            raise TypeError(f"{key}: expected numbers, got an array of {value.dtype}")
+        if value.ndim == 0:
+            return _number(key, value[()])
+        if value.ndim != 1:
+            raise TypeError(f"{key}: expected a 1-D array, got {value.ndim} dimensions")
+        return value
+    if isinstance(value, (bool, _np.bool_)) or not hasattr(value, "__iter__"):
+        return _number(key, value)
+    return [_number(key, v) for v in value]
+
+
+def _grid(grid: Mapping[str, Any]) -> Dict[str, Any]:
+    """A sweep's grid with every axis checked by :func:`_axis`; an unknown
+    key is a ``ValueError`` naming the nearest known one."""
+    if not isinstance(grid, Mapping):
+        raise TypeError(f"grid: expected a dict, got {type(grid).__name__}")
+    keys = ["model", "collision", "on_hop", *_snowroll.SWEEP_AXES]
+    out = {}
+    for key, value in grid.items():
+        if not isinstance(key, str):
+            raise TypeError(f"grid: a key is a str, got {type(key).__name__}")
+        if key not in keys:
+            near = _nearest(key, keys)
+            hint = f"; a similar key exists: {near!r}" if near else ""
+            raise ValueError(
+                f"unknown axis {key!r}: expected model, collision, on_hop or one of "
+                f"{', '.join(_snowroll.SWEEP_AXES)}{hint}"
+            )
+        out[key] = value if key in ("model", "collision", "on_hop") else _axis(key, value)
+    return out
 
 
 def _number(name: str, value: Any) -> Optional[float]:
@@ -505,12 +673,14 @@ def _checked(function: str, params: Mapping[str, Any]) -> Dict[str, Any]:
     an unknown keyword or a wrong type raises ``TypeError`` and an
     out-of-range count ``ValueError``, each naming the keyword (the native
     module would raise ``TypeError`` or ``OverflowError`` without it)."""
-    allowed = {p["key"] for p in _keywords(function)}
+    allowed = [p["key"] for p in _keywords(function)]
+    if function != "models":
+        allowed.append("max_memory")
     out = {}
     for k, v in params.items():
         p = _PARAM.get(k)
         if p is None or k not in allowed:
-            raise TypeError(f"{function}() got an unexpected keyword argument {k!r}")
+            raise TypeError(_unexpected(function, k, allowed))
         out[k] = _CHECK_OF_KIND[p["kind"]](k, v)
     return out
 

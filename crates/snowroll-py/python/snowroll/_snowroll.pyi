@@ -129,6 +129,13 @@ def models(
 
 MAX_MEMORY: int
 
+#: The numeric axes a sweep's grid takes, in grid order.
+SWEEP_AXES: List[str]
+
+#: Bytes a sweep row holds until ``sweep`` returns (measured; the bound
+#: ``max_memory`` is checked against).
+SWEEP_ROW_BYTES: int
+
 def grid_len(grid: Dict[str, Any]) -> int:
     """The number of points of ``grid`` (models × axes × settings)."""
 
@@ -147,9 +154,12 @@ def sweep(
     ``(i, n)`` only. The circular models take the closed form of their speed
     (``method="auto"``) or the ODE (``"ode"``).
 
-    Returns ``{"columns": {name: ndarray or list}, "len": int,
-    "shard": (i, n), "version": str}``: the numbers as numpy arrays, the text
-    columns (``model``, ``on_hop``, ``collision``, ``stop``, ``error``) as
-    lists of ``str`` or ``None``. Library messages name keywords where the
-    CLI's name flags (``--snow-depth`` becomes ``snow_depth``).
+    Returns ``{"columns": {name: ndarray}, "len": int, "shard": (i, n),
+    "rows": (start, end), "settings": [(name, text)], "version": str}``: the
+    numbers as numpy arrays, the text columns (``model``, ``on_hop``,
+    ``collision``, ``stop``, ``error``, ``warnings``) as numpy object arrays
+    of ``str`` or ``None``; ``settings`` every setting as the CLI's header
+    records it. A result that cannot fit in ``max_memory`` or in the memory
+    the machine has raises ``MemoryError``. Library messages name keywords
+    where the CLI's name flags (``--snow-depth`` becomes ``snow_depth``).
     """

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any, List, Mapping, Optional, Tuple
 
-from . import _count, _snowroll, _text
+from . import _count, _grid, _snowroll, _suggesting, _text
 from . import sweep as _sweep
 
 __all__ = ["sweep", "shard_bounds"]
@@ -23,6 +23,7 @@ __all__ = ["sweep", "shard_bounds"]
 _NO_ROWS = 2**64 - 1
 
 
+@_suggesting
 def shard_bounds(grid: Mapping[str, Any], shards: int) -> List[Tuple[int, int]]:
     """The ``(start, end)`` grid indices of each of ``shards`` shards of
     ``grid`` (end excluded), the split of ``snowroll.sweep(grid, shard=(i,
@@ -30,7 +31,7 @@ def shard_bounds(grid: Mapping[str, Any], shards: int) -> List[Tuple[int, int]]:
     bad grid or ``shards`` outside ``1 <= shards <= points``, so that no
     shard is empty."""
     shards = _count("shards", shards, 1)
-    points = _snowroll.sweep(dict(grid), shard=(0, _NO_ROWS), method="auto")["len"]
+    points = _snowroll.grid_len(_grid(grid))
     if shards > points:
         raise ValueError(
             f"shards = {shards} is out of range: expected 1 <= shards <= {points} "
@@ -47,6 +48,7 @@ def _shard_frame(grid: Mapping[str, Any], i: int, n: int, method: str) -> Any:
     return _sweep(grid, shard=(i, n), method=method).to_pandas().set_index("index")
 
 
+@_suggesting
 def sweep(
     grid: Mapping[str, Any],
     client: Optional[Any] = None,
