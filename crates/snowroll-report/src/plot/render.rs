@@ -3,13 +3,14 @@
 use std::fmt;
 use std::sync::OnceLock;
 
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{colour_slots, PALETTE};
-use super::ticks::AxisTicks;
+use super::ticks::{log_ticks, AxisTicks};
 use super::{
     Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE, NO_DATA,
 };
@@ -149,9 +150,9 @@ impl Chart {
         let (xr, yr) = self.ranges();
         match (self.x.scale, self.y.scale) {
             (Scale::Linear, Scale::Linear) => self.draw_in(&plot, xr, yr, scale),
-            (Scale::Linear, Scale::Log) => self.draw_in(&plot, xr, yr.log_scale(), scale),
-            (Scale::Log, Scale::Linear) => self.draw_in(&plot, xr.log_scale(), yr, scale),
-            (Scale::Log, Scale::Log) => self.draw_in(&plot, xr.log_scale(), yr.log_scale(), scale),
+            (Scale::Linear, Scale::Log) => self.draw_in(&plot, xr, log_axis(yr), scale),
+            (Scale::Log, Scale::Linear) => self.draw_in(&plot, log_axis(xr), yr, scale),
+            (Scale::Log, Scale::Log) => self.draw_in(&plot, log_axis(xr), log_axis(yr), scale),
         }
     }
 
@@ -315,6 +316,13 @@ pub(super) const TICKS: usize = 11;
 
 /// Height of the band of the title above plot and legend, px.
 const TITLE_HEIGHT: f64 = 40.0;
+
+/// A log axis over `r` labelled at [`log_ticks`]: every decade, and 2 and 5
+/// of each where a decade is wide, with light lines at the other multiples.
+pub(super) fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
+    let (bold, light) = log_ticks(r.start, r.end);
+    r.log_scale().with_key_points(bold).with_light_points(light)
+}
 
 /// The one format of the tick labels of `axis`, drawn by `coord`.
 pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {

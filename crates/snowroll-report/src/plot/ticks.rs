@@ -134,9 +134,72 @@ fn shortest(a: f64) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
+/// A log axis spanning at most this many decades is also labelled at 2 and
+/// 5 of each decade (the regime map's 0.5–80°: 0.5, 1, 2, 5, 10, 20, 50);
+/// a wider one at its decades only.
+const WIDE_DECADES: f64 = 3.0;
+
+/// The labelled ticks of a log axis drawn over `lo..hi` (both > 0): every
+/// decade inside, and 2 and 5 of each decade when the axis spans at most
+/// [`WIDE_DECADES`]; every integer multiple of a decade when fewer than two
+/// ticks would be labelled otherwise. The second vector holds the unlabelled
+/// minor ticks (the other multiples 2…9 of each decade) for light grid lines.
+pub(crate) fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+        return (Vec::new(), Vec::new());
+    }
+    let inside = |v: f64| v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12);
+    let multiples = |ms: &[u32]| -> Vec<f64> {
+        let (e0, e1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+        (e0..=e1)
+            .flat_map(|e| ms.iter().map(move |&m| f64::from(m) * 10_f64.powi(e)))
+            .filter(|&v| inside(v))
+            .collect()
+    };
+    let all = multiples(&[1, 2, 3, 4, 5, 6, 7, 8, 9]);
+    let mut bold = if (hi / lo).log10() <= WIDE_DECADES {
+        multiples(&[1, 2, 5])
+    } else {
+        multiples(&[1])
+    };
+    if bold.len() < 2 {
+        bold.clone_from(&all);
+    }
+    let light = all
+        .into_iter()
+        .filter(|v| !bold.iter().any(|b| (b - v).abs() <= 1e-9 * v))
+        .collect();
+    (bold, light)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_narrow_log_axis_is_labelled_at_1_2_5_of_each_decade() {
+        let (bold, light) = log_ticks(0.45, 90.0);
+        let f = AxisTicks::new(&bold, 90.0 - 0.45, true);
+        let labels: Vec<String> = bold.iter().map(|&v| f.label(v)).collect();
+        assert_eq!(labels, ["0.5", "1", "2", "5", "10", "20", "50"]);
+        assert!(light.iter().any(|&v| (v - 3.0).abs() < 1e-12));
+        assert!(!light.iter().any(|&v| (v - 2.0).abs() < 1e-12));
+    }
+
+    #[test]
+    fn a_wide_log_axis_is_labelled_at_every_decade() {
+        let (bold, _) = log_ticks(3e-7, 2.0);
+        assert_eq!(bold.len(), 7, "{bold:?}");
+        for (v, e) in bold.iter().zip(-6..=0) {
+            assert!((v / 10_f64.powi(e) - 1.0).abs() < 1e-12, "{v} vs 1e{e}");
+        }
+    }
+
+    #[test]
+    fn a_log_axis_inside_one_decade_gets_every_multiple() {
+        let (bold, _) = log_ticks(2.5, 4.5);
+        assert_eq!(bold, [3.0, 4.0]);
+    }
 
     /// Labels of `ticks` on a linear axis of span `span`.
     fn linear(ticks: &[f64], span: f64) -> Vec<String> {
