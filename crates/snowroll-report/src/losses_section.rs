@@ -42,7 +42,7 @@ const RESULTS: [Item; 5] = [
     },
     Item {
         claim: ClaimId::EnergyLedgerBalances,
-        lead: "With drag, rolling resistance and compaction the energy is accounted for at every sample: the kinetic energy, the work of each loss and what the model's own equation destroys (the inelastic pick-up of the torque models) add up to the potential energy released. The library's own tests check the same sum on 2700 random runs (tests/losses.rs).",
+        lead: "With drag, rolling resistance and compaction the energy is accounted for at every sample: the kinetic energy, the work of each loss and what the model's own equation destroys (the inelastic pick-up of the torque models) add up to the potential energy released. The physics library's own tests check the same sum on 2700 random runs.",
     },
 ];
 
