@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 
 use super::markup::{esc, prose};
-use super::{notation, ClaimId, ClaimResult, Report};
+use super::{ClaimId, ClaimResult, Report};
 
 /// Id of the section in the page.
 pub(super) const SECTION_ID: &str = "snowball-and-losses";
@@ -147,11 +147,11 @@ pub(super) fn markdown(md: &mut String, report: &Report) {
         let _ = writeln!(
             md,
             "* {} **{} {}** (`{}`): {}.{see}",
-            notation::prettify(r.lead),
+            crate::markdown::prose(r.lead),
             found.verdict.symbol(),
             found.verdict.label(),
             r.claim,
-            notation::prettify(&found.measured),
+            crate::markdown::prose(&found.measured),
         );
     }
 }
