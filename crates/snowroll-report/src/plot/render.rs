@@ -4,7 +4,7 @@ use std::fmt;
 use std::sync::OnceLock;
 
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
-use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
+use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -179,7 +179,7 @@ impl Chart {
         // Room for the widest y tick label and the axis title beside it.
         let label_font: TextStyle = font(18.0).into();
         let widest = yc
-            .key_points(TICKS)
+            .key_points(BoldPoints(TICKS))
             .iter()
             .filter_map(|&v| area.estimate_text_size(&yf.label(v), &label_font).ok())
             .map(|(w, _)| w)
@@ -328,7 +328,7 @@ pub(super) fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> 
 pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
     let r = coord.range();
     AxisTicks::new(
-        &coord.key_points(TICKS),
+        &coord.key_points(BoldPoints(TICKS)),
         r.end - r.start,
         axis.scale == Scale::Log,
     )
