@@ -136,7 +136,10 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
             .with_series(Series::new(&format!("α = {alpha_deg:.3}°"), points))
             .with_series(
                 Series::new(
-                    &format!("α = {alpha_deg:.3}°: cos α − ½ sin α = {limit:.4}"),
+                    &format!(
+                        "α = {alpha_deg:.3}°: cos α − ½ sin α = {}",
+                        crate::notation::fixed(limit, 4)
+                    ),
                     ends.iter().map(|&k| (k, limit)).collect(),
                 )
                 .style(Style::Dashed)

@@ -137,9 +137,10 @@ fn shortest(a: f64) -> String {
 }
 
 /// A log axis spanning at most this many decades is also labelled at 2 and
-/// 5 of each decade (the regime map's 0.5–80°: 0.5, 1, 2, 5, 10, 20, 50);
-/// a wider one at its decades only.
-const WIDE_DECADES: f64 = 3.0;
+/// 5 of each decade (the regime map's 0.5–80°: 0.5, 1, 2, 5, 10, 20, 50;
+/// turns 1–2000: 1, 2, 5, …, 1000, 2000), each decade then being at least
+/// a sixth of a figure's plot; a wider one at its decades only.
+const WIDE_DECADES: f64 = 4.0;
 
 /// Most decades a log axis labels; a wider axis labels every second (or
 /// third …) decade, so that labels such as `10⁻¹⁰` do not run together.
@@ -207,6 +208,7 @@ mod tests {
     #[test]
     fn a_wide_log_axis_is_labelled_at_every_decade() {
         let (bold, _) = log_ticks(3e-7, 2.0);
+        assert_eq!(log_ticks(1.0, 2000.0).0.len(), 11, "1, 2, 5 … 1000, 2000");
         assert_eq!(bold.len(), 7, "{bold:?}");
         for (v, e) in bold.iter().zip(-6..=0) {
             assert!((v / 10_f64.powi(e) - 1.0).abs() < 1e-12, "{v} vs 1e{e}");
