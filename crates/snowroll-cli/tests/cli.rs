@@ -1441,6 +1441,9 @@ fn regression_32_no_help_shows_source_syntax() {
             .replace("::1", "")
             .replace(" :: ", " ")
             .replace(" ::\n", "\n");
+        // Issue 36, item 4: no Rust path, test name, path of the code, or
+        // ASCII index (`kg/m^3`, `C_d`) beside a set one (`r²`) either.
+        crate::source_text::assert_clean(&format!("`snowroll {args}`"), text, &[]);
         for syntax in ["[`", "`]", "::", "](", "#[", "///", "//!", "crate", "Self"] {
             assert!(
                 !text.contains(syntax),

@@ -18,6 +18,7 @@ mod reproduce;
 mod resume_merge;
 #[cfg(feature = "serve")]
 mod serve;
+mod source_text;
 mod streaming;
 mod support;
 mod sweep;

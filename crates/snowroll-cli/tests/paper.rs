@@ -8,6 +8,8 @@ use predicates::prelude::*;
 use serde_json::Value;
 use snowroll_report::CLAIMS;
 
+use crate::source_text;
+
 #[test]
 fn paper_writes_the_report_with_every_claim_as_expected() {
     let dir = tempfile::tempdir().unwrap();
@@ -55,6 +57,15 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
         );
     }
     assert_no_source_text(&html);
+    // Issue 36, item 4: what the page shows, `<code>` and the figures' text
+    // included, and the Markdown, hold no source text; no link is a path.
+    let shown = source_text::without_scripts(&html);
+    source_text::assert_clean(
+        "report.html",
+        &source_text::strip_tags(&shown),
+        &source_text::link_texts(&shown),
+    );
+    source_text::assert_clean("report.md", &md, &source_text::markdown_link_texts(&md));
     let claims: Value =
         serde_json::from_str(&fs::read_to_string(out.join("claims.json")).unwrap()).unwrap();
     let text = claims.to_string();

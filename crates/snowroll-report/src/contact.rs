@@ -136,7 +136,10 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
             .with_series(Series::new(&format!("α = {alpha_deg:.3}°"), points))
             .with_series(
                 Series::new(
-                    &format!("α = {alpha_deg:.3}°: cos α − ½ sin α = {limit:.4}"),
+                    &format!(
+                        "α = {alpha_deg:.3}°: cos α − ½ sin α = {}",
+                        crate::notation::fixed(limit, 4)
+                    ),
                     ends.iter().map(|&k| (k, limit)).collect(),
                 )
                 .style(Style::Dashed)
@@ -150,7 +153,7 @@ pub(super) fn min_normal_figure(lab: &Lab) -> Result<Figure, ReportError> {
     Ok(Figure::new(
         chart,
         &format!(
-            "The smallest N/(M g) within each turn of the turn model (eq. (73), collisions by eq. (89)), from rest, {CONTACT_TURNS} turns, on six slopes; dashed: the late-turn limit cos α − ½ sin α of docs/contact-forces.md §4.2 for each. \
+            "The smallest N/(M g) within each turn of the turn model (eq. (73), collisions by eq. (89)), from rest, {CONTACT_TURNS} turns, on six slopes; dashed: the late-turn limit cos α − ½ sin α of the project's notes on contact forces §4.2 for each. \
              It falls towards the limit turn after turn; the limit is negative past α* = arctan 2 = {star:.3}°, so there the log hops in some turn. \
              The runs go on past N = 0 (--on-hop continue) to show the whole curve; N first reaches 0 in {}.",
             if first_negative.is_empty() {
@@ -285,7 +288,7 @@ fn collision_table_of(s: &Scenario, star: f64, rows: Vec<Vec<String>>) -> Table 
     Table {
         title: "How the step of each new layer changes the long run and the hop".to_string(),
         caption: format!(
-            "The turn model (eq. (73)) from rest with each --collision variant (docs/contact-forces.md §6): note is eq. (89); charged also pays the potential energy m g b cos α of the jump; pivot lets the log pivot over the edge of the new layer. \
+            "The turn model (eq. (73)) from rest with each --collision variant (the project's notes on contact forces §6): note is eq. (89); charged also pays the potential energy m g b cos α of the jump; pivot lets the log pivot over the edge of the new layer. \
              Long-run columns: {CONTACT_TURNS} turns at α = {:.2}° with the hop ignored (--on-hop continue); v²(K) is the speed squared at the start of turn K = {CONTACT_TURNS} over its leading term πGbK²/2, beside 1 + B/(A K) of §4.2 (A = πGb/2, B = πG r0 − (14πG + 24C) b/39 for note, 36C for charged); \
              the means of a/(g sin α) are over the last decade of turns, against the limits 1/3 (within turns) and 1/4 (with the collisions), the same for every variant to leading order (§6.4); \
              with pivot the impact falls inside the turn (at θ_c, §6.3), so only the mean with the collisions compares. \

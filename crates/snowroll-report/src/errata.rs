@@ -47,8 +47,9 @@ fn places() -> Vec<&'static str> {
 }
 
 /// `text` (already HTML-escaped) with each mention of `docs/errata.md`
-/// turned into a link: to the row it names when the words after it start
-/// with a row's "Where" (`docs/errata.md (5): …`), else to the section.
+/// turned into a link: "erratum" to the row it names when the words after it
+/// start with a row's "Where" (`docs/errata.md (5): …`), else "errata" to the
+/// section.
 pub(super) fn link_citations(escaped: &str) -> String {
     let places = places();
     let mut out = String::with_capacity(escaped.len());
@@ -57,11 +58,16 @@ pub(super) fn link_citations(escaped: &str) -> String {
         out.push_str(&rest[..i]);
         let after = &rest[i + CITE.len()..];
         let tail = after.trim_start_matches([',', ' ']);
-        let target = places
+        // The link says what it leads to: the erratum of the row it names,
+        // or the errata section; the file's path is no text for a reader.
+        let (target, text) = places
             .iter()
             .find(|p| tail.starts_with(&esc(p)))
-            .map_or_else(|| "errata".to_string(), |p| anchor(p));
-        let _ = write!(out, "<a href=\"#{target}\">{CITE}</a>");
+            .map_or_else(
+                || ("errata".to_string(), "errata"),
+                |p| (anchor(p), "erratum"),
+            );
+        let _ = write!(out, "<a href=\"#{target}\">{text}</a>");
         rest = after;
     }
     out.push_str(rest);
@@ -98,7 +104,7 @@ pub(super) fn errata_section(h: &mut String) {
     h.push_str("<section id=\"errata\">\n<h2>Errata of the note</h2>\n");
     let _ = writeln!(
         h,
-        "<p class=\"source\">The project's <code>{CITE}</code>, as compiled into this program.</p>"
+        "<p class=\"source\">The project's list of the note's errata, as compiled into this program.</p>"
     );
     let mut paragraph: Vec<&str> = Vec::new();
     let mut in_table = false;
@@ -166,13 +172,17 @@ mod tests {
         let text = esc("holds after correction (docs/errata.md (5): dL_C/dt = d(3mrv/2)/dt)");
         let html = link_citations(&text);
         assert!(
-            html.contains("<a href=\"#erratum-5\">docs/errata.md</a> (5)"),
+            html.contains("<a href=\"#erratum-5\">erratum</a> (5)"),
             "{html}"
         );
+        assert!(!html.contains("docs/"), "a path as link text: {html}");
         let fn4 = link_citations(&esc("docs/errata.md fn. 4: 7bK/6, not 7bK/3"));
         assert!(fn4.contains("href=\"#erratum-fn-4\""), "{fn4}");
         let general = link_citations("see docs/errata.md for all");
-        assert!(general.contains("href=\"#errata\""), "{general}");
+        assert!(
+            general.contains("<a href=\"#errata\">errata</a>"),
+            "{general}"
+        );
     }
 
     #[test]

@@ -195,7 +195,7 @@ fn figure_links(id: ClaimId, figures: &[Figure]) -> String {
     };
     format!(
         "<br><span class=\"figlinks\">{see}Measured values: row <code>{}</code> of \
-         <a href=\"data/{CLAIMS_CSV}\">data/{CLAIMS_CSV}</a>.</span>",
+         <a href=\"data/{CLAIMS_CSV}\">the claims' data (CSV)</a>.</span>",
         esc(id.as_str())
     )
 }
@@ -313,7 +313,7 @@ fn table_section(h: &mut String, index: usize, t: &super::Table) {
     );
     h.push_str("<div class=\"table-wrap\"><table class=\"parting\">\n<thead><tr>");
     for c in &t.header {
-        let _ = write!(h, "<th scope=\"col\">{}</th>", esc(c));
+        let _ = write!(h, "<th scope=\"col\">{}</th>", prose(c));
     }
     h.push_str("</tr></thead>\n<tbody>\n");
     for row in &t.rows {

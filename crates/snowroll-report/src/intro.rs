@@ -218,8 +218,8 @@ pub(super) fn intro_section(h: &mut String) {
         let _ = writeln!(
             h,
             "<tr><td>{}</td><td>{}</td><td>{}</td></tr>",
-            esc(sym),
-            esc(meaning),
+            prose(sym),
+            prose(meaning),
             esc(unit)
         );
     }

@@ -80,7 +80,7 @@ const TERMS: [Term; 5] = [
         marker: None,
     },
     Term {
-        name: "snow pick-up (W_model of eq. (4))",
+        name: "snow pick-up (eq. (4))",
         of: |l| l.model_j,
         style: Style::Dashed,
         marker: Some(Marker::Triangle),
@@ -136,7 +136,7 @@ pub(super) fn ledger_shares_figure(lab: &Lab) -> Result<Figure, ReportError> {
         .fold(0.0, f64::max);
     let file = ScenarioFile::from(*s);
     let caption = format!(
-        "{}The energy ledger of the log of eq. (4) from rest on the default slope with air drag (C_d = {DRAG_COEFFICIENT}, a bluff cylinder), rolling resistance (c_rr = {ROLLING_RESISTANCE}, soft snow) and compaction (e_c = {COMPACTION_ENERGY} J/kg), each term as a share of the potential energy released so far (docs/snowball-and-losses.md §3.3). \
+        "{}The energy ledger of the log of eq. (4) from rest on the default slope with air drag (C_d = {DRAG_COEFFICIENT}, a bluff cylinder), rolling resistance (c_rr = {ROLLING_RESISTANCE}, soft snow) and compaction (e_c = {COMPACTION_ENERGY} J/kg), each term as a share of the potential energy released so far (the project's notes on the snowball and the losses §3.3). \
          The losses were picked so that each one takes more than a few per cent at some time: compaction costs e_c per kilogram picked up while the energy released per kilogram grows like x, so it dominates at first ({:.0} % at {LEDGER_T_FIRST} s) and fades; rolling resistance takes a steady c_rr cot α ≈ {:.1} %; drag grows with v² ({:.1} % at {LEDGER_T_END} s); eq. (4)'s own W_model is the snow's inelastic pick-up (≈ Ṁ v², {:.0} % at the end), negative at first because eq. (4) does not pay for lifting the snow onto the log. \
          The shares add up to 1 at every time (circles): the balance made visible; their largest departure from 1 is {}, the ledger's residual. \
          The run stops at {LEDGER_T_END} s, where the log has rolled x = {:.0} m and grown to r = {:.2} m: still a log on a hill.",
@@ -320,7 +320,7 @@ fn speed_with_losses_figure(lab: &Lab, shape: Shape) -> Result<Figure, ReportErr
     let file = ScenarioFile::from(s);
     let caption = format!(
         "Speed of the {body}{extra} against time from rest on the default slope: without losses (solid and long-dashed) and with air drag (C_d = {DRAG_COEFFICIENT}, ρ_a = {AIR_DENSITY_DEFAULT} kg/m³; dashed and dotted), snowless and gathering snow by eq. (4) (torque about the centre). \
-         Without snow, drag brings the {body} to the closed-form terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) = ({} m/s)² (squares), where drag balances gravity's pull along the slope (docs/snowball-and-losses.md §2.2). \
+         Without snow, drag brings the {body} to the closed-form terminal velocity v_t² = M g sin α/(½ ρ_a C_d A) = ({} m/s)² (squares), where drag balances gravity's pull along the slope (the project's notes on the snowball and the losses §2.2). \
          With snow there is no terminal velocity: the mass grows faster than the frontal area ({ratio}), so drag per unit mass fades and the speed keeps growing, more slowly than without drag (v ∝ t^(1/3) once r is past a crossover of a few metres, §2.2). \
          Log-log axes: a constant acceleration is a line of slope 1. The log and the ball are drawn in two figures on the same axes.",
         super::notation::fixed(vt, 2),

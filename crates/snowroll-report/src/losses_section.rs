@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 
 use super::markup::{esc, prose};
-use super::{notation, ClaimId, ClaimResult, Report};
+use super::{ClaimId, ClaimResult, Report};
 
 /// Id of the section in the page.
 pub(super) const SECTION_ID: &str = "snowball-and-losses";
@@ -42,7 +42,7 @@ const RESULTS: [Item; 5] = [
     },
     Item {
         claim: ClaimId::EnergyLedgerBalances,
-        lead: "With drag, rolling resistance and compaction the energy is accounted for at every sample: the kinetic energy, the work of each loss and what the model's own equation destroys (the inelastic pick-up of the torque models) add up to the potential energy released. The library's own tests check the same sum on 2700 random runs (tests/losses.rs).",
+        lead: "With drag, rolling resistance and compaction the energy is accounted for at every sample: the kinetic energy, the work of each loss and what the model's own equation destroys (the inelastic pick-up of the torque models) add up to the potential energy released. The physics library's own tests check the same sum on 2700 random runs.",
     },
 ];
 
@@ -147,11 +147,11 @@ pub(super) fn markdown(md: &mut String, report: &Report) {
         let _ = writeln!(
             md,
             "* {} **{} {}** (`{}`): {}.{see}",
-            notation::prettify(r.lead),
+            crate::markdown::prose(r.lead),
             found.verdict.symbol(),
             found.verdict.label(),
             r.claim,
-            notation::prettify(&found.measured),
+            crate::markdown::prose(&found.measured),
         );
     }
 }

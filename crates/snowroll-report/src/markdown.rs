@@ -20,6 +20,17 @@ fn cell(s: &str) -> String {
     })
 }
 
+/// Prose outside a table: [`cell`]'s notation, `<sub>`/`<sup>` for a group
+/// with no Unicode form (`C<sub>d</sub>`, `α<sub>K</sub>`), so that no
+/// ASCII index stands beside the set ones.
+pub(super) fn prose(s: &str) -> String {
+    notation::prettify_html(s, |t| {
+        t.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+    })
+}
+
 /// The Markdown report.
 pub(super) fn render(report: &Report) -> String {
     let m = &report.metadata;
@@ -185,7 +196,7 @@ fn checks_section(md: &mut String, report: &Report) {
             md,
             "<details><summary><code>{id}</code>: {}</summary>\n\n\
              {}\n\nTolerances: {}\n\nMeasured: {}\n\n{}{see} Measured values: \
-             [data/{CLAIMS_CSV}](data/{CLAIMS_CSV}).\n\n</details>\n",
+             [the claims' data (CSV)](data/{CLAIMS_CSV}).\n\n</details>\n",
             cell(&headline(r)),
             cell(&method_text(c)),
             cell(&c.tolerances_text()),
@@ -203,7 +214,7 @@ fn tables_section(md: &mut String, report: &Report) {
             md,
             "\n## {}\n\n{}\n",
             t.title.replace('\n', " "),
-            notation::prettify(&t.caption)
+            prose(&t.caption)
         );
         let _ = writeln!(
             md,
@@ -232,8 +243,8 @@ fn animations_section(md: &mut String, report: &Report) {
         let _ = writeln!(
             md,
             "{} Open `report.html` to play it; its frames are in \
-             [`data/{name}.csv`](data/{name}.csv).",
-            notation::prettify(&anim.caption),
+             [its data (CSV)](data/{name}.csv).",
+            prose(&anim.caption),
             name = anim.name()
         );
     }
@@ -252,7 +263,7 @@ fn figures_section(md: &mut String, report: &Report) {
             md,
             "{} Files: [SVG](figures/{name}.svg), [PNG](figures/{name}.png), \
              [data](data/{name}.csv). {}",
-            notation::prettify(&f.caption),
+            prose(&f.caption),
             f.provenance(m).line()
         );
     }

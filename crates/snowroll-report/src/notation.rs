@@ -251,8 +251,9 @@ fn group_at(chars: &[char], i: usize, marks: bool) -> Option<(String, usize)> {
     None
 }
 
-/// The longest subscript written without braces: `I_C`, `x_cm`, `v_Loney`.
-const NAME_SUBSCRIPT_MAX: usize = 6;
+/// The longest subscript written without braces: `I_C`, `x_cm`, `v_Loney`,
+/// `E_released`.
+const NAME_SUBSCRIPT_MAX: usize = 8;
 
 /// `_C`, `_cm`, `_end` at `i` after a one-letter name (`I_C`, `v_end`, and
 /// `dI_C` for a derivative): the subscript in Unicode where every character
@@ -261,10 +262,18 @@ const NAME_SUBSCRIPT_MAX: usize = 6;
 /// underscore (`v_m_s`, `a_over_g`) is an identifier, left as it is; write
 /// identifiers in backticks.
 fn subscript_name_at(chars: &[char], i: usize, marks: bool) -> Option<(String, usize)> {
-    if chars[i] != '_' || i == 0 || !chars[i - 1].is_ascii_alphabetic() {
+    if chars[i] != '_' || i == 0 || !chars[i - 1].is_alphabetic() {
         return None;
     }
-    let starts_word = |j: usize| j == 0 || !is_word(chars[j - 1]);
+    // A name starts a word, or follows a number or a Greek letter of a
+    // product (`2πr_k`, `3m_n`); after an ASCII letter it is part of an
+    // identifier (`mass_kg`).
+    let starts_word = |j: usize| {
+        j == 0 || {
+            let c = chars[j - 1];
+            !is_word(c) || c.is_ascii_digit() || (c.is_alphabetic() && !c.is_ascii())
+        }
+    };
     let name_alone = starts_word(i - 1) || (i >= 2 && chars[i - 2] == 'd' && starts_word(i - 2));
     let len = chars[i + 1..]
         .iter()
@@ -424,6 +433,23 @@ mod tests {
             "run `--rtol 1e-10` then"
         );
         assert_eq!(prettify("3 turns, 2.5 m/s"), "3 turns, 2.5 m/s");
+    }
+
+    /// Issue 36, item 4: a name's subscript after a number or a Greek
+    /// letter of a product, and a Greek name's, are set like any other.
+    #[test]
+    fn subscripts_in_products_and_on_greek_names_are_set() {
+        assert_eq!(
+            prettify("one circumference 2πr_k"),
+            "one circumference 2πrₖ"
+        );
+        assert_eq!(prettify("3m_n v²/2, 2r_k²"), "3mₙ v²/2, 2rₖ²");
+        assert_eq!(prettify("ρ_a = 1.2 kg/m³"), "ρₐ = 1.2 kg/m³");
+        let html = |s: &str| prettify_html(s, |t| t.to_string());
+        assert_eq!(html("tan α_K"), "tan α<sub>K</sub>");
+        assert_eq!(html("E_released + K0"), "E<sub>released</sub> + K0");
+        // Identifiers stay: letters before the name, a second underscore.
+        assert_eq!(prettify("alpha_deg, snow_depth"), "alpha_deg, snow_depth");
     }
 
     #[test]

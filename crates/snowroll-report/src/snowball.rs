@@ -101,7 +101,7 @@ pub(super) fn snowball_figure(lab: &Lab, times: &[f64]) -> Result<Figure, Report
     Ok(Figure::new(
         chart,
         &format!(
-            "The snowball: a/(g sin α) against time for every circular model with --shape sphere (a uniform ball, I = (2/5) M r², picking up the layer over its diameter, so π r² = π r0² + b x as for the log), from rest. All start at the snowless ball's 5/7 and tend to their own terminal fractions ({}; docs/snowball-and-losses.md §1.3). torque-cm and loney are the closed form of the letter in The Physics Teacher 57, p. 436 (2019): from 5/7 to 1/6. The turn models take the log only.",
+            "The snowball: a/(g sin α) against time for every circular model with --shape sphere (a uniform ball, I = (2/5) M r², picking up the layer over its diameter, so π r² = π r0² + b x as for the log), from rest. All start at the snowless ball's 5/7 and tend to their own terminal fractions ({}; the project's notes on the snowball and the losses §1.3). torque-cm and loney are the closed form of the letter in The Physics Teacher 57, p. 436 (2019): from 5/7 to 1/6. The turn models take the log only.",
             fractions.join(", ")
         ),
     )

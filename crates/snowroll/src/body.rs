@@ -21,14 +21,17 @@ use crate::units::{Kilograms, Meters};
 #[serde(rename_all = "kebab-case")]
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Shape {
-    /// A uniform cylinder of length l (the note's log): I = ½ M r²,
-    /// M = πρl r², swath = l, so π r² = π r0² + b x (eq. (8)).
+    // `--help` shows these lines beside the flags' own, which write powers
+    // in ASCII (`kg/m^3`, `pi r^2`): so do these, not one of each
+    // (issue 36, item 4).
+    /// A uniform cylinder of length l (the note's log): I = M r^2/2,
+    /// M = pi rho l r^2, swath = l, so pi r^2 = pi r0^2 + b x (eq. (8)).
     #[default]
     Cylinder,
-    /// A uniform ball: I = (2/5) M r², M = (4/3)πρ r³, swath 2r by default
-    /// (again π r² = π r0² + b x), a fixed width w
-    /// ((4π/3)(r³ − r0³) = b w x), or the contact chord 2√(2rb − b²),
-    /// `docs/snowball-and-losses.md` §1.1.
+    /// A uniform ball: I = (2/5) M r^2, M = (4/3) pi rho r^3, swath 2r by
+    /// default (again pi r^2 = pi r0^2 + b x), a fixed width w
+    /// ((4 pi/3)(r^3 - r0^3) = b w x), or the contact chord
+    /// 2 sqrt(2 r b - b^2), `docs/snowball-and-losses.md` §1.1.
     Sphere,
 }
 

@@ -355,7 +355,7 @@ pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
     Ok(Figure::new(
         chart,
         &format!(
-            "What the turn-by-turn log (eq. (73)) does from rest within {MAP_TURNS} turns, one marker per run: it stalls in its first turn on gentle slopes (fn. 7), hops on steep ones (fn. 10) and rolls on between. The lines are the closed forms: the first-turn stall slope and the hop slope within the turns reached, tan α_K = (1 + ε c_C)/(½ − ε c_G) (`docs/contact-forces.md` §4.3), with its late-turn limit tan α = 2. Every simulated border lies within one grid cell of its line (claim {claim}).",
+            "What the turn-by-turn log (eq. (73)) does from rest within {MAP_TURNS} turns, one marker per run: it stalls in its first turn on gentle slopes (fn. 7), hops on steep ones (fn. 10) and rolls on between. The lines are the closed forms: the first-turn stall slope and the hop slope within the turns reached, tan α_K = (1 + ε c_C)/(½ − ε c_G) (the project's notes on contact forces §4.3), with its late-turn limit tan α = 2. Every simulated border lies within one grid cell of its line (claim {claim}).",
             claim = ClaimId::RegimeMapBorders
         ),
     )

@@ -50,7 +50,7 @@ pub(super) const TURN_STALL_EXACT: Criterion = Criterion {
 /// `fn7-stall-in-first-turn`: the simulated thresholds against the library's (shown by `snowroll models`).
 pub(super) const TURN_STALL_LIBRARY: Criterion = Criterion {
     quantity:
-        "relative |tan α* by bisection − tan α* of ModelKind::stall_threshold| for both turn models",
+        "relative |tan α* by bisection − tan α* of the library's closed-form stall slope| for both turn models",
     tolerance: Tolerance::Relative { value: 1e-6 },
     reason: "as above: bisection and stall-event resolution",
 };

@@ -3,13 +3,14 @@
 use std::fmt;
 use std::sync::OnceLock;
 
-use plotters::coord::ranged1d::{AsRangedCoord, Ranged, ValueFormatter};
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
+use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{colour_slots, PALETTE};
-use super::ticks::AxisTicks;
+use super::ticks::{log_ticks, AxisTicks};
 use super::{
     Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE, NO_DATA,
 };
@@ -149,9 +150,9 @@ impl Chart {
         let (xr, yr) = self.ranges();
         match (self.x.scale, self.y.scale) {
             (Scale::Linear, Scale::Linear) => self.draw_in(&plot, xr, yr, scale),
-            (Scale::Linear, Scale::Log) => self.draw_in(&plot, xr, yr.log_scale(), scale),
-            (Scale::Log, Scale::Linear) => self.draw_in(&plot, xr.log_scale(), yr, scale),
-            (Scale::Log, Scale::Log) => self.draw_in(&plot, xr.log_scale(), yr.log_scale(), scale),
+            (Scale::Linear, Scale::Log) => self.draw_in(&plot, xr, log_axis(yr), scale),
+            (Scale::Log, Scale::Linear) => self.draw_in(&plot, log_axis(xr), yr, scale),
+            (Scale::Log, Scale::Log) => self.draw_in(&plot, log_axis(xr), log_axis(yr), scale),
         }
     }
 
@@ -178,7 +179,7 @@ impl Chart {
         // Room for the widest y tick label and the axis title beside it.
         let label_font: TextStyle = font(18.0).into();
         let widest = yc
-            .key_points(TICKS)
+            .key_points(BoldPoints(TICKS))
             .iter()
             .filter_map(|&v| area.estimate_text_size(&yf.label(v), &label_font).ok())
             .map(|(w, _)| w)
@@ -316,11 +317,18 @@ pub(super) const TICKS: usize = 11;
 /// Height of the band of the title above plot and legend, px.
 const TITLE_HEIGHT: f64 = 40.0;
 
+/// A log axis over `r` labelled at [`log_ticks`]: every decade, and 2 and 5
+/// of each where a decade is wide, with light lines at the other multiples.
+pub(super) fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
+    let (bold, light) = log_ticks(r.start, r.end);
+    r.log_scale().with_key_points(bold).with_light_points(light)
+}
+
 /// The one format of the tick labels of `axis`, drawn by `coord`.
 pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
     let r = coord.range();
     AxisTicks::new(
-        &coord.key_points(TICKS),
+        &coord.key_points(BoldPoints(TICKS)),
         r.end - r.start,
         axis.scale == Scale::Log,
     )

@@ -41,7 +41,9 @@ impl AxisTicks {
     /// The format for an axis with tick values `ticks` spanning `span`
     /// (its drawn range), logarithmic when `log`.
     pub(crate) fn new(ticks: &[f64], span: f64, log: bool) -> Self {
-        let zero = ZERO_FRACTION * span.abs();
+        // A log axis holds no zero: 10⁻⁹ on an axis to 10⁶ is a decade,
+        // not round-off.
+        let zero = if log { 0.0 } else { ZERO_FRACTION * span.abs() };
         let nonzero: Vec<f64> = ticks
             .iter()
             .copied()
@@ -134,9 +136,114 @@ fn shortest(a: f64) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
+/// A log axis spanning at most this many decades is also labelled at 2 and
+/// 5 of each decade (the regime map's 0.5–80°: 0.5, 1, 2, 5, 10, 20, 50;
+/// turns 1–2000: 1, 2, 5, …, 1000, 2000), each decade then being at least
+/// a sixth of a figure's plot; a wider one at its decades only.
+const WIDE_DECADES: f64 = 4.0;
+
+/// Most decades a log axis labels; a wider axis labels every second (or
+/// third …) decade, so that labels such as `10⁻¹⁰` do not run together.
+const MOST_DECADES: usize = 12;
+
+/// The labelled ticks of a log axis drawn over `lo..hi` (both > 0): every
+/// decade inside, and 2 and 5 of each decade when the axis spans at most
+/// [`WIDE_DECADES`]; every integer multiple of a decade when fewer than two
+/// ticks would be labelled otherwise. The second vector holds the unlabelled
+/// minor ticks for light grid lines: the other multiples 2…9 of each decade
+/// on a narrow axis, the unlabelled decades on a wide one.
+pub(crate) fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+        return (Vec::new(), Vec::new());
+    }
+    let inside = |v: f64| v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12);
+    let multiples = |ms: &[u32]| -> Vec<f64> {
+        let (e0, e1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+        (e0..=e1)
+            .flat_map(|e| ms.iter().map(move |&m| f64::from(m) * 10_f64.powi(e)))
+            .filter(|&v| inside(v))
+            .collect()
+    };
+    let all = multiples(&[1, 2, 3, 4, 5, 6, 7, 8, 9]);
+    let mut bold = if (hi / lo).log10() <= WIDE_DECADES {
+        multiples(&[1, 2, 5])
+    } else {
+        // Every decade while their labels fit; beyond, every second or
+        // third (by exponent, so 10⁰ stays labelled), the others light.
+        let decades = multiples(&[1]);
+        let step = decades.len().div_ceil(MOST_DECADES).max(1) as i32;
+        decades
+            .into_iter()
+            .filter(|v| (v.log10().round() as i32).rem_euclid(step) == 0)
+            .collect()
+    };
+    if bold.len() < 2 {
+        bold.clone_from(&all);
+    }
+    // Light lines at the other multiples where a decade is wide; on a wide
+    // axis at the unlabelled decades only (eight lines a decade would be a
+    // grey wash).
+    let wide = (hi / lo).log10() > WIDE_DECADES;
+    let light = if wide { multiples(&[1]) } else { all }
+        .into_iter()
+        .filter(|v| !bold.iter().any(|b| (b - v).abs() <= 1e-9 * v))
+        .collect();
+    (bold, light)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_narrow_log_axis_is_labelled_at_1_2_5_of_each_decade() {
+        let (bold, light) = log_ticks(0.45, 90.0);
+        let f = AxisTicks::new(&bold, 90.0 - 0.45, true);
+        let labels: Vec<String> = bold.iter().map(|&v| f.label(v)).collect();
+        assert_eq!(labels, ["0.5", "1", "2", "5", "10", "20", "50"]);
+        assert!(light.iter().any(|&v| (v - 3.0).abs() < 1e-12));
+        assert!(!light.iter().any(|&v| (v - 2.0).abs() < 1e-12));
+    }
+
+    #[test]
+    fn a_wide_log_axis_is_labelled_at_every_decade() {
+        let (bold, _) = log_ticks(3e-7, 2.0);
+        assert_eq!(log_ticks(1.0, 2000.0).0.len(), 11, "1, 2, 5 … 1000, 2000");
+        assert_eq!(bold.len(), 7, "{bold:?}");
+        for (v, e) in bold.iter().zip(-6..=0) {
+            assert!((v / 10_f64.powi(e) - 1.0).abs() < 1e-12, "{v} vs 1e{e}");
+        }
+    }
+
+    #[test]
+    fn a_log_axis_of_many_decades_labels_every_second_and_no_zero() {
+        let (bold, light) = log_ticks(3e-14, 2e6);
+        let f = AxisTicks::new(&bold, 2e6, true);
+        let labels: Vec<String> = bold.iter().map(|&v| f.label(v)).collect();
+        assert_eq!(
+            labels,
+            [
+                "10⁻¹²",
+                "10⁻¹⁰",
+                "10⁻⁸",
+                "10⁻⁶",
+                "10⁻⁴",
+                "10⁻²",
+                "10⁰",
+                "10²",
+                "10⁴",
+                "10⁶"
+            ]
+        );
+        assert!(light.iter().any(|&v| (v / 1e-9 - 1.0).abs() < 1e-9));
+        assert!(!light.iter().any(|&v| (v / 2e-9 - 1.0).abs() < 1e-9));
+    }
+
+    #[test]
+    fn a_log_axis_inside_one_decade_gets_every_multiple() {
+        let (bold, _) = log_ticks(2.5, 4.5);
+        assert_eq!(bold, [3.0, 4.0]);
+    }
 
     /// Labels of `ticks` on a linear axis of span `span`.
     fn linear(ticks: &[f64], span: f64) -> Vec<String> {

@@ -5,7 +5,9 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::super::render::{axis_ticks, register_embedded_font, with_provenance_comment, FAMILY};
+use super::super::render::{
+    axis_ticks, log_axis, register_embedded_font, with_provenance_comment, FAMILY,
+};
 use super::super::{PlotError, Provenance, Scale};
 use super::RegimeMap;
 
@@ -57,9 +59,9 @@ impl RegimeMap {
             let (xr, yr) = self.ranges();
             match (self.x.scale, self.y.scale) {
                 (Scale::Linear, Scale::Linear) => self.draw_in(&main, xr, yr),
-                (Scale::Linear, Scale::Log) => self.draw_in(&main, xr, yr.log_scale()),
-                (Scale::Log, Scale::Linear) => self.draw_in(&main, xr.log_scale(), yr),
-                (Scale::Log, Scale::Log) => self.draw_in(&main, xr.log_scale(), yr.log_scale()),
+                (Scale::Linear, Scale::Log) => self.draw_in(&main, xr, log_axis(yr)),
+                (Scale::Log, Scale::Linear) => self.draw_in(&main, log_axis(xr), yr),
+                (Scale::Log, Scale::Log) => self.draw_in(&main, log_axis(xr), log_axis(yr)),
             }?;
             root.present().map_err(backend)?;
         }
