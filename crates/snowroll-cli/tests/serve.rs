@@ -489,12 +489,14 @@ fn many_clients_at_once_are_all_answered_alike() {
 fn a_slow_request_does_not_hold_up_the_others() {
     let server = Server::start();
     let addr = server.addr.clone();
-    // A turn-by-turn run over 10^6 s: minutes of work, ended at the
-    // server's limit (10 s) with 413.
+    // A turn-by-turn run over 10^8 s: about 4·10^8 turns, many minutes of
+    // work (10^6 s took 10.6 s in the test build, too close to the limit:
+    // on a quick moment it finished with 200), ended at the server's limit
+    // (10 s) with 413.
     let slow = std::thread::spawn(move || {
         request(
             &addr,
-            &get(&addr, "/api/simulate?model=turns&t_end=1e6&dt=1e5"),
+            &get(&addr, "/api/simulate?model=turns&t_end=1e8&dt=1e7"),
         )
     });
     std::thread::sleep(Duration::from_millis(300));
@@ -978,9 +980,9 @@ fn static_pages_stay_fast_while_runs_wait_in_turn() {
     let mut server = Server::start();
     let pid = server.child.id();
     let addr = server.addr.clone();
-    // 72 runs of 10 s each (ended at the limit): 4 run, 64 wait in turn, 4
+    // 72 runs of 10 s each (10^8 s of turns, minutes of work, ended at the limit): 4 run, 64 wait in turn, 4
     // are told at once to come back.
-    let slow = "/api/simulate?model=turns&t_end=1e6&dt=1e5";
+    let slow = "/api/simulate?model=turns&t_end=1e8&dt=1e7";
     let clients: Vec<_> = (0..72)
         .map(|_| {
             let addr = addr.clone();
