@@ -322,6 +322,18 @@ impl Param {
         })
     }
 
+    /// Sets the number `x` in `settings` with the row's own setter, without
+    /// [`Param::set`]'s reading of words (the sweep's grid, point by point).
+    ///
+    /// # Errors
+    /// [`ParamError::WrongKind`] when the parameter is not a number.
+    pub(crate) fn set_real(&self, settings: &mut Settings, x: f64) -> Result<(), ParamError> {
+        (self.set)(settings, Value::Real(x)).map_err(|WrongKind| ParamError::WrongKind {
+            key: self.key,
+            expected: self.kind_words(),
+        })
+    }
+
     /// Its default value (that of [`Settings::default`]).
     pub fn default_value(&self) -> Value {
         self.get(&Settings::default())

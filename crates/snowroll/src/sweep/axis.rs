@@ -116,7 +116,7 @@ impl Param {
     /// Never for an axis (a number is of its kind); [`ParamError`] from the
     /// table's setter otherwise.
     pub fn set(self, settings: &mut Settings, x: f64) -> Result<(), ParamError> {
-        self.spec().set(settings, Value::Real(x))
+        self.spec().set_real(settings, x)
     }
 
     /// Its value in `settings` (`None` for an optional one that is unset).

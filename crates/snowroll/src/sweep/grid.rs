@@ -11,7 +11,7 @@ use super::axis::{Axis, DecimalRange, GridError, Param};
 use crate::error::ParamError;
 use crate::models::{CollisionModel, ModelKind};
 use crate::params::Settings;
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{OnHop, Sampling, SimOptions};
 
 /// Most points of one grid. At about 200 bytes a row this is 200 GB of CSV
@@ -184,11 +184,12 @@ impl Grid {
             });
         }
         let mut s = Settings {
+            scenario: ScenarioFile::default(),
             options: SimOptions {
                 sampling: Sampling::Ends,
                 ..SimOptions::default()
             },
-            ..Settings::default()
+            per_turn: false,
         };
         let mut rest = i;
         for (axis, plan) in self.axes.iter().zip(&self.plans).rev() {
@@ -197,20 +198,19 @@ impl Grid {
                 .set(&mut s, axis.values.get_planned(plan.as_ref(), rest % n))?;
             rest /= n;
         }
-        let (file, mut options) = (s.scenario, s.options);
         let n_hop = self.choices.on_hop.len() as u64;
-        options.on_hop = self.choices.on_hop[(rest % n_hop) as usize];
+        s.options.on_hop = self.choices.on_hop[(rest % n_hop) as usize];
         rest /= n_hop;
         let n_collision = self.choices.collision.len() as u64;
-        options.collision = self.choices.collision[(rest % n_collision) as usize];
+        s.options.collision = self.choices.collision[(rest % n_collision) as usize];
         rest /= n_collision;
         let model = self.models[rest as usize];
-        options.validate()?;
+        s.options.validate()?;
         Ok(Point {
             index: i,
             model,
-            scenario: Scenario::new(file)?,
-            options,
+            scenario: Scenario::new(s.scenario)?,
+            options: s.options,
         })
     }
 }
@@ -450,7 +450,7 @@ mod tests {
             let p = g.point(i).unwrap();
             assert_eq!(p.index, i);
             assert_eq!(p.options.sampling, Sampling::Ends);
-            let f = crate::scenario::ScenarioFile::from(p.scenario);
+            let f = ScenarioFile::from(p.scenario);
             seen.push((p.model, f.alpha_deg.to_string(), f.snow_depth.to_string()));
         }
         let mut want = Vec::new();
