@@ -162,7 +162,7 @@ impl From<ParamError> for Stop {
 /// Bytes a sweep row holds until the call returns: the library's row and
 /// one float (or object pointer) per column made from it.
 fn sweep_row_bytes() -> u64 {
-    (std::mem::size_of::<SweepRow>() + 8 * 24) as u64
+    (std::mem::size_of::<SweepRow>() + 8 * SweepRow::COLUMNS.len()) as u64
 }
 
 /// The grid of a Python grid dict: `model`, the numeric axes and the two
