@@ -166,22 +166,18 @@ fn regression_7_6_valid_extremes_write_only_finite_numbers() {
 }
 
 /// serde_json writes NaN and infinity as `null`: the only nulls allowed
-/// are the options that were not set (`x_end`, `turns`, `mu`, `dt`, `times`)
+/// are the options that were not set (the parameters whose default is none
+/// in the table, e.g. `x_end`, `turns`, `mu`, `dt`, `times`; and `x_end_m`)
 /// and the friction ratio of a log off the ground (undefined where N <= 0).
 fn assert_no_null_number(v: &serde_json::Value, path: &str, args: &[&str]) {
     match v {
         serde_json::Value::Null => assert!(
-            [
-                "x_end",
-                "x_end_m",
-                "turns",
-                "mu",
-                "dt",
-                "times",
-                "friction_ratio"
-            ]
-            .iter()
-            .any(|k| path.ends_with(&format!(".{k}"))),
+            snowroll::PARAMS
+                .iter()
+                .filter(|p| p.default_value() == snowroll::Value::None)
+                .map(|p| p.key)
+                .chain(["x_end_m", "friction_ratio"])
+                .any(|k| path.ends_with(&format!(".{k}"))),
             "{args:?}: null at {path}"
         ),
         serde_json::Value::Array(items) => {

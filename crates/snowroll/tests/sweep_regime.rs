@@ -38,9 +38,12 @@ fn fn7_circular_model_starts_only_above_its_stall_slope() {
     let got = outcomes(
         ModelKind::Energy,
         vec![
-            axis(Param::AlphaDeg, &[star - MARGIN_DEG, star + MARGIN_DEG]),
-            axis(Param::SnowDepth, &[b]),
-            axis(Param::TEnd, &[5.0]),
+            axis(
+                Param::named("alpha_deg"),
+                &[star - MARGIN_DEG, star + MARGIN_DEG],
+            ),
+            axis(Param::named("snow_depth"), &[b]),
+            axis(Param::named("t_end"), &[5.0]),
         ],
         Choices::default(),
     );
@@ -58,9 +61,12 @@ fn fn7_turn_model_stalls_in_turn_0_below_its_threshold() {
     let got = outcomes(
         ModelKind::Turns,
         vec![
-            axis(Param::AlphaDeg, &[star - MARGIN_DEG, star + MARGIN_DEG]),
-            axis(Param::SnowDepth, &[b]),
-            axis(Param::TEnd, &[5.0]),
+            axis(
+                Param::named("alpha_deg"),
+                &[star - MARGIN_DEG, star + MARGIN_DEG],
+            ),
+            axis(Param::named("snow_depth"), &[b]),
+            axis(Param::named("t_end"), &[5.0]),
         ],
         Choices::default(),
     );
@@ -75,8 +81,8 @@ fn fn10_turn_model_hops_at_80_degrees_in_turn_1_unless_told_to_continue() {
     let grid = Grid::new(
         vec![ModelKind::Turns],
         vec![
-            axis(Param::AlphaDeg, &[30.0, 80.0]),
-            axis(Param::TEnd, &[3.0]),
+            axis(Param::named("alpha_deg"), &[30.0, 80.0]),
+            axis(Param::named("t_end"), &[3.0]),
         ],
     )
     .unwrap()
@@ -110,8 +116,8 @@ fn slip_of_the_snowless_log_at_mu_tan_alpha_over_3() {
     let got = outcomes(
         ModelKind::Snowless,
         vec![
-            axis(Param::Mu, &[0.95 * mu, 1.05 * mu]),
-            axis(Param::TEnd, &[5.0]),
+            axis(Param::named("mu"), &[0.95 * mu, 1.05 * mu]),
+            axis(Param::named("t_end"), &[5.0]),
         ],
         Choices::default(),
     );
@@ -122,7 +128,7 @@ fn slip_of_the_snowless_log_at_mu_tan_alpha_over_3() {
 fn settings_axes_follow_the_model_in_grid_order() {
     let grid = Grid::new(
         vec![ModelKind::Turns],
-        vec![axis(Param::AlphaDeg, &[20.0, 40.0])],
+        vec![axis(Param::named("alpha_deg"), &[20.0, 40.0])],
     )
     .unwrap()
     .with_choices(Choices {

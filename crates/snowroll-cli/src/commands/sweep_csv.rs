@@ -183,9 +183,9 @@ mod tests {
         let grid = Grid::new(
             ModelKind::ALL.to_vec(),
             vec![
-                axis(Param::AlphaDeg, "1,30,80"),
-                axis(Param::V0, "0,150"),
-                axis(Param::TEnd, "2"),
+                axis(Param::named("alpha_deg"), "1,30,80"),
+                axis(Param::named("v0"), "0,150"),
+                axis(Param::named("t_end"), "2"),
             ],
         )
         .unwrap();

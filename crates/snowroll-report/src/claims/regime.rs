@@ -156,12 +156,12 @@ pub(super) fn map_rows(lab: &Lab) -> Result<MapRows, SimError> {
     let grid = Grid::new(
         vec![ModelKind::Turns],
         vec![
-            list(Param::AlphaDeg, map_alphas()),
-            list(Param::SnowDepth, map_depths(base.r0)),
-            list(Param::R0, vec![base.r0]),
-            list(Param::G, vec![base.g]),
-            list(Param::V0, vec![0.0]),
-            list(Param::TEnd, vec![1e4]),
+            list(const { Param::named("alpha_deg") }, map_alphas()),
+            list(const { Param::named("snow_depth") }, map_depths(base.r0)),
+            list(const { Param::named("r0") }, vec![base.r0]),
+            list(const { Param::named("g") }, vec![base.g]),
+            list(const { Param::named("v0") }, vec![0.0]),
+            list(const { Param::named("t_end") }, vec![1e4]),
         ],
     )
     .map_err(grid_err)?;
@@ -341,8 +341,8 @@ pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
     let map = RegimeMap::from_rows(
         grid,
         rows,
-        Param::AlphaDeg,
-        Param::SnowDepth,
+        const { Param::named("alpha_deg") },
+        const { Param::named("snow_depth") },
         ColorBy::Outcome,
     )
     .map_err(|e| PlotError::Backend {

@@ -33,6 +33,7 @@ use crate::trajectory::{CollisionModel, OnHop, SimOptions};
 pub use given::Given;
 pub use sampling::{RecordedSampling, UnknownSampling};
 pub use table::PARAMS;
+pub(crate) use table::TABLE;
 pub use value::{RealOrWord, Value, WrongKind};
 
 /// The kind of value a parameter takes.
@@ -213,6 +214,9 @@ pub struct Param {
     /// An axis of `snowroll sweep`: a value, a list or a range of numbers,
     /// or a list of words; a column of its rows ([`crate::sweep::SweepRow`]).
     pub sweep: bool,
+    /// The label and unit of its axis on a plot (a regime map), for a
+    /// numeric sweep parameter; empty for the others.
+    pub plot: (&'static str, &'static str),
     get: fn(&Settings) -> Value,
     set: fn(&mut Settings, Value) -> Result<(), WrongKind>,
 }
@@ -313,6 +317,18 @@ impl Param {
             (_, v) => v,
         };
         (self.set)(settings, value).map_err(|WrongKind| ParamError::WrongKind {
+            key: self.key,
+            expected: self.kind_words(),
+        })
+    }
+
+    /// Sets the number `x` in `settings` with the row's own setter, without
+    /// [`Param::set`]'s reading of words (the sweep's grid, point by point).
+    ///
+    /// # Errors
+    /// [`ParamError::WrongKind`] when the parameter is not a number.
+    pub(crate) fn set_real(&self, settings: &mut Settings, x: f64) -> Result<(), ParamError> {
+        (self.set)(settings, Value::Real(x)).map_err(|WrongKind| ParamError::WrongKind {
             key: self.key,
             expected: self.kind_words(),
         })

@@ -27,6 +27,7 @@ const BASE: Param = Param {
     csv: (Section::Head, Presence::Always),
     exponent: false,
     sweep: false,
+    plot: ("", ""),
     get: |_| Value::None,
     set: |_, _| Err(WrongKind),
 };
@@ -56,10 +57,15 @@ fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Resul
 }
 
 /// Every parameter. See [`Param`] for the meaning of each field.
-pub static PARAMS: [Param; 28] = [
+pub static PARAMS: [Param; 28] = TABLE;
+
+/// [`PARAMS`] as a constant, for what is computed from it at compile time
+/// (the sweep's axes, [`crate::sweep::Param::ALL`]).
+pub(crate) const TABLE: [Param; 28] = [
     Param {
         key: "alpha_deg",
         sweep: true,
+        plot: ("slope angle α", "deg"),
         aliases: &["slope_deg"],
         unit: "deg",
         value_name: "DEG",
@@ -72,6 +78,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "snow_depth",
         sweep: true,
+        plot: ("snow depth b", "m"),
         aliases: &["snow_depth_m"],
         unit: "m",
         value_name: "M",
@@ -84,6 +91,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "r0",
         sweep: true,
+        plot: ("initial radius r0", "m"),
         aliases: &["r0_m"],
         unit: "m",
         value_name: "M",
@@ -96,6 +104,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "g",
         sweep: true,
+        plot: ("gravitational acceleration g", "m/s²"),
         aliases: &["g_m_s2"],
         unit: "m/s^2",
         value_name: "M/S^2",
@@ -108,6 +117,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "density",
         sweep: true,
+        plot: ("density ρ", "kg/m³"),
         aliases: &["density_kg_m3"],
         unit: "kg/m^3",
         value_name: "KG/M^3",
@@ -120,6 +130,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "length",
         sweep: true,
+        plot: ("length l", "m"),
         aliases: &["length_m"],
         unit: "m",
         value_name: "M",
@@ -132,6 +143,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "v0",
         sweep: true,
+        plot: ("initial speed v0", "m/s"),
         aliases: &["v0_m_s"],
         unit: "m/s",
         value_name: "M/S",
@@ -185,6 +197,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "t_end",
         sweep: true,
+        plot: ("end time", "s"),
         aliases: &["t_end_s"],
         unit: "s",
         value_name: "S",
@@ -197,6 +210,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "x_end",
         sweep: true,
+        plot: ("end distance", "m"),
         aliases: &["x_end_m"],
         unit: "m",
         value_name: "M",
@@ -229,6 +243,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "rtol",
         sweep: true,
+        plot: ("relative tolerance", "1"),
         value_name: "R",
         range: "1e-15 <= rtol < 1",
         help: "Relative tolerance of the integrator (1e-15 <= rtol < 1)",
@@ -240,6 +255,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "atol",
         sweep: true,
+        plot: ("absolute tolerance", "1"),
         value_name: "A",
         unit: "m, m/s",
         range: "atol >= 1e-30",
@@ -348,6 +364,7 @@ pub static PARAMS: [Param; 28] = [
     Param {
         key: "mu",
         sweep: true,
+        plot: ("friction coefficient μ", "1"),
         value_name: "MU",
         kind: Kind::OptionalReal,
         range: "0 < mu < infinity",

@@ -8,77 +8,129 @@ use thiserror::Error;
 
 use crate::error::ParamError;
 use crate::number::{format_number, READABLE_DIGITS};
+use crate::params::{Kind, Settings, Value, PARAMS, TABLE};
 
-/// A parameter that a sweep can vary. The names are the command line's
-/// (`--alpha-deg`) in snake case (`alpha_deg`), as in config files.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Param {
-    /// Slope angle α, degrees, 0 < α < 90.
-    AlphaDeg,
-    /// Snow depth b, m, b ≥ 0.
-    SnowDepth,
-    /// Initial radius r0, m, r0 > 0.
-    R0,
-    /// Gravitational acceleration g, m/s², g > 0.
-    G,
-    /// Density ρ, kg/m³, ρ > 0.
-    Density,
-    /// Length l of the log, m, l > 0.
-    Length,
-    /// Initial speed v0, m/s, v0 ≥ 0.
-    V0,
-    /// End time, s, t_end > 0.
-    TEnd,
-    /// End distance, m, x_end > 0 (none when not swept).
-    XEnd,
-    /// Relative tolerance of the integrator.
-    Rtol,
-    /// Absolute tolerance of the integrator.
-    Atol,
-    /// Coefficient of static friction μ, μ > 0: the run stops with `slip`
-    /// where |F| reaches μ N (none, no slip check, when not swept).
-    Mu,
+/// A parameter that a sweep can vary: a row of the parameter table
+/// ([`PARAMS`]) that a sweep varies (`sweep: true`) and that is a number
+/// (kind real or optional real). The axes, their order, keys, checks and
+/// setters, and the sweep rows' columns all follow from the table: a new
+/// numeric sweep parameter is a new row there and nothing here.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Param(
+    /// Its row's place in [`PARAMS`] (the grid's order is the table's).
+    u8,
+);
+
+/// Whether a row of the table is an axis of a sweep.
+const fn is_axis(p: &crate::params::Param) -> bool {
+    p.sweep && matches!(p.kind, Kind::Real | Kind::OptionalReal)
+}
+
+/// How many rows of the table are axes.
+const AXES: usize = {
+    let mut n = 0;
+    let mut i = 0;
+    while i < TABLE.len() {
+        if is_axis(&TABLE[i]) {
+            n += 1;
+        }
+        i += 1;
+    }
+    n
+};
+
+/// Whether two keys are the same text (a `const` comparison).
+const fn same_key(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
 }
 
 impl Param {
-    /// Every parameter, in grid order (the last varies fastest).
-    pub const ALL: [Param; 12] = [
-        Param::AlphaDeg,
-        Param::SnowDepth,
-        Param::R0,
-        Param::G,
-        Param::Density,
-        Param::Length,
-        Param::V0,
-        Param::TEnd,
-        Param::XEnd,
-        Param::Rtol,
-        Param::Atol,
-        Param::Mu,
-    ];
+    /// Every parameter, in grid order (the last varies fastest): the
+    /// table's numeric sweep rows, in the table's order.
+    pub const ALL: [Param; AXES] = {
+        let mut all = [Param(0); AXES];
+        let (mut n, mut i) = (0, 0);
+        while i < TABLE.len() {
+            if is_axis(&TABLE[i]) {
+                all[n] = Param(i as u8);
+                n += 1;
+            }
+            i += 1;
+        }
+        all
+    };
+
+    /// The axis of `key`, for a key known when the program is written:
+    /// use it in a `const` (`const ALPHA: Param = Param::named("alpha_deg")`)
+    /// so that a key that is not an axis fails to compile.
+    ///
+    /// # Panics
+    /// When `key` is not the key of an axis: in a `const`, which is where
+    /// the library and the report call it, that is a build error, never a
+    /// panic of a run (tests call it directly too).
+    #[allow(
+        clippy::panic,
+        reason = "called in `const` items and blocks: a wrong key fails the build"
+    )]
+    pub const fn named(key: &str) -> Param {
+        let mut k = 0;
+        while k < Param::ALL.len() {
+            if same_key(TABLE[Param::ALL[k].0 as usize].key, key) {
+                return Param::ALL[k];
+            }
+            k += 1;
+        }
+        panic!("not a numeric sweep parameter of the table")
+    }
+
+    /// Its row of the parameter table.
+    pub fn spec(self) -> &'static crate::params::Param {
+        &PARAMS[usize::from(self.0)]
+    }
 
     /// The snake-case key (config files, CSV columns, metadata).
     pub fn key(self) -> &'static str {
-        match self {
-            Param::AlphaDeg => "alpha_deg",
-            Param::SnowDepth => "snow_depth",
-            Param::R0 => "r0",
-            Param::G => "g",
-            Param::Density => "density",
-            Param::Length => "length",
-            Param::V0 => "v0",
-            Param::TEnd => "t_end",
-            Param::XEnd => "x_end",
-            Param::Rtol => "rtol",
-            Param::Atol => "atol",
-            Param::Mu => "mu",
-        }
+        self.spec().key
     }
 
     /// The parameter of a snake-case key or a kebab-case flag name.
     pub fn from_key(key: &str) -> Option<Param> {
         let key = key.replace('-', "_");
         Param::ALL.into_iter().find(|p| p.key() == key)
+    }
+
+    /// Sets it to `x` in `settings`, with the table's setter.
+    ///
+    /// # Errors
+    /// Never for an axis (a number is of its kind); [`ParamError`] from the
+    /// table's setter otherwise.
+    pub fn set(self, settings: &mut Settings, x: f64) -> Result<(), ParamError> {
+        self.spec().set_real(settings, x)
+    }
+
+    /// Its value in `settings` (`None` for an optional one that is unset).
+    pub fn get(self, settings: &Settings) -> Option<f64> {
+        match self.spec().get(settings) {
+            Value::Real(x) => Some(x),
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Debug for Param {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Param({})", self.key())
     }
 }
 

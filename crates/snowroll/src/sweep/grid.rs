@@ -9,8 +9,8 @@
 
 use super::axis::{Axis, DecimalRange, GridError, Param};
 use crate::error::ParamError;
-use crate::integrate::Tolerances;
 use crate::models::{CollisionModel, ModelKind};
+use crate::params::Settings;
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{OnHop, Sampling, SimOptions};
 
@@ -183,55 +183,35 @@ impl Grid {
                 expected: "an index below the number of points",
             });
         }
-        let mut file = ScenarioFile::default();
-        let mut options = SimOptions {
-            sampling: Sampling::Ends,
-            ..SimOptions::default()
+        let mut s = Settings {
+            scenario: ScenarioFile::default(),
+            options: SimOptions {
+                sampling: Sampling::Ends,
+                ..SimOptions::default()
+            },
+            per_turn: false,
         };
         let mut rest = i;
         for (axis, plan) in self.axes.iter().zip(&self.plans).rev() {
             let n = axis.values.len();
-            set(
-                &mut file,
-                &mut options,
-                axis.param,
-                axis.values.get_planned(plan.as_ref(), rest % n),
-            );
+            axis.param
+                .set(&mut s, axis.values.get_planned(plan.as_ref(), rest % n))?;
             rest /= n;
         }
         let n_hop = self.choices.on_hop.len() as u64;
-        options.on_hop = self.choices.on_hop[(rest % n_hop) as usize];
+        s.options.on_hop = self.choices.on_hop[(rest % n_hop) as usize];
         rest /= n_hop;
         let n_collision = self.choices.collision.len() as u64;
-        options.collision = self.choices.collision[(rest % n_collision) as usize];
+        s.options.collision = self.choices.collision[(rest % n_collision) as usize];
         rest /= n_collision;
         let model = self.models[rest as usize];
-        options.validate()?;
+        s.options.validate()?;
         Ok(Point {
             index: i,
             model,
-            scenario: Scenario::new(file)?,
-            options,
+            scenario: Scenario::new(s.scenario)?,
+            options: s.options,
         })
-    }
-}
-
-/// Sets one parameter of a point.
-fn set(file: &mut ScenarioFile, options: &mut SimOptions, param: Param, x: f64) {
-    let tol: &mut Tolerances = &mut options.tolerances;
-    match param {
-        Param::AlphaDeg => file.alpha_deg = x,
-        Param::SnowDepth => file.snow_depth = x,
-        Param::R0 => file.r0 = x,
-        Param::G => file.g = x,
-        Param::Density => file.density = x,
-        Param::Length => file.length = x,
-        Param::V0 => file.v0 = x,
-        Param::TEnd => options.t_end = x,
-        Param::XEnd => options.x_end = Some(x),
-        Param::Rtol => tol.rtol = x,
-        Param::Atol => tol.atol = x,
-        Param::Mu => options.mu = Some(x),
     }
 }
 
@@ -274,11 +254,10 @@ impl Choices {
 /// Checks one value of `param` with the library's own checks: the default
 /// scenario and options with that value put in.
 fn check_value(param: Param, x: f64) -> Result<(), ParamError> {
-    let mut file = ScenarioFile::default();
-    let mut options = SimOptions::default();
-    set(&mut file, &mut options, param, x);
-    Scenario::new(file)?;
-    options.validate()
+    let mut s = Settings::default();
+    param.set(&mut s, x)?;
+    Scenario::new(s.scenario)?;
+    s.options.validate()
 }
 
 #[cfg(test)]
@@ -302,9 +281,12 @@ mod tests {
         assert_eq!(axes, table);
         for p in Param::ALL {
             let mut s = Settings::default();
-            set(&mut s.scenario, &mut s.options, p, 0.375);
+            p.set(&mut s, 0.375).unwrap();
             let spec = crate::params::Param::of_key(p.key()).unwrap();
             assert_eq!(spec.get(&s), Value::Real(0.375), "{}", p.key());
+            assert_eq!(p.get(&s), Some(0.375), "{}", p.key());
+            assert!(!p.spec().plot.0.is_empty(), "{}: no plot label", p.key());
+            assert_eq!(Param::named(p.key()), p);
         }
         // The words a sweep lists: the table's choice parameters.
         let choices: Vec<&str> = PARAMS
@@ -372,7 +354,7 @@ mod tests {
     #[test]
     fn grid_checks_values_duplicates_and_size() {
         let m = vec![ModelKind::TorqueCm];
-        let e = Grid::new(m.clone(), vec![axis(Param::AlphaDeg, "10:95:5")]).unwrap_err();
+        let e = Grid::new(m.clone(), vec![axis(Param::named("alpha_deg"), "10:95:5")]).unwrap_err();
         assert!(
             e.to_string().contains("= 95: expected 0 < alpha_deg < 90"),
             "{e}"
@@ -380,28 +362,35 @@ mod tests {
         // The message is whole without its chain, and the chain adds nothing:
         // a printer of the chain shows it once.
         assert!(std::error::Error::source(&e).is_none(), "{e:?}");
-        let e = Grid::new(m.clone(), vec![axis(Param::SnowDepth, "0.1,-0.1")]).unwrap_err();
+        let e = Grid::new(
+            m.clone(),
+            vec![axis(Param::named("snow_depth"), "0.1,-0.1")],
+        )
+        .unwrap_err();
         assert_eq!(
             e.to_string(),
             "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 m"
         );
         // A bad value is found before the missing model.
-        let e = Grid::new(vec![], vec![axis(Param::AlphaDeg, "5:95:3")]).unwrap_err();
+        let e = Grid::new(vec![], vec![axis(Param::named("alpha_deg"), "5:95:3")]).unwrap_err();
         assert!(
             matches!(
                 e,
                 GridError::Value {
-                    param: Param::AlphaDeg,
+                    param,
                     ..
-                }
+                } if param == Param::named("alpha_deg")
             ),
             "{e:?}"
         );
-        let e = Grid::new(m.clone(), vec![axis(Param::Rtol, "1e-20")]).unwrap_err();
+        let e = Grid::new(m.clone(), vec![axis(Param::named("rtol"), "1e-20")]).unwrap_err();
         assert!(e.to_string().contains("rtol"), "{e}");
         let e = Grid::new(
             m.clone(),
-            vec![axis(Param::R0, "0.1"), axis(Param::R0, "0.2")],
+            vec![
+                axis(Param::named("r0"), "0.1"),
+                axis(Param::named("r0"), "0.2"),
+            ],
         )
         .unwrap_err();
         assert_eq!(e.to_string(), "r0 is given twice");
@@ -409,8 +398,8 @@ mod tests {
         let e = Grid::new(
             m.clone(),
             vec![
-                axis(Param::AlphaDeg, "10:80:100000"),
-                axis(Param::SnowDepth, "0:1:100000"),
+                axis(Param::named("alpha_deg"), "10:80:100000"),
+                axis(Param::named("snow_depth"), "0:1:100000"),
             ],
         )
         .unwrap_err();
@@ -424,8 +413,8 @@ mod tests {
         let e = Grid::new(
             m.clone(),
             vec![
-                axis(Param::AlphaDeg, "10:80:1000000000000"),
-                axis(Param::SnowDepth, "0:1:1000000000000"),
+                axis(Param::named("alpha_deg"), "10:80:1000000000000"),
+                axis(Param::named("snow_depth"), "0:1:1000000000000"),
             ],
         )
         .unwrap_err()
@@ -440,7 +429,7 @@ mod tests {
             "1.2345e18"
         );
         // Exactly at the limit is allowed (nothing is expanded).
-        let g = Grid::new(m, vec![axis(Param::AlphaDeg, "10:80:1000000000")]).unwrap();
+        let g = Grid::new(m, vec![axis(Param::named("alpha_deg"), "10:80:1000000000")]).unwrap();
         assert_eq!(g.len(), MAX_GRID_POINTS);
     }
 
@@ -450,8 +439,8 @@ mod tests {
             vec![ModelKind::TorqueCm, ModelKind::Energy],
             // Given out of order: the grid orders them.
             vec![
-                axis(Param::SnowDepth, "0.001,0.01,0.1"),
-                axis(Param::AlphaDeg, "20,30"),
+                axis(Param::named("snow_depth"), "0.001,0.01,0.1"),
+                axis(Param::named("alpha_deg"), "20,30"),
             ],
         )
         .unwrap();

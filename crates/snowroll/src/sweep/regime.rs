@@ -26,6 +26,7 @@ use super::axis::{Param, Values};
 use super::grid::{Grid, Point};
 use super::row::SweepRow;
 use crate::models::{CollisionModel, ModelKind};
+use crate::params::Settings;
 use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::StopReason;
 
@@ -166,6 +167,12 @@ fn value_range(values: &Values) -> (f64, f64) {
         })
 }
 
+/// The slope angle's axis, one of every map that has borders.
+const ALPHA: Param = Param::named("alpha_deg");
+
+/// The friction coefficient's axis: its border is the slip border.
+const MU: Param = Param::named("mu");
+
 /// The plane of a map: α on one axis, `other` on the other, which the
 /// borders sample at [`CURVE_POINTS`] values from `lo` to `hi` (evenly in
 /// its logarithm when it spans two decades or more).
@@ -181,8 +188,8 @@ impl Plane {
     /// The plane of `x` and `y`, if one is α and the other a swept axis.
     fn of(grid: &Grid, x: Param, y: Param) -> Option<Plane> {
         let (other, alpha_is_x) = match (x, y) {
-            (Param::AlphaDeg, p) => (p, true),
-            (p, Param::AlphaDeg) => (p, false),
+            (ALPHA, p) => (p, true),
+            (p, ALPHA) => (p, false),
             _ => return None,
         };
         let other_axis = grid.axes().iter().find(|a| a.param == other)?;
@@ -239,17 +246,14 @@ impl ModelBorders<'_> {
     /// The base scenario with the other axis at `v` (unchanged for an axis
     /// of the run rather than of the scenario); `None` if it is invalid.
     fn with(&self, v: f64) -> Option<Scenario> {
-        let mut f = ScenarioFile::from(self.base.scenario);
-        match self.plane.other {
-            Param::SnowDepth => f.snow_depth = v,
-            Param::R0 => f.r0 = v,
-            Param::G => f.g = v,
-            Param::Density => f.density = v,
-            Param::Length => f.length = v,
-            Param::V0 => f.v0 = v,
-            _ => {}
+        let mut s = Settings {
+            scenario: ScenarioFile::from(self.base.scenario),
+            ..Settings::default()
+        };
+        if self.plane.other != ALPHA {
+            self.plane.other.set(&mut s, v).ok()?;
         }
-        Scenario::new(f).ok()
+        Scenario::new(s.scenario).ok()
     }
 
     /// fn. 7: the stall slope along the other axis.
@@ -320,7 +324,7 @@ impl ModelBorders<'_> {
 
     /// Slip: μ as a function of α over the α axis (§5).
     fn slip(&self, grid: &Grid) -> Option<Boundary> {
-        let alpha_axis = grid.axes().iter().find(|a| a.param == Param::AlphaDeg)?;
+        let alpha_axis = grid.axes().iter().find(|a| a.param == ALPHA)?;
         let (a_lo, a_hi) = value_range(&alpha_axis.values);
         let points: Vec<(f64, f64)> = (0..CURVE_POINTS)
             .filter_map(|i| {
@@ -365,10 +369,10 @@ pub fn boundaries(grid: &Grid, rows: &[SweepRow], x: Param, y: Param) -> Vec<Bou
             several: grid.models().len() > 1,
         };
         out.extend(borders.stall());
-        if !model.is_circular() && plane.other != Param::Mu {
+        if !model.is_circular() && plane.other != MU {
             out.extend(borders.hop(rows));
         }
-        if plane.other == Param::Mu {
+        if plane.other == MU {
             out.extend(borders.slip(grid));
         }
     }

@@ -171,19 +171,33 @@ impl SweepRow {
     /// columns go through this, axis by axis in [`Param::ALL`] order, which
     /// is the columns' order.
     pub fn param_value(&self, p: Param) -> Option<f64> {
+        // Each axis is a field of the row; the table names them.
+        const ALPHA_DEG: Param = Param::named("alpha_deg");
+        const SNOW_DEPTH: Param = Param::named("snow_depth");
+        const R0: Param = Param::named("r0");
+        const G: Param = Param::named("g");
+        const DENSITY: Param = Param::named("density");
+        const LENGTH: Param = Param::named("length");
+        const V0: Param = Param::named("v0");
+        const T_END: Param = Param::named("t_end");
+        const X_END: Param = Param::named("x_end");
+        const RTOL: Param = Param::named("rtol");
+        const ATOL: Param = Param::named("atol");
+        const MU: Param = Param::named("mu");
         match p {
-            Param::AlphaDeg => Some(self.alpha_deg),
-            Param::SnowDepth => Some(self.snow_depth),
-            Param::R0 => Some(self.r0),
-            Param::G => Some(self.g),
-            Param::Density => Some(self.density),
-            Param::Length => Some(self.length),
-            Param::V0 => Some(self.v0),
-            Param::TEnd => Some(self.t_end),
-            Param::XEnd => self.x_end,
-            Param::Rtol => Some(self.rtol),
-            Param::Atol => Some(self.atol),
-            Param::Mu => self.mu,
+            ALPHA_DEG => Some(self.alpha_deg),
+            SNOW_DEPTH => Some(self.snow_depth),
+            R0 => Some(self.r0),
+            G => Some(self.g),
+            DENSITY => Some(self.density),
+            LENGTH => Some(self.length),
+            V0 => Some(self.v0),
+            T_END => Some(self.t_end),
+            X_END => self.x_end,
+            RTOL => Some(self.rtol),
+            ATOL => Some(self.atol),
+            MU => self.mu,
+            _ => None,
         }
     }
 

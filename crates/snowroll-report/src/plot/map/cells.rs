@@ -35,23 +35,11 @@ const SCALE: [(u8, u8, u8); 7] = [
     (253, 231, 37),
 ];
 
-/// The axis of a parameter: label and unit as in `--help`, logarithmic when
+/// The axis of a parameter: label and unit of its row in the parameter
+/// table (`plot`), logarithmic when
 /// its values are positive and span two decades or more.
 pub(super) fn param_axis(p: Param, values: &[f64]) -> Axis {
-    let (label, unit) = match p {
-        Param::AlphaDeg => ("slope angle α", "deg"),
-        Param::SnowDepth => ("snow depth b", "m"),
-        Param::R0 => ("initial radius r0", "m"),
-        Param::G => ("gravitational acceleration g", "m/s²"),
-        Param::Density => ("density ρ", "kg/m³"),
-        Param::Length => ("length l", "m"),
-        Param::V0 => ("initial speed v0", "m/s"),
-        Param::TEnd => ("end time", "s"),
-        Param::XEnd => ("end distance", "m"),
-        Param::Rtol => ("relative tolerance", "1"),
-        Param::Atol => ("absolute tolerance", "1"),
-        Param::Mu => ("friction coefficient μ", "1"),
-    };
+    let (label, unit) = p.spec().plot;
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let axis = if lo > 0.0 && hi / lo >= 100.0 {
