@@ -20,6 +20,7 @@ mod error;
 mod finite;
 mod ledger;
 pub mod notes;
+pub mod page_table;
 mod row;
 mod trajectory;
 mod turns;

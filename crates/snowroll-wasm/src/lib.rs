@@ -12,11 +12,11 @@
 use std::collections::BTreeMap;
 
 use snowroll::models::{TURNS_DEFAULT, TURNS_T_END_S};
-use snowroll::params::{Applies, Group, Kind, Scope};
+use snowroll::params::Kind;
 use snowroll::trajectory::{LedgerRow, Sample, SampleSink, TurnState};
 use snowroll::{
     default_atol, run_warnings, ModelKind, Param, Sampling, Scenario, Settings, SimOptions,
-    SinkError, TurnMethod, TurnModel, TurnRow, TurnSink, TurnVariant, Value, WarningCode, PARAMS,
+    SinkError, TurnMethod, TurnModel, TurnRow, TurnSink, TurnVariant, Value, WarningCode,
 };
 use snowroll_io::notes::{stop_note, times_note, turns_stop_note};
 use snowroll_io::{Format, RunParams, TrajectoryWriter, TurnTableWriter};
@@ -48,10 +48,8 @@ impl Command {
     /// server's API draws the same line).
     pub fn takes(self, p: &Param) -> bool {
         match self {
-            Command::Simulate => {
-                matches!(p.scope, Scope::Shared | Scope::Sampling | Scope::Turns)
-            }
-            Command::Turns => matches!(p.scope, Scope::Shared | Scope::Turns),
+            Command::Simulate => snowroll_io::page_table::simulate_takes(p),
+            Command::Turns => snowroll_io::page_table::turns_takes(p),
             Command::Params => false,
         }
     }
@@ -338,138 +336,7 @@ impl<S: TurnSink> TurnSink for Progress<'_, S> {
 /// (`crates/snowroll-cli/src/serve/limits.rs`; the browser test compares
 /// the two), without the server's limits.
 pub fn params_json() -> String {
-    let params: Vec<serde_json::Value> = PARAMS
-        .iter()
-        .filter(|p| p.settable())
-        .map(param_json)
-        .collect();
-    let models: Vec<serde_json::Value> = ModelKind::ALL
-        .iter()
-        .map(|m| {
-            serde_json::json!({
-                "id": m.id(),
-                "alias": m.alias(),
-                "equation": m.equation(),
-                "description": m.description(),
-                "turn_model": m.is_turn_model(),
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "params": params,
-        "models": models,
-        "turns_command_defaults": { "turns": TURNS_DEFAULT, "t_end": TURNS_T_END_S },
-    })
-    .to_string()
-}
-
-/// A parameter's value as JSON (`null` for none).
-fn value_json(v: &Value) -> serde_json::Value {
-    match v {
-        Value::None => serde_json::Value::Null,
-        Value::Real(x) => serde_json::json!(x),
-        Value::Count(n) => serde_json::json!(n),
-        Value::Flag(b) => serde_json::json!(b),
-        Value::Word(w) => serde_json::json!(w),
-        Value::Reals(xs) => serde_json::json!(xs),
-    }
-}
-
-/// One parameter as the page reads it.
-fn param_json(p: &Param) -> serde_json::Value {
-    let commands: Vec<&str> = [Command::Simulate, Command::Turns]
-        .into_iter()
-        .filter(|c| c.takes(p))
-        .map(Command::name)
-        .collect();
-    let choices = match p.kind {
-        Kind::Choice(c) => c.ids(),
-        Kind::OptionalRealOr(word) => vec![word],
-        _ => Vec::new(),
-    };
-    serde_json::json!({
-        "key": p.key,
-        "flag": p.flag(),
-        "unit": p.unit,
-        "kind": kind_id(p.kind),
-        "group": match p.group { Group::Scenario => "scenario", Group::Run => "run", Group::Losses => "losses" },
-        "scope": match p.scope { Scope::Shared => "shared", Scope::Sampling => "sampling", Scope::Turns => "turns", Scope::Record => "record" },
-        "applies": match p.applies { Applies::All => "all", Applies::Sphere => "sphere", Applies::TurnModels => "turn-models", Applies::CircularModels => "circular-models" },
-        "range": p.range,
-        "help": p.help,
-        "default": value_json(&p.get(&Settings::default())),
-        "default_text": p.default_text(),
-        "choices": choices,
-        "commands": commands,
-        "slider": slider(p),
-    })
-}
-
-/// The kind as a word.
-fn kind_id(kind: Kind) -> &'static str {
-    match kind {
-        Kind::Real => "real",
-        Kind::OptionalReal => "optional-real",
-        Kind::OptionalRealOr(_) => "optional-real-or-word",
-        Kind::Count => "count",
-        Kind::OptionalCount => "optional-count",
-        Kind::Flag => "flag",
-        Kind::Choice(_) => "choice",
-        Kind::Reals => "reals",
-        Kind::Text => "text",
-    }
-}
-
-/// The bounds the range text sets on either side of the key: `(lower,
-/// lower is strict, upper)`; `infinity` or no bound is `None`.
-fn bounds(p: &Param) -> (Option<f64>, bool, Option<f64>) {
-    let words: Vec<&str> = p.range.split_whitespace().collect();
-    let num = |i: usize| words.get(i).and_then(|w| w.parse::<f64>().ok());
-    let Some(at) = words.iter().position(|w| *w == p.key) else {
-        return (None, false, None);
-    };
-    let (mut lo, mut strict, mut hi) = (None, false, None);
-    if at >= 2 && matches!(words[at - 1], "<" | "<=") {
-        lo = num(at - 2);
-        strict = words[at - 1] == "<";
-    }
-    match words.get(at + 1).copied() {
-        Some("<" | "<=") => hi = num(at + 2).filter(|x| x.is_finite()),
-        Some(op @ (">" | ">=")) => {
-            lo = num(at + 2);
-            strict = op == ">";
-        }
-        _ => {}
-    }
-    (lo, strict, hi)
-}
-
-/// A slider's span for a real parameter: its range where that is finite and
-/// within a thousand times the default's size, else up to ten times the
-/// default; logarithmic for the tolerances. `null` for other kinds.
-fn slider(p: &Param) -> serde_json::Value {
-    if !matches!(
-        p.kind,
-        Kind::Real | Kind::OptionalReal | Kind::OptionalRealOr(_)
-    ) {
-        return serde_json::Value::Null;
-    }
-    let (lo, strict, hi) = bounds(p);
-    let lo = lo.unwrap_or(0.0);
-    let size = match p.get(&Settings::default()) {
-        Value::Real(x) => x.abs().max(1.0),
-        _ => 1.0,
-    };
-    let max = match hi {
-        Some(h) if p.exponent || h - lo <= 1000.0 * size => h,
-        _ => lo + 10.0 * size,
-    };
-    let min = if strict && !p.exponent {
-        lo + (max - lo) * 1e-3
-    } else {
-        lo
-    };
-    serde_json::json!({ "min": min, "max": max, "log": p.exponent })
+    serde_json::Value::Object(snowroll_io::page_table::page_table()).to_string()
 }
 
 #[cfg(test)]

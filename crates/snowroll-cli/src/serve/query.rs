@@ -4,7 +4,7 @@
 //! before any run.
 
 use snowroll::params::{Group, Kind, Scope};
-use snowroll::{Given, Param, Scenario, Settings, Value, PARAMS};
+use snowroll::{Given, Param, Scenario, Settings, PARAMS};
 
 use super::limits::{MAX_ROWS, MAX_TURNS};
 use crate::args::TURNS_DEFAULT;
@@ -33,8 +33,8 @@ impl Endpoint {
     /// Whether the command takes parameter `p` (as its flags do).
     pub fn takes(self, p: &Param) -> bool {
         match self {
-            Endpoint::Simulate => matches!(p.scope, Scope::Shared | Scope::Sampling | Scope::Turns),
-            Endpoint::Turns => matches!(p.scope, Scope::Shared | Scope::Turns),
+            Endpoint::Simulate => snowroll_io::page_table::simulate_takes(p),
+            Endpoint::Turns => snowroll_io::page_table::turns_takes(p),
             Endpoint::Models => {
                 p.scope == Scope::Shared && matches!(p.group, Group::Scenario | Group::Losses)
             }
@@ -228,18 +228,6 @@ fn check_size(endpoint: Endpoint, s: &Settings) -> Result<(), Refused> {
              run `snowroll simulate` on the command line"
         ))),
         _ => Ok(()),
-    }
-}
-
-/// A parameter's value as JSON (`null` for none).
-pub fn value_json(v: &Value) -> serde_json::Value {
-    match v {
-        Value::None => serde_json::Value::Null,
-        Value::Real(x) => serde_json::json!(x),
-        Value::Count(n) => serde_json::json!(n),
-        Value::Flag(b) => serde_json::json!(b),
-        Value::Word(w) => serde_json::json!(w),
-        Value::Reals(xs) => serde_json::json!(xs),
     }
 }
 
