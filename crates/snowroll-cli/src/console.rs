@@ -151,19 +151,23 @@ pub fn check_stdout() -> io::Result<()> {
 /// A descriptor open for reading only (`1<&0`, `1</dev/null`) takes no
 /// results, yet Rust's stdout reports a write to it as done: refused.
 ///
-/// A stdout that was closed when the program started (`>&-`) cannot be
-/// told apart from `/dev/null` opened for reading and writing: Rust's
-/// runtime puts exactly that in place of a closed descriptor 0 to 2 before
-/// `main`, and only code run before the runtime (which this workspace's
-/// `unsafe_code = "forbid"` rules out) could see the difference. Issue 20
-/// refused every read-write `/dev/null`; issue 33 (item 4) found that this
-/// fails every command run with Python's `subprocess.DEVNULL` or under a
-/// daemon's stdio, which are read-write `/dev/null` and ask for exactly
-/// what they get. So such a stdout is accepted: its results are
-/// discarded, as for `> /dev/null`, and a closed one is treated alike.
+/// A stdout that was closed when the program started (`>&-`) is refused
+/// too. Rust's runtime puts `/dev/null`, open for reading and writing, in
+/// place of a closed descriptor 0 to 2 before `main`, so from `main` on it
+/// looks like the read-write `/dev/null` of Python's `subprocess.DEVNULL`
+/// or a daemon's stdio, which ask for exactly what they get and must work
+/// (issue 33, item 4). A constructor in C (`csrc/closed_stdout.c`, linked by
+/// `build.rs`) sees descriptor 1 before the runtime does and leaves a mark
+/// in the environment, which [`note_start`] takes.
 pub fn stdout_unusable() -> Option<&'static str> {
     static WHY: OnceLock<Option<&'static str>> = OnceLock::new();
     *WHY.get_or_init(|| {
+        if closed_at_start() {
+            return Some(
+                "standard output is closed: nothing written to it would arrive; \
+                 redirect it to a file, or to /dev/null to discard the results, or give -o FILE",
+            );
+        }
         let out = io::stdout();
         let flags = rustix::fs::fcntl_getfl(&out).ok()?;
         let mode = flags & (OFlags::RDONLY | OFlags::WRONLY | OFlags::RDWR);
@@ -172,6 +176,29 @@ pub fn stdout_unusable() -> Option<&'static str> {
              redirect it to a file, or to /dev/null to discard the results, or give -o FILE",
         )
     })
+}
+
+/// The environment variable by which `csrc/closed_stdout.c` says that
+/// stdout was closed when the program started.
+const CLOSED_MARK: &str = "SNOWROLL_STDOUT_CLOSED_AT_START";
+
+/// Whether stdout was closed when the program started, as [`note_start`]
+/// found it.
+fn closed_at_start() -> bool {
+    *STARTED_CLOSED.get_or_init(|| std::env::var_os(CLOSED_MARK).is_some())
+}
+
+static STARTED_CLOSED: OnceLock<bool> = OnceLock::new();
+
+/// Takes the mark of a stdout closed at start out of the environment (first
+/// thing in `main`), so that no child process (`snowroll serve`'s runs)
+/// inherits it, and keeps it for [`stdout_unusable`].
+pub fn note_start() {
+    let closed = closed_at_start();
+    if closed {
+        // Safe in edition 2021; `main` calls this before any thread starts.
+        std::env::remove_var(CLOSED_MARK);
+    }
 }
 
 #[cfg(test)]

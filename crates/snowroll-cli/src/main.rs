@@ -4,6 +4,7 @@
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
+    snowroll_cli::console::note_start();
     if let Err(e) = snowroll_cli::install_signal_handlers() {
         // Runs still work; only the clean-up on SIGINT/SIGTERM is lost.
         use std::io::Write;
