@@ -16,7 +16,7 @@ use snowroll::{
 /// Closed form against DOP853 at rtol 1e-15 (the smallest it takes): the
 /// integrator's global error in t and θ̇ after a few hundred turns is a few
 /// hundred times its rtol; the closed form's quadrature is good to ~1e-15
-/// (`orbit.rs`). The brief's 1e-12 is what both must meet.
+/// (`orbit/`). The brief's 1e-12 is what both must meet.
 const METHODS_TOL: f64 = 1e-12;
 /// One turn's time against the quadrature here: both are good to ~1e-15;
 /// this leaves room for rounding in the sums of either.
