@@ -410,3 +410,26 @@ impl Drop for StopOnDrop<'_, '_> {
         self.0.stop();
     }
 }
+
+/// The run's side of the turns computed ahead: handed over, and taken
+/// turn by turn.
+impl TurnSystem {
+    /// The turns computed ahead of the run, in order, from the current one on.
+    pub(in crate::models::turn_by_turn) fn load_prepared(&mut self, prepared: Vec<Prepared>) {
+        self.ahead = prepared.into();
+    }
+
+    /// The current turn's entry among those computed ahead, if it was
+    /// computed for this very start (`θ̇(0)` and `v_start` to the bit).
+    pub(super) fn take_prepared(&mut self, omega0: f64, v_start: f64) -> Option<Prepared> {
+        while self.ahead.front().is_some_and(|p| p.start.turn < self.turn) {
+            self.ahead.pop_front();
+        }
+        let p = self.ahead.front().copied()?;
+        (p.start.turn == self.turn
+            && p.start.omega0.to_bits() == omega0.to_bits()
+            && p.start.v_start.to_bits() == v_start.to_bits()
+            && self.collision != CollisionModel::Pivot)
+            .then_some(p)
+    }
+}

@@ -5,6 +5,7 @@
 use crate::portable::Portable as _;
 mod ahead;
 mod closed;
+mod exact_start;
 mod stepping;
 
 pub(crate) use closed::run_closed;
@@ -392,67 +393,6 @@ impl TurnSystem {
                 }
             }
         }
-    }
-
-    /// How far the least N per unit m_k of this turn can move when `θ̇(0)`
-    /// goes from `omega` to `exact`, m/s²: N is affine in E(0) = I(0)θ̇₀²
-    /// at each θ (θ̇² = (E(0) − 2W)/I and θ̈ = (−W′ − ½I′θ̇²)/I), with
-    /// ∂N/∂E(0) = e₂[sin θ/I − (1 − cos θ)I′/(2I²)], at most
-    /// |e₂|(1/I_min + |I′|max/I_min²) with I ≥ 3r²/2 − |c₂| and
-    /// |I′| ≤ |c₁| + |c₂|; twice that, plus 1e-12 C for the rounding of the
-    /// refined minimum.
-    fn hop_margin(&self, omega: f64, exact: f64) -> f64 {
-        let k = self.dynamics.coefficients();
-        let r = self.dynamics.radius();
-        let i_min = 1.5 * r * r - k.c2.abs();
-        let slope = k.e2.abs() * (1.0 / i_min + (k.c1.abs() + k.c2.abs()) / (i_min * i_min));
-        let shift = 1.5 * r * r * (omega * omega - exact * exact).abs();
-        2.0 * slope * shift + 1e-12 * self.g_normal.abs()
-    }
-
-    /// Has the integrator's path carry the closed form's `θ̇(0)` of each
-    /// turn along (`exact_omega0`), from the start `y0`, where the closed
-    /// form covers the run; before [`Self::start`].
-    pub(crate) fn track_exact_starts(&mut self, y0: &[f64; 2]) {
-        self.exact_omega0 = self.closed_form_covers(y0).then_some(y0[1]);
-    }
-
-    /// The closed form's `θ̇(0)` of the turn after this one, from this
-    /// one's ([`Self::track_exact_starts`]); `None` when it stalls or the
-    /// log is stuck at the step.
-    fn exact_next(&self, omega0: f64) -> Option<f64> {
-        let orbit = super::orbit::Orbit::new(&self.dynamics, omega0);
-        if orbit.first_stall(TWO_PI).is_some() {
-            return None;
-        }
-        let r = self.dynamics.radius();
-        after_collision(
-            self.collision,
-            r,
-            self.b,
-            self.g_normal,
-            orbit.omega(TWO_PI),
-        )
-        .map(|(w, _)| w)
-    }
-
-    /// The turns computed ahead of the run, in order, from the current one on.
-    pub(super) fn load_prepared(&mut self, prepared: Vec<ahead::Prepared>) {
-        self.ahead = prepared.into();
-    }
-
-    /// The current turn's entry among those computed ahead, if it was
-    /// computed for this very start (`θ̇(0)` and `v_start` to the bit).
-    fn take_prepared(&mut self, omega0: f64, v_start: f64) -> Option<ahead::Prepared> {
-        while self.ahead.front().is_some_and(|p| p.start.turn < self.turn) {
-            self.ahead.pop_front();
-        }
-        let p = self.ahead.front().copied()?;
-        (p.start.turn == self.turn
-            && p.start.omega0.to_bits() == omega0.to_bits()
-            && p.start.v_start.to_bits() == v_start.to_bits()
-            && self.collision != CollisionModel::Pivot)
-            .then_some(p)
     }
 
     /// The speed at the start of this turn as its row reports it, m/s.
