@@ -99,3 +99,27 @@ pub fn turns_stop_note(end: &TurnRunEnd, wanted: u64, t_end: f64) -> Option<Stri
     }
     Some(note)
 }
+
+/// The note of a turn run whose first hop the integrator's error could
+/// decide ([`TurnRunEnd::hop_doubt`]): the turn, its least N and the error.
+pub fn hop_doubt_note(end: &TurnRunEnd) -> Option<String> {
+    let d = end.hop_doubt?;
+    Some(format!(
+        "the first hop may depend on the tolerance: turn {} keeps least N/(m_k g) = {}, within the \
+         integrator's estimated error {} of 0 (no closed form of the turns confirms it here, \
+         docs/contact-forces.md); rerun at a tighter --rtol to see whether the hop moves",
+        d.turn,
+        format_number(d.least_normal_over_mkg),
+        format_number(d.error_over_mkg)
+    ))
+}
+
+/// The notes a turn table ends with: why it stopped short of the `wanted`
+/// turns ([`turns_stop_note`]), then a first hop that may depend on the
+/// tolerance ([`hop_doubt_note`]).
+pub fn turns_notes(end: &TurnRunEnd, wanted: u64, t_end: f64) -> Vec<String> {
+    turns_stop_note(end, wanted, t_end)
+        .into_iter()
+        .chain(hop_doubt_note(end))
+        .collect()
+}

@@ -322,6 +322,7 @@ fn turns<'py>(
         stop: end.stop,
         summary: end.summary,
         stats: end.stats,
+        hop_doubt: end.hop_doubt,
     };
     let mut params = RunParams::new(&scenario, &opts).per_turn();
     params.warnings = validity_warnings(kind, &scenario)

@@ -72,6 +72,7 @@ impl TurnDigest {
             stop: table.stop,
             summary: table.summary.clone(),
             stats: table.stats,
+            hop_doubt: table.hop_doubt,
         })
     }
 }

@@ -18,7 +18,7 @@ use snowroll::{
     default_atol, run_warnings, ModelKind, Param, Sampling, Scenario, Settings, SimOptions,
     SinkError, TurnMethod, TurnModel, TurnRow, TurnSink, TurnVariant, Value, WarningCode,
 };
-use snowroll_io::notes::{stop_note, times_note, turns_stop_note};
+use snowroll_io::notes::{stop_note, times_note, turns_notes};
 use snowroll_io::{Format, RunParams, TrajectoryWriter, TurnTableWriter};
 
 pub mod abi;
@@ -278,9 +278,7 @@ fn turns(
     let end = turn_model
         .run_table_into(&scenario, &opts, &mut sink)
         .map_err(|e| format!("running {} ({}): {e}", model.id(), model.equation()))?;
-    let notes: Vec<String> = turns_stop_note(&end, wanted, opts.t_end)
-        .into_iter()
-        .collect();
+    let notes = turns_notes(&end, wanted, opts.t_end);
     let body = writer.finish(&end, &notes).map_err(|e| e.to_string())?;
     Ok(Answer {
         body,

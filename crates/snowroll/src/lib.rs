@@ -144,9 +144,9 @@ pub use models::{
     kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, run_turns_into,
     run_warnings, state_scale, tolerance_warning, validity_warnings, warning_codes, Balance,
     CircularModel, Coefficients, CollisionModel, ContactForces, ContactRange, Derivation,
-    DragOnlyClosedForm, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact, RunWarning,
-    SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnMethod, TurnModel, TurnRow,
-    TurnRunEnd, TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
+    DragOnlyClosedForm, HopDoubt, InTurnCoefficients, LoneyModel, Model, ModelKind, PivotImpact,
+    RunWarning, SectorBody, TurnCheckpoint, TurnDynamics, TurnExtremes, TurnMethod, TurnModel,
+    TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable, TurnVariant, Validity, ValidityWarning,
     WarningCode,
 };
 pub use number::{format_number, format_readable};

@@ -217,6 +217,60 @@ fn the_first_hop_does_not_depend_on_the_tolerance() {
     }
 }
 
+/// Item 3 where no closed form confirms the hop: with `--collision pivot`
+/// (defaults, from rest) the first hop is at the impact of turn 4 below
+/// α* = 5.4026775058442° and of turn 3 above (bisected here at rtol 1e-12
+/// with the CLI to 5e-13°), turn 3's least N crossing 0 there. At α*
+/// (within 5e-13°) the hop turn moved with the tolerance (4, 3, 3, 4 at
+/// rtol 1e-6, 1e-8, 1e-10, 1e-12) and nothing said so. The run now names
+/// the turn whose least N is within the integrator's estimated error of 0
+/// (`hop_doubt`), and that error must cover what the tolerance really
+/// moves: the least N at each rtol against the value at rtol 1e-13.
+/// Away from α* (5.41°, 7.6e-3° off) the hop is turn 3 at every tolerance
+/// and no doubt is raised. Fed an estimate without the phases' local
+/// errors (only rounding), the doubt at α* was not raised (checked once).
+#[test]
+fn a_pivot_hop_within_the_integrators_error_is_named() {
+    let opts = |rtol: f64| SimOptions {
+        turns: Some(50),
+        t_end: 1e9,
+        collision: snowroll::CollisionModel::Pivot,
+        tolerances: Tolerances {
+            rtol,
+            ..Tolerances::default()
+        },
+        ..SimOptions::default()
+    };
+    let border = scenario(5.402_677_505_844_167, 0.01, 0.1, 0.0);
+    let reference = run(TurnMethod::Ode, &border, &opts(1e-13));
+    let truth = reference
+        .hop_doubt
+        .expect("turn 3 is within its error at 1e-13");
+    assert_eq!(truth.turn, 3);
+    assert!(truth.least_normal_over_mkg.abs() < 1e-11, "{truth:?}");
+    for rtol in [1e-6, 1e-8, 1e-10] {
+        let ode = run(TurnMethod::Ode, &border, &opts(rtol));
+        assert_eq!(ode.stop.reason, StopReason::Hop, "rtol {rtol}");
+        let d = ode
+            .hop_doubt
+            .unwrap_or_else(|| panic!("rtol {rtol}: no doubt raised"));
+        assert_eq!(d.turn, 3, "rtol {rtol}");
+        let moved = (d.least_normal_over_mkg - truth.least_normal_over_mkg).abs();
+        assert!(
+            moved <= d.error_over_mkg,
+            "rtol {rtol}: moved {moved}, estimated {d:?}"
+        );
+        // Not a blanket: the estimate within a few times what moved.
+        assert!(d.error_over_mkg < 20.0 * rtol, "rtol {rtol}: {d:?}");
+    }
+    let clear = scenario(5.41, 0.01, 0.1, 0.0);
+    for rtol in [1e-6, 1e-8, 1e-10] {
+        let ode = run(TurnMethod::Ode, &clear, &opts(rtol));
+        assert_eq!(ode.stop.turn.map(|t| t.turn), Some(3), "rtol {rtol}");
+        assert_eq!(ode.hop_doubt, None, "rtol {rtol}");
+    }
+}
+
 /// Item 1, the angle reached at a given time inside a nearly stalling turn
 /// (`turns` from rest 1e-8 and 1e-10° above the stall slope, a run ended
 /// by `t_end` = 3, 8, 12, 16 s: before, close before, close after and past

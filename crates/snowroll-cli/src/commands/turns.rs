@@ -81,9 +81,7 @@ pub fn run(flags: TurnsArgs) -> Result<()> {
             )))
         }
     };
-    params.notes = snowroll_io::notes::turns_stop_note(&end, wanted, opts.t_end)
-        .into_iter()
-        .collect();
+    params.notes = snowroll_io::notes::turns_notes(&end, wanted, opts.t_end);
     let written = writer.finish(&end, &params.notes).map(drop);
     written
         .map_err(anyhow::Error::from)

@@ -28,9 +28,9 @@ pub use tolerance::{
 pub use turn_by_turn::{
     charged_collision_speed, check_turn_scale, collision_speed, first_turn_stall_slope,
     kinetic_energy_at_turn_end, kinetic_energy_at_turn_start, run_turns, run_turns_into,
-    CollisionModel, ContactRange, InTurnCoefficients, PivotImpact, TurnCheckpoint, TurnDynamics,
-    TurnExtremes, TurnMethod, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable,
-    TurnVariant,
+    CollisionModel, ContactRange, HopDoubt, InTurnCoefficients, PivotImpact, TurnCheckpoint,
+    TurnDynamics, TurnExtremes, TurnMethod, TurnModel, TurnRow, TurnRunEnd, TurnSink, TurnSummary,
+    TurnTable, TurnVariant,
 };
 pub use validity::{
     validity_warnings, StallKind, StallThreshold, Validity, ValidityWarning,

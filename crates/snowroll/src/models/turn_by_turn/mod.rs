@@ -57,6 +57,7 @@ pub use runner::{run_turns, run_turns_into, TurnMethod, TurnModel, TurnRunEnd, T
 pub use stall::first_turn_stall_slope;
 use summary::SummaryBuilder;
 pub use summary::{TurnCheckpoint, TurnSummary};
+pub use system::HopDoubt;
 pub(crate) use system::{run_closed, TurnSystem, EVENT_TURN_END};
 
 use std::f64::consts::PI;

@@ -4,7 +4,7 @@
 
 use super::observer::TableObserver;
 use super::{
-    check_turn_losses, check_turn_scale, run_closed, SummaryBuilder, TurnRow, TurnSink,
+    check_turn_losses, check_turn_scale, run_closed, HopDoubt, SummaryBuilder, TurnRow, TurnSink,
     TurnSummary, TurnSystem, TurnVariant,
 };
 use crate::error::{ParamError, SimError, SinkError};
@@ -25,6 +25,11 @@ pub struct TurnRunEnd {
     pub summary: TurnSummary,
     /// Integrator counts.
     pub stats: Stats,
+    /// On the integrator's path of a run the closed form does not cover
+    /// (`--collision pivot`), the first turn whose least normal force is
+    /// within the integrator's error of 0, so that the first hop may depend
+    /// on the tolerance (`docs/contact-forces.md`); `None` otherwise.
+    pub hop_doubt: Option<HopDoubt>,
 }
 
 /// The per-turn table of a run of a turn model.
@@ -43,6 +48,11 @@ pub struct TurnTable {
     pub summary: TurnSummary,
     /// Integrator counts.
     pub stats: Stats,
+    /// On the integrator's path of a run the closed form does not cover
+    /// (`--collision pivot`), the first turn whose least normal force is
+    /// within the integrator's error of 0, so that the first hop may depend
+    /// on the tolerance (`docs/contact-forces.md`); `None` otherwise.
+    pub hop_doubt: Option<HopDoubt>,
 }
 
 /// The turn-by-turn model of §3.4 (ids `turns`, `turns-exact`).
@@ -235,6 +245,7 @@ impl TurnModel {
                 stop: stop_at(&system, reason, 0.0, &y0),
                 summary: observer.into_summary(),
                 stats: Stats::default(),
+                hop_doubt: None,
             });
         }
         let end = if closed {
@@ -247,6 +258,7 @@ impl TurnModel {
             stop: end.stop,
             summary: observer.into_summary(),
             stats: end.stats,
+            hop_doubt: system.hop_doubt(),
         })
     }
 
@@ -267,6 +279,7 @@ impl TurnModel {
             stop: end.stop,
             summary: end.summary,
             stats: end.stats,
+            hop_doubt: end.hop_doubt,
         })
     }
 }

@@ -14,12 +14,18 @@ impl TurnSystem {
     /// |I′| ≤ |c₁| + |c₂|; twice that, plus 1e-12 C for the rounding of the
     /// refined minimum.
     pub(super) fn hop_margin(&self, omega: f64, exact: f64) -> f64 {
+        let r = self.dynamics.radius();
+        let shift = 1.5 * r * r * (omega * omega - exact * exact).abs();
+        2.0 * self.normal_slope() * shift + 1e-12 * self.g_normal.abs()
+    }
+
+    /// The bound on |∂N/∂E(0)| over the turn of [`Self::hop_margin`],
+    /// `|e₂|(1/I_min + |I′|max/I_min²)`, 1/m.
+    pub(super) fn normal_slope(&self) -> f64 {
         let k = self.dynamics.coefficients();
         let r = self.dynamics.radius();
         let i_min = 1.5 * r * r - k.c2.abs();
-        let slope = k.e2.abs() * (1.0 / i_min + (k.c1.abs() + k.c2.abs()) / (i_min * i_min));
-        let shift = 1.5 * r * r * (omega * omega - exact * exact).abs();
-        2.0 * slope * shift + 1e-12 * self.g_normal.abs()
+        k.e2.abs() * (1.0 / i_min + (k.c1.abs() + k.c2.abs()) / (i_min * i_min))
     }
 
     /// Has the integrator's path carry the closed form's `θ̇(0)` of each
@@ -27,6 +33,7 @@ impl TurnSystem {
     /// form covers the run; before [`Self::start`].
     pub(crate) fn track_exact_starts(&mut self, y0: &[f64; 2]) {
         self.exact_omega0 = self.closed_form_covers(y0).then_some(y0[1]);
+        self.track_doubt();
     }
 
     /// The closed form's `θ̇(0)` of the turn after this one, from this

@@ -5,10 +5,12 @@
 use crate::portable::Portable as _;
 mod ahead;
 mod closed;
+mod doubt;
 mod exact_start;
 mod stepping;
 
 pub(crate) use closed::run_closed;
+pub use doubt::HopDoubt;
 
 use std::f64::consts::PI;
 
@@ -92,6 +94,8 @@ pub(crate) struct TurnSystem {
     /// the run ([`Self::track_exact_starts`]): the hop of a turn whose
     /// least N is within the integrator's error of 0 is planned from it.
     exact_omega0: Option<f64>,
+    /// Where no exact `θ̇(0)` is carried, the integrator's error estimate ([`doubt`]).
+    doubt: doubt::DoubtTracker,
 }
 
 /// The energy bookkeeping of a turn run (`docs/snowball-and-losses.md`
@@ -144,6 +148,7 @@ impl TurnSystem {
             ahead: std::collections::VecDeque::new(),
             exact_omega0: None,
             current: None,
+            doubt: doubt::DoubtTracker::default(),
         };
         system.enter_turn(0);
         if opts.losses.records_ledger() {
@@ -393,6 +398,7 @@ impl TurnSystem {
                 }
             }
         }
+        self.doubt_turn_start(omega0);
     }
 
     /// The speed at the start of this turn as its row reports it, m/s.

@@ -74,6 +74,9 @@ impl OdeSystem<2> for TurnSystem {
 
     fn commit_event(&mut self, event: &EventRecord<2>) {
         let (index, y_before, y_after) = (event.index, &event.y_before, &event.y_after);
+        if index == EVENT_IMPACT {
+            self.doubt_impact(y_before[1]);
+        }
         // `on_event` resets exactly where the outcome is a new state: that
         // state is taken from its action, the outcome found again only for
         // the reason of a stop.
@@ -99,6 +102,7 @@ impl OdeSystem<2> for TurnSystem {
                     let r = self.dynamics.radius();
                     self.pivot_shift += r * p.theta_c + p.d - TWO_PI * r;
                 }
+                self.doubt_turn_end(y_before[1]);
                 let v_start = self.speed_after(y_before[1]);
                 self.exact_omega0 = self.exact_omega0.and_then(|w| self.exact_next(w));
                 self.enter_turn(self.turn + 1);
