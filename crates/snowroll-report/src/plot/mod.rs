@@ -106,6 +106,10 @@ pub struct Axis {
     pub scale: Scale,
     /// Column name of this axis in the figure's CSV, e.g. `t_s`.
     pub column: String,
+    /// The share of the drawn length left empty after the last data, where
+    /// more than the usual margin is wanted (a border at the end of the
+    /// data must not sit at the frame); `None`: the usual margin.
+    pub margin_after: Option<f64>,
 }
 
 impl Axis {
@@ -116,6 +120,7 @@ impl Axis {
             unit: unit.to_string(),
             scale: Scale::Linear,
             column: column_name(label, unit),
+            margin_after: None,
         }
     }
 
@@ -130,6 +135,13 @@ impl Axis {
     /// Sets the CSV column name.
     pub fn column(mut self, column: &str) -> Self {
         self.column = column.to_string();
+        self
+    }
+
+    /// Leaves `share` (0 to 0.5) of the drawn length empty after the last
+    /// data, at least.
+    pub fn margin_after(mut self, share: f64) -> Self {
+        self.margin_after = Some(share.clamp(0.0, 0.5));
         self
     }
 

@@ -388,7 +388,12 @@ fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
             } else {
                 lo.abs().max(1.0) * LINEAR_PAD
             };
-            (lo - margin)..(hi + margin)
+            let start = lo - margin;
+            // The data's end at 1 − share of the drawn length.
+            let wanted = axis
+                .margin_after
+                .map_or(hi + margin, |m| start + (hi - start) / (1.0 - m));
+            start..(hi + margin).max(wanted)
         }
         Scale::Log => {
             let decades = (hi / lo).log10();
@@ -398,7 +403,12 @@ fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
                 LOG_PAD_SINGLE
             };
             let factor = 10_f64.powf(margin);
-            (lo / factor)..(hi * factor)
+            let (start, end) = (lo / factor, hi * factor);
+            // The data's end at 1 − share of the drawn decades.
+            let wanted = axis
+                .margin_after
+                .map_or(end, |m| start * (hi / start).powf(1.0 / (1.0 - m)));
+            start..end.max(wanted)
         }
     }
 }

@@ -12,6 +12,11 @@ use super::{Axis, Chart, Scale, Series, Style};
 use cells::{classes_of, distinct, edges, param_axis, place_cells};
 use snowroll::sweep::{boundaries, Grid, Param, SweepRow};
 
+/// The share of the map's width left empty after its last column of cells
+/// (issue 36, item 5): a border at the end of the swept range (the hop
+/// slope near the top of the slopes) is then not drawn against the frame.
+const MARGIN_AFTER: f64 = 0.08;
+
 /// What colours the cells.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ColorBy {
@@ -259,7 +264,8 @@ impl RegimeMap {
             Scale::Log => (a * b).sqrt(),
             Scale::Linear => 0.5 * (a + b),
         };
-        let mut chart = Chart::new(name, &self.title, self.x.clone(), self.y.clone());
+        let x = self.x.clone().margin_after(MARGIN_AFTER);
+        let mut chart = Chart::new(name, &self.title, x, self.y.clone());
         for (k, class) in self.classes.iter().enumerate() {
             let points: Vec<(f64, f64)> = self
                 .cells
@@ -318,5 +324,49 @@ fn map_title(grid: &Grid, color: ColorBy) -> String {
     } else {
         let (what, _, _) = color.quantity().unwrap_or(("value", "", "1"));
         format!("{what}, {}, of {}", color.legend_title(), models.join(", "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The report's map (slopes 0.5°–80° on a log axis, the hop border at
+    /// 63.4° near the last column): at least [`MARGIN_AFTER`] of the drawn
+    /// width after the last column (it was 3.6 %, the usual 4 % of the
+    /// decades on each side), and the usual margin before the first.
+    #[test]
+    fn a_map_leaves_room_after_its_last_column() {
+        let alphas = [0.5, 1.0, 4.0, 20.0, 58.0, 63.0, 64.0, 80.0];
+        let cells = alphas
+            .iter()
+            .map(|&a| Cell {
+                x: (a * 0.99, a * 1.01),
+                y: (0.005, 0.02),
+                class: usize::from(a > 63.4),
+            })
+            .collect();
+        let class = |label: &str| Class {
+            label: label.to_string(),
+            rgb: (0, 0, 0),
+        };
+        let map = RegimeMap {
+            title: "map".to_string(),
+            x: Axis::log("slope angle α", "deg"),
+            y: Axis::linear("snow depth b", "m"),
+            cells,
+            classes: vec![class("rolls on"), class("hops")],
+            curves: vec![("hop".to_string(), vec![(63.4, 0.005), (63.4, 0.02)])],
+            legend_title: "outcome".to_string(),
+        };
+        let (xr, _) = map.to_chart("map").ranges();
+        // The markers sit at the cells' geometric centres.
+        let (first, last) = (0.5 * 0.9999_f64.sqrt(), 80.0 * 0.9999_f64.sqrt());
+        let drawn = (xr.end / xr.start).log10();
+        let after = (xr.end / last).log10() / drawn;
+        assert!(after >= MARGIN_AFTER - 1e-12, "{after}");
+        // Before the first column: the usual 4 % of the data's decades.
+        let before = (first / xr.start).log10() / (last / first).log10();
+        assert!((before - 0.04).abs() < 1e-12, "{before}");
     }
 }
