@@ -163,11 +163,12 @@ fn load_with_origin(path: &Path) -> Result<(ConfigFile, Origin)> {
     let starts_csv = start.is_some_and(|i| prefix[i..].starts_with(CSV_MARK));
     let mut whole = io::Cursor::new(prefix).chain(reader);
     let (file, origin) = if first == Some(b'{') {
-        readback::from_json_output(&mut whole).map_err(|e| anyhow!("config file {shown}: {e}"))?
+        readback::from_json_output(&mut whole)
+            .map_err(|e| anyhow!("config file {shown}: {}", crate::message(&e)))?
     } else if starts_csv {
         let header = bounded::read_header(&mut BufReader::new(whole)).with_context(cannot_read)?;
         readback::from_csv_output(&header.concat())
-            .map_err(|e| anyhow!("config file {shown}: {e}"))?
+            .map_err(|e| anyhow!("config file {shown}: {}", crate::message(&e)))?
     } else {
         let mut bytes = Vec::new();
         Bounded::new(whole, MAX_SETTINGS_FILE, "a config file")

@@ -69,10 +69,42 @@ where
         Ok(()) => EXIT_SUCCESS,
         Err(_) if console::reader_gone() => EXIT_SUCCESS,
         Err(e) => {
-            report!("error: {}", clip_long_words(&format!("{e:#}")));
+            report!("error: {}", clip_long_words(&message(&e)));
             EXIT_FAILURE
         }
     }
+}
+
+/// A parameter that a library message names (by its key in the parameter
+/// table, with the word given with it), as the command line spells it:
+/// `--snow-depth`, `--shape sphere`.
+pub fn flag_name(key: &str, word: Option<&str>) -> String {
+    let flag = format!("--{}", key.replace('_', "-"));
+    match word {
+        Some(w) => format!("{flag} {w}"),
+        None => flag,
+    }
+}
+
+/// The error chain as anyhow's `{:#}` writes it (each cause after `: `),
+/// with the library's errors in the command line's words ([`flag_name`]):
+/// the library names parameters by key and leaves their spelling to each
+/// front end.
+pub fn message(e: &anyhow::Error) -> String {
+    e.chain()
+        .map(|c| {
+            if let Some(p) = c.downcast_ref::<snowroll::ParamError>() {
+                p.render(&flag_name)
+            } else if let Some(s) = c.downcast_ref::<snowroll::SimError>() {
+                s.render(&flag_name)
+            } else if let Some(g) = c.downcast_ref::<snowroll::sweep::GridError>() {
+                g.render(&flag_name)
+            } else {
+                c.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(": ")
 }
 
 /// Prints clap's message (help, version, or a usage error) where clap

@@ -12,8 +12,9 @@
 //! The GIL is released while the library computes ([`Python::detach`]).
 //! Bad parameters raise `ValueError` with the library's message
 //! ([`ParamError`]); a failed integration raises `RuntimeError` ([`SimError`]).
-//! Where the message names a CLI flag (`--snow-depth`), the Python keyword
-//! (`snow_depth`) replaces it (`python_message`).
+//! The library names parameters by key and leaves their spelling to each
+//! front end: here the keyword (`snow_depth=`, [`keyword`]), where the
+//! command line writes its flag (`--snow-depth`).
 
 mod columns;
 mod guard;
@@ -36,46 +37,27 @@ use snowroll_io::RunParams;
 pub(crate) use columns::record;
 use columns::{common, trajectory_columns, turn_columns};
 
-/// A library message in Python's words: each CLI flag `--kebab-name` (two
-/// dashes, then a lowercase letter, then letters, digits and dashes) becomes
-/// the keyword `kebab_name` that a Python caller passes instead; the rest of
-/// the text is kept as it is.
-pub(crate) fn python_message(message: &str) -> String {
-    let mut out = String::with_capacity(message.len());
-    let mut rest = message;
-    while let Some(at) = rest.find("--") {
-        let (before, flag) = rest.split_at(at);
-        out.push_str(before);
-        let name = &flag[2..];
-        let len = if name.starts_with(|c: char| c.is_ascii_lowercase()) {
-            name.find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'))
-                .unwrap_or(name.len())
-        } else {
-            0
-        };
-        if len == 0 {
-            out.push_str("--");
-        } else {
-            // A dash that ends the word is punctuation, not part of the flag.
-            let word = name[..len].trim_end_matches('-');
-            out.push_str(&word.replace('-', "_"));
-            out.push_str(&name[word.len()..len]);
-        }
-        rest = &name[len..];
+/// A parameter that a library message names (by its key in the parameter
+/// table, with the word given with it), as a Python caller writes it: the
+/// keyword `snow_depth=`, `shape='sphere'`.
+pub(crate) fn keyword(key: &str, word: Option<&str>) -> String {
+    match word {
+        Some(w) if w.parse::<f64>().is_ok() => format!("{key}={w}"),
+        Some(w) => format!("{key}='{w}'"),
+        None => format!("{key}="),
     }
-    out.push_str(rest);
-    out
 }
 
-/// `ValueError` with `message` in Python's words ([`python_message`]).
+/// `ValueError` with `message` as it is (a message of this binding's own,
+/// or of the library naming no parameter).
 pub(crate) fn value_error_text(message: &str) -> PyErr {
-    PyValueError::new_err(python_message(message))
+    PyValueError::new_err(message.to_string())
 }
 
-/// A bad parameter: `ValueError` with the library's message, its flags
-/// named as keywords ([`python_message`]).
+/// A bad parameter: `ValueError` with the library's message, the
+/// parameters it names written as keywords ([`keyword`]).
 pub(crate) fn value_error(e: ParamError) -> PyErr {
-    value_error_text(&e.to_string())
+    PyValueError::new_err(e.render(&keyword))
 }
 
 /// A failed run: `ValueError` for bad parameters found by the run,
@@ -83,7 +65,7 @@ pub(crate) fn value_error(e: ParamError) -> PyErr {
 fn sim_error(e: SimError) -> PyErr {
     match e {
         SimError::Param(p) => value_error(p),
-        other => PyRuntimeError::new_err(python_message(&other.to_string())),
+        other => PyRuntimeError::new_err(other.render(&keyword)),
     }
 }
 

@@ -431,6 +431,6 @@ fn parse_grid(grid: &Bound<'_, PyDict>) -> PyResult<Grid> {
                 "no model given: put \"model\": \"ID[,ID...]\" (or a list of ids) in the grid \
                  (snowroll.models() lists them)",
             ),
-            other => value_error_text(&other.to_string()),
+            other => PyValueError::new_err(other.render(&crate::keyword)),
         })
 }

@@ -12,11 +12,11 @@ from conftest import run_cli
 
 def python_words(cli_message):
     """The CLI's message as a Python caller should read it: every flag
-    `--kebab-name` as the keyword `kebab_name` (written here independently of
+    `--kebab-name` as the keyword `kebab_name=` (written here independently of
     the binding, with a regular expression)."""
     return re.sub(
         r"--([a-z](?:[a-z0-9-]*[a-z0-9])?)",
-        lambda m: m.group(1).replace("-", "_"),
+        lambda m: m.group(1).replace("-", "_") + "=",
         cli_message,
     )
 
@@ -155,9 +155,36 @@ def test_flags_in_library_messages_become_keywords(cli):
     with pytest.raises(ValueError) as err:
         snowroll.simulate("torque-cm", swath_width=0.05)
     message = str(err.value)
-    assert message.endswith("give shape sphere or drop swath_width"), message
+    assert message.endswith("give shape='sphere' or drop swath_width="), message
     _, stderr = run_cli(cli, "simulate", "--model", "torque-cm", "--swath-width", "0.05", ok=False)
     assert "give --shape sphere or drop --swath-width" in stderr, stderr
+    cli_words = stderr.replace("--shape sphere", "shape='sphere'")
+    assert f"error: {message}" in python_words(cli_words), (message, stderr)
+
+
+@pytest.mark.parametrize(
+    "kwargs,flags,keywords",
+    [
+        # Out of the program's scale: the hint names what to change.
+        ({"snow_depth": 1e200}, ["--snow-depth", "1e200"], ["snow_depth="]),
+        ({"density": 1e140, "r0": 1e6}, ["--density", "1e140", "--r0", "1e6"],
+         ["density=", "length=", "r0="]),
+        # Output times after t_end: raise t_end=.
+        ({"t_end": 1.0, "times": [0.5, 2.0]}, ["--t-end", "1", "--times", "0.5,2"], ["t_end="]),
+    ],
+)
+def test_library_messages_name_keywords_where_the_cli_names_flags(cli, kwargs, flags, keywords):
+    """The library names a parameter by its key; Python writes the keyword
+    (`snow_depth=`), the CLI its flag (`--snow-depth`), in the same sentence."""
+    with pytest.raises(ValueError) as err:
+        snowroll.simulate("torque-cm", **kwargs)
+    message = str(err.value)
+    assert "--" not in message, message
+    for k in keywords:
+        assert k in message, (k, message)
+    _, stderr = run_cli(cli, "simulate", "--model", "torque-cm", *flags, ok=False)
+    for k in keywords:
+        assert "--" + k[:-1].replace("_", "-") in stderr, (k, stderr)
     assert f"error: {message}" in python_words(stderr), (message, stderr)
 
 
@@ -215,6 +242,6 @@ def test_turns_refuses_losses_with_the_cli_message(cli, kwargs, flags):
     # the keywords (--drag-coefficient for drag_coefficient).
     cli_message = message
     for key in ("drag_coefficient", "rolling_resistance", "compaction_energy", "ledger"):
-        cli_message = cli_message.replace(key, "--" + key.replace("_", "-"))
+        cli_message = cli_message.replace(key + "=", "--" + key.replace("_", "-"))
     assert message.startswith("model turns does not support " + next(iter(kwargs))), message
     assert f"error: {cli_message}" in stderr, (cli_message, stderr)

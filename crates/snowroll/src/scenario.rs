@@ -179,26 +179,26 @@ impl Scenario {
     fn check_scales(&self) -> Result<(), ParamError> {
         use std::f64::consts::PI;
         let (b, r0, g, rho, l, v0) = (self.b, self.r0, self.g, self.rho, self.l, self.v0);
-        check_scale("snow depth b (m)", b, true, "change --snow-depth")?;
-        check_scale("initial radius r0 (m)", r0, false, "change --r0")?;
-        check_scale("g (m/s^2)", g, false, "change --g")?;
-        check_scale("density (kg/m^3)", rho, false, "change --density")?;
-        check_scale("log length (m)", l, false, "change --length")?;
-        check_scale("initial speed v0 (m/s)", v0, true, "change --v0")?;
+        check_scale("snow depth b (m)", b, true, "change {snow_depth}")?;
+        check_scale("initial radius r0 (m)", r0, false, "change {r0}")?;
+        check_scale("g (m/s^2)", g, false, "change {g}")?;
+        check_scale("density (kg/m^3)", rho, false, "change {density}")?;
+        check_scale("log length (m)", l, false, "change {length}")?;
+        check_scale("initial speed v0 (m/s)", v0, true, "change {v0}")?;
         // The slope component of gravity g sin alpha divides accelerations
         // (a over g sin alpha): a subnormal alpha_deg (4.9e-324) becomes 0 rad.
         check_scale(
             "slope angle alpha (rad)",
             self.alpha,
             false,
-            "change --alpha-deg",
+            "change {alpha_deg}",
         )?;
         let area = PI * r0 * r0;
         check_scale(
             "initial cross-section pi r0^2 (m^2)",
             area,
             false,
-            "change --r0",
+            "change {r0}",
         )?;
         let m0 = self.initial_mass();
         // The shape's own formulae (`docs/snowball-and-losses.md` §1.1):
@@ -210,24 +210,24 @@ impl Scenario {
                 "moment of inertia about the contact line 3 m0 r0^2/2, eq. (56) (kg m^2)",
                 "initial kinetic energy 3 m0 v0^2/4, eq. (7) (J)",
                 "snow picked up per metre rolled rho l b, eq. (8) (kg/m)",
-                "change --density, --length or --r0",
-                "change --snow-depth, --density or --length",
+                "change {density}, {length} or {r0}",
+                "change {snow_depth}, {density} or {length}",
             ),
             Shape::Sphere => (
                 "initial mass of the ball m0 = 4 pi rho r0^3/3 (kg)",
                 "moment of inertia of the ball about the contact point 7 m0 r0^2/5 (kg m^2)",
                 "initial kinetic energy of the ball 7 m0 v0^2/10 (J)",
                 "snow picked up per metre rolled rho b w, w the swath width (kg/m)",
-                "change --density or --r0",
-                "change --snow-depth, --density, --swath-width or --r0",
+                "change {density} or {r0}",
+                "change {snow_depth}, {density}, {swath_width} or {r0}",
             ),
         };
         let one_plus_k = 1.0 + self.shape.inertia_factor();
         check_scale(mass, m0, false, hint)?;
         check_scale(inertia, one_plus_k * m0 * r0 * r0, false, hint)?;
         let hint = match self.shape {
-            Shape::Cylinder => "change --g, --density, --length or --r0",
-            Shape::Sphere => "change --g, --density or --r0",
+            Shape::Cylinder => "change {g}, {density}, {length} or {r0}",
+            Shape::Sphere => "change {g}, {density} or {r0}",
         };
         check_scale("weight m0 g (N)", m0 * g, false, hint)?;
         check_scale(
@@ -237,8 +237,8 @@ impl Scenario {
             hint,
         )?;
         let hint = match self.shape {
-            Shape::Cylinder => "change --v0, --density, --length or --r0",
-            Shape::Sphere => "change --v0, --density or --r0",
+            Shape::Cylinder => "change {v0}, {density}, {length} or {r0}",
+            Shape::Sphere => "change {v0}, {density} or {r0}",
         };
         check_scale(kinetic, 0.5 * one_plus_k * m0 * v0 * v0, true, hint)?;
         let swath = self.body().swath(r0);
@@ -247,7 +247,7 @@ impl Scenario {
             "area picked up per metre rolled b/pi relative to r0^2 (1/m)",
             b / (PI * r0 * r0),
             true,
-            "change --snow-depth or --r0",
+            "change {snow_depth} or {r0}",
         )
     }
 
@@ -380,7 +380,7 @@ fn swath_of(file: &ScenarioFile) -> Result<Swath, ParamError> {
                 value: file.snow_depth,
                 expected: "snow_depth <= r0 with swath_width = chord (the chord 2 sqrt(2 r b - b^2) is where the \
                            layer's top cuts a ball resting on the ground under it); give a \
-                           larger --r0, a smaller --snow-depth or another --swath-width",
+                           larger {r0}, a smaller {snow_depth} or another {swath_width}",
             })
         }
         (Shape::Sphere, Some(SwathWidth::Chord(_))) => Ok(Swath::Chord),
@@ -391,7 +391,7 @@ fn swath_of(file: &ScenarioFile) -> Result<Swath, ParamError> {
                 SwathWidth::Chord(_) => f64::NAN,
             },
             expected: "no swath width for shape = cylinder (a log's swath is its \
-                       length); give --shape sphere or drop --swath-width",
+                       length); give {shape sphere} or drop {swath_width}",
         }),
     }
 }
@@ -460,9 +460,10 @@ mod tests {
             shape: Shape::Sphere,
             ..Default::default()
         };
-        let msg = Scenario::new(heavy).unwrap_err().to_string();
+        let err = Scenario::new(heavy).unwrap_err();
+        let msg = err.to_string();
         assert!(msg.contains("4 pi rho r0^3/3"), "{msg}");
-        assert!(!msg.contains("--length"), "{msg}");
+        assert!(!err.named_keys().contains(&"length"), "{msg}");
         let log = ScenarioFile {
             shape: Shape::Cylinder,
             ..heavy

@@ -558,7 +558,7 @@ fn turn_models_refuse_losses() {
             matches!(
                 err,
                 SimError::Param(ParamError::Unsupported {
-                    what: "--drag-coefficient",
+                    what: "drag_coefficient",
                     ..
                 })
             ),

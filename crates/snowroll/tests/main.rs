@@ -10,6 +10,7 @@ mod integrator;
 mod invariants;
 mod loney;
 mod losses;
+mod named_keys;
 mod sphere;
 mod streaming;
 mod support;

@@ -257,7 +257,7 @@ fn turn_models_refuse_losses_but_keep_a_ledger() {
             matches!(
                 err,
                 SimError::Param(ParamError::Unsupported {
-                    what: "--rolling-resistance",
+                    what: "rolling_resistance",
                     ..
                 })
             ),

@@ -96,7 +96,11 @@ pub fn grid_of(
     let grid = Grid::new(models, axes).map_err(|e| match e {
         GridError::Value { param, error } => {
             let text = given.get(param.key()).map_or("", String::as_str);
-            anyhow!("{}: {error}", origin(param.key(), text))
+            anyhow!(
+                "{}: {}",
+                origin(param.key(), text),
+                error.render(&crate::flag_name)
+            )
         }
         e => e.into(),
     })?;

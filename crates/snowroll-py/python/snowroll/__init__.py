@@ -13,9 +13,9 @@ range and default. Units are SI, angles in degrees.
 ('end-time', True)
 
 Functions: :func:`simulate`, :func:`turns`, :func:`models`, :func:`sweep`.
-Bad parameters raise ``ValueError`` with the library's message (where it
-names a CLI flag such as ``--snow-depth``, the keyword ``snow_depth`` stands
-instead), a parameter of the wrong type ``TypeError`` naming its keyword, a
+Bad parameters raise ``ValueError`` with the library's message (a
+parameter it names is written as its keyword, ``snow_depth=``, where the CLI
+writes ``--snow-depth``), a parameter of the wrong type ``TypeError`` naming its keyword, a
 failed integration ``RuntimeError``. Float keywords take any real number
 (int, float, numpy scalar), count keywords (``turns``, ``max_rows``,
 ``max_steps``) an integer. The computation runs with the GIL released, so threads

@@ -161,5 +161,5 @@ def sweep(
     of ``str`` or ``None``; ``settings`` every setting as the CLI's header
     records it. A result that cannot fit in ``max_memory`` or in the memory
     the machine has raises ``MemoryError``. Library messages name keywords
-    where the CLI's name flags (``--snow-depth`` becomes ``snow_depth``).
+    where the CLI's name flags (``--snow-depth`` becomes ``snow_depth=``).
     """

@@ -187,11 +187,11 @@ impl ModelKind {
             }
             (ModelKind::Loney, Shape::Sphere) if s.swath_width().is_some() => {
                 "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
-                 2r; with a fixed --swath-width integrate torque-cm instead"
+                 2r; with a fixed {swath_width} integrate torque-cm instead"
             }
             (ModelKind::Loney, Shape::Sphere) if !s.follows_area_law() => {
                 "the closed form needs the area law pi r^2 = pi r0^2 + b x of the natural swath \
-                 2r; with --swath-width chord integrate torque-cm instead"
+                 2r; with {swath_width chord} integrate torque-cm instead"
             }
             _ => return Ok(()),
         };

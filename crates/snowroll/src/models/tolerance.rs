@@ -88,7 +88,7 @@ pub fn check_tolerances(
                  (min(r0, sqrt(g r0)) for x, v; min(1, sqrt(g/r0)) for the turn models' theta, omega)",
                 crate::number::format_number(bound)
             ),
-            hint: "lower --atol",
+            hint: "lower {atol}",
         }),
         _ => Ok(()),
     }

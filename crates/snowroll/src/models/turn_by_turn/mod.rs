@@ -144,7 +144,7 @@ pub fn check_turn_scale(s: &Scenario, opts: &SimOptions) -> Result<(), crate::Pa
     };
     let r_n = s.initial_radius() + n as f64 * s.snow_depth();
     let m_n = std::f64::consts::PI * s.density() * s.length() * r_n * r_n;
-    let hint = "ask for fewer --turns, or change --snow-depth, --density, --length or --r0";
+    let hint = "ask for fewer {turns}, or change {snow_depth}, {density}, {length} or {r0}";
     crate::scenario::check_scale(
         "mass after the turns asked for pi rho l (r0 + N b)^2, eq. (37) (kg)",
         m_n,
@@ -168,11 +168,11 @@ pub fn check_turn_scale(s: &Scenario, opts: &SimOptions) -> Result<(), crate::Pa
 pub(crate) fn check_turn_losses(kind: ModelKind, opts: &SimOptions) -> Result<(), ParamError> {
     let l = &opts.losses;
     let what = if l.drag_coefficient > 0.0 {
-        "--drag-coefficient"
+        "drag_coefficient"
     } else if l.rolling_resistance > 0.0 {
-        "--rolling-resistance"
+        "rolling_resistance"
     } else if l.compaction_energy > 0.0 {
-        "--compaction-energy"
+        "compaction_energy"
     } else {
         return Ok(());
     };
@@ -181,7 +181,7 @@ pub(crate) fn check_turn_losses(kind: ModelKind, opts: &SimOptions) -> Result<()
         what,
         reason: "the turn models take no losses: their slip, smallest normal force, range of a \
                  per turn and pivot impact come from the energy integral of a turn, which \
-                 losses break (docs/snowball-and-losses.md §2.1); --ledger alone is recorded. \
+                 losses break (docs/snowball-and-losses.md §2.1); {ledger} alone is recorded. \
                  Use a circular model (torque-cm, energy, quasi-circular, ...) or snowless",
     })
 }
