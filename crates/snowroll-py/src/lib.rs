@@ -13,7 +13,7 @@
 //! Bad parameters raise `ValueError` with the library's message
 //! ([`ParamError`]); a failed integration raises `RuntimeError` ([`SimError`]).
 //! The library names parameters by key and leaves their spelling to each
-//! front end: here the keyword (`snow_depth=`, [`keyword`]), where the
+//! front end: here the keyword (`snow_depth=`, `keyword`), where the
 //! command line writes its flag (`--snow-depth`).
 
 mod columns;
