@@ -353,6 +353,26 @@ impl SimError {
     }
 }
 
+/// The message of [`GridError::NoModel`](crate::sweep::GridError::NoModel), the models' parameter written by `name`.
+pub(crate) fn no_model(name: Namer<'_>) -> String {
+    format!(
+        "no model given: pass {} ID[,ID...] (`snowroll models` lists them)",
+        name("model", None)
+    )
+}
+
+impl crate::sweep::GridError {
+    /// The message with the parameters it names written by `name`
+    /// ([`ParamError::render`]).
+    pub fn render(&self, name: Namer<'_>) -> String {
+        match self {
+            crate::sweep::GridError::Value { error, .. } => error.render(name),
+            crate::sweep::GridError::NoModel => no_model(name),
+            other => other.to_string(),
+        }
+    }
+}
+
 /// A failure of a [`SampleSink`](crate::SampleSink), kept whole (its
 /// source chain is the sink's own error) and shared, so that
 /// [`SimError`] stays `Clone`.

@@ -138,13 +138,6 @@ impl Axis {
         self
     }
 
-    /// Leaves `share` (0 to 0.5) of the drawn length empty after the last
-    /// data, at least.
-    pub fn margin_after(mut self, share: f64) -> Self {
-        self.margin_after = Some(share.clamp(0.0, 0.5));
-        self
-    }
-
     /// The label as drawn: `label [unit]`, or `label` alone for a
     /// dimensionless ratio (unit `1`).
     pub fn title(&self) -> String {

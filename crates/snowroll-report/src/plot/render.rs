@@ -378,6 +378,15 @@ pub fn png_size() -> (u32, u32) {
     (s(FIGURE_SIZE.0), s(FIGURE_SIZE.1))
 }
 
+impl Axis {
+    /// Leaves `share` (0 to 0.5) of the drawn length empty after the last
+    /// data, at least.
+    pub fn margin_after(mut self, share: f64) -> Self {
+        self.margin_after = Some(share.clamp(0.0, 0.5));
+        self
+    }
+}
+
 /// The drawn range of `axis` for data spanning `lo..hi`, with margins.
 fn pad(axis: &Axis, lo: f64, hi: f64) -> std::ops::Range<f64> {
     match axis.scale {

@@ -6,7 +6,7 @@ use std::fmt;
 
 use thiserror::Error;
 
-use crate::error::{Namer, ParamError};
+use crate::error::ParamError;
 use crate::number::{format_number, READABLE_DIGITS};
 use crate::params::{Kind, Settings, Value, PARAMS, TABLE};
 
@@ -172,7 +172,7 @@ pub enum GridError {
         param: String,
     },
     /// No model to run.
-    #[error("{}", no_model(&crate::error::neutral_name))]
+    #[error("{}", crate::error::no_model(&crate::error::neutral_name))]
     NoModel,
     /// Too many points.
     #[error(
@@ -186,26 +186,6 @@ pub enum GridError {
         /// [`MAX_GRID_POINTS`](super::MAX_GRID_POINTS).
         limit: u64,
     },
-}
-
-/// The message of [`GridError::NoModel`], the models' parameter written by `name`.
-fn no_model(name: Namer<'_>) -> String {
-    format!(
-        "no model given: pass {} ID[,ID...] (`snowroll models` lists them)",
-        name("model", None)
-    )
-}
-
-impl GridError {
-    /// The message with the parameters it names written by `name`
-    /// ([`ParamError::render`]).
-    pub fn render(&self, name: Namer<'_>) -> String {
-        match self {
-            GridError::Value { error, .. } => error.render(name),
-            GridError::NoModel => no_model(name),
-            other => other.to_string(),
-        }
-    }
 }
 
 /// A count as the outputs write numbers: whole up to 10^15, beyond that

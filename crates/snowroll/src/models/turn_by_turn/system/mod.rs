@@ -3,6 +3,7 @@
 //! distance, hop, slip, pivot impact) and its energy ledger.
 
 use crate::portable::Portable as _;
+mod access;
 mod ahead;
 mod closed;
 mod doubt;
@@ -468,37 +469,5 @@ impl TurnSystem {
         } else {
             self.x_start + r * theta
         }
-    }
-
-    pub(crate) fn turn(&self) -> u64 {
-        self.turn
-    }
-
-    pub(crate) fn dynamics(&self) -> &TurnDynamics {
-        &self.dynamics
-    }
-
-    pub(crate) fn turn_start_x(&self) -> Meters {
-        self.x_start
-    }
-
-    pub(crate) fn snow_depth(&self) -> Meters {
-        self.b
-    }
-
-    pub(crate) fn rho_l(&self) -> f64 {
-        self.rho_l
-    }
-
-    pub(crate) fn collision(&self) -> CollisionModel {
-        self.collision
-    }
-
-    pub(crate) fn start_mass(&self) -> f64 {
-        self.mass
-    }
-
-    pub(crate) fn pivot_impact(&self) -> &PivotImpact {
-        &self.impact
     }
 }
