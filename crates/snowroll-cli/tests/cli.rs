@@ -1973,3 +1973,46 @@ fn regression_32_architecture_names_each_crates_dependencies() {
         assert_eq!(named, deps, "{name}: the table against its Cargo.toml");
     }
 }
+
+/// Issue 32, item 3, where no closed form confirms the hop (`--collision
+/// pivot`): at 5.4026775058442° turn 3's least N is within the
+/// integrator's error of 0 and the hop turn moved with `--rtol` without a
+/// word. The run says so on stderr and in the output's notes (CSV `# note =`
+/// and JSON `notes`), naming the turn; 5.41° (clear of it) says nothing.
+#[test]
+fn turns_say_when_a_pivot_hop_may_depend_on_the_tolerance() {
+    let run = |alpha: &str, format: &str| {
+        let out = snowroll()
+            .args([
+                "turns",
+                "--collision",
+                "pivot",
+                "--turns",
+                "50",
+                "--rtol",
+                "1e-8",
+            ])
+            .args(["--alpha-deg", alpha, "--format", format])
+            .assert()
+            .success();
+        let o = out.get_output();
+        (
+            String::from_utf8(o.stdout.clone()).unwrap(),
+            String::from_utf8(o.stderr.clone()).unwrap(),
+        )
+    };
+    let said = "the first hop may depend on the tolerance: turn 3 keeps least N/(m_k g) = ";
+    let (csv, stderr) = run("5.402677505844167", "csv");
+    assert!(stderr.contains(&format!("note: {said}")), "{stderr}");
+    assert!(csv.contains(&format!("# note = {said}")), "{csv}");
+    let (json, _) = run("5.402677505844167", "json");
+    let v: Value = serde_json::from_str(&json).unwrap();
+    let notes = v["notes"].as_array().unwrap();
+    assert!(
+        notes.iter().any(|n| n.as_str().unwrap().starts_with(said)),
+        "{notes:?}"
+    );
+    let (csv, stderr) = run("5.41", "csv");
+    assert!(!stderr.contains("may depend on the tolerance"), "{stderr}");
+    assert!(!csv.contains("may depend on the tolerance"), "{csv}");
+}
