@@ -6,8 +6,10 @@
 
 mod circular;
 mod closed_form;
+mod coefficients;
 mod contact;
 pub mod exact_geometry;
+mod in_turn;
 mod ledger;
 mod ode;
 mod tolerance;
