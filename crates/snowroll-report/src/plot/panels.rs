@@ -5,9 +5,10 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::font::register_embedded_font;
 use super::render::{
-    png_size, register_embedded_font, with_legend_group, with_provenance_comment, Part,
-    FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE,
+    png_size, with_legend_group, with_provenance_comment, Part, FIGURE_SIZE, PNG_SCALE,
+    SVG_OVERSAMPLE,
 };
 use super::{Chart, PlotError, Provenance};
 
