@@ -29,12 +29,13 @@ use snowroll::params::{Kind, Scope};
 use snowroll::trajectory::Collected;
 use snowroll::{
     run_turns_into, validity_warnings, Given, LedgerRow, ModelKind, Param, ParamError, Sampling,
-    Scenario, Settings, SimError, SimOptions, Stop, Trajectory, TurnTable, Value, PARAMS,
+    Scenario, Settings, SimError, SimOptions, Stop, Trajectory, TurnSummary, TurnTable, Value,
+    PARAMS,
 };
 use snowroll_io::RunParams;
 
 pub(crate) use columns::record;
-use columns::{common, trajectory_columns, turn_columns};
+use columns::{common, trajectory_columns, turn_columns, SummaryRecord};
 
 /// A library message in Python's words: each CLI flag `--kebab-name` (two
 /// dashes, then a lowercase letter, then letters, digits and dashes) becomes
@@ -259,7 +260,7 @@ fn simulate<'py>(
         .iter()
         .map(ToString::to_string)
         .collect();
-    let out = common(py, kind, &params, &traj.stop)?;
+    let out = common(py, kind, params, &traj.stop)?;
     // The closed-form terminal velocity where one exists, as the CLI's JSON `stop` has it.
     let v_terminal = (kind == ModelKind::Snowless)
         .then(|| snowroll::losses::terminal_velocity(&scenario, &opts.losses))
@@ -267,7 +268,7 @@ fn simulate<'py>(
     if let (Some(vt), Some(stop)) = (v_terminal, out.get_item("stop")?) {
         stop.set_item("v_terminal_m_s", vt)?;
     }
-    out.set_item("columns", trajectory_columns(py, &traj)?)?;
+    trajectory_columns(py, &traj)?.into_result(&out)?;
     Ok(out)
 }
 
@@ -300,7 +301,8 @@ fn turns<'py>(
     base.options.sampling = Sampling::Ends;
     base.options.turns = Some(wanted);
     let (scenario, opts) = inputs(&given, base)?;
-    let guard = guard::Guard::new(max_memory, guard::turn_bytes());
+    let guard = guard::Guard::new(max_memory, guard::turn_bytes())
+        .with_clock_every(guard::TURN_ROWS_PER_CLOCK);
     guard.check_up_front(wanted as f64, "turns()")?;
     let mut sink = guard::GuardedTurns {
         // The turns' room at once, fallibly (no doubling to pay for).
@@ -328,9 +330,9 @@ fn turns<'py>(
         .iter()
         .map(ToString::to_string)
         .collect();
-    let out = common(py, kind, &params, &table.stop)?;
-    out.set_item("columns", turn_columns(py, &table)?)?;
-    out.set_item("summary", record(py, &table.summary)?)?;
+    let out = common(py, kind, params, &table.stop)?;
+    turn_columns(py, &table)?.into_result(&out)?;
+    out.set_item("summary", Bound::new(py, SummaryRecord(table.summary))?)?;
     Ok(out)
 }
 
