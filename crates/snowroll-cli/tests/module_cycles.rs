@@ -228,22 +228,19 @@ fn circles(files: &[(ModPath, String)]) -> Vec<String> {
             }
         }
         for k in 0..n {
-            for i in 0..n {
-                if reach[i][k] {
-                    for j in 0..n {
-                        if reach[k][j] {
-                            reach[i][j] = true;
-                        }
-                    }
+            let via = reach[k].clone();
+            for row in reach.iter_mut().filter(|row| row[k]) {
+                for (r, v) in row.iter_mut().zip(&via) {
+                    *r |= *v;
                 }
             }
         }
         let mut seen = BTreeSet::new();
-        for i in 0..n {
-            if !reach[i][i] || seen.contains(&i) {
+        for (i, row) in reach.iter().enumerate() {
+            if !row[i] || seen.contains(&i) {
                 continue;
             }
-            let circle: Vec<usize> = (0..n).filter(|&j| reach[i][j] && reach[j][i]).collect();
+            let circle: Vec<usize> = (0..n).filter(|&j| row[j] && reach[j][i]).collect();
             seen.extend(circle.iter().copied());
             let names: Vec<&str> = circle.iter().map(|&j| nodes[j].as_str()).collect();
             let parent = if parent.is_empty() {
