@@ -12,6 +12,26 @@ use super::render::{
 };
 use super::{Chart, PlotError, Provenance};
 
+impl Chart {
+    /// Renders the chart as an SVG document (text as `<text>` elements in
+    /// `sans-serif`), with a comment recording `provenance`.
+    ///
+    /// # Errors
+    /// [`PlotError`] when the chart is invalid or drawing fails.
+    pub fn render_svg(&self, provenance: &Provenance) -> Result<String, PlotError> {
+        render_panels_svg(std::slice::from_ref(self), provenance)
+    }
+
+    /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
+    /// recording `provenance` in `iTXt` chunks (`Software`, `Title`, `Comment`).
+    ///
+    /// # Errors
+    /// [`PlotError`] when the chart is invalid, drawing or encoding fails.
+    pub fn render_png(&self, provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
+        render_panels_png(std::slice::from_ref(self), provenance)
+    }
+}
+
 /// Renders `charts` as one SVG document, one panel of [`FIGURE_SIZE`]
 /// each, the first at the top: each with its title, axes, curves and legend
 /// column, the footer naming `provenance` under the last (and the first

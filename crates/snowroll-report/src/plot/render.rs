@@ -64,24 +64,6 @@ impl Chart {
         (pad(&self.x, x0, x1), pad(&self.y, y0, y1))
     }
 
-    /// Renders the chart as an SVG document (text as `<text>` elements in
-    /// `sans-serif`), with a comment recording `provenance`.
-    ///
-    /// # Errors
-    /// [`PlotError`] when the chart is invalid or drawing fails.
-    pub fn render_svg(&self, provenance: &Provenance) -> Result<String, PlotError> {
-        super::render_panels_svg(std::slice::from_ref(self), provenance)
-    }
-
-    /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
-    /// recording `provenance` in `iTXt` chunks (`Software`, `Title`, `Comment`).
-    ///
-    /// # Errors
-    /// [`PlotError`] when the chart is invalid, drawing or encoding fails.
-    pub fn render_png(&self, provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
-        super::render_panels_png(std::slice::from_ref(self), provenance)
-    }
-
     pub(super) fn backend(&self, e: impl fmt::Display) -> PlotError {
         PlotError::Backend {
             chart: self.name.clone(),

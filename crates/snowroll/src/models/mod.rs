@@ -15,6 +15,7 @@ mod ode;
 mod tolerance;
 mod turn_by_turn;
 mod validity;
+mod warning_code;
 mod warnings;
 
 pub use circular::{Balance, CircularModel, Coefficients, Derivation};

@@ -31,6 +31,7 @@
 
 mod balance;
 mod model;
+mod per_mass;
 mod rhs;
 mod system;
 mod terminal;
