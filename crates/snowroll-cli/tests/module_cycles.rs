@@ -8,9 +8,11 @@
 //! lifted to the siblings it joins: `models::circular::system` using
 //! `models::contact` is `circular → contact` among the children of
 //! `models`. Among the children of any module (the crate root included),
-//! those edges must form no circle. Only the path written is followed, not
-//! a re-export it may go through. Test code (from the first `#[cfg(test)]`
-//! of a file on) and comments are left out, as they import freely.
+//! those edges must form no circle. A name a module re-exports (`pub use`)
+//! is followed to the module it comes from: `crate::models::Coefficients`
+//! is a use of `models::coefficients`. Test code (from the first
+//! `#[cfg(test)]` of a file on) and comments are left out, as they import
+//! freely.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -72,11 +74,11 @@ fn split_top(inner: &str) -> Vec<&str> {
 }
 
 /// The paths of a `use` tree (spaces only around `as`), braces expanded:
-/// `a::{b, c::{d as e, f}}` gives `a::b`, `a::c::d`, `a::c::f`.
+/// `a::{b, c::{d as e, f}}` gives `a::b`, `a::c::d as e`, `a::c::f` (an
+/// alias stays on the last segment; [`Use::of`] splits it off).
 fn expand(tree: &str) -> Vec<Vec<String>> {
     let Some(open) = tree.find('{') else {
-        let path = tree.split(" as ").next().unwrap_or(tree);
-        return vec![path.split("::").map(str::to_string).collect()];
+        return vec![tree.split("::").map(str::to_string).collect()];
     };
     let prefix: Vec<String> = tree[..open]
         .trim_end_matches("::")
@@ -97,9 +99,45 @@ fn expand(tree: &str) -> Vec<Vec<String>> {
     out
 }
 
+/// A path a file's code names: a `use` (re-exported when `public`, under
+/// `alias` when given) or a path written in the code.
+struct Use {
+    path: Vec<String>,
+    alias: Option<String>,
+    public: bool,
+}
+
+impl Use {
+    /// A path whose last segment may carry ` as alias`.
+    fn of(mut path: Vec<String>, public: bool) -> Self {
+        let mut alias = None;
+        if let Some(last) = path.pop() {
+            let mut words = last.split(" as ");
+            path.push(words.next().unwrap_or("").to_string());
+            alias = words.next().map(str::to_string);
+        }
+        Use {
+            path,
+            alias,
+            public,
+        }
+    }
+}
+
+/// Whether the code before a `use` makes it public: `pub` or `pub(…)`.
+fn is_public(before: &str) -> bool {
+    let head = before.trim_end();
+    if head.ends_with(')') {
+        if let Some(open) = head.rfind('(') {
+            return head[..open].trim_end().ends_with("pub");
+        }
+    }
+    head.ends_with("pub") && !head[..head.len() - 3].ends_with(|c: char| is_ident(c))
+}
+
 /// Every path a file's code names: its `use` trees, and each
 /// `crate::`/`super::`/`self::` path written elsewhere.
-fn paths(code: &str) -> Vec<Vec<String>> {
+fn paths(code: &str) -> Vec<Use> {
     let mut out = Vec::new();
     let text = code;
     // `use` trees.
@@ -124,7 +162,8 @@ fn paths(code: &str) -> Vec<Vec<String>> {
                 .replace(&format!(" {tight}"), tight)
                 .replace(&format!("{tight} "), tight);
         }
-        out.extend(expand(&tree));
+        let public = is_public(&text[..start]);
+        out.extend(expand(&tree).into_iter().map(|p| Use::of(p, public)));
     }
     // Paths in expressions and types.
     for root in ["crate::", "super::", "self::"] {
@@ -138,23 +177,26 @@ fn paths(code: &str) -> Vec<Vec<String>> {
             let len = text[start..]
                 .find(|c: char| !(is_ident(c) || c == ':'))
                 .unwrap_or(text.len() - start);
-            out.push(
-                text[start..start + len]
-                    .split("::")
-                    .filter(|s| !s.is_empty())
-                    .map(str::to_string)
-                    .collect(),
-            );
+            let path = text[start..start + len]
+                .split("::")
+                .filter(|s| !s.is_empty())
+                .map(str::to_string)
+                .collect();
+            out.push(Use::of(path, false));
         }
     }
     out
 }
 
-/// The module a path `p`, written in module `me`, names: the longest of
-/// its leading module names that is a module of the crate (`modules`).
-fn target(me: &ModPath, p: &[String], modules: &BTreeSet<ModPath>) -> Option<ModPath> {
+/// The names each module re-exports (`pub use`), to the absolute path of
+/// what they name.
+type Reexports = BTreeMap<ModPath, BTreeMap<String, Vec<String>>>;
+
+/// The absolute path (from the crate root) of a path `p` written in module
+/// `me`; `None` for a path outside the crate.
+fn absolute(me: &ModPath, p: &[String], modules: &BTreeSet<ModPath>) -> Option<Vec<String>> {
     let first = p.first()?;
-    let (mut base, rest): (ModPath, &[String]) = match first.as_str() {
+    let (mut base, rest): (Vec<String>, &[String]) = match first.as_str() {
         "crate" => (Vec::new(), &p[1..]),
         "super" | "self" => {
             let mut base = me.clone();
@@ -177,28 +219,60 @@ fn target(me: &ModPath, p: &[String], modules: &BTreeSet<ModPath>) -> Option<Mod
             (me.clone(), p)
         }
     };
-    for seg in rest {
+    base.extend(rest.iter().cloned());
+    Some(base)
+}
+
+/// The module an absolute path names: its leading module names, and where
+/// a name is re-exported by the module reached so far, the module of what
+/// it re-exports (followed at most `depth` times).
+fn resolve(path: &[String], modules: &BTreeSet<ModPath>, re: &Reexports, depth: u32) -> ModPath {
+    let mut base: ModPath = Vec::new();
+    for seg in path {
         let mut next = base.clone();
         next.push(seg.clone());
-        if !modules.contains(&next) {
-            break;
+        if modules.contains(&next) {
+            base = next;
+            continue;
         }
-        base = next;
+        if let Some(to) = re.get(&base).and_then(|names| names.get(seg)) {
+            if depth > 0 && to.as_slice() != next.as_slice() {
+                return resolve(to, modules, re, depth - 1);
+            }
+        }
+        break;
     }
-    Some(base)
+    base
 }
 
 /// The circles among sibling modules of one crate whose files are `files`
 /// (module path, source text), each as `parent: a → b → … → a`.
 fn circles(files: &[(ModPath, String)]) -> Vec<String> {
     let modules: BTreeSet<ModPath> = files.iter().map(|(m, _)| m.clone()).collect();
-    // Edges among the children of each parent.
-    let mut graphs: BTreeMap<ModPath, BTreeMap<String, BTreeSet<String>>> = BTreeMap::new();
-    for (me, text) in files {
-        for p in paths(&code(text)) {
-            let Some(t) = target(me, &p, &modules) else {
+    let uses: Vec<(&ModPath, Vec<Use>)> = files.iter().map(|(m, t)| (m, paths(&code(t)))).collect();
+    let mut re = Reexports::new();
+    for (me, list) in &uses {
+        for u in list.iter().filter(|u| u.public) {
+            let Some(to) = absolute(me, &u.path, &modules) else {
                 continue;
             };
+            let Some(name) = u.alias.clone().or_else(|| to.last().cloned()) else {
+                continue;
+            };
+            if name != "*" && name != "self" {
+                re.entry((*me).clone()).or_default().insert(name, to);
+            }
+        }
+    }
+    // Edges among the children of each parent.
+    let mut graphs: BTreeMap<ModPath, BTreeMap<String, BTreeSet<String>>> = BTreeMap::new();
+    for (me, list) in &uses {
+        let me: &ModPath = me;
+        for u in list {
+            let Some(to) = absolute(me, &u.path, &modules) else {
+                continue;
+            };
+            let t = resolve(&to, &modules, &re, 16);
             let k = me.iter().zip(&t).take_while(|(a, b)| a == b).count();
             if k < me.len() && k < t.len() {
                 graphs
@@ -328,6 +402,13 @@ fn issue37_the_cycle_check_finds_a_circle_written_each_way() {
         file(&["m", "y"], "mod z;\n"),
     ];
     assert_eq!(circles(&deep), vec!["m: x ↔ y"]);
+    // Through a re-export of the parent: `crate::Thing` is `b`'s.
+    let reexported = [
+        file(&[], "mod a;\nmod b;\npub use b::{Thing as Thing, Other};\n"),
+        file(&["a"], "fn f(_: crate::Thing) {}\n"),
+        file(&["b"], "pub(crate) use super::a::g;\npub struct Thing;\n"),
+    ];
+    assert_eq!(circles(&reexported), vec!["the crate root: a ↔ b"]);
     let tree = [
         file(&[], "mod a;\nmod b;\n"),
         file(&["a"], "use super::b::Thing; // crate::a in a comment\n"),
