@@ -11,6 +11,7 @@ mod inputs;
 mod last_step;
 mod merge_bytes;
 mod model_list;
+mod module_cycles;
 mod output_files;
 mod paper;
 mod plot;

@@ -37,6 +37,14 @@ pub(crate) const MAX_MEMORY_DEFAULT: u64 = 2 << 30;
 /// nothing measurable.
 const SIGNAL_CHECK: Duration = Duration::from_millis(100);
 
+/// Rows of a turn table between two reads of the clock for
+/// [`SIGNAL_CHECK`] (a read cost about as much as keeping the row, a third
+/// of a `turns(100)` call's overhead). A turn is one integration of
+/// eq. (64) over 2π, microseconds, so 64 of them stay far below a tenth of
+/// a second. A trajectory's rows read it every row: one requested time may
+/// be far from the last.
+pub(crate) const TURN_ROWS_PER_CLOCK: u64 = 64;
+
 /// Bytes a row of each result holds until the call returns: the library's
 /// row, the ledger row, and one float per numpy column made from them.
 pub(crate) fn sample_bytes() -> u64 {
@@ -56,6 +64,10 @@ pub(crate) struct Guard {
     /// Bytes held besides the rows' `per_row` each.
     extra: u64,
     last_check: Instant,
+    /// Rows counted since the clock was last read.
+    unclocked: u64,
+    /// Rows between two reads of the clock (1: every row).
+    clock_every: u64,
     /// Why the run was stopped, raised when the call returns.
     stop: Option<PyErr>,
 }
@@ -82,8 +94,16 @@ impl Guard {
             rows: 0,
             extra: 0,
             last_check: Instant::now(),
+            unclocked: 0,
+            clock_every: 1,
             stop: None,
         }
+    }
+
+    /// The guard reading the clock only every `rows` rows.
+    pub(crate) fn with_clock_every(mut self, rows: u64) -> Self {
+        self.clock_every = rows.max(1);
+        self
     }
 
     /// The `MemoryError` for `rows` rows.
@@ -146,6 +166,12 @@ impl Guard {
             self.stop = Some(self.too_big(self.rows as f64, what));
             return Err(SinkError::new(Stopped("max_memory")));
         }
+        // The clock is read every `clock_every` rows.
+        self.unclocked += n;
+        if self.unclocked < self.clock_every {
+            return Ok(());
+        }
+        self.unclocked = 0;
         if self.last_check.elapsed() >= SIGNAL_CHECK {
             self.last_check = Instant::now();
             if let Err(e) = Python::attach(|py| py.check_signals()) {

@@ -30,12 +30,13 @@ use snowroll::params::{Kind, Scope};
 use snowroll::trajectory::Collected;
 use snowroll::{
     run_turns_into, validity_warnings, Given, LedgerRow, ModelKind, Param, ParamError, Sampling,
-    Scenario, Settings, SimError, SimOptions, Stop, Trajectory, TurnTable, Value, PARAMS,
+    Scenario, Settings, SimError, SimOptions, Stop, Trajectory, TurnSummary, TurnTable, Value,
+    PARAMS,
 };
 use snowroll_io::RunParams;
 
 pub(crate) use columns::record;
-use columns::{common, trajectory_columns, turn_columns};
+use columns::{common, trajectory_columns, turn_columns, SummaryRecord};
 
 /// A parameter that a library message names (by its key in the parameter
 /// table, with the word given with it), as a Python caller writes it: the
@@ -241,7 +242,7 @@ fn simulate<'py>(
         .iter()
         .map(ToString::to_string)
         .collect();
-    let out = common(py, kind, &params, &traj.stop)?;
+    let out = common(py, kind, params, &traj.stop)?;
     // The closed-form terminal velocity where one exists, as the CLI's JSON `stop` has it.
     let v_terminal = (kind == ModelKind::Snowless)
         .then(|| snowroll::losses::terminal_velocity(&scenario, &opts.losses))
@@ -249,7 +250,7 @@ fn simulate<'py>(
     if let (Some(vt), Some(stop)) = (v_terminal, out.get_item("stop")?) {
         stop.set_item("v_terminal_m_s", vt)?;
     }
-    out.set_item("columns", trajectory_columns(py, &traj)?)?;
+    trajectory_columns(py, &traj)?.into_result(&out)?;
     Ok(out)
 }
 
@@ -282,7 +283,8 @@ fn turns<'py>(
     base.options.sampling = Sampling::Ends;
     base.options.turns = Some(wanted);
     let (scenario, opts) = inputs(&given, base)?;
-    let guard = guard::Guard::new(max_memory, guard::turn_bytes());
+    let guard = guard::Guard::new(max_memory, guard::turn_bytes())
+        .with_clock_every(guard::TURN_ROWS_PER_CLOCK);
     guard.check_up_front(wanted as f64, "turns()")?;
     let mut sink = guard::GuardedTurns {
         // The turns' room at once, fallibly (no doubling to pay for).
@@ -311,9 +313,9 @@ fn turns<'py>(
         .iter()
         .map(ToString::to_string)
         .collect();
-    let out = common(py, kind, &params, &table.stop)?;
-    out.set_item("columns", turn_columns(py, &table)?)?;
-    out.set_item("summary", record(py, &table.summary)?)?;
+    let out = common(py, kind, params, &table.stop)?;
+    turn_columns(py, &table)?.into_result(&out)?;
+    out.set_item("summary", Bound::new(py, SummaryRecord(table.summary))?)?;
     Ok(out)
 }
 

@@ -146,6 +146,18 @@ def test_turns_equals_cli(cli, model, kwargs):
     assert t.summary["turns"] == kwargs["turns"]
 
 
+def test_turns_summary_equals_cli_json(cli):
+    """`t.summary` is the `summary` object of the CLI's JSON output, key for
+    key and bit for bit (the native module builds the dict itself, not
+    through serde_json: a field it left out would show here)."""
+    kwargs = {"turns": 120, "alpha_deg": 35}
+    t = snowroll.turns("turns", **kwargs)
+    stdout, _ = run_cli(cli, "turns", "--model", "turns", "--format", "json", *flags(kwargs))
+    doc = json.loads(stdout)
+    assert t.summary == doc["summary"]
+    assert [c["turns"] for c in t.summary["checkpoints"]] == [1, 2, 5, 10, 20, 50, 100, 120]
+
+
 def test_turns_default_count_equals_cli(cli):
     """With no `turns`, both run the CLI's default number of turns."""
     t = snowroll.turns()

@@ -18,7 +18,7 @@ use serde::Serialize;
 use snowroll::scenario::{Scenario, Shape};
 use snowroll::trajectory::Trajectory;
 
-use super::files::{comment_header, utf8};
+use super::csv_text::{comment_header, utf8};
 use super::ReportError;
 
 /// Significant digits kept in the animation data embedded in the page.

@@ -1,11 +1,9 @@
 //! The [`Report`] value and its parts: [`Metadata`], [`Figure`].
 
-use std::path::{Path, PathBuf};
-
 use crate::plot::{Chart, Provenance};
 use snowroll_io::{RunParams, VERSION};
 
-use super::{files, html, markdown, Animation, ClaimId, ClaimResult, ReportError};
+use super::{Animation, ClaimId, ClaimResult, ReportError};
 
 /// Title, version and parameters of a report.
 #[derive(Debug, Clone, PartialEq)]
@@ -226,44 +224,5 @@ impl Report {
                 })
             })
             .collect()
-    }
-
-    /// The self-contained HTML page, with the figures' SVGs inline.
-    ///
-    /// # Errors
-    /// [`ReportError`] when a figure cannot be drawn or the data not serialised.
-    pub fn to_html(&self) -> Result<String, ReportError> {
-        self.validate()?;
-        let svgs = self
-            .figures
-            .iter()
-            .map(|f| f.chart.render_svg(&f.provenance(&self.metadata)))
-            .collect::<Result<Vec<_>, _>>()?;
-        html::render(self, &svgs)
-    }
-
-    /// The Markdown report (figures linked as `figures/NAME.svg`).
-    pub fn to_markdown(&self) -> String {
-        markdown::render(self)
-    }
-
-    /// `claims.json`: version, parameters, tally and every claim result.
-    ///
-    /// # Errors
-    /// [`ReportError::Json`] if serialisation fails.
-    pub fn claims_json(&self) -> Result<String, ReportError> {
-        files::claims_json(self)
-    }
-
-    /// Writes the whole report into `dir` (created if missing) and returns
-    /// the paths written, in order.
-    ///
-    /// # Errors
-    /// [`ReportError`] when the report is invalid, a figure cannot be drawn
-    /// or a file cannot be written.
-    pub fn write_to(&self, dir: &Path) -> Result<Vec<PathBuf>, ReportError> {
-        self.validate()?;
-        let rendered = self.render_figures()?;
-        files::write_all(self, &rendered, dir)
     }
 }

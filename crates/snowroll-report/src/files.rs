@@ -5,67 +5,12 @@ use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use crate::plot::Scale;
 use serde::ser::{Serialize, SerializeMap, Serializer};
-use thiserror::Error;
 
-use crate::plot::{PlotError, Scale};
-
-use super::{Figure, Metadata, RenderedFigure, Report, Tally, CLAIMS_CSV};
-
-/// A report that could not be built or written.
-#[derive(Debug, Error)]
-#[non_exhaustive]
-pub enum ReportError {
-    /// Reading or writing a file failed. The message names the file; the
-    /// cause is the error's `source`, so that a chain of messages names it once.
-    #[error("{}", path.display())]
-    Io {
-        /// The file or folder.
-        path: PathBuf,
-        /// The underlying error.
-        #[source]
-        source: std::io::Error,
-    },
-    /// A figure could not be drawn.
-    #[error(transparent)]
-    Plot(#[from] PlotError),
-    /// A simulation behind the report failed.
-    #[error(transparent)]
-    Simulation(#[from] snowroll::error::SimError),
-    /// JSON serialisation failed.
-    #[error("JSON: {0}")]
-    Json(#[from] serde_json::Error),
-    /// CSV serialisation failed.
-    #[error("CSV: {0}")]
-    Csv(#[from] csv::Error),
-    /// A data file would carry NaN or infinity.
-    #[error("{figure}: {source}")]
-    NonFinite {
-        /// The figure or data file.
-        figure: String,
-        /// The number and where it is.
-        source: snowroll_io::NonFinite,
-    },
-    /// Two figures share a name, so their files would collide.
-    #[error("two figures are named {name:?}")]
-    DuplicateFigure {
-        /// The shared name.
-        name: String,
-    },
-    /// The animation data cannot be played.
-    #[error("animation: {reason}")]
-    InvalidAnimation {
-        /// What is wrong.
-        reason: &'static str,
-    },
-}
-
-fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> ReportError + '_ {
-    move |source| ReportError::Io {
-        path: path.to_path_buf(),
-        source,
-    }
-}
+use super::csv_text::{comment_header, utf8};
+use super::error::{io_err, ReportError};
+use super::{html, markdown, Figure, Metadata, RenderedFigure, Report, Tally, CLAIMS_CSV};
 
 /// Writes `bytes` to a temporary file next to `path`, then renames it into place.
 fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
@@ -87,18 +32,48 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
     result.map_err(io_err(path))
 }
 
-/// Writes `# key = value` comment lines: version, then parameters.
-pub(super) fn comment_header(
-    out: &mut Vec<u8>,
-    software: &str,
-    lines: &[(String, String)],
-) -> Result<(), ReportError> {
-    let io = io_err(Path::new("<memory>"));
-    let mut text = format!("# {software}\n");
-    for (k, v) in lines {
-        text.push_str(&format!("# {k} = {}\n", v.replace('\n', " ")));
+/// A report's outputs: the HTML page, the Markdown, `claims.json`, and
+/// every file written into a folder (here, above the renderers they call,
+/// rather than beside the report's types).
+impl Report {
+    /// The self-contained HTML page, with the figures' SVGs inline.
+    ///
+    /// # Errors
+    /// [`ReportError`] when a figure cannot be drawn or the data not serialised.
+    pub fn to_html(&self) -> Result<String, ReportError> {
+        self.validate()?;
+        let svgs = self
+            .figures
+            .iter()
+            .map(|f| f.chart.render_svg(&f.provenance(&self.metadata)))
+            .collect::<Result<Vec<_>, _>>()?;
+        html::render(self, &svgs)
     }
-    out.write_all(text.as_bytes()).map_err(io)
+
+    /// The Markdown report (figures linked as `figures/NAME.svg`).
+    pub fn to_markdown(&self) -> String {
+        markdown::render(self)
+    }
+
+    /// `claims.json`: version, parameters, tally and every claim result.
+    ///
+    /// # Errors
+    /// [`ReportError::Json`] if serialisation fails.
+    pub fn claims_json(&self) -> Result<String, ReportError> {
+        claims_json(self)
+    }
+
+    /// Writes the whole report into `dir` (created if missing) and returns
+    /// the paths written, in order.
+    ///
+    /// # Errors
+    /// [`ReportError`] when the report is invalid, a figure cannot be drawn
+    /// or a file cannot be written.
+    pub fn write_to(&self, dir: &Path) -> Result<Vec<PathBuf>, ReportError> {
+        self.validate()?;
+        let rendered = self.render_figures()?;
+        write_all(self, &rendered, dir)
+    }
 }
 
 /// The CSV of a figure: `#` lines with version, title, axes and parameters,
@@ -302,12 +277,4 @@ pub(super) fn write_all(
     let page = super::html::render(report, &svgs)?;
     put(dir.join("report.html"), page.as_bytes())?;
     Ok(written)
-}
-
-/// Converts CSV bytes to text.
-pub(super) fn utf8(out: Vec<u8>) -> Result<String, ReportError> {
-    String::from_utf8(out).map_err(|e| ReportError::Io {
-        path: PathBuf::from("<memory>"),
-        source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
-    })
 }

@@ -40,8 +40,10 @@ pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 mod animation;
 mod contact;
+mod csv_text;
 mod document;
 mod errata;
+mod error;
 mod files;
 mod findings;
 mod html;
@@ -58,7 +60,8 @@ mod snowball;
 
 pub use animation::{Animation, Frame};
 pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};
-pub use files::{figure_csv, ReportError};
+pub use error::ReportError;
+pub use files::figure_csv;
 /// The file in `data/` with every claim's row (linked from the pages).
 const CLAIMS_CSV: &str = "claims.csv";
 

@@ -7,7 +7,7 @@
 
 use std::fmt::Write as _;
 
-use super::markup::{esc, prose};
+use super::markup::{esc, markdown_prose, prose};
 use super::{ClaimId, ClaimResult, Report};
 
 /// Id of the section in the page.
@@ -147,11 +147,11 @@ pub(super) fn markdown(md: &mut String, report: &Report) {
         let _ = writeln!(
             md,
             "* {} **{} {}** (`{}`): {}.{see}",
-            crate::markdown::prose(r.lead),
+            markdown_prose(r.lead),
             found.verdict.symbol(),
             found.verdict.label(),
             r.claim,
-            crate::markdown::prose(&found.measured),
+            markdown_prose(&found.measured),
         );
     }
 }

@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 
 use super::findings::{headline, method_text, short_measured, Group};
+use super::markup::markdown_prose;
 use super::CLAIMS_CSV;
 use super::{notation, Report, Tally, EXPECTATION_NOTE};
 
@@ -17,17 +18,6 @@ fn cell(s: &str) -> String {
             .replace('>', "&gt;")
             .replace('|', "\\|")
             .replace(['\n', '\r'], " ")
-    })
-}
-
-/// Prose outside a table: [`cell`]'s notation, `<sub>`/`<sup>` for a group
-/// with no Unicode form (`C<sub>d</sub>`, `α<sub>K</sub>`), so that no
-/// ASCII index stands beside the set ones.
-pub(super) fn prose(s: &str) -> String {
-    notation::prettify_html(s, |t| {
-        t.replace('&', "&amp;")
-            .replace('<', "&lt;")
-            .replace('>', "&gt;")
     })
 }
 
@@ -214,7 +204,7 @@ fn tables_section(md: &mut String, report: &Report) {
             md,
             "\n## {}\n\n{}\n",
             t.title.replace('\n', " "),
-            prose(&t.caption)
+            markdown_prose(&t.caption)
         );
         let _ = writeln!(
             md,
@@ -244,7 +234,7 @@ fn animations_section(md: &mut String, report: &Report) {
             md,
             "{} Open `report.html` to play it; its frames are in \
              [its data (CSV)](data/{name}.csv).",
-            prose(&anim.caption),
+            markdown_prose(&anim.caption),
             name = anim.name()
         );
     }
@@ -263,7 +253,7 @@ fn figures_section(md: &mut String, report: &Report) {
             md,
             "{} Files: [SVG](figures/{name}.svg), [PNG](figures/{name}.png), \
              [data](data/{name}.csv). {}",
-            prose(&f.caption),
+            markdown_prose(&f.caption),
             f.provenance(m).line()
         );
     }

@@ -1,4 +1,5 @@
-//! Text into HTML: escaping, and prose in the report's one notation.
+//! Text into HTML and Markdown: escaping, and prose in the report's one
+//! notation.
 
 use crate::notation;
 
@@ -17,6 +18,18 @@ pub(crate) fn prose(s: &str) -> String {
         }
     }
     out
+}
+
+/// Markdown prose outside a table: the notation of the Markdown report's
+/// table cells, `<sub>`/`<sup>` for a group with no Unicode form
+/// (`C<sub>d</sub>`, `α<sub>K</sub>`), so that no ASCII index stands beside
+/// the set ones; `&`, `<`, `>` escaped, backticks kept (Markdown's code).
+pub(crate) fn markdown_prose(s: &str) -> String {
+    notation::prettify_html(s, |t| {
+        t.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+    })
 }
 
 /// Escapes text for HTML element content and attribute values.

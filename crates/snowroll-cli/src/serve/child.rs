@@ -18,7 +18,7 @@ use tokio::io::{AsyncRead, AsyncReadExt};
 use tokio::process::Command;
 use tokio::sync::watch;
 
-use super::conn::{race, stopped, Either};
+use super::wait::{race, stopped, Either};
 
 /// The most of a child's stderr kept (its messages are a few lines).
 const STDERR_KEPT: u64 = 64 * 1024;

@@ -15,7 +15,7 @@
 //! Request bodies are never read: hyper drains one that is already in
 //! memory (to keep the connection) and otherwise closes the connection.
 
-use std::future::{poll_fn, Future};
+use std::future::Future;
 use std::io;
 use std::pin::{pin, Pin};
 use std::sync::Arc;
@@ -35,37 +35,7 @@ use super::limits::{
     MAX_WAITING, RETRY_AFTER_S, SHUTDOWN_GRACE, WRITE_TIMEOUT,
 };
 use super::respond::{self, Server};
-
-/// One of two.
-#[derive(Debug)]
-pub enum Either<A, B> {
-    /// The first.
-    Left(A),
-    /// The second.
-    Right(B),
-}
-
-/// Whichever of `a` and `b` ends first (`a` when both are ready); the other
-/// is dropped.
-pub async fn race<A: Future, B: Future>(a: A, b: B) -> Either<A::Output, B::Output> {
-    let (mut a, mut b) = (pin!(a), pin!(b));
-    poll_fn(|cx| {
-        if let Poll::Ready(x) = a.as_mut().poll(cx) {
-            return Poll::Ready(Either::Left(x));
-        }
-        if let Poll::Ready(y) = b.as_mut().poll(cx) {
-            return Poll::Ready(Either::Right(y));
-        }
-        Poll::Pending
-    })
-    .await
-}
-
-/// Ends when `stop` turns true (at once if it is).
-pub async fn stopped(mut stop: watch::Receiver<bool>) {
-    // An error: the sender is gone, which only a stopping server does.
-    let _ = stop.wait_for(|s| *s).await;
-}
+use super::wait::{race, stopped, Either};
 
 /// Ends when the server stops or asks idle connections to close.
 async fn stopped_or_shed(stop: watch::Receiver<bool>, mut shed: watch::Receiver<u64>) {

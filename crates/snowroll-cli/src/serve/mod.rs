@@ -27,6 +27,7 @@ mod files;
 mod limits;
 mod query;
 mod respond;
+mod wait;
 
 use std::io::Write;
 use std::net::{IpAddr, SocketAddr};

@@ -15,13 +15,13 @@ use tokio::sync::{watch, OwnedSemaphorePermit, Semaphore};
 use tokio::time::{timeout, Instant};
 
 use super::child::{self, Ended, Limits};
-use super::conn::{race, stopped, Either};
 use super::files;
 use super::limits::{
     MAX_ANSWER, MAX_BODY, MAX_QUEUED, MAX_RUNS, MAX_SECONDS, MAX_URL, QUEUE_WAIT, RETRY_AFTER_S,
     SEND_TIMEOUT,
 };
 use super::query::{self, Endpoint, Refused};
+use super::wait::{race, stopped, Either};
 use crate::console::report;
 
 /// What every request shares.

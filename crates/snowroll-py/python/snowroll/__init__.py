@@ -27,6 +27,7 @@ from __future__ import annotations
 import functools as _functools
 import inspect as _inspect
 import numbers as _numbers
+import sys as _sys
 import warnings as _warnings
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -103,7 +104,33 @@ def _suggesting(f: Any) -> Any:
 class _Columns:
     """Columns as numpy arrays, by attribute (``r.v_m_s``) or key (``r["v_m_s"]``)."""
 
-    _columns: Dict[str, Any]
+    # The columns by name. A column with a mask (|F|/N) comes from the
+    # native module as its data, with the mask in `_masks`; the pair becomes
+    # a `numpy.ma.MaskedArray` when the columns are first read (numpy.ma's
+    # constructor is Python code, a few microseconds that a call which reads
+    # no column should not pay).
+    _cols: Dict[str, Any]
+    _masks: Optional[Dict[str, Any]] = None
+
+    @property
+    def _columns(self) -> Dict[str, Any]:
+        cols = self.__dict__.get("_cols", {})
+        masks = self.__dict__.get("_masks")
+        if masks:
+            for name, mask in masks.items():
+                cols[name] = _np.ma.masked_array(cols[name], mask=mask)
+            self._masks = None
+        return cols
+
+    @_columns.setter
+    def _columns(self, columns: Dict[str, Any]) -> None:
+        self._cols = columns
+        self._masks = None
+
+    def _set_raw_columns(self, raw: Dict[str, Any]) -> None:
+        # The native module's columns and their masks, as it returned them.
+        self._cols = raw["columns"]
+        self._masks = raw["masks"]
 
     @property
     def columns(self) -> List[str]:
@@ -115,7 +142,7 @@ class _Columns:
 
     def __getattr__(self, name: str) -> Any:
         # Only called when normal lookup fails: columns by attribute.
-        columns = self.__dict__.get("_columns", {})
+        columns = self._columns if "_cols" in self.__dict__ else {}
         if name in columns:
             return columns[name]
         raise AttributeError(
@@ -195,7 +222,28 @@ class _Columns:
         )
 
 
-class Result(_Columns):
+class _Run(_Columns):
+    """What :class:`Result` and :class:`TurnResult` share: the run's
+    parameters, made a dict when first read (the native module returns the
+    library's record; its dict is a fifth of what a call would otherwise
+    add to the library's own time)."""
+
+    _params: Any
+
+    @property
+    def params(self) -> Dict[str, Any]:
+        """The run's parameters (the keys of the CLI's output metadata)."""
+        p = self._params
+        if type(p) is not dict:
+            p = self._params = p.to_dict()
+        return p
+
+    @params.setter
+    def params(self, value: Dict[str, Any]) -> None:
+        self._params = value
+
+
+class Result(_Run):
     """One trajectory: what :func:`simulate` returns.
 
     Attributes: the columns (``t_s``, ``x_m``, ``v_m_s``, ``a_m_s2``, ``r_m``,
@@ -211,9 +259,9 @@ class Result(_Columns):
     """
 
     def __init__(self, raw: Dict[str, Any]) -> None:
-        self._columns = raw["columns"]
+        self._set_raw_columns(raw)
         self.stop: Dict[str, Any] = raw["stop"]
-        self.params: Dict[str, Any] = raw["params"]
+        self._params = raw["params"]
         self.model: str = raw["model"]
         self.equation: str = raw["equation"]
         self.version: str = raw["version"]
@@ -233,7 +281,7 @@ class Result(_Columns):
         return _plot.plot_runs([self])
 
 
-class TurnResult(_Columns):
+class TurnResult(_Run):
     """One row per turn: what :func:`turns` returns.
 
     Columns as numpy arrays (``turn``, ``t_start_s``, ``x_start_m``,
@@ -248,14 +296,27 @@ class TurnResult(_Columns):
     """
 
     def __init__(self, raw: Dict[str, Any]) -> None:
-        self._columns = raw["columns"]
-        self.summary: Dict[str, Any] = raw["summary"]
+        self._set_raw_columns(raw)
+        self._summary = raw["summary"]
         self.stop: Dict[str, Any] = raw["stop"]
-        self.params: Dict[str, Any] = raw["params"]
+        self._params = raw["params"]
         self.model: str = raw["model"]
         self.equation: str = raw["equation"]
         self.version: str = raw["version"]
         self.warnings: List[str] = raw["warnings"]
+
+    @property
+    def summary(self) -> Dict[str, Any]:
+        """The long-run means of a/(g sin alpha), as a dict (made when first
+        read from the library's record)."""
+        s = self._summary
+        if type(s) is not dict:
+            s = self._summary = s.to_dict()
+        return s
+
+    @summary.setter
+    def summary(self, value: Dict[str, Any]) -> None:
+        self._summary = value
 
     def __repr__(self) -> str:
         return (
@@ -530,7 +591,9 @@ def _axis(key: str, value: Any) -> Any:
             return _number(key, value[()])
         if value.ndim != 1:
             raise TypeError(f"{key}: expected a 1-D array, got {value.ndim} dimensions")
-        return value
+        # As float64, each value rounded as float() rounds it: the native
+        # module reads the array's buffer at once (no Python float a value).
+        return _np.asarray(value, dtype=_np.float64)
     if isinstance(value, (bool, _np.bool_)) or not hasattr(value, "__iter__"):
         return _number(key, value)
     return [_number(key, v) for v in value]
@@ -561,9 +624,12 @@ def _number(name: str, value: Any) -> Optional[float]:
     """``None``, or ``value`` (any real number: int, float, numpy scalar) as a
     float, rounded as the native module would round it; ``TypeError`` naming
     the keyword for anything else (a ``str`` is not read as a number)."""
+    kind = type(value)
+    if kind is float:
+        return value
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, _numbers.Real):
+    if kind is not int and (isinstance(value, bool) or not isinstance(value, _numbers.Real)):
         raise TypeError(f"{name}: expected a number, got {type(value).__name__}")
     try:
         return float(value)
@@ -586,9 +652,12 @@ def _count(name: str, value: Any, lowest: int = 1) -> Optional[int]:
     the keyword and its range for an integer outside it."""
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
+    if type(value) is int:
+        n = value
+    elif isinstance(value, bool) or not isinstance(value, _numbers.Integral):
         raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
-    n = int(value)
+    else:
+        n = int(value)
     if not lowest <= n <= _COUNT_MAX:
         raise ValueError(
             f"{name} = {n} is out of range: expected an integer {lowest} <= {name} <= 2^64 - 1"
@@ -668,21 +737,80 @@ def _keywords(function: str) -> List[Dict[str, Any]]:
     )
 
 
-def _checked(function: str, params: Mapping[str, Any]) -> Dict[str, Any]:
-    """The keywords of ``function``, each checked and converted by its kind:
-    an unknown keyword or a wrong type raises ``TypeError`` and an
-    out-of-range count ``ValueError``, each naming the keyword (the native
-    module would raise ``TypeError`` or ``OverflowError`` without it)."""
+def _allowed(function: str) -> List[str]:
+    """The keywords ``function`` takes, in its keyword order."""
     allowed = [p["key"] for p in _keywords(function)]
     if function != "models":
         allowed.append("max_memory")
-    out = {}
-    for k, v in params.items():
-        p = _PARAM.get(k)
-        if p is None or k not in allowed:
-            raise TypeError(_unexpected(function, k, allowed))
-        out[k] = _CHECK_OF_KIND[p["kind"]](k, v)
+    return allowed
+
+
+# Each function's keywords and the check of each (`max_memory` is a
+# keyword of its own, so it has no check here), built once: a call looks
+# its keywords up instead of sorting the table again.
+_ALLOWED = {f: _allowed(f) for f in ("simulate", "turns", "models")}
+_CHECKS = {
+    f: {p["key"]: _CHECK_OF_KIND[p["kind"]] for p in _keywords(f)}
+    for f in ("simulate", "turns", "models")
+}
+
+
+# Each function's keywords of a real kind, and of the list kind: a float
+# or an int given to one of them, or a list of floats and ints, is converted
+# here as `_number` would convert it, without a call (a call per keyword was
+# most of what this wrapper added to a call).
+_REALS = {
+    f: {k for k, check in checks.items() if check in (_number, _number_or_text)}
+    for f, checks in _CHECKS.items()
+}
+_LISTS = {f: {k for k, check in checks.items() if check is _numbers_list} for f, checks in _CHECKS.items()}
+
+
+def _plain_reals(values: List[Any]) -> Optional[List[float]]:
+    """A list of floats and ints as floats; ``None`` when an item is of
+    another type or an int too large for a float (`_number` words those)."""
+    out = []
+    for v in values:
+        t = type(v)
+        if t is float:
+            out.append(v)
+        elif t is int and -_FLOAT_INT_MAX <= v <= _FLOAT_INT_MAX:
+            out.append(float(v))
+        else:
+            return None
     return out
+
+
+# The largest int float() takes (beyond it, OverflowError).
+_FLOAT_INT_MAX = int(_sys.float_info.max)
+
+
+def _checked(function: str, params: Dict[str, Any]) -> Dict[str, Any]:
+    """The keywords of ``function``, each checked and converted by its kind,
+    in place (``params`` is the call's own ``**params``): an unknown keyword
+    or a wrong type raises ``TypeError`` and an out-of-range count
+    ``ValueError``, each naming the keyword (the native module would raise
+    ``TypeError`` or ``OverflowError`` without it)."""
+    checks = _CHECKS[function]
+    reals = _REALS[function]
+    lists = _LISTS[function]
+    for k, v in params.items():
+        t = type(v)
+        if t is float and k in reals:
+            continue
+        if t is int and k in reals and -_FLOAT_INT_MAX <= v <= _FLOAT_INT_MAX:
+            params[k] = float(v)
+            continue
+        if t is list and k in lists:
+            plain = _plain_reals(v)
+            if plain is not None:
+                params[k] = plain
+                continue
+        check = checks.get(k)
+        if check is None:
+            raise TypeError(_unexpected(function, k, _ALLOWED[function]))
+        params[k] = check(k, v)
+    return params
 
 
 def _param_doc(function: str) -> str:
@@ -763,15 +891,16 @@ def simulate(
     Raises ``ValueError`` for bad parameters (the library's message) and
     ``RuntimeError`` when the integration fails.
     """
-    if _is_model_list(model):
-        return Results(simulate(m, max_memory=max_memory, **params) for m in model)
-    raw = _snowroll.simulate(
-        _text("model", model),
-        max_memory=_count("max_memory", max_memory),
-        **_checked("simulate", params),
-    )
+    if type(model) is not str:
+        if _is_model_list(model):
+            return Results(simulate(m, max_memory=max_memory, **params) for m in model)
+        model = _text("model", model)
+    if max_memory is not MAX_MEMORY:
+        max_memory = _count("max_memory", max_memory)
+    raw = _snowroll.simulate(model, max_memory=max_memory, **_checked("simulate", params))
     result = Result(raw)
-    _warn(result.warnings)
+    if result.warnings:
+        _warn(result.warnings)
     return result
 
 
@@ -815,15 +944,16 @@ def turns(
     Raises ``ValueError`` for bad parameters or a model that is not a turn
     model, ``RuntimeError`` when the integration fails.
     """
-    if _is_model_list(model):
-        return Results(turns(m, max_memory=max_memory, **params) for m in model)
-    raw = _snowroll.turns(
-        _text("model", model),
-        max_memory=_count("max_memory", max_memory),
-        **_checked("turns", params),
-    )
+    if type(model) is not str:
+        if _is_model_list(model):
+            return Results(turns(m, max_memory=max_memory, **params) for m in model)
+        model = _text("model", model)
+    if max_memory is not MAX_MEMORY:
+        max_memory = _count("max_memory", max_memory)
+    raw = _snowroll.turns(model, max_memory=max_memory, **_checked("turns", params))
     result = TurnResult(raw)
-    _warn(result.warnings)
+    if result.warnings:
+        _warn(result.warnings)
     return result
 
 

@@ -36,11 +36,13 @@ _SIMULATE_DOC = '''    """Integrate one model (e.g. eq. (4) ``torque-cm``, eq. (
     eq. (32) ``quasi-circular``, eqs. (73), (76) ``turns``) for one scenario,
     the radius growing as r(x) = sqrt(r0^2 + b x / pi), eq. (8).
 
-    Returns ``{"columns": {name: ndarray}, "stop": dict, "params": dict,
-    "version": str, "model": str, "equation": str, "warnings": [str]}``;
-    columns ``t_s x_m v_m_s a_m_s2 r_m mass_kg normal_n friction_n
-    friction_ratio`` (float64; ``friction_ratio`` a ``numpy.ma.MaskedArray``
-    masked where N <= 0, where it is undefined), for the turn models ``turn``
+    Returns ``{"columns": {name: ndarray}, "masks": {name: ndarray},
+    "stop": dict, "params": ParamsRecord, "version": str, "model": str,
+    "equation": str, "warnings": [str]}``; ``params.to_dict()`` is the dict
+    of the CLI's JSON ``params``; columns ``t_s x_m v_m_s a_m_s2 r_m
+    mass_kg normal_n friction_n friction_ratio`` (float64; ``friction_ratio``
+    undefined where N <= 0: 0.0 there, True in its mask ``masks["friction_ratio"]``;
+    ``snowroll.Result`` makes it a ``numpy.ma.MaskedArray``), for the turn models ``turn``
     (uint64), ``theta_rad``, ``omega_rad_s``, and with losses or a ledger the
     ledger columns ``kinetic_j released_j drag_j rolling_j compaction_j
     model_j collision_j created_j residual_j`` (J).
@@ -54,8 +56,8 @@ _TURNS_DOC = '''    """Run a turn model (eqs. (64), (73), (76) ``turns``; eq. (8
     variants) for ``turns`` turns (default 100, ``t_end`` default 1e9 s).
 
     Returns the keys of :func:`simulate` (``columns`` one row per turn) plus
-    ``summary``: the long-run means of a/(g sin alpha) that eqs. (77)-(79)
-    estimate as 4/9. The log only; no losses (ValueError), a ledger at each
+    ``summary``, a SummaryRecord whose ``to_dict()`` holds the long-run means
+    of a/(g sin alpha) that eqs. (77)-(79) estimate as 4/9. The log only; no losses (ValueError), a ledger at each
     turn end, before its collision.
     """
 '''

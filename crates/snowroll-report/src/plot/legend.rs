@@ -11,7 +11,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::render::FAMILY;
+use super::font::FAMILY;
 use super::{Chart, Marker, PlotError, Series, Style};
 
 /// Colours of successive curves: Tableau 10 (distinct, colour-blind aware),

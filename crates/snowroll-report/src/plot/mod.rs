@@ -15,15 +15,17 @@
 //! naming the program version and the parameters ([`Provenance`]); the SVG
 //! also records them in a comment and the PNG in `iTXt` chunks.
 
+mod font;
 mod legend;
 mod map;
 mod panels;
 mod render;
 mod ticks;
 
+pub use font::register_embedded_font;
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use panels::{render_panels_png, render_panels_svg};
-pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
+pub use render::{png_size, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
 

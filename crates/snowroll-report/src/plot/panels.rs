@@ -5,11 +5,32 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::font::register_embedded_font;
 use super::render::{
-    png_size, register_embedded_font, with_legend_group, with_provenance_comment, Part,
-    FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE,
+    png_size, with_legend_group, with_provenance_comment, Part, FIGURE_SIZE, PNG_SCALE,
+    SVG_OVERSAMPLE,
 };
 use super::{Chart, PlotError, Provenance};
+
+impl Chart {
+    /// Renders the chart as an SVG document (text as `<text>` elements in
+    /// `sans-serif`), with a comment recording `provenance`.
+    ///
+    /// # Errors
+    /// [`PlotError`] when the chart is invalid or drawing fails.
+    pub fn render_svg(&self, provenance: &Provenance) -> Result<String, PlotError> {
+        render_panels_svg(std::slice::from_ref(self), provenance)
+    }
+
+    /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
+    /// recording `provenance` in `iTXt` chunks (`Software`, `Title`, `Comment`).
+    ///
+    /// # Errors
+    /// [`PlotError`] when the chart is invalid, drawing or encoding fails.
+    pub fn render_png(&self, provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
+        render_panels_png(std::slice::from_ref(self), provenance)
+    }
+}
 
 /// Renders `charts` as one SVG document, one panel of [`FIGURE_SIZE`]
 /// each, the first at the top: each with its title, axes, curves and legend

@@ -1,7 +1,6 @@
 //! Drawing a [`Chart`] with `plotters`: SVG string, PNG bytes.
 
 use std::fmt;
-use std::sync::OnceLock;
 
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::coord::ranged1d::{AsRangedCoord, BoldPoints, Ranged, ValueFormatter};
@@ -9,18 +8,12 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::font::FAMILY;
 use super::legend::{colour_slots, PALETTE};
 use super::ticks::{log_ticks, AxisTicks};
 use super::{
     Axis, Chart, Marker, PlotError, Provenance, Scale, Series, Style, MARKS_ON_A_LINE, NO_DATA,
 };
-
-/// The embedded font (DejaVu Sans, Bitstream Vera licence, see
-/// `assets/fonts/DejaVuSans-LICENSE.txt`).
-const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
-
-/// The family name the embedded font is registered under.
-pub(crate) const FAMILY: &str = "sans-serif";
 
 /// Size of an SVG figure (and of a PNG before [`PNG_SCALE`]), px.
 pub const FIGURE_SIZE: (u32, u32) = (960, 600);
@@ -44,21 +37,6 @@ const LOG_PAD: f64 = 0.04;
 
 /// Decades added on each side of a logarithmic axis whose data sit at one value.
 const LOG_PAD_SINGLE: f64 = 1.0;
-
-/// Registers the embedded font with `plotters`, once per process.
-///
-/// # Errors
-/// [`PlotError::Font`] when the font cannot be parsed.
-pub fn register_embedded_font() -> Result<(), PlotError> {
-    static REGISTERED: OnceLock<bool> = OnceLock::new();
-    let ok = *REGISTERED
-        .get_or_init(|| plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).is_ok());
-    if ok {
-        Ok(())
-    } else {
-        Err(PlotError::Font)
-    }
-}
 
 impl Chart {
     /// The drawn ranges `(x_min..x_max, y_min..y_max)` with margins.
@@ -84,24 +62,6 @@ impl Chart {
             return (unit(&self.x), unit(&self.y));
         }
         (pad(&self.x, x0, x1), pad(&self.y, y0, y1))
-    }
-
-    /// Renders the chart as an SVG document (text as `<text>` elements in
-    /// `sans-serif`), with a comment recording `provenance`.
-    ///
-    /// # Errors
-    /// [`PlotError`] when the chart is invalid or drawing fails.
-    pub fn render_svg(&self, provenance: &Provenance) -> Result<String, PlotError> {
-        super::render_panels_svg(std::slice::from_ref(self), provenance)
-    }
-
-    /// Renders the chart as a PNG image, [`PNG_SCALE`] times [`FIGURE_SIZE`],
-    /// recording `provenance` in `iTXt` chunks (`Software`, `Title`, `Comment`).
-    ///
-    /// # Errors
-    /// [`PlotError`] when the chart is invalid, drawing or encoding fails.
-    pub fn render_png(&self, provenance: &Provenance) -> Result<Vec<u8>, PlotError> {
-        super::render_panels_png(std::slice::from_ref(self), provenance)
     }
 
     pub(super) fn backend(&self, e: impl fmt::Display) -> PlotError {

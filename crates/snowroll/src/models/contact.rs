@@ -21,7 +21,7 @@ use std::f64::consts::PI;
 
 use serde::{Deserialize, Serialize};
 
-use super::circular::Coefficients;
+use super::coefficients::Coefficients;
 use crate::scenario::{Scenario, Shape};
 use crate::units::{Meters, MetersPerSecond, MetersPerSecondSquared, Newtons};
 

@@ -16,7 +16,7 @@
 //! evaluated at each sample from eqs. (7) and (10) ([`crate::physics`]), so
 //! the residual stays at the integration error only if P is the right rate.
 
-use super::circular::Coefficients;
+use super::coefficients::Coefficients;
 use super::contact::circular_forces;
 use crate::losses::{frontal_area, Losses};
 use crate::physics::{self, growth_at};

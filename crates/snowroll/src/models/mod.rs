@@ -6,13 +6,16 @@
 
 mod circular;
 mod closed_form;
+mod coefficients;
 mod contact;
 pub mod exact_geometry;
+mod in_turn;
 mod ledger;
 mod ode;
 mod tolerance;
 mod turn_by_turn;
 mod validity;
+mod warning_code;
 mod warnings;
 
 pub use circular::{Balance, CircularModel, Coefficients, Derivation};

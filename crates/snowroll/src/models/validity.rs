@@ -9,7 +9,8 @@
 
 use serde::Serialize;
 
-use super::{first_turn_stall_slope, ModelKind, TurnVariant, WarningCode};
+use super::warning_code::WarningCode;
+use super::{first_turn_stall_slope, ModelKind, TurnVariant};
 use crate::losses::Losses;
 use crate::scenario::{Scenario, Shape};
 use crate::units::{Meters, Radians};

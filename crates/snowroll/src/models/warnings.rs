@@ -7,52 +7,10 @@ use std::fmt;
 
 use serde::Serialize;
 
+pub use super::warning_code::WarningCode;
 use super::{tolerance_warning, validity_warnings, ModelKind};
 use crate::scenario::Scenario;
 use crate::trajectory::SimOptions;
-
-/// What a warning is about. Its [`code`](WarningCode::code) is the text of
-/// a sweep's `warnings` column.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum WarningCode {
-    /// b/r0 beyond the model's range of validity ([`ModelKind::validity`]).
-    BOverR0,
-    /// The snowless model given snow (it is the b = 0 limit).
-    SnowIgnored,
-    /// A ball's fixed swath wider than its diameter 2 r0 at the start.
-    WideSwath,
-    /// `turns` started from rest where it and `turns-exact` disagree about
-    /// a stall in the first turn.
-    #[serde(rename = "turn-0-stall")]
-    Turn0Stall,
-    /// Tolerances looser than the accuracy the note's claims are judged at
-    /// ([`CLAIMS_ACCURACY`](super::CLAIMS_ACCURACY)).
-    LooseTolerance,
-}
-
-impl WarningCode {
-    /// Every code, in the order a run reports them.
-    pub const ALL: [WarningCode; 5] = [
-        WarningCode::BOverR0,
-        WarningCode::SnowIgnored,
-        WarningCode::WideSwath,
-        WarningCode::Turn0Stall,
-        WarningCode::LooseTolerance,
-    ];
-
-    /// The short code: kebab-case, no comma, no `;` (the separator of a
-    /// sweep's `warnings` cell).
-    pub fn code(self) -> &'static str {
-        match self {
-            WarningCode::BOverR0 => "b-over-r0",
-            WarningCode::SnowIgnored => "snow-ignored",
-            WarningCode::WideSwath => "wide-swath",
-            WarningCode::Turn0Stall => "turn-0-stall",
-            WarningCode::LooseTolerance => "loose-tolerance",
-        }
-    }
-}
 
 /// One warning of a run: its code and its sentence for people.
 #[derive(Debug, Clone, PartialEq, Serialize)]

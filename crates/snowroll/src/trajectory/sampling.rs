@@ -1,8 +1,6 @@
 //! Which samples a run records ([`Sampling`]), and the times of a regular
 //! grid, exact to the decimal its step prints as.
 
-#[cfg(doc)]
-use super::SimOptions;
 use crate::error::ParamError;
 use crate::units::Seconds;
 
@@ -13,9 +11,10 @@ pub enum Sampling {
     #[default]
     Steps,
     /// Exactly these times, s (strictly ascending, non-negative, none after
-    /// `t_end`: [`SimOptions::validate`] refuses those), from the dense
-    /// output; times after an earlier stop (distance, stall) are not
-    /// written, and the command line notes how many.
+    /// `t_end`: [`SimOptions::validate`](super::SimOptions::validate)
+    /// refuses those), from the dense output; times after an earlier stop
+    /// (distance, stall) are not written, and the command line notes how
+    /// many.
     Times(Vec<Seconds>),
     /// A regular grid 0, dt, 2dt, … up to the stop, s.
     Every(Seconds),

@@ -3,8 +3,6 @@
 
 use serde::{Deserialize, Serialize};
 
-#[cfg(doc)]
-use super::SimOptions;
 use super::TurnState;
 use crate::integrate::Stats;
 #[cfg(doc)]
@@ -39,8 +37,8 @@ pub enum StopReason {
     /// The integrator used up its step budget ([`Tolerances::max_steps`]);
     /// the samples up to there are kept.
     StepLimit,
-    /// The run recorded [`SimOptions::max_rows`] samples, the most allowed;
-    /// the samples up to there are kept.
+    /// The run recorded [`SimOptions::max_rows`](super::SimOptions::max_rows)
+    /// samples, the most allowed; the samples up to there are kept.
     RowLimit,
     /// The snowless log with drag reached its terminal velocity: |a| fell to
     /// [`Losses::terminal_tol`](crate::Losses::terminal_tol) of the initial

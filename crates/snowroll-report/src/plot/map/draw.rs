@@ -5,9 +5,8 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::super::render::{
-    axis_ticks, log_axis, register_embedded_font, with_provenance_comment, FAMILY,
-};
+use super::super::font::{register_embedded_font, FAMILY};
+use super::super::render::{axis_ticks, log_axis, with_provenance_comment};
 use super::super::{PlotError, Provenance, Scale};
 use super::RegimeMap;
 

@@ -3,7 +3,7 @@
 //! coefficients on the area law and its terminal values follow from it, and
 //! a ball with a fixed swath width or the chord is integrated from it directly.
 
-use super::rhs::losses_per_mass;
+use super::per_mass::losses_per_mass;
 use super::Coefficients;
 #[cfg(doc)]
 use super::Derivation;

@@ -21,7 +21,9 @@
 //! and is integrated from the balance itself.
 //!
 //! The module is split by role: this file holds the coefficient table
-//! ([`Derivation`], [`Coefficients`]); `balance.rs` the derivations for a
+//! ([`Derivation`]; the record [`Coefficients`] itself lives one level
+//! down, in `models/coefficients.rs`, where the contact forces and the
+//! energy ledger read it too); `balance.rs` the derivations for a
 //! body of any shape ([`Balance`]); `rhs.rs` the right-hand side bound to
 //! one scenario, losses included; `terminal.rs` the terminal values and the
 //! stall slope; `system.rs` the ODE with its contact forces and stop
@@ -29,6 +31,7 @@
 
 mod balance;
 mod model;
+mod per_mass;
 mod rhs;
 mod system;
 mod terminal;
@@ -36,6 +39,7 @@ mod terminal;
 pub use balance::Balance;
 pub use model::CircularModel;
 
+pub use super::coefficients::Coefficients;
 use super::ModelKind;
 use crate::scenario::Shape;
 
@@ -64,28 +68,6 @@ pub enum Derivation {
     /// §2.4, eq. (32) plus term (36): `a = 2G/3 − bv²/(2πr²) − gb cos α/(πr)`
     /// (the same equation as (15); `docs/turn-model.md` fixes r).
     QuasiCircularLift,
-}
-
-/// The coefficients of the common form of the circular equations of motion
-/// (see the module doc).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Coefficients {
-    /// Whether snow is collected at all (false only for the snowless model).
-    pub accretes: bool,
-    /// c_v, the momentum-drag coefficient of `b v²/(π r²)`.
-    pub drag: f64,
-    /// λ₁, the coefficient of the lifting term `g b cos α/(π r)`.
-    pub lift: f64,
-    /// λ₂, the coefficient of `g b² cos α/(3π r²)`.
-    pub lift_b2: f64,
-    /// κ, the coefficient of the inertia correction `b²/(6π² r²)`.
-    pub inertia_b2: f64,
-    /// c₃, the coefficient of `b³ v²/(π³ r⁴)` (the ball's `energy` and
-    /// `lagrangian-printed`; zero for every log model, where the terms
-    /// cancel), `docs/snowball-and-losses.md` §1.2.
-    pub drag_b3: f64,
-    /// The shape: its 1/(1 + k) replaces the 2/3 of the log's form.
-    pub shape: Shape,
 }
 
 impl Derivation {

@@ -6,9 +6,10 @@
 
 use std::f64::consts::PI;
 
+use super::per_mass::{losses_per_mass, LossesPerMass};
 use super::{Balance, Coefficients, Derivation};
 use crate::losses::Losses;
-use crate::physics::{growth_at, Growth};
+use crate::physics::growth_at;
 use crate::scenario::{Scenario, Shape};
 
 impl Coefficients {
@@ -98,15 +99,6 @@ impl LossTerms {
             normal_q: (n - 1.0) / 2.0,
         })
     }
-}
-
-/// The loss terms per unit mass at one state, m/s².
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(super) struct LossesPerMass {
-    /// F_d/M.
-    pub(super) drag: f64,
-    /// F_c/M.
-    pub(super) compaction: f64,
 }
 
 /// The acceleration of one model on one scenario: the common form on the
@@ -244,15 +236,5 @@ impl AreaLaw {
         self.losses
             .map(|l| self.losses_per_mass(&l, inv_s, v))
             .unwrap_or_default()
-    }
-}
-
-/// F_d/M and F_c/M of a body of size and growth `gr` at speed `v`
-/// (`docs/snowball-and-losses.md` §2.1): `F_d = ½ ρ_a C_d A v|v|` with the
-/// frontal area A of [`crate::losses::frontal_area`], `F_c/M = e_c λ`.
-pub(super) fn losses_per_mass(s: &Scenario, gr: &Growth, l: &Losses, v: f64) -> LossesPerMass {
-    LossesPerMass {
-        drag: l.drag_factor() * crate::losses::frontal_area(s, gr.r) * v * v.abs() / gr.mass,
-        compaction: l.compaction_energy * gr.lambda,
     }
 }

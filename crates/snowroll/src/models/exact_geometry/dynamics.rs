@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::mass_properties::RingMoments;
-use crate::models::turn_by_turn::InTurnCoefficients;
+use crate::models::in_turn::InTurnCoefficients;
 use crate::units::Meters;
 
 /// The coefficients of `I/m_k` and `W/m_k` for the disk of radius `r` plus

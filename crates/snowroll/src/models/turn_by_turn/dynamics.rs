@@ -1,14 +1,14 @@
 //! The dynamics within one turn (`docs/turn-model.md`): the two sets of
 //! mass properties ([`TurnVariant`]), the coefficients of the common in-turn
-//! form ([`InTurnCoefficients`]) and the equation of motion with its energy
-//! integral ([`TurnDynamics`]).
+//! form ([`InTurnCoefficients`], one level down in `models/in_turn.rs`) and
+//! the equation of motion with its energy integral ([`TurnDynamics`]).
 
 use crate::portable::Portable as _;
-use std::f64::consts::PI;
 
 use super::{extremes, TWO_PI};
 
 use crate::models::exact_geometry::exact_turn_coefficients;
+use crate::models::in_turn::InTurnCoefficients;
 use crate::models::ModelKind;
 use crate::units::{Meters, MetersPerSecondSquared, Radians};
 
@@ -39,41 +39,6 @@ impl TurnVariant {
             _ => None,
         }
         .filter(|_| kind.is_turn_model())
-    }
-}
-
-/// The coefficients of the common in-turn form (module doc), per unit `m_k`:
-/// `I/m_k = 3r²/2 + c₁θ − c₂ sin θ` (m²),
-/// `W/m_k = −G(rθ + e₁θ²/2 − e₂(1 − cos θ)) + C(e₃θ − e₂ sin θ)` (J/kg), and
-/// accreted mass `m_s/m_k = μθ`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct InTurnCoefficients {
-    /// c₁, m².
-    pub c1: f64,
-    /// c₂, m².
-    pub c2: f64,
-    /// e₁, m.
-    pub e1: f64,
-    /// e₂, m.
-    pub e2: f64,
-    /// e₃, m.
-    pub e3: f64,
-    /// μ, accreted mass per radian over m_k, 1/rad.
-    pub accretion: f64,
-}
-
-impl InTurnCoefficients {
-    /// Eq. (76) and eq. (62) with `r0 → r_k`: `c₁ = c₂ = 2br/π`,
-    /// `e₁ = e₂ = e₃ = b/π`, `μ = b/(πr)` (eq. (38)).
-    pub fn paper(r: Meters, b: Meters) -> Self {
-        Self {
-            c1: 2.0 * b * r / PI,
-            c2: 2.0 * b * r / PI,
-            e1: b / PI,
-            e2: b / PI,
-            e3: b / PI,
-            accretion: b / (PI * r),
-        }
     }
 }
 

@@ -47,11 +47,12 @@ mod stall;
 mod summary;
 mod system;
 
+pub use super::in_turn::InTurnCoefficients;
 use collision::after_collision;
 pub use collision::{charged_collision_speed, CollisionModel, PivotImpact};
 pub(crate) use contact::Hints;
 pub use contact::{ContactRange, TurnExtremes};
-pub use dynamics::{InTurnCoefficients, TurnDynamics, TurnVariant};
+pub use dynamics::{TurnDynamics, TurnVariant};
 pub use row::{TurnRow, TurnSink};
 pub use runner::{run_turns, run_turns_into, TurnMethod, TurnModel, TurnRunEnd, TurnTable};
 pub use stall::first_turn_stall_slope;
