@@ -8,7 +8,7 @@
 
 use super::control::{check_times, initial_step, StepControl};
 use super::dense::{DenseStep, Polynomial, DENSE_TERMS};
-use super::events::{crossings, scan_step_ends};
+use super::events::{crossings, scan_step_ends, Armed};
 use super::peaks::Peaks;
 use super::tableau::{A, B, C, D, E3, E5};
 use super::{
@@ -50,12 +50,13 @@ struct Integrator<'s, S, const N: usize> {
     /// The leading components in the error norm
     /// ([`OdeSystem::controlled_components`]); the rest are quadratures.
     controlled: usize,
-    /// Number of event functions (at most [`MAX_EVENTS`]).
-    n_events: usize,
-    /// Event values at the start of the current step (a small fixed
+    /// The event functions that can fire ([`OdeSystem::event_armed`]);
+    /// the event values below are kept by their slots.
+    armed: Armed,
+    /// Armed event values at the start of the current step (a small fixed
     /// buffer: no model has more than a handful of events).
     g_old: [f64; MAX_EVENTS],
-    /// Event values at the end of the current step.
+    /// Armed event values at the end of the current step.
     g_new: [f64; MAX_EVENTS],
     /// Events located so far (they count towards `tol.max_steps`).
     events_located: u64,
@@ -234,14 +235,15 @@ where
         });
     }
     let controlled = system.controlled_components().clamp(1, N);
-    let peaks = Peaks::new(&*system, n_events);
+    let armed = Armed::new(&*system, n_events);
+    let peaks = Peaks::new(&*system, armed);
     let mut it = Integrator {
         system,
         tol: *tol,
         k: [[0.0; N]; STAGES_DENSE],
         stats: Stats::default(),
         controlled,
-        n_events,
+        armed,
         g_old: [0.0; MAX_EVENTS],
         g_new: [0.0; MAX_EVENTS],
         events_located: 0,
@@ -272,7 +274,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     /// Starts (or, after a reset, restarts) the integration at `(t, y)`:
     /// the event values there and the first stage `k[0] = f(t, y)`.
     fn restart(&mut self, t: f64, y: &[f64; N]) {
-        for (i, g) in self.g_old.iter_mut().enumerate().take(self.n_events) {
+        for (g, &i) in self.g_old.iter_mut().zip(self.armed.indices()) {
             *g = self.system.event(i, t, y);
         }
         self.system.rhs(t, y, &mut self.k[0]);
@@ -348,7 +350,8 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
             self.k[0] = self.k[STAGES];
             t = t_new;
             y = y_new;
-            self.g_old[..self.n_events].copy_from_slice(&self.g_new[..self.n_events]);
+            let n = self.armed.len();
+            self.g_old[..n].copy_from_slice(&self.g_new[..n]);
             self.peaks.advance();
             if last {
                 return Ok(self.outcome(t, y, Termination::EndTime));
@@ -370,14 +373,15 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         h: f64,
     ) -> Option<Interrupt<N>> {
         // Events: which functions changed sign in the allowed direction?
+        let n = self.armed.len();
         let ends = scan_step_ends(
             &*self.system,
+            &self.armed,
             t_new,
             y_new,
-            &self.g_old[..self.n_events],
+            &self.g_old[..n],
             &mut self.g_new,
         );
-        let n = self.n_events;
         let suspects = self.peaks.suspects(
             &*self.system,
             [(t, y, &self.k[0]), (t_new, y_new, &self.k[STAGES])],
@@ -425,12 +429,13 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         (t_new, y_new): (f64, &[f64; N]),
         suspects: u32,
     ) -> Option<Interrupt<N>> {
-        let n_events = self.n_events;
+        let n_events = self.armed.len();
         // Where the search for crossings starts, and the event values there.
         let mut g_lo = self.g_old;
         loop {
             let found = crossings(
                 &*self.system,
+                &self.armed,
                 p,
                 (seen.0, &g_lo[..n_events]),
                 t_new,
@@ -486,9 +491,9 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                     Termination::StepLimit,
                 )));
             }
-            for i in 0..n_events {
-                g_lo[i] = self.system.event(i, seen.0, &seen.1);
-                self.g_new[i] = self.system.event(i, t_new, y_new);
+            for (j, &i) in self.armed.indices().iter().enumerate() {
+                g_lo[j] = self.system.event(i, seen.0, &seen.1);
+                self.g_new[j] = self.system.event(i, t_new, y_new);
             }
         }
     }

@@ -23,6 +23,40 @@ use super::{OdeSystem, MAX_EVENTS};
 /// that to the start of the step is not seen.
 const NUDGE_ULPS: f64 = 100.0;
 
+/// The event functions that can fire in this run ([`OdeSystem::event_armed`]),
+/// in index order: the step loop keeps their values in slots `0..len`, slot
+/// `j` holding event `index[j]`, and never evaluates the others.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Armed {
+    index: [usize; MAX_EVENTS],
+    len: usize,
+}
+
+impl Armed {
+    /// The armed events among the first `n_events` (at most [`MAX_EVENTS`]) of `system`.
+    pub fn new<S: OdeSystem<N>, const N: usize>(system: &S, n_events: usize) -> Self {
+        let mut armed = Self {
+            index: [0; MAX_EVENTS],
+            len: 0,
+        };
+        for i in (0..n_events).filter(|&i| system.event_armed(i)) {
+            armed.index[armed.len] = i;
+            armed.len += 1;
+        }
+        armed
+    }
+
+    /// How many events are armed.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// The event index of each slot, in slot order.
+    pub fn indices(&self) -> &[usize] {
+        &self.index[..self.len]
+    }
+}
+
 /// What the event functions at the two ends of a step call for.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct StepEnds {
@@ -39,10 +73,12 @@ impl StepEnds {
     }
 }
 
-/// Evaluates the event functions at the end `(t_new, y_new)` of a step into
-/// `g_new`, and compares them with their values `g_old` at its start.
+/// Evaluates the armed event functions at the end `(t_new, y_new)` of a
+/// step into `g_new`, and compares them with their values `g_old` at its
+/// start (both by slot).
 pub(super) fn scan_step_ends<S: OdeSystem<N>, const N: usize>(
     system: &S,
+    armed: &Armed,
     t_new: f64,
     y_new: &[f64; N],
     g_old: &[f64],
@@ -52,13 +88,13 @@ pub(super) fn scan_step_ends<S: OdeSystem<N>, const N: usize>(
         crossed: false,
         from_zero: false,
     };
-    for (i, &before) in g_old.iter().enumerate() {
-        g_new[i] = system.event(i, t_new, y_new);
+    for (j, (&i, &before)) in armed.indices().iter().zip(g_old).enumerate() {
+        g_new[j] = system.event(i, t_new, y_new);
         let direction = system.event_direction(i);
         if before == 0.0 {
-            ends.from_zero |= direction.may_end_crossing(g_new[i]);
+            ends.from_zero |= direction.may_end_crossing(g_new[j]);
         } else {
-            ends.crossed |= direction.crosses(before, g_new[i]);
+            ends.crossed |= direction.crosses(before, g_new[j]);
         }
     }
     ends
@@ -84,12 +120,14 @@ impl Found {
 }
 
 /// Locates every crossing in `(t_lo, t_new]`, part of the step whose dense
-/// output is `p`, given the event values `g_lo` at `t_lo` and `g_new` at
-/// `t_new`; for the events in `suspects` (bit i for event i) that do not
-/// cross at the ends, also a crossing before an extremum inside the step
-/// (`peaks.rs`).
+/// output is `p`, given the armed events' values `g_lo` at `t_lo` and
+/// `g_new` at `t_new` (by slot); for the slots in `suspects` (bit j for
+/// slot j) that do not cross at the ends, also a crossing before an
+/// extremum inside the step (`peaks.rs`). The events found carry their
+/// event index.
 pub(super) fn crossings<S: OdeSystem<N>, const N: usize>(
     system: &S,
+    armed: &Armed,
     p: &Polynomial<'_, N>,
     (t_lo, g_lo): (f64, &[f64]),
     t_new: f64,
@@ -102,24 +140,24 @@ pub(super) fn crossings<S: OdeSystem<N>, const N: usize>(
         events: [(f64::INFINITY, 0); MAX_EVENTS],
         len: 0,
     };
-    for (i, &before) in g_lo.iter().enumerate() {
+    for (j, (&i, &before)) in armed.indices().iter().zip(g_lo).enumerate() {
         let direction = system.event_direction(i);
         // Where the bracket starts, and the function's value there.
         let (t_start, g_start) = if before != 0.0 {
             (t_lo, before)
-        } else if direction.may_end_crossing(g_new[i]) {
+        } else if direction.may_end_crossing(g_new[j]) {
             let y = y_nudge.get_or_insert_with(|| p.at(t_nudge));
             (t_nudge, system.event(i, t_nudge, y))
         } else {
             continue;
         };
-        if direction.crosses(g_start, g_new[i]) {
-            let te = locate(t_start, t_new, g_start, g_new[i], |tt| {
+        if direction.crosses(g_start, g_new[j]) {
+            let te = locate(t_start, t_new, g_start, g_new[j], |tt| {
                 system.event(i, tt, &p.at(tt))
             });
             found.events[found.len] = (te, i);
             found.len += 1;
-        } else if suspects & (1 << i) != 0 {
+        } else if suspects & (1 << j) != 0 {
             if let Some(te) = crossing_before_extremum(system, p, i, (t_start, g_start), t_new) {
                 found.events[found.len] = (te, i);
                 found.len += 1;

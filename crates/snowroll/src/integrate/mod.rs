@@ -133,6 +133,15 @@ pub trait OdeSystem<const N: usize> {
         0.0
     }
 
+    /// Whether event function `index` can fire at all in this run (default:
+    /// yes). Asked once, when the integration starts: an event that cannot
+    /// fire (a slip with no friction coefficient given, an end distance not
+    /// asked for, a hop where the normal force is known to stay positive)
+    /// is never evaluated, so the step loop pays nothing for it.
+    fn event_armed(&self, _index: usize) -> bool {
+        true
+    }
+
     /// Which crossings of event function `index` count.
     fn event_direction(&self, _index: usize) -> Direction {
         Direction::Either
