@@ -55,6 +55,11 @@ impl Peaks {
         }
     }
 
+    /// Whether any event is watched (else the slopes are never needed).
+    pub fn watching(&self) -> bool {
+        self.watched != 0
+    }
+
     /// The slopes at `(t, y)` where `y′ = f` and the events are `g`, with
     /// the step `h` about to be taken (or just taken), into `out`.
     fn slopes<S: OdeSystem<N>, const N: usize>(

@@ -30,6 +30,7 @@
 mod balance;
 mod model;
 mod rhs;
+mod series;
 mod system;
 mod terminal;
 

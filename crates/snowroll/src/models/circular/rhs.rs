@@ -6,6 +6,7 @@
 
 use std::f64::consts::PI;
 
+use super::series::AreaSeries;
 use super::{Balance, Coefficients, Derivation};
 use crate::losses::Losses;
 use crate::physics::{growth_at, Growth};
@@ -195,6 +196,25 @@ impl Acceleration {
                     && law.at(0.0, v0) >= 0.0
             }
             Self::General { .. } => false,
+        }
+    }
+
+    /// The common form as the Taylor recurrence sees it, for the area law
+    /// without losses (`series.rs`); `None` otherwise (the losses' |v| and the
+    /// other growth laws are left to DOP853).
+    pub(super) fn series(&self) -> Option<AreaSeries> {
+        match self {
+            Self::Area(law) if law.losses.is_none() => Some(AreaSeries {
+                push: law.push,
+                s0: law.s0,
+                b: law.b,
+                drag: law.drag,
+                lift: law.lift,
+                lift_b2: law.lift_b2,
+                inertia: law.inertia,
+                drag_b3: law.drag_b3,
+            }),
+            _ => None,
         }
     }
 

@@ -3,6 +3,7 @@
 //! events, and with the energy ledger the dissipated works as extra states.
 
 use super::rhs::Acceleration;
+use super::series::AreaSeries;
 use super::{Coefficients, Derivation};
 use crate::integrate::{Direction, OdeSystem};
 use crate::losses::Losses;
@@ -44,6 +45,10 @@ pub(super) struct CircularSystem<const N: usize> {
     /// Whether N > 0 is known for the whole run, so that no hop can happen
     /// ([`CircularSystem::normal_stays_positive`]).
     normal_stays_positive: bool,
+    /// The Taylor recurrence of the right-hand side, for the state `[x, v]`
+    /// on the area law without losses (`series.rs`); `None` for the other
+    /// runs (and with the ledger's quadratures), which take DOP853 steps.
+    series: Option<AreaSeries>,
 }
 
 impl<const N: usize> CircularSystem<N> {
@@ -64,6 +69,7 @@ impl<const N: usize> CircularSystem<N> {
             coeffs,
             scenario: *scenario,
             normal_stays_positive: Self::normal_stays_positive(&accel, scenario),
+            series: if N == 2 { accel.series() } else { None },
             accel,
             losses: l,
             x_end: opts.x_end,
@@ -140,6 +146,16 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
     /// control must not chase).
     fn controlled_components(&self) -> usize {
         2
+    }
+
+    fn has_taylor(&self) -> bool {
+        self.series.is_some()
+    }
+
+    fn taylor_coefficients(&self, _t: f64, y: &[f64; N], c: &mut [[f64; N]]) {
+        if let Some(series) = &self.series {
+            series.coefficients(y[0], y[1], c);
+        }
     }
 
     fn event_count(&self) -> usize {
