@@ -6,9 +6,10 @@
 // hide that correspondence.
 #![allow(clippy::needless_range_loop)]
 
+use super::armed::Armed;
 use super::control::{initial_step, StepControl};
 use super::dense::{DenseStep, Form, Polynomial, DENSE_TERMS};
-use super::events::{crossings, scan_step_ends, Armed};
+use super::events::{crossings, scan_step_ends};
 use super::peaks::Peaks;
 use super::tableau::{A, B, C, D, E3, E5};
 use super::{

@@ -44,12 +44,14 @@
 //! # Ok::<(), snowroll::SimError>(())
 //! ```
 
+mod armed;
 mod control;
 mod dense;
 mod dop853;
 mod entry;
 mod events;
 mod peaks;
+mod root;
 mod tableau;
 mod taylor;
 

@@ -10,10 +10,11 @@
 //! event's direction (a maximum for `Rising`, a minimum for `Falling`). If
 //! it has, golden-section search on the dense output finds the extremum of
 //! g itself in the step; if that is past zero, the crossing before it is
-//! located as any other ([`super::events::locate`]).
+//! located as any other (`root.rs`).
 
+use super::armed::Armed;
 use super::dense::Polynomial;
-use super::events::{locate, Armed};
+use super::root::locate;
 use super::{Direction, OdeSystem, MAX_EVENTS};
 
 /// Forward-difference step of the slope, as a fraction of the step length:
