@@ -107,7 +107,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
             let mut h =
                 (eps_root * radius(c, &y, &self.tol, self.controlled)).min(self.tol.max_step);
             // A NaN step (coefficients that are not finite) counts as too small.
-            if !(0.1 * h > t.abs() * f64::EPSILON) {
+            if 0.1 * h <= t.abs() * f64::EPSILON || h.is_nan() {
                 return Err(SimError::StepSizeTooSmall { t, h });
             }
             // The step that would land within 1% of the end lands on it.
@@ -194,9 +194,6 @@ mod tests {
         let got = radius(&c, &[1.0], &tol, 1);
         assert!((got - want).abs() <= 1e-12 * want, "{got} vs {want}");
         // A polynomial solution: no radius.
-        assert_eq!(
-            radius(&[[1.0], [2.0], [0.0], [0.0]], &[1.0], &tol, 1),
-            f64::INFINITY
-        );
+        assert!(radius(&[[1.0], [2.0], [0.0], [0.0]], &[1.0], &tol, 1).is_infinite());
     }
 }

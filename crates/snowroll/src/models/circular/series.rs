@@ -137,8 +137,13 @@ impl AreaSeries {
                 (v * v, 0.0)
             } else {
                 s[k] = self.b * xs.fwd[k];
-                // q = v²: Σ_{j=1}^{k−1} v_j v_(k−j) + 2 v₀ v_k.
-                let q = vs.conv(&vs.fwd, k, 1, k - 1) + 2.0 * vs.fwd[0] * vs.fwd[k];
+                // q = v²: Σ_{j=1}^{k−1} v_j v_(k−j) (each pair once, doubled,
+                // and v_(k/2)² for even k), then 2 v₀ v_k.
+                let mut older = 2.0 * vs.conv(&vs.fwd, k, 1, (k - 1) / 2);
+                if k % 2 == 0 {
+                    older += vs.fwd[k / 2] * vs.fwd[k / 2];
+                }
+                let q = older + 2.0 * vs.fwd[0] * vs.fwd[k];
                 (q, newest_last(&a, &s, k))
             };
             let mut num = self.push * s[k] - self.drag * q;
