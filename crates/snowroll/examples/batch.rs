@@ -115,8 +115,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         args.n
     );
     println!(
-        "steps {} accepted, {} rejected, {} RHS evaluations per trajectory",
-        stats.accepted, stats.rejected, stats.evaluations
+        "steps {} accepted, {} rejected, {} RHS evaluations, {} Taylor coefficients (orders \
+         summed over the steps) per trajectory",
+        stats.accepted, stats.rejected, stats.evaluations, stats.taylor_terms
     );
     println!(
         "final t = {} s, x = {:.15e} m, v = {:.15e} m/s ({})",

@@ -33,7 +33,8 @@
 //!   `docs/turn-model.md`.
 //!
 //! All models implement [`Model`]; [`ModelKind`] lists them. ODE models run on
-//! one integrator ([`integrate`]): DOP853 with dense output and events.
+//! one integrator ([`integrate`]): DOP853, or Taylor-series steps where the
+//! model gives its Taylor coefficients, with dense output and events.
 //! [`Model::simulate_into`] sends each sample to a [`SampleSink`] as it is
 //! computed (`snowroll_io::TrajectoryWriter` writes CSV or JSON that way), and
 //! [`TurnModel::run_table_into`] each turn's row to a [`TurnSink`]

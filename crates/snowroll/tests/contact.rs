@@ -26,10 +26,13 @@ fn scenario(alpha_deg: f64) -> Scenario {
 #[test]
 fn app_a_snowless_run_has_n_mg_cos_alpha_and_f_mg_sin_alpha_over_3_exactly() {
     let s = scenario(30.0);
-    let traj = ModelKind::Snowless
-        .build()
-        .simulate(&s, &SimOptions::default())
-        .unwrap();
+    // Sampled on a grid: the run is one Taylor step (its solution is a
+    // polynomial), so the interior samples come from its dense output.
+    let opts = SimOptions {
+        sampling: Sampling::Every(5.0),
+        ..SimOptions::default()
+    };
+    let traj = ModelKind::Snowless.build().simulate(&s, &opts).unwrap();
     let m = s.initial_mass();
     let (n_want, f_want) = (m * s.g_normal(), m * s.g_along() / 3.0);
     assert!(traj.samples.len() > 2);
@@ -434,4 +437,61 @@ fn loney_and_eq4_hop_where_the_start_speed_makes_n_negative() {
             }
         }
     }
+}
+
+/// Where a run of a circular model without losses starts with a ≥ 0, a stays
+/// ≥ 0 (the common form differentiated along the run is `a′ = α a + β` with a
+/// source β ≥ 0, `Acceleration::stays_non_negative_from`), so N/M = C + r′(a +
+/// q/2) ≥ C for the log and C + r′a + 2r′²v²/r ≥ C for the ball
+/// (`docs/contact-forces.md` §2): N ≥ M g cos α at every step, and no such
+/// run hops (its hop event is then not even evaluated). Checked on every
+/// circular model, both shapes, slopes 5° to 85°, from rest and from 3 m/s
+/// and 20 m/s; the runs with a < 0 at the start (none hops here, but the
+/// bound does not apply) are left out. Tolerance 1e-12 relative: N is a few
+/// operations on numbers of order M g. A run started above the hop
+/// threshold does hop (`loney_and_eq4_hop_where_the_start_speed_makes_n_negative`).
+#[test]
+fn a_run_that_starts_with_a_non_negative_keeps_n_at_least_m_g_cos_alpha() {
+    let opts = SimOptions {
+        t_end: 200.0,
+        sampling: Sampling::Steps,
+        ..SimOptions::default()
+    };
+    let mut checked = 0;
+    for kind in ModelKind::ALL
+        .into_iter()
+        .filter(|k| k.derivation().is_some())
+    {
+        for shape in snowroll::Shape::ALL {
+            for alpha_deg in [5.0, 30.0, 60.0, 85.0] {
+                for v0 in [0.0, 3.0, 20.0] {
+                    let s = Scenario::new(ScenarioFile {
+                        alpha_deg,
+                        v0,
+                        shape,
+                        ..ScenarioFile::default()
+                    })
+                    .unwrap();
+                    let Ok(traj) = kind.build().simulate(&s, &opts) else {
+                        continue; // a model that does not support the ball
+                    };
+                    if traj.samples[0].a_m_s2 < 0.0 {
+                        continue;
+                    }
+                    checked += 1;
+                    assert_ne!(traj.stop.reason, snowroll::StopReason::Hop, "{kind}");
+                    for p in &traj.samples {
+                        let floor = p.mass_kg * s.g_normal();
+                        assert!(
+                            p.normal_n >= floor * (1.0 - 1e-12),
+                            "{kind} {shape:?} {alpha_deg}° v0 {v0}: N {} < M C {floor} at t {}",
+                            p.normal_n,
+                            p.t_s
+                        );
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked >= 60, "{checked} runs checked");
 }

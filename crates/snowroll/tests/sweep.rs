@@ -198,7 +198,12 @@ fn fast_path_agrees_with_the_ode_to_1e_9() {
         assert!(close(fast.x_m, end.x_m), "x: {fast:?} vs {end:?}");
         assert!(close(fast.v_m_s, end.v_m_s), "v: {fast:?} vs {end:?}");
         let ode = run_point(&g, i, Method::Ode).unwrap();
-        if format!("{:?}", fast.x_m) != format!("{:?}", ode.x_m) {
+        // A row that took the fast path differs from the ODE's somewhere in
+        // its last bits (the ODE's Taylor steps often agree with the closed
+        // form to the bit in x alone).
+        let row_bits =
+            |r: &SweepRow| format!("{:?}", (r.t_s, r.x_m, r.v_m_s, r.a_over_g_sin_alpha));
+        if row_bits(&fast) != row_bits(&ode) {
             fast_rows += 1;
         }
     }

@@ -6,8 +6,9 @@
 // hide that correspondence.
 #![allow(clippy::needless_range_loop)]
 
-use super::control::{check_times, initial_step, StepControl};
-use super::dense::{DenseStep, Polynomial, DENSE_TERMS};
+use super::armed::Armed;
+use super::control::{initial_step, StepControl};
+use super::dense::{DenseStep, Form, Polynomial, DENSE_TERMS};
 use super::events::{crossings, scan_step_ends};
 use super::peaks::Peaks;
 use super::tableau::{A, B, C, D, E3, E5};
@@ -18,7 +19,7 @@ use super::{
 use crate::error::SimError;
 
 /// Stages of the 8th-order solution.
-const STAGES: usize = 12;
+pub(super) const STAGES: usize = 12;
 /// Stages including the three extra ones of the dense output.
 const STAGES_DENSE: usize = 16;
 
@@ -40,27 +41,28 @@ fn weighted_sum<const N: usize>(w: &[f64], k: &[[f64; N]; STAGES_DENSE]) -> [f64
     acc
 }
 
-struct Integrator<'s, S, const N: usize> {
-    system: &'s mut S,
-    tol: Tolerances,
+pub(super) struct Integrator<'s, S, const N: usize> {
+    pub(super) system: &'s mut S,
+    pub(super) tol: Tolerances,
     /// Stages: `k[0..12]` the twelve of the step, `k[12] = f(t + h, y_new)`
     /// (the first stage of the next step), `k[13..16]` the dense-output stages.
-    k: [[f64; N]; STAGES_DENSE],
-    stats: Stats,
+    pub(super) k: [[f64; N]; STAGES_DENSE],
+    pub(super) stats: Stats,
     /// The leading components in the error norm
     /// ([`OdeSystem::controlled_components`]); the rest are quadratures.
-    controlled: usize,
-    /// Number of event functions (at most [`MAX_EVENTS`]).
-    n_events: usize,
-    /// Event values at the start of the current step (a small fixed
+    pub(super) controlled: usize,
+    /// The event functions that can fire ([`OdeSystem::event_armed`]);
+    /// the event values below are kept by their slots.
+    pub(super) armed: Armed,
+    /// Armed event values at the start of the current step (a small fixed
     /// buffer: no model has more than a handful of events).
-    g_old: [f64; MAX_EVENTS],
-    /// Event values at the end of the current step.
-    g_new: [f64; MAX_EVENTS],
+    pub(super) g_old: [f64; MAX_EVENTS],
+    /// Armed event values at the end of the current step.
+    pub(super) g_new: [f64; MAX_EVENTS],
     /// Events located so far (they count towards `tol.max_steps`).
-    events_located: u64,
+    pub(super) events_located: u64,
     /// The slopes of the events that may turn back within a step.
-    peaks: Peaks,
+    pub(super) peaks: Peaks,
 }
 
 impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
@@ -156,7 +158,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     }
 
     /// The end of the run at `(t, y)`, with the counts so far.
-    fn outcome(&self, t: f64, y: [f64; N], termination: Termination) -> Outcome<N> {
+    pub(super) fn outcome(&self, t: f64, y: [f64; N], termination: Termination) -> Outcome<N> {
         Outcome {
             t,
             y,
@@ -167,7 +169,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
 
     /// Hairer's initial step guess at `(t, y)` ([`initial_step`]), with
     /// its one evaluation of the right-hand side counted.
-    fn initial_step(&mut self, t: f64, y: &[f64; N]) -> f64 {
+    pub(super) fn initial_step(&mut self, t: f64, y: &[f64; N]) -> f64 {
         let h = initial_step(
             &*self.system,
             &self.tol,
@@ -180,82 +182,30 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     }
 }
 
-/// Integrates `system` from `(t0, y0)` forward to `t_end` with DOP853,
-/// locating the system's events on the dense output and applying their
-/// actions, and reports each accepted step (cut at events) and each event
-/// to `observer`, in time order.
-///
-/// An event function that is exactly zero where a step starts (at `t0`,
-/// where a `Reset` left it, or where the previous step ended on its zero)
-/// does not trigger there: it counts with the sign it takes just after the
-/// start (100 ulps of `|t| + h` into the step), so an event at `t0` is not reported and a reset
-/// onto the event surface (a bouncing ball) finds the next crossing even
-/// when one step spans the whole excursion. Events are found from sign
-/// changes between the ends of each step, so a function that crosses zero
-/// twice within one step is not seen, unless a `Continue` event in between
-/// changed it (after `Continue` events the rest of the step is searched
-/// again, so a counter in the event function works) or the system marks
-/// the event with [`OdeSystem::event_may_turn`] (then an extremum inside
-/// the step is searched for as well, `peaks.rs`). Simultaneous events
-/// are offered in index order; after a `Reset` the others of the same step
-/// are dropped, and the integration restarts from the new state.
-///
-/// Two limits end the run early without an error, at the last state the
-/// observer saw: `tol.max_steps` steps and events
-/// ([`Termination::StepLimit`]), and the observer's own request
-/// ([`Observer::stop_requested`], asked before every step:
-/// [`Termination::Stopped`]).
-///
-/// # Errors
-/// [`ParamError::InvalidParameter`](crate::ParamError::InvalidParameter) for bad tolerances or a start or end
-/// time that is not finite (or `t_end < t0`),
-/// [`SimError::StepSizeTooSmall`] when the step underflows (a singularity),
-/// [`SimError::NonFiniteState`] when the state is or becomes non-finite, and
-/// [`SimError::TooManyEvents`] past [`MAX_EVENTS`] event functions.
-pub fn integrate<S, O, const N: usize>(
-    system: &mut S,
-    t0: f64,
-    y0: [f64; N],
-    t_end: f64,
-    tol: &Tolerances,
-    observer: &mut O,
-) -> Result<Outcome<N>, SimError>
-where
-    S: OdeSystem<N>,
-    O: Observer<S, N>,
-{
-    tol.validate()?;
-    check_times(t0, &y0, t_end)?;
-    let n_events = system.event_count();
-    if n_events > MAX_EVENTS {
-        return Err(SimError::TooManyEvents {
-            count: n_events,
-            max: MAX_EVENTS,
-        });
+impl<'s, S: OdeSystem<N>, const N: usize> Integrator<'s, S, N> {
+    /// The integrator of `system` under `tol`, its events armed and watched
+    /// as the system says, nothing evaluated yet.
+    pub(super) fn new(system: &'s mut S, tol: &Tolerances, n_events: usize) -> Self {
+        let controlled = system.controlled_components().clamp(1, N);
+        let armed = Armed::new(&*system, n_events);
+        let peaks = Peaks::new(&*system, armed);
+        Self {
+            system,
+            tol: *tol,
+            k: [[0.0; N]; STAGES_DENSE],
+            stats: Stats::default(),
+            controlled,
+            armed,
+            g_old: [0.0; MAX_EVENTS],
+            g_new: [0.0; MAX_EVENTS],
+            events_located: 0,
+            peaks,
+        }
     }
-    let controlled = system.controlled_components().clamp(1, N);
-    let peaks = Peaks::new(&*system, n_events);
-    let mut it = Integrator {
-        system,
-        tol: *tol,
-        k: [[0.0; N]; STAGES_DENSE],
-        stats: Stats::default(),
-        controlled,
-        n_events,
-        g_old: [0.0; MAX_EVENTS],
-        g_new: [0.0; MAX_EVENTS],
-        events_located: 0,
-        peaks,
-    };
-    observer.start(&*it.system, t0, &y0);
-    if t_end <= t0 {
-        return Ok(it.outcome(t0, y0, Termination::EndTime));
-    }
-    it.run(t0, y0, t_end, observer)
 }
 
 /// Why an accepted step did not simply carry the integration to its end.
-enum Interrupt<const N: usize> {
+pub(super) enum Interrupt<const N: usize> {
     /// The run is over (a `Stop` event, or the step budget spent on events).
     Finish(Outcome<N>),
     /// A `Reset` event at this time: go on from this state.
@@ -265,14 +215,14 @@ enum Interrupt<const N: usize> {
 impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     /// Steps taken so far: accepted, rejected, and located events (what
     /// [`Tolerances::max_steps`] bounds).
-    fn steps_spent(&self) -> u64 {
+    pub(super) fn steps_spent(&self) -> u64 {
         self.stats.accepted + self.stats.rejected + self.events_located
     }
 
     /// Starts (or, after a reset, restarts) the integration at `(t, y)`:
     /// the event values there and the first stage `k[0] = f(t, y)`.
-    fn restart(&mut self, t: f64, y: &[f64; N]) {
-        for (i, g) in self.g_old.iter_mut().enumerate().take(self.n_events) {
+    pub(super) fn restart(&mut self, t: f64, y: &[f64; N]) {
+        for (g, &i) in self.g_old.iter_mut().zip(self.armed.indices()) {
             *g = self.system.event(i, t, y);
         }
         self.system.rhs(t, y, &mut self.k[0]);
@@ -283,7 +233,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     /// The step loop from `(t, y)` to `t_end`: trial steps, the
     /// controller's verdict, and for each accepted step its events and its
     /// report to the observer ([`Integrator::accept`]).
-    fn run<O: Observer<S, N>>(
+    pub(super) fn run<O: Observer<S, N>>(
         &mut self,
         mut t: f64,
         mut y: [f64; N],
@@ -325,7 +275,7 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                 return Err(SimError::NonFiniteState { t: t_new });
             }
             self.last_stage(t_new, &y_new);
-            match self.accept(observer, (t, &y), (t_new, &y_new), h) {
+            match self.accept(observer, (t, &y), (t_new, &y_new), h, None) {
                 None => {}
                 Some(Interrupt::Finish(outcome)) => return Ok(outcome),
                 Some(Interrupt::Reset(te, y_after)) => {
@@ -348,7 +298,8 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
             self.k[0] = self.k[STAGES];
             t = t_new;
             y = y_new;
-            self.g_old[..self.n_events].copy_from_slice(&self.g_new[..self.n_events]);
+            let n = self.armed.len();
+            self.g_old[..n].copy_from_slice(&self.g_new[..n]);
             self.peaks.advance();
             if last {
                 return Ok(self.outcome(t, y, Termination::EndTime));
@@ -362,22 +313,24 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
     /// if they or the observer need it, and reports the step to the
     /// observer, cut at each event ([`Integrator::handle_events`]). Leaves
     /// the event values at `t_new` in `g_new`.
-    fn accept<O: Observer<S, N>>(
+    pub(super) fn accept<O: Observer<S, N>>(
         &mut self,
         observer: &mut O,
         (t, y): (f64, &[f64; N]),
         (t_new, y_new): (f64, &[f64; N]),
         h: f64,
+        taylor: Option<&[[f64; N]]>,
     ) -> Option<Interrupt<N>> {
         // Events: which functions changed sign in the allowed direction?
+        let n = self.armed.len();
         let ends = scan_step_ends(
             &*self.system,
+            &self.armed,
             t_new,
             y_new,
-            &self.g_old[..self.n_events],
+            &self.g_old[..n],
             &mut self.g_new,
         );
-        let n = self.n_events;
         let suspects = self.peaks.suspects(
             &*self.system,
             [(t, y, &self.k[0]), (t_new, y_new, &self.k[STAGES])],
@@ -387,12 +340,18 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         let search = ends.needs_dense() || suspects != 0;
         // Asked on every accepted step, so the observer sees each full step.
         let wanted = observer.wants_dense(t, t_new);
-        let coefficients = if search || wanted {
-            Some(self.dense_coefficients(t, y, y_new, h))
-        } else {
-            None
+        // A Taylor step's polynomial is its series; DOP853's costs three
+        // more evaluations, made only when needed.
+        let coefficients = match taylor {
+            None if search || wanted => Some(self.dense_coefficients(t, y, y_new, h)),
+            _ => None,
         };
-        let dense = coefficients.as_ref().map(|f| Polynomial { t, y, h, f });
+        let form = match (taylor, &coefficients) {
+            (Some(c), _) => (search || wanted).then_some(Form::Taylor(c)),
+            (None, Some(f)) => Some(Form::Hairer { y, f }),
+            (None, None) => None,
+        };
+        let dense = form.map(|form| Polynomial { t, h, form });
         // Start of the part of the step not yet shown to the observer.
         let mut seen = (t, *y);
         if let (true, Some(p)) = (search, dense) {
@@ -425,12 +384,13 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         (t_new, y_new): (f64, &[f64; N]),
         suspects: u32,
     ) -> Option<Interrupt<N>> {
-        let n_events = self.n_events;
+        let n_events = self.armed.len();
         // Where the search for crossings starts, and the event values there.
         let mut g_lo = self.g_old;
         loop {
             let found = crossings(
                 &*self.system,
+                &self.armed,
                 p,
                 (seen.0, &g_lo[..n_events]),
                 t_new,
@@ -486,9 +446,9 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                     Termination::StepLimit,
                 )));
             }
-            for i in 0..n_events {
-                g_lo[i] = self.system.event(i, seen.0, &seen.1);
-                self.g_new[i] = self.system.event(i, t_new, y_new);
+            for (j, &i) in self.armed.indices().iter().enumerate() {
+                g_lo[j] = self.system.event(i, seen.0, &seen.1);
+                self.g_new[j] = self.system.event(i, t_new, y_new);
             }
         }
     }

@@ -10,10 +10,11 @@
 //! event's direction (a maximum for `Rising`, a minimum for `Falling`). If
 //! it has, golden-section search on the dense output finds the extremum of
 //! g itself in the step; if that is past zero, the crossing before it is
-//! located as any other ([`super::events::locate`]).
+//! located as any other (`root.rs`).
 
+use super::armed::Armed;
 use super::dense::Polynomial;
-use super::events::locate;
+use super::root::locate;
 use super::{Direction, OdeSystem, MAX_EVENTS};
 
 /// Forward-difference step of the slope, as a fraction of the step length:
@@ -28,9 +29,12 @@ const INV_PHI: f64 = 0.618_033_988_749_894_9;
 /// margin that matters (`locate` finds the crossing to rounding after).
 const SEARCH_TOL: f64 = 1e-10;
 
-/// The slopes of the watched events at the two ends of the current step.
+/// The slopes of the watched events at the two ends of the current step
+/// (by slot of [`Armed`]).
 pub(super) struct Peaks {
-    /// Which events are watched (bit i for event i).
+    /// The armed events, slot by slot.
+    armed: Armed,
+    /// Which slots are watched (bit j for slot j).
     watched: u32,
     /// dg/dt at the start of the step.
     slope_old: [f64; MAX_EVENTS],
@@ -39,16 +43,22 @@ pub(super) struct Peaks {
 }
 
 impl Peaks {
-    /// Watches the events of `system` that ask for it.
-    pub fn new<S: OdeSystem<N>, const N: usize>(system: &S, n_events: usize) -> Self {
-        let watched = (0..n_events)
-            .filter(|&i| system.event_may_turn(i))
-            .fold(0u32, |mask, i| mask | (1 << i));
+    /// Watches the armed events of `system` that ask for it.
+    pub fn new<S: OdeSystem<N>, const N: usize>(system: &S, armed: Armed) -> Self {
+        let watched = (armed.indices().iter().enumerate())
+            .filter(|&(_, &i)| system.event_may_turn(i))
+            .fold(0u32, |mask, (j, _)| mask | (1 << j));
         Self {
+            armed,
             watched,
             slope_old: [0.0; MAX_EVENTS],
             slope_new: [0.0; MAX_EVENTS],
         }
+    }
+
+    /// Whether any event is watched (else the slopes are never needed).
+    pub fn watching(&self) -> bool {
+        self.watched != 0
     }
 
     /// The slopes at `(t, y)` where `y′ = f` and the events are `g`, with
@@ -66,9 +76,9 @@ impl Peaks {
         for (a, fi) in ahead.iter_mut().zip(f) {
             *a += dt * fi;
         }
-        for (i, slope) in out.iter_mut().enumerate().take(g.len()) {
-            if self.watched & (1 << i) != 0 {
-                *slope = (system.event(i, t + dt, &ahead) - g[i]) / dt;
+        for (j, (slope, &i)) in out.iter_mut().zip(self.armed.indices()).enumerate() {
+            if self.watched & (1 << j) != 0 {
+                *slope = (system.event(i, t + dt, &ahead) - g[j]) / dt;
             }
         }
     }
@@ -81,9 +91,9 @@ impl Peaks {
 
     /// At the end of an accepted step of length `h` from `(t, y)` to
     /// `(t_new, y_new)`, with `f = y′` at each (`[start, end]`) and the event
-    /// values `g_old`, `g_new` at its ends: the watched events whose
-    /// Hermite interpolant has an interior extremum in their direction (bit
-    /// i for event i).
+    /// values `g_old`, `g_new` at its ends (by slot): the watched slots
+    /// whose Hermite interpolant has an interior extremum in their
+    /// direction (bit j for slot j).
     pub fn suspects<S: OdeSystem<N>, const N: usize>(
         &mut self,
         system: &S,
@@ -103,18 +113,18 @@ impl Peaks {
         self.slopes(system, end, g_new, h, &mut out);
         self.slope_new = out;
         let mut found = 0;
-        for (i, (&g0, &g1)) in g_old.iter().zip(g_new).enumerate() {
-            if self.watched & (1 << i) == 0 {
+        for (j, (&g0, &g1)) in g_old.iter().zip(g_new).enumerate() {
+            if self.watched & (1 << j) == 0 {
                 continue;
             }
-            let sign = match system.event_direction(i) {
+            let sign = match system.event_direction(self.armed.indices()[j]) {
                 Direction::Rising => 1.0,
                 Direction::Falling => -1.0,
                 Direction::Either => continue,
             };
-            let (d0, d1) = (sign * self.slope_old[i] * h, sign * out[i] * h);
+            let (d0, d1) = (sign * self.slope_old[j] * h, sign * out[j] * h);
             if hermite_has_interior_max(sign * g0, d0, sign * g1, d1) {
-                found |= 1 << i;
+                found |= 1 << j;
             }
         }
         found

@@ -33,6 +33,7 @@ mod balance;
 mod model;
 mod per_mass;
 mod rhs;
+mod series;
 mod system;
 mod terminal;
 

@@ -7,6 +7,7 @@
 use std::f64::consts::PI;
 
 use super::per_mass::{losses_per_mass, LossesPerMass};
+use super::series::AreaSeries;
 use super::{Balance, Coefficients, Derivation};
 use crate::losses::Losses;
 use crate::physics::growth_at;
@@ -139,6 +140,7 @@ impl Acceleration {
     }
 
     /// Acceleration at `(x, v)`, m/s².
+    #[inline]
     pub(super) fn at(&self, x: f64, v: f64) -> f64 {
         match self {
             Self::Area(law) => law.at(x, v),
@@ -155,6 +157,56 @@ impl Acceleration {
                     balance.acceleration(scenario, &gr, v)
                 }
             }
+        }
+    }
+
+    /// Whether a run started at x = 0 with speed `v0` keeps a ≥ 0, and so
+    /// v ≥ 0, for all time: true for the area law without losses, with
+    /// every coefficient of the common form non-negative, when a(0, v0) ≥ 0.
+    ///
+    /// Proof: with s = π r0² + b x and `(1 + κ…/s) a = num(s, v)` (the common
+    /// form), differentiating along the run gives
+    /// `(1 + κ…/s) a′ = b v ∂num/∂s + (∂num/∂v + κ… b v/s²) a`, a linear
+    /// equation `a′ = α(t) a + β(t)` whose source `β = b v ∂num/∂s/(1 + κ…/s)`
+    /// is ≥ 0 while v ≥ 0, as `∂num/∂s = c_v b v²/s² + ½ λ₁ C b/√π s^(-3/2) +
+    /// λ₂ C b²/(3 s²) + 2 c₃ b³ v²/(π s³)` is a sum of non-negative terms. So a
+    /// that starts ≥ 0 stays ≥ 0, and v′ = a keeps v ≥ 0.
+    pub(super) fn stays_non_negative_from(&self, v0: f64) -> bool {
+        match self {
+            Self::Area(law) => {
+                let terms = [
+                    law.b,
+                    law.drag,
+                    law.lift,
+                    law.lift_b2,
+                    law.inertia,
+                    law.drag_b3,
+                ];
+                law.losses.is_none()
+                    && terms.iter().all(|&c| c >= 0.0)
+                    && v0 >= 0.0
+                    && law.at(0.0, v0) >= 0.0
+            }
+            Self::General { .. } => false,
+        }
+    }
+
+    /// The common form as the Taylor recurrence sees it, for the area law
+    /// without losses (`series.rs`); `None` otherwise (the losses' |v| and the
+    /// other growth laws are left to DOP853).
+    pub(super) fn series(&self) -> Option<AreaSeries> {
+        match self {
+            Self::Area(law) if law.losses.is_none() => Some(AreaSeries {
+                push: law.push,
+                s0: law.s0,
+                b: law.b,
+                drag: law.drag,
+                lift: law.lift,
+                lift_b2: law.lift_b2,
+                inertia: law.inertia,
+                drag_b3: law.drag_b3,
+            }),
+            _ => None,
         }
     }
 
@@ -198,6 +250,7 @@ impl AreaLaw {
     /// `N/M = C + r′(a + (n − 1) q/2)`; solved for a, with p = 1/(1 + k),
     /// `a = [num − p (F_d/M + F_c/M + c_rr (C + (n − 1) r′q/2))] / (1 + κ… + p c_rr r′)`
     /// (p = 2/3, n = 2 for the log; 5/7, 3 for the ball).
+    #[inline]
     fn at(&self, x: f64, v: f64) -> f64 {
         let inv_s = 1.0 / (self.s0 + self.b * x);
         let mut a = self.push - self.drag * v * v * inv_s;
