@@ -18,10 +18,12 @@ use snowroll::{Losses, Settings, TurnMethod};
 
 mod error;
 mod finite;
+mod float_text;
 mod ledger;
 pub mod notes;
 pub mod page_table;
 mod row;
+pub mod sweep;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};

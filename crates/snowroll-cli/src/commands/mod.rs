@@ -12,7 +12,6 @@ mod simulate;
 mod stack;
 mod sweep;
 mod sweep_check;
-mod sweep_csv;
 mod sweep_grid;
 mod sweep_partial;
 mod sweep_plot;

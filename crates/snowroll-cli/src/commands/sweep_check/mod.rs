@@ -20,7 +20,7 @@ use snowroll::params::Value;
 use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
 use snowroll_io::VERSION;
 
-use super::sweep_csv::RowWriter;
+use snowroll_io::sweep::SweepCsv;
 use super::sweep_grid::{grid_of, is_grid_key, recorded_method};
 use crate::args::{sweep_axes, Args, Command, SweepArgs};
 use crate::shell::shell_words;
