@@ -28,6 +28,7 @@
 //! events; `model.rs` the model ([`CircularModel`]) and its run.
 
 mod balance;
+mod contact_bound;
 mod model;
 mod rhs;
 mod system;

@@ -2,6 +2,7 @@
 //! its contact forces (fn. 10, `docs/contact-forces.md` §2, §5), its stop
 //! events, and with the energy ledger the dissipated works as extra states.
 
+use super::contact_bound::never_fires;
 use super::rhs::Acceleration;
 use super::{Coefficients, Derivation};
 use crate::integrate::{Direction, OdeSystem};
@@ -41,7 +42,15 @@ pub(super) struct CircularSystem<const N: usize> {
     /// `tol × (G − c_rr C)/(1 + k)`, m/s²: the terminal stop's threshold on
     /// |a|, armed only where a terminal velocity exists (§2.2).
     terminal_accel: Option<f64>,
+    /// The events that can fire (`EVENT_*`, in that order; the first
+    /// `watched` of them): one that is constant for the run (no `x_end`,
+    /// no `mu`, ...) is not handed to the integrator.
+    events: [usize; EVENTS],
+    watched: usize,
 }
+
+/// Number of `EVENT_*` kinds.
+const EVENTS: usize = 5;
 
 impl<const N: usize> CircularSystem<N> {
     pub(super) fn new(
@@ -56,16 +65,49 @@ impl<const N: usize> CircularSystem<N> {
         let terminal_accel =
             (!coeffs.accretes && l.drag_coefficient > 0.0 && l.terminal_tol > 0.0 && drive > 0.0)
                 .then(|| l.terminal_tol * drive * num / den);
+        // Events that cannot fire are not watched for (`contact_bound.rs`).
+        let never = never_fires(&coeffs, scenario, &l, opts.tolerances.rtol, opts.mu);
         Self {
             coeffs,
             scenario: *scenario,
             accel: Acceleration::of(derivation, &coeffs, scenario, &l),
             losses: l,
             x_end: opts.x_end,
-            mu: opts.mu,
-            stop_on_hop: opts.on_hop == OnHop::Stop,
+            mu: opts.mu.filter(|_| !never.slip),
+            stop_on_hop: opts.on_hop == OnHop::Stop && !never.hop,
             terminal_accel,
+            events: [EVENT_STALL; EVENTS],
+            watched: 0,
         }
+        .with_watched_events()
+    }
+
+    /// Lists the events that can fire: the stall always, each other one
+    /// where it is armed.
+    fn with_watched_events(mut self) -> Self {
+        let armed = [
+            true,
+            self.x_end.is_some(),
+            self.stop_on_hop,
+            self.mu.is_some(),
+            self.terminal_accel.is_some(),
+        ];
+        for (event, on) in [
+            EVENT_STALL,
+            EVENT_DISTANCE,
+            EVENT_HOP,
+            EVENT_SLIP,
+            EVENT_TERMINAL,
+        ]
+        .into_iter()
+        .zip(armed)
+        {
+            if on {
+                self.events[self.watched] = event;
+                self.watched += 1;
+            }
+        }
+        self
     }
 
     fn forces(&self, y: &[f64; N]) -> ContactForces {
@@ -123,11 +165,11 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
     }
 
     fn event_count(&self) -> usize {
-        5
+        self.watched
     }
 
     fn event(&self, index: usize, _t: f64, y: &[f64; N]) -> f64 {
-        match index {
+        match self.events[index] {
             EVENT_STALL => y[1],
             EVENT_DISTANCE => match self.x_end {
                 Some(x_end) => y[0] - x_end,
@@ -147,7 +189,7 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
     }
 
     fn event_direction(&self, index: usize) -> Direction {
-        match index {
+        match self.events[index] {
             EVENT_STALL | EVENT_HOP | EVENT_TERMINAL => Direction::Falling,
             _ => Direction::Rising,
         }
@@ -157,7 +199,7 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
     /// (a peak of |F|/N just above μ, a dip of N just below 0): each step
     /// is searched for it, not only its ends (issue 21).
     fn event_may_turn(&self, index: usize) -> bool {
-        match index {
+        match self.events[index] {
             EVENT_HOP => self.stop_on_hop,
             EVENT_SLIP => self.mu.is_some(),
             _ => false,
@@ -197,7 +239,7 @@ impl<const N: usize> OdeModel<N> for CircularSystem<N> {
     }
 
     fn stop_reason(&self, event: usize) -> StopReason {
-        match event {
+        match self.events[event] {
             EVENT_DISTANCE => StopReason::Distance,
             EVENT_HOP => StopReason::Hop,
             EVENT_SLIP => StopReason::Slip,
