@@ -16,8 +16,8 @@ use super::{
     check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
     write_json_end, write_json_field, write_json_opening, Body, Format, JsonStop, RunParams,
 };
-use crate::OutputError;
 use crate::float_text::push_float;
+use crate::OutputError;
 use snowroll::models::{ModelKind, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable};
 use snowroll::trajectory::{LedgerRow, Stop};
 use snowroll::SinkError;

@@ -27,7 +27,6 @@ use snowroll::sweep::{
 use snowroll_io::VERSION;
 
 use super::sweep_check::{header_text, Recorded};
-use snowroll_io::sweep::SweepCsv;
 use super::sweep_grid::{flag_axes, grid, run_files, with_config};
 use super::sweep_partial::{partial_path, Partial};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
@@ -35,6 +34,7 @@ use crate::clash::refuse_clashes;
 use crate::console::{self, report};
 use crate::shell::shell_word;
 use crate::sink::{replaced_target, Sink};
+use snowroll_io::sweep::SweepCsv;
 
 /// Start of the header line naming the command (not compared on resume or merge).
 pub const COMMAND_KEY: &str = "# command: ";
