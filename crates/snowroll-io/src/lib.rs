@@ -22,11 +22,15 @@ mod float_text;
 mod ledger;
 pub mod notes;
 pub mod page_table;
+#[cfg(feature = "parquet")]
+pub mod parquet;
 mod row;
 pub mod sweep;
+mod table;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
+pub use table::CsvTable;
 pub use snowroll::params::{RecordedSampling, UnknownSampling};
 pub use trajectory::{write_trajectory, TrajectoryWriter};
 pub use turns::{write_turn_table, TurnTableWriter};

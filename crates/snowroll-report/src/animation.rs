@@ -18,7 +18,7 @@ use serde::Serialize;
 use snowroll::scenario::{Scenario, Shape};
 use snowroll::trajectory::Trajectory;
 
-use super::files::{comment_header, utf8};
+use snowroll_io::CsvTable;
 use super::ReportError;
 
 /// Significant digits kept in the animation data embedded in the page.
@@ -261,10 +261,8 @@ impl Animation {
                     .join(" "),
             ),
         ];
-        let mut out = Vec::new();
-        comment_header(&mut out, software, &lines)?;
+        let mut w = CsvTable::new(software, &lines);
         {
-            let mut w = csv::Writer::from_writer(&mut out);
             for (row, f) in (1..).zip(&self.frames) {
                 snowroll_io::check_finite(f, Some(row)).map_err(|source| {
                     ReportError::NonFinite {
@@ -272,14 +270,10 @@ impl Animation {
                         source,
                     }
                 })?;
-                w.serialize(f)?;
+                w.row(f)?;
             }
-            w.flush().map_err(|source| ReportError::Io {
-                path: "<memory>".into(),
-                source,
-            })?;
         }
-        utf8(out)
+        Ok(w.finish()?)
     }
 }
 

@@ -9,6 +9,7 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 use thiserror::Error;
 
 use crate::plot::{PlotError, Scale};
+use snowroll_io::CsvTable;
 
 use super::{Figure, Metadata, RenderedFigure, Report, Tally, CLAIMS_CSV};
 
@@ -37,7 +38,7 @@ pub enum ReportError {
     Json(#[from] serde_json::Error),
     /// CSV serialisation failed.
     #[error("CSV: {0}")]
-    Csv(#[from] csv::Error),
+    Csv(#[from] snowroll_io::OutputError),
     /// A data file would carry NaN or infinity.
     #[error("{figure}: {source}")]
     NonFinite {
@@ -87,20 +88,6 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
     result.map_err(io_err(path))
 }
 
-/// Writes `# key = value` comment lines: version, then parameters.
-pub(super) fn comment_header(
-    out: &mut Vec<u8>,
-    software: &str,
-    lines: &[(String, String)],
-) -> Result<(), ReportError> {
-    let io = io_err(Path::new("<memory>"));
-    let mut text = format!("# {software}\n");
-    for (k, v) in lines {
-        text.push_str(&format!("# {k} = {}\n", v.replace('\n', " ")));
-    }
-    out.write_all(text.as_bytes()).map_err(io)
-}
-
 /// The CSV of a figure: `#` lines with version, title, axes and parameters,
 /// then one row per point: `series,<x column>,<y column>`. Every point is
 /// kept, including those a logarithmic axis cannot draw.
@@ -131,11 +118,9 @@ pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportErro
         ),
     ];
     lines.extend(prov.params.iter().cloned());
-    let mut out = Vec::new();
-    comment_header(&mut out, &prov.software, &lines)?;
+    let mut w = CsvTable::new(&prov.software, &lines);
     {
-        let mut w = csv::Writer::from_writer(&mut out);
-        w.write_record(["series", chart.x.column.as_str(), chart.y.column.as_str()])?;
+        w.text_record(["series", chart.x.column.as_str(), chart.y.column.as_str()])?;
         let non_finite = |source| ReportError::NonFinite {
             figure: chart.name.clone(),
             source,
@@ -150,12 +135,11 @@ pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportErro
                         non_finite(e)
                     })?;
                 }
-                w.serialize((s.name.as_str(), x, y))?;
+                w.row(&(s.name.as_str(), x, y))?;
             }
         }
-        w.flush().map_err(io_err(Path::new("<memory>")))?;
     }
-    utf8(out)
+    Ok(w.finish()?)
 }
 
 /// Serialises `(key, value)` pairs as one JSON object, in their order.
@@ -229,11 +213,9 @@ pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
     let m = &report.metadata;
     let mut lines = vec![("title".to_string(), m.title.clone())];
     lines.extend(m.params.iter().cloned());
-    let mut out = Vec::new();
-    comment_header(&mut out, &m.software, &lines)?;
+    let mut w = CsvTable::new(&m.software, &lines);
     {
-        let mut w = csv::Writer::from_writer(&mut out);
-        w.write_record([
+        w.text_record([
             "id",
             "paper_ref",
             "verdict",
@@ -244,7 +226,7 @@ pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
         ])?;
         for r in &report.claims {
             let as_expected = r.as_expected().to_string();
-            w.write_record([
+            w.text_record([
                 r.claim.id.as_str(),
                 r.claim.paper_ref,
                 &r.verdict.label(),
@@ -254,9 +236,8 @@ pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
                 &r.evidence,
             ])?;
         }
-        w.flush().map_err(io_err(Path::new("<memory>")))?;
     }
-    utf8(out)
+    Ok(w.finish()?)
 }
 
 /// Writes every file of the report into `dir`.
@@ -302,12 +283,4 @@ pub(super) fn write_all(
     let page = super::html::render(report, &svgs)?;
     put(dir.join("report.html"), page.as_bytes())?;
     Ok(written)
-}
-
-/// Converts CSV bytes to text.
-pub(super) fn utf8(out: Vec<u8>) -> Result<String, ReportError> {
-    String::from_utf8(out).map_err(|e| ReportError::Io {
-        path: PathBuf::from("<memory>"),
-        source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
-    })
 }

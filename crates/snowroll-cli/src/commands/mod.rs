@@ -6,8 +6,6 @@ mod inputs;
 mod merge;
 mod models;
 mod paper;
-#[cfg(feature = "parquet")]
-mod parquet;
 mod simulate;
 mod stack;
 mod sweep;

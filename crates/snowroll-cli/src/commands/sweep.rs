@@ -290,7 +290,7 @@ fn finish(
             io::Read::read_exact(&mut partial.file, &mut header)?;
             partial.file.seek(SeekFrom::Start(0))?;
             let header = String::from_utf8_lossy(&header).into_owned();
-            let sink = super::parquet::write(&partial.file, &header, sink)
+            let sink = snowroll_io::parquet::write(&partial.file, &header, sink)
                 .with_context(|| format!("writing {name}"))?;
             sink.commit().with_context(|| format!("writing {name}"))?;
             partial.remove()
