@@ -19,6 +19,7 @@ use snowroll::{Losses, Settings, TurnMethod};
 mod error;
 mod finite;
 mod float_text;
+mod json;
 mod ledger;
 pub mod notes;
 pub mod page_table;
@@ -30,8 +31,9 @@ mod table;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
-pub use table::CsvTable;
+pub use json::json_document;
 pub use snowroll::params::{RecordedSampling, UnknownSampling};
+pub use table::CsvTable;
 pub use trajectory::{write_trajectory, TrajectoryWriter};
 pub use turns::{write_turn_table, TurnTableWriter};
 

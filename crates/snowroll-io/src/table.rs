@@ -56,9 +56,8 @@ impl CsvTable {
     /// contract).
     pub fn finish(self) -> Result<String, OutputError> {
         let bytes = self.writer.into_inner().map_err(|e| e.into_error())?;
-        String::from_utf8(bytes).map_err(|e| {
-            OutputError::Io(std::io::Error::new(std::io::ErrorKind::InvalidData, e))
-        })
+        String::from_utf8(bytes)
+            .map_err(|e| OutputError::Io(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))
     }
 }
 

@@ -18,8 +18,8 @@ use serde::Serialize;
 use snowroll::scenario::{Scenario, Shape};
 use snowroll::trajectory::Trajectory;
 
-use snowroll_io::CsvTable;
 use super::ReportError;
+use snowroll_io::CsvTable;
 
 /// Significant digits kept in the animation data embedded in the page.
 const DIGITS: usize = 6;
@@ -240,7 +240,7 @@ impl Animation {
     /// The frames as CSV, with `#` lines recording version and geometry.
     ///
     /// # Errors
-    /// [`ReportError::Csv`] if serialisation fails.
+    /// [`ReportError::Output`] if serialisation fails.
     pub fn to_csv(&self, software: &str) -> Result<String, ReportError> {
         let lines = vec![
             ("animation".to_string(), self.title.clone()),

@@ -36,9 +36,9 @@ pub enum ReportError {
     /// JSON serialisation failed.
     #[error("JSON: {0}")]
     Json(#[from] serde_json::Error),
-    /// CSV serialisation failed.
-    #[error("CSV: {0}")]
-    Csv(#[from] snowroll_io::OutputError),
+    /// Writing a CSV or JSON data file failed.
+    #[error(transparent)]
+    Output(#[from] snowroll_io::OutputError),
     /// A data file would carry NaN or infinity.
     #[error("{figure}: {source}")]
     NonFinite {
@@ -93,7 +93,7 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
 /// kept, including those a logarithmic axis cannot draw.
 ///
 /// # Errors
-/// [`ReportError::Csv`] if serialisation fails.
+/// [`ReportError::Output`] if serialisation fails.
 pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportError> {
     let chart = &figure.chart;
     let prov = figure.provenance(meta);
@@ -197,9 +197,7 @@ pub(super) fn claims_json(report: &Report) -> Result<String, ReportError> {
             })
             .collect(),
     };
-    let mut text = serde_json::to_string_pretty(&doc)?;
-    text.push('\n');
-    Ok(text)
+    Ok(snowroll_io::json_document(&doc)?)
 }
 
 /// The file, under the report's `data/`, of every claim's measured numbers,
@@ -208,7 +206,7 @@ pub(super) fn claims_json(report: &Report) -> Result<String, ReportError> {
 /// row per claim: `id,paper_ref,verdict,expected,as_expected,measured,evidence`.
 ///
 /// # Errors
-/// [`ReportError::Csv`] if serialisation fails.
+/// [`ReportError::Output`] if serialisation fails.
 pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
     let m = &report.metadata;
     let mut lines = vec![("title".to_string(), m.title.clone())];
