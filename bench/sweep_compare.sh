@@ -19,17 +19,18 @@
 #     cannot be had, (4) is skipped with the reason.
 #
 # Usage: bash bench/sweep_compare.sh   (from anywhere in a clone)
-# Environment: N_SWEEP (10000), N_SCIPY (300), RUNS (5), N_ALL (200000), MIN_RATIO
-# (1000), MIN_RATE (100000), PYTHON (python3), OUT_DIR (a temporary directory;
-# its file system's fsync is part of the measured time).
+# Environment: N_SWEEP (100000), N_SCIPY (300), RUNS (5), N_ALL (200000), MIN_RATIO
+# (5000: at most 1 us a row against SciPy's 5 ms, issue 37), MIN_RATE (100000),
+# PYTHON (python3), OUT_DIR (a temporary directory; its file system's fsync is
+# part of the measured time), CARGO_TARGET_DIR (where cargo builds; target/).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-N_SWEEP="${N_SWEEP:-10000}"
+N_SWEEP="${N_SWEEP:-100000}"
 N_SCIPY="${N_SCIPY:-300}"
 RUNS="${RUNS:-5}"
 N_ALL="${N_ALL:-200000}"
-MIN_RATIO="${MIN_RATIO:-1000}"
+MIN_RATIO="${MIN_RATIO:-5000}"
 MIN_RATE="${MIN_RATE:-100000}"
 PYTHON="${PYTHON:-python3}"
 OUT_DIR="${OUT_DIR:-$(mktemp -d)}"
@@ -44,7 +45,7 @@ fi
 
 echo "building snowroll (release) ..." >&2
 cargo build --release --quiet -p snowroll-cli
-bin="$PWD/target/release/snowroll"
+bin="${CARGO_TARGET_DIR:-$PWD/target}/release/snowroll"
 
 # "wall cpu": the medians over RUNS runs of a command's wall-clock seconds
 # and its CPU seconds (user + system, every thread), the latter from

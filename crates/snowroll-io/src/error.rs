@@ -17,6 +17,17 @@ pub enum OutputError {
     /// JSON serialisation failed.
     #[error("writing JSON failed")]
     Json(#[from] serde_json::Error),
+    /// A row of a sweep's CSV could not be read back (to be converted).
+    #[error("reading back the rows")]
+    ReadBack(#[source] csv::Error),
+    /// Writing Parquet failed.
+    #[cfg(feature = "parquet")]
+    #[error(transparent)]
+    Parquet(#[from] parquet::errors::ParquetError),
+    /// Building an Arrow record batch failed.
+    #[cfg(feature = "parquet")]
+    #[error(transparent)]
+    Arrow(#[from] arrow_schema::ArrowError),
     /// A number about to be written is NaN or infinite; nothing of the
     /// record was written.
     #[error(transparent)]

@@ -18,14 +18,22 @@ use snowroll::{Losses, Settings, TurnMethod};
 
 mod error;
 mod finite;
+mod float_text;
+mod json;
 mod ledger;
 pub mod notes;
 pub mod page_table;
+#[cfg(feature = "parquet")]
+pub mod parquet;
 mod row;
+pub mod sweep;
+mod table;
 mod trajectory;
 mod turns;
 pub use finite::{check_finite, NonFinite};
+pub use json::json_document;
 pub use snowroll::params::{RecordedSampling, UnknownSampling};
+pub use table::CsvTable;
 pub use trajectory::{write_trajectory, TrajectoryWriter};
 pub use turns::{write_turn_table, TurnTableWriter};
 

@@ -16,6 +16,7 @@ use super::{
     check_finite, format_number, write_csv_header, write_csv_stop, write_json_array_end,
     write_json_end, write_json_field, write_json_opening, Body, Format, JsonStop, RunParams,
 };
+use crate::float_text::push_float;
 use crate::OutputError;
 use snowroll::models::{ModelKind, TurnRow, TurnRunEnd, TurnSink, TurnSummary, TurnTable};
 use snowroll::trajectory::{LedgerRow, Stop};
@@ -279,27 +280,6 @@ impl LineFormatter {
     }
 }
 
-/// Appends finite `x` as `ryu` (and so `csv`) writes it: `zmij` gives the
-/// same shortest round-trip digits in the same layout, except that it
-/// writes a positive exponent with its sign (`1e+16` for ryu's `1e16`).
-/// Checked against `ryu` on 5·10⁷ numbers of every decimal exponent (no
-/// other difference), and in the tests below.
-fn push_float(out: &mut Vec<u8>, buffer: &mut zmij::Buffer, x: f64) {
-    let text = buffer.format_finite(x).as_bytes();
-    // Both write |x| ≥ 1e16 (and only those) with a positive exponent.
-    let plus = match x.abs() >= 1e16 {
-        true => text.iter().position(|&b| b == b'+'),
-        false => None,
-    };
-    match plus {
-        Some(plus) => {
-            out.extend_from_slice(&text[..plus]);
-            out.extend_from_slice(&text[plus + 1..]);
-        }
-        None => out.extend_from_slice(text),
-    }
-}
-
 /// The `#` lines of the long-run statistics: one per checkpoint.
 fn write_csv_summary(w: &mut impl Write, s: &TurnSummary) -> Result<(), OutputError> {
     check_finite(s, None)?;
@@ -449,33 +429,6 @@ mod tests {
         row.v_end_m_s = 1.0;
         row.max_friction_ratio = Some(f64::INFINITY);
         assert!(!format.line(&row, &mut Vec::new()));
-    }
-
-    /// [`push_float`] writes what `ryu` (the `csv` writer's formatter)
-    /// writes, for numbers of every decimal exponent, both signs, around
-    /// the switches to exponent form (1e-5, 1e16) and at the ends of the
-    /// range. Fails without the exponent's `+` removed.
-    #[test]
-    fn floats_are_written_as_ryu_writes_them() {
-        let mut ryu = ryu::Buffer::new();
-        let mut zmij = zmij::Buffer::new();
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut numbers = vec![0.0, -0.0, 5e-324, f64::MIN_POSITIVE, f64::MAX, 1e-5, 1e16];
-        // The doubles just below the two switches.
-        numbers.extend([1e16, 1e-5].map(|x: f64| f64::from_bits(x.to_bits() - 1)));
-        for e in -324..=308 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            let mantissa = 1.0 + (state >> 11) as f64 / (1u64 << 53) as f64 * 9.0;
-            let x = mantissa * 10f64.powi(e);
-            numbers.extend([x, -x, 10f64.powi(e), x.round()]);
-        }
-        for x in numbers.into_iter().filter(|x| x.is_finite()) {
-            let mut out = Vec::new();
-            push_float(&mut out, &mut zmij, x);
-            assert_eq!(out, ryu.format_finite(x).as_bytes(), "{x:e}");
-        }
     }
 
     /// With `ledger` each row carries the ledger at its turn end, after the

@@ -18,8 +18,8 @@ use serde::Serialize;
 use snowroll::scenario::{Scenario, Shape};
 use snowroll::trajectory::Trajectory;
 
-use super::csv_text::{comment_header, utf8};
 use super::ReportError;
+use snowroll_io::CsvTable;
 
 /// Significant digits kept in the animation data embedded in the page.
 const DIGITS: usize = 6;
@@ -240,7 +240,7 @@ impl Animation {
     /// The frames as CSV, with `#` lines recording version and geometry.
     ///
     /// # Errors
-    /// [`ReportError::Csv`] if serialisation fails.
+    /// [`ReportError::Output`] if serialisation fails.
     pub fn to_csv(&self, software: &str) -> Result<String, ReportError> {
         let lines = vec![
             ("animation".to_string(), self.title.clone()),
@@ -261,10 +261,8 @@ impl Animation {
                     .join(" "),
             ),
         ];
-        let mut out = Vec::new();
-        comment_header(&mut out, software, &lines)?;
+        let mut w = CsvTable::new(software, &lines);
         {
-            let mut w = csv::Writer::from_writer(&mut out);
             for (row, f) in (1..).zip(&self.frames) {
                 snowroll_io::check_finite(f, Some(row)).map_err(|source| {
                     ReportError::NonFinite {
@@ -272,14 +270,10 @@ impl Animation {
                         source,
                     }
                 })?;
-                w.serialize(f)?;
+                w.row(f)?;
             }
-            w.flush().map_err(|source| ReportError::Io {
-                path: "<memory>".into(),
-                source,
-            })?;
         }
-        utf8(out)
+        Ok(w.finish()?)
     }
 }
 

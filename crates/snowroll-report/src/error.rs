@@ -30,9 +30,9 @@ pub enum ReportError {
     /// JSON serialisation failed.
     #[error("JSON: {0}")]
     Json(#[from] serde_json::Error),
-    /// CSV serialisation failed.
-    #[error("CSV: {0}")]
-    Csv(#[from] csv::Error),
+    /// Writing a CSV or JSON data file failed.
+    #[error(transparent)]
+    Output(#[from] snowroll_io::OutputError),
     /// A data file would carry NaN or infinity.
     #[error("{figure}: {source}")]
     NonFinite {

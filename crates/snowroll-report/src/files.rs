@@ -8,9 +8,9 @@ use std::path::{Path, PathBuf};
 use crate::plot::Scale;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-use super::csv_text::{comment_header, utf8};
 use super::error::{io_err, ReportError};
 use super::{html, markdown, Figure, Metadata, RenderedFigure, Report, Tally, CLAIMS_CSV};
+use snowroll_io::CsvTable;
 
 /// Writes `bytes` to a temporary file next to `path`, then renames it into place.
 fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
@@ -81,7 +81,7 @@ impl Report {
 /// kept, including those a logarithmic axis cannot draw.
 ///
 /// # Errors
-/// [`ReportError::Csv`] if serialisation fails.
+/// [`ReportError::Output`] if serialisation fails.
 pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportError> {
     let chart = &figure.chart;
     let prov = figure.provenance(meta);
@@ -106,11 +106,9 @@ pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportErro
         ),
     ];
     lines.extend(prov.params.iter().cloned());
-    let mut out = Vec::new();
-    comment_header(&mut out, &prov.software, &lines)?;
+    let mut w = CsvTable::new(&prov.software, &lines);
     {
-        let mut w = csv::Writer::from_writer(&mut out);
-        w.write_record(["series", chart.x.column.as_str(), chart.y.column.as_str()])?;
+        w.text_record(["series", chart.x.column.as_str(), chart.y.column.as_str()])?;
         let non_finite = |source| ReportError::NonFinite {
             figure: chart.name.clone(),
             source,
@@ -125,12 +123,11 @@ pub fn figure_csv(figure: &Figure, meta: &Metadata) -> Result<String, ReportErro
                         non_finite(e)
                     })?;
                 }
-                w.serialize((s.name.as_str(), x, y))?;
+                w.row(&(s.name.as_str(), x, y))?;
             }
         }
-        w.flush().map_err(io_err(Path::new("<memory>")))?;
     }
-    utf8(out)
+    Ok(w.finish()?)
 }
 
 /// Serialises `(key, value)` pairs as one JSON object, in their order.
@@ -188,9 +185,7 @@ pub(super) fn claims_json(report: &Report) -> Result<String, ReportError> {
             })
             .collect(),
     };
-    let mut text = serde_json::to_string_pretty(&doc)?;
-    text.push('\n');
-    Ok(text)
+    Ok(snowroll_io::json_document(&doc)?)
 }
 
 /// The file, under the report's `data/`, of every claim's measured numbers,
@@ -199,16 +194,14 @@ pub(super) fn claims_json(report: &Report) -> Result<String, ReportError> {
 /// row per claim: `id,paper_ref,verdict,expected,as_expected,measured,evidence`.
 ///
 /// # Errors
-/// [`ReportError::Csv`] if serialisation fails.
+/// [`ReportError::Output`] if serialisation fails.
 pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
     let m = &report.metadata;
     let mut lines = vec![("title".to_string(), m.title.clone())];
     lines.extend(m.params.iter().cloned());
-    let mut out = Vec::new();
-    comment_header(&mut out, &m.software, &lines)?;
+    let mut w = CsvTable::new(&m.software, &lines);
     {
-        let mut w = csv::Writer::from_writer(&mut out);
-        w.write_record([
+        w.text_record([
             "id",
             "paper_ref",
             "verdict",
@@ -219,7 +212,7 @@ pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
         ])?;
         for r in &report.claims {
             let as_expected = r.as_expected().to_string();
-            w.write_record([
+            w.text_record([
                 r.claim.id.as_str(),
                 r.claim.paper_ref,
                 &r.verdict.label(),
@@ -229,9 +222,8 @@ pub(super) fn claims_csv(report: &Report) -> Result<String, ReportError> {
                 &r.evidence,
             ])?;
         }
-        w.flush().map_err(io_err(Path::new("<memory>")))?;
     }
-    utf8(out)
+    Ok(w.finish()?)
 }
 
 /// Writes every file of the report into `dir`.

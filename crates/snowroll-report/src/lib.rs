@@ -40,7 +40,6 @@ pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 mod animation;
 mod contact;
-mod csv_text;
 mod document;
 mod errata;
 mod error;

@@ -37,6 +37,15 @@ pub struct Scenario {
     v0: MetersPerSecond,
     shape: Shape,
     swath: Swath,
+    /// g sin alpha and g cos alpha, computed once (every run and every
+    /// sweep row reads them several times; the same bits as computing them
+    /// on each call).
+    gravity_parts: (MetersPerSecondSquared, MetersPerSecondSquared),
+}
+
+/// (g sin alpha, g cos alpha).
+fn gravity_parts(g: f64, alpha: f64) -> (f64, f64) {
+    (g * alpha.sin_p(), g * alpha.cos_p())
 }
 
 pub use crate::body::{ChordWord, Shape, Swath, SwathWidth};
@@ -259,7 +268,7 @@ impl Scenario {
             |a| a > 0.0 && a < 90.0,
             "0 < alpha_deg < 90 degrees",
         )?;
-        Ok(Self {
+        let mut s = Self {
             alpha: alpha_deg.to_radians(),
             alpha_deg,
             b: check(
@@ -280,7 +289,10 @@ impl Scenario {
             v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
             swath: swath_of(&file)?,
-        })
+            gravity_parts: (0.0, 0.0),
+        };
+        s.gravity_parts = gravity_parts(s.g, s.alpha);
+        Ok(s)
     }
 
     /// Slope angle alpha, rad.
@@ -313,11 +325,11 @@ impl Scenario {
     }
     /// G = g sin alpha, the slope component of gravity, m/s².
     pub fn g_along(&self) -> MetersPerSecondSquared {
-        self.g * self.alpha.sin_p()
+        self.gravity_parts.0
     }
     /// C = g cos alpha, the normal component of gravity, m/s².
     pub fn g_normal(&self) -> MetersPerSecondSquared {
-        self.g * self.alpha.cos_p()
+        self.gravity_parts.1
     }
     /// The body's shape.
     pub fn shape(&self) -> Shape {
@@ -440,6 +452,7 @@ impl Default for Scenario {
             v0: f.v0,
             shape: f.shape,
             swath: Swath::Diameter,
+            gravity_parts: gravity_parts(f.g, f.alpha_deg.to_radians()),
         }
     }
 }

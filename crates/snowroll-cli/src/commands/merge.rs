@@ -174,7 +174,7 @@ fn one_process(first: &Shard, output: Option<&Path>) -> Result<SweepArgs> {
 
 /// Writes `header` and the shards' rows as Parquet through `sink` (a
 /// regular file), the way `sweep` does: the CSV first, to a temporary file
-/// beside the output, then converted ([`super::parquet::write`]).
+/// beside the output, then converted ([`snowroll_io::parquet::write`]).
 #[cfg(feature = "parquet")]
 fn to_parquet(shards: &[Shard], header: &str, sink: Sink) -> Result<Sink> {
     use crate::scratch::Scratch;
@@ -194,7 +194,7 @@ fn to_parquet(shards: &[Shard], header: &str, sink: Sink) -> Result<Sink> {
     }
     csv.flush().with_context(|| format!("writing {csv_name}"))?;
     let rows = File::open(scratch.path()).with_context(|| format!("reading {csv_name}"))?;
-    let sink = super::parquet::write(BufReader::new(rows), header, sink)
+    let sink = snowroll_io::parquet::write(BufReader::new(rows), header, sink)
         .with_context(|| format!("writing {name}"))?;
     drop(scratch);
     Ok(sink)

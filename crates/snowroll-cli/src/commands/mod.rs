@@ -6,13 +6,10 @@ mod inputs;
 mod merge;
 mod models;
 mod paper;
-#[cfg(feature = "parquet")]
-mod parquet;
 mod simulate;
 mod stack;
 mod sweep;
 mod sweep_check;
-mod sweep_csv;
 mod sweep_grid;
 mod sweep_partial;
 mod sweep_plot;

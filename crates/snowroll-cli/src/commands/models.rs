@@ -126,7 +126,7 @@ fn assumptions(body: &BodyArgs) -> Option<String> {
 pub fn run(args: &ModelsArgs) -> Result<()> {
     let listing = listing(args)?;
     let text = match args.format {
-        ModelsFormat::Json => serde_json::to_string_pretty(&listing)? + "\n",
+        ModelsFormat::Json => snowroll_io::json_document(&listing)?,
         ModelsFormat::Table => table(&listing),
     };
     let mut out = Sink::stdout();

@@ -21,14 +21,12 @@ use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
-use rayon::prelude::*;
 use snowroll::sweep::{
-    count_warnings, run_chunks, shard_range, Grid, Method, SweepRow, DEFAULT_CHUNK,
+    count_warnings, run_folded, shard_range, Grid, Method, DEFAULT_CHUNK, PART_ROWS,
 };
 use snowroll_io::VERSION;
 
 use super::sweep_check::{header_text, Recorded};
-use super::sweep_csv::RowWriter;
 use super::sweep_grid::{flag_axes, grid, run_files, with_config};
 use super::sweep_partial::{partial_path, Partial};
 use crate::args::{OutputArgs, SweepArgs, SweepFormat};
@@ -36,13 +34,12 @@ use crate::clash::refuse_clashes;
 use crate::console::{self, report};
 use crate::shell::shell_word;
 use crate::sink::{replaced_target, Sink};
+use snowroll_io::sweep::SweepCsv;
 
 /// Start of the header line naming the command (not compared on resume or merge).
 pub const COMMAND_KEY: &str = "# command: ";
 /// Start of the header line naming the shard and its rows.
 pub const SHARD_KEY: &str = "# shard: ";
-/// Rows formatted by one task.
-const FORMAT_ROWS: usize = 512;
 /// Longest wait between two `fsync`s of the partial file: a crash of the
 /// machine loses at most this much work.
 const SYNC_EVERY: Duration = Duration::from_secs(10);
@@ -293,7 +290,7 @@ fn finish(
             io::Read::read_exact(&mut partial.file, &mut header)?;
             partial.file.seek(SeekFrom::Start(0))?;
             let header = String::from_utf8_lossy(&header).into_owned();
-            let sink = super::parquet::write(&partial.file, &header, sink)
+            let sink = snowroll_io::parquet::write(&partial.file, &header, sink)
                 .with_context(|| format!("writing {name}"))?;
             sink.commit().with_context(|| format!("writing {name}"))?;
             partial.remove()
@@ -310,34 +307,27 @@ fn write_rows(
     range: Range<u64>,
     chunk: usize,
     method: Method,
-    out: &mut impl Write,
+    out: &mut (impl Write + Send),
     bar: &ProgressBar,
-    mut after_chunk: impl FnMut() -> io::Result<()>,
+    mut after_chunk: impl FnMut() -> io::Result<()> + Send,
 ) -> Result<()> {
-    run_chunks(
+    // Each task formats its rows as it computes them (formatting is a fair
+    // part of a fast row's cost); the text is written in grid order while
+    // the next chunk is computed.
+    run_folded(
         grid,
         range,
-        chunk,
+        (chunk, PART_ROWS),
         method,
-        |rows: &[SweepRow]| -> Result<()> {
-            // Formatting is a fair part of a fast row's cost: in parallel too.
-            let parts = rows
-                .par_chunks(FORMAT_ROWS)
-                .map(|part| -> Result<Vec<u8>, csv::Error> {
-                    let mut buf = Vec::with_capacity(part.len() * 200);
-                    let mut rows = RowWriter::new();
-                    for row in part {
-                        rows.write(&mut buf, row)?;
-                    }
-                    Ok(buf)
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            for buf in parts {
+        || (SweepCsv::new(), Vec::with_capacity(PART_ROWS * 200)),
+        |(csv, buf), row| -> Result<()> { Ok(csv.write(buf, row)?) },
+        |parts, rows| -> Result<()> {
+            for (_, buf) in parts {
                 out.write_all(&buf)?;
             }
             out.flush()?;
             after_chunk()?;
-            bar.inc(rows.len() as u64);
+            bar.inc(rows);
             Ok(())
         },
     )

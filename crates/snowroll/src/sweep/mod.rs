@@ -6,7 +6,9 @@
 //!   list or a range that is never expanded into memory.
 //! - [`run_chunks`] computes the rows of a range of grid indices in parallel
 //!   (rayon), a chunk at a time, and hands each chunk over in order: memory
-//!   stays bounded by one chunk whatever the grid's size.
+//!   stays bounded by one chunk whatever the grid's size. [`run_folded`]
+//!   folds each row as it is computed (a writer into its text) and
+//!   computes the next chunk while the last one is handed over.
 //! - The circular models take a fast path ([`circular_end`]): their speed is
 //!   a closed form in x and their time one quadrature, with no ODE solver.
 //! - [`Outcome`] names what the log did in a row, and [`boundaries`] gives
@@ -27,5 +29,6 @@ pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
 pub use row::{point_warnings, SweepRow};
 pub use run::{
-    count_warnings, run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL,
+    count_warnings, run_chunks, run_folded, run_point, shard_range, Method, DEFAULT_CHUNK,
+    FAST_MIN_RTOL, PART_ROWS,
 };

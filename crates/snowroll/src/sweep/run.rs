@@ -168,6 +168,77 @@ pub fn run_chunks<E: From<ParamError>>(
     Ok(())
 }
 
+/// Rows of one task of [`run_folded`]: enough to make a task's overhead
+/// small, few enough that both threads stay busy to a chunk's end.
+pub const PART_ROWS: usize = 512;
+
+/// Computes the rows of `indices` in parallel on the current rayon pool and
+/// folds them in grid order, `part` rows to a task: each task starts from
+/// `init()` and hands each row, as it is computed, to `fold` (the row is
+/// not kept). The tasks' results go to `emit` in grid order, a chunk of at
+/// most `chunk` rows at a time, with the chunk's number of rows; while
+/// `emit` takes one chunk, the pool computes the next. Stops at the first
+/// error and returns it (the chunks before it emitted, as with
+/// [`run_chunks`]).
+///
+/// A sweep's writer folds each row into its text: no chunk of rows is held
+/// in memory, and the pool does not wait while a chunk is written.
+///
+/// # Errors
+/// What `fold` or `emit` returns, and [`ParamError`] for indices outside
+/// the grid.
+#[allow(clippy::too_many_arguments)]
+pub fn run_folded<T, E>(
+    grid: &Grid,
+    indices: Range<u64>,
+    (chunk, part): (usize, usize),
+    method: Method,
+    init: impl Fn() -> T + Sync,
+    fold: impl Fn(&mut T, &SweepRow) -> Result<(), E> + Sync,
+    mut emit: impl FnMut(Vec<T>, u64) -> Result<(), E> + Send,
+) -> Result<(), E>
+where
+    T: Send,
+    E: From<ParamError> + Send,
+{
+    let (chunk, part) = (chunk.max(1) as u64, part.max(1) as u64);
+    let compute = |range: Range<u64>| -> Result<Vec<T>, E> {
+        let parts = (range.end - range.start).div_ceil(part);
+        (0..parts)
+            .into_par_iter()
+            .map(|k| {
+                let lo = range.start + k * part;
+                let mut acc = init();
+                for i in lo..(lo + part).min(range.end) {
+                    fold(&mut acc, &run_point(grid, i, method)?)?;
+                }
+                Ok(acc)
+            })
+            .collect()
+    };
+    let mut start = indices.start;
+    let mut pending: Option<(Vec<T>, u64)> = None;
+    loop {
+        let next = (start < indices.end).then(|| {
+            let n = chunk.min(indices.end - start);
+            start += n;
+            start - n..start
+        });
+        if next.is_none() && pending.is_none() {
+            return Ok(());
+        }
+        let (written, computed) = rayon::join(
+            || pending.take().map_or(Ok(()), |(parts, n)| emit(parts, n)),
+            || {
+                next.map(|r| compute(r.clone()).map(|p| (p, r.end - r.start)))
+                    .transpose()
+            },
+        );
+        written?;
+        pending = computed?;
+    }
+}
+
 #[cfg(all(test, feature = "clap"))]
 mod help_tests {
     use super::*;

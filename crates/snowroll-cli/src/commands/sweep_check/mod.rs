@@ -20,10 +20,10 @@ use snowroll::params::Value;
 use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
 use snowroll_io::VERSION;
 
-use super::sweep_csv::RowWriter;
 use super::sweep_grid::{grid_of, is_grid_key, recorded_method};
 use crate::args::{sweep_axes, Args, Command, SweepArgs};
 use crate::shell::shell_words;
+use snowroll_io::sweep::SweepCsv;
 
 mod rows;
 pub use rows::check_rows;

@@ -59,7 +59,7 @@ pub fn check_rows(
     let mut next = rows.start;
     let mut buf = Vec::new();
     let mut canonical = Vec::new();
-    let mut writer = RowWriter::new();
+    let mut writer = SweepCsv::new();
     loop {
         buf.clear();
         let n = (&mut *input)

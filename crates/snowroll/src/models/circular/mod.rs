@@ -30,6 +30,7 @@
 //! events; `model.rs` the model ([`CircularModel`]) and its run.
 
 mod balance;
+mod contact_bound;
 mod model;
 mod per_mass;
 mod rhs;

@@ -2,6 +2,7 @@
 //! its contact forces (fn. 10, `docs/contact-forces.md` §2, §5), its stop
 //! events, and with the energy ledger the dissipated works as extra states.
 
+use super::contact_bound::never_fires;
 use super::rhs::Acceleration;
 use super::series::AreaSeries;
 use super::{Coefficients, Derivation};
@@ -65,6 +66,9 @@ impl<const N: usize> CircularSystem<N> {
             (!coeffs.accretes && l.drag_coefficient > 0.0 && l.terminal_tol > 0.0 && drive > 0.0)
                 .then(|| l.terminal_tol * drive * num / den);
         let accel = Acceleration::of(derivation, &coeffs, scenario, &l);
+        // Hops and slips that a bound over the whole run rules out are not
+        // watched for (`contact_bound.rs`).
+        let never = never_fires(&coeffs, scenario, &l, opts.tolerances.rtol, opts.mu);
         Self {
             coeffs,
             scenario: *scenario,
@@ -73,8 +77,8 @@ impl<const N: usize> CircularSystem<N> {
             accel,
             losses: l,
             x_end: opts.x_end,
-            mu: opts.mu,
-            stop_on_hop: opts.on_hop == OnHop::Stop,
+            mu: opts.mu.filter(|_| !never.slip),
+            stop_on_hop: opts.on_hop == OnHop::Stop && !never.hop,
             terminal_accel,
         }
     }

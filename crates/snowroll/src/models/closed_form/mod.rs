@@ -160,6 +160,9 @@ pub struct SpeedSquared {
     contact: ContactCheck,
     /// Cleared when a node of the quadrature comes near a hop or a slip.
     contact_ok: Cell<bool>,
+    /// The last `(x, u(x))` of [`SpeedSquared::at`], as bits: the end of a
+    /// run is asked for twice (its contact check, its speed).
+    last_at: Cell<Option<(u64, f64)>>,
 }
 
 /// The contact events the run watches for ([`crate::SimOptions::on_hop`],
@@ -192,7 +195,11 @@ impl SpeedSquared {
         }
         let (n, s0, k) = (2.0 * c.drag, u.s0, u.inertia);
         let form = poly_form(u.push, u.lift, u.lift_b2, s0, k, n, u.u0)?;
-        Some(SpeedSquared { form, ..u })
+        Some(SpeedSquared {
+            form,
+            last_at: Cell::new(None),
+            ..u
+        })
     }
 
     /// As [`new`](Self::new), with the form of k = 0 (the inertia term
@@ -251,11 +258,24 @@ impl SpeedSquared {
             friction_q: mass_n / 2.0,
             contact,
             contact_ok: Cell::new(true),
+            last_at: Cell::new(None),
         })
     }
 
     /// u = v² after rolling `x`, m²/s².
     pub fn at(&self, x: f64) -> f64 {
+        if let Some((key, u)) = self.last_at.get() {
+            if key == x.to_bits() {
+                return u;
+            }
+        }
+        let u = self.at_uncached(x);
+        self.last_at.set(Some((x.to_bits(), u)));
+        u
+    }
+
+    /// [`SpeedSquared::at`], computed.
+    fn at_uncached(&self, x: f64) -> f64 {
         let (s0, b) = (self.s0, self.b);
         match self.form {
             Form::Constant => self.u0 + 2.0 * self.push * x,

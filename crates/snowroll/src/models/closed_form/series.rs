@@ -143,7 +143,12 @@ fn beta_over_np1(np1: f64) -> f64 {
 impl Series {
     /// S(z) of (T2).
     fn antiderivative(&self, z: f64) -> f64 {
-        let eps = self.beta * z.powf_p(-self.np1);
+        self.antiderivative_at(z, z.powf_p(-self.np1))
+    }
+
+    /// S(z) of (T2), given `z_pow = z^(−(n+1))`.
+    fn antiderivative_at(&self, z: f64, z_pow: f64) -> f64 {
+        let eps = self.beta * z_pow;
         let mut coeff = 1.0;
         let mut sum = 2.0;
         for k in 1..=MAX_TERMS {
@@ -163,9 +168,10 @@ impl Series {
         self.scale * (self.antiderivative(z) - self.s_z1)
     }
 
-    /// dt/dy at `y = √z`: `2c/√(1 + β z^(−(n+1)))` from (T1).
-    fn dt_dy(&self, y: f64) -> f64 {
-        2.0 * self.scale / (1.0 + self.beta * (y * y).powf_p(-self.np1)).sqrt()
+    /// dt/dy at `y = √z`: `2c/√(1 + β z^(−(n+1)))` from (T1), given
+    /// `z_pow = z^(−(n+1))`.
+    fn dt_dy(&self, z_pow: f64) -> f64 {
+        2.0 * self.scale / (1.0 + self.beta * z_pow).sqrt()
     }
 
     /// The `z ≥ z1` at which `t(z1) + t(Z) − t(z1) = t_end`, given
@@ -177,11 +183,14 @@ impl Series {
         let mut short = self.z1.sqrt();
         let mut y = short + (t_end - t1) / (2.0 * self.scale);
         for _ in 0..MAX_NEWTON {
-            let g = t1 + self.time_from_z1(y * y) - t_end;
+            // z^(−(n+1)) once for both t and dt/dy (the same bits as two calls).
+            let z = y * y;
+            let z_pow = z.powf_p(-self.np1);
+            let g = t1 + self.scale * (self.antiderivative_at(z, z_pow) - self.s_z1) - t_end;
             if g < 0.0 {
                 short = short.max(y);
             }
-            let next = y - g / self.dt_dy(y);
+            let next = y - g / self.dt_dy(z_pow);
             if !next.is_finite() {
                 return None;
             }

@@ -1,12 +1,13 @@
-//! Parquet output of `snowroll sweep` (cargo feature `parquet`): the rows of
-//! the finished partial CSV file, read back a batch at a time (memory stays
-//! bounded), as one Arrow column per [`SweepRow`] field, with the CSV
-//! header's `# key: value` lines as key-value metadata (`snowroll.key`).
+//! The Parquet exporter of sweeps (cargo feature `parquet`; `snowroll sweep`
+//! and `snowroll merge` write Parquet through it): the rows of a finished
+//! sweep CSV file (as [`SweepCsv`](crate::sweep::SweepCsv) writes it), read
+//! back a batch at a time (memory stays bounded), as one Arrow column per
+//! [`SweepRow`] field, with the CSV header's `# key: value` lines as
+//! key-value metadata (`snowroll.key`).
 
 use std::io::{Read, Write};
 use std::sync::Arc;
 
-use anyhow::{Context, Result};
 use arrow_array::{ArrayRef, Float64Array, RecordBatch, StringArray, UInt64Array};
 use arrow_schema::{DataType, Field, Schema};
 use parquet::arrow::ArrowWriter;
@@ -14,6 +15,11 @@ use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
 use snowroll::params::Kind;
 use snowroll::sweep::{Param, SweepRow};
+
+use crate::OutputError;
+
+/// The result of the Parquet exporter.
+type Result<T> = std::result::Result<T, OutputError>;
 
 /// Rows per record batch (and per read of the CSV).
 const BATCH_ROWS: usize = 65_536;
@@ -130,6 +136,10 @@ fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
 
 /// Writes the rows of the sweep CSV `csv` (header included) as Parquet to
 /// `out`, and returns `out` (to be committed).
+///
+/// # Errors
+/// [`OutputError::ReadBack`] for a row that cannot be read back,
+/// [`OutputError::Parquet`] and [`OutputError::Arrow`] from the writer.
 pub fn write<W: Write + Send>(csv: impl Read, header: &str, out: W) -> Result<W> {
     let schema = Arc::new(schema());
     let props = WriterProperties::builder()
@@ -141,7 +151,7 @@ pub fn write<W: Write + Send>(csv: impl Read, header: &str, out: W) -> Result<W>
         .from_reader(csv);
     let mut rows = Vec::with_capacity(BATCH_ROWS);
     for row in reader.deserialize::<SweepRow>() {
-        rows.push(row.context("reading back the rows")?);
+        rows.push(row.map_err(OutputError::ReadBack)?);
         if rows.len() == BATCH_ROWS {
             writer.write(&batch(&schema, &rows)?)?;
             rows.clear();

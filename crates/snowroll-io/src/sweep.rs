@@ -1,17 +1,22 @@
-//! The CSV records of sweep rows, byte for byte what `csv::Writer::serialize`
-//! writes for a [`SweepRow`], at a fraction of its cost.
+//! The CSV records of sweep rows ([`SweepCsv`]), byte for byte what
+//! `csv::Writer::serialize` writes for a [`SweepRow`], at a fraction of its
+//! cost: the one CSV exporter of sweeps (`snowroll sweep` writes its rows
+//! with it, and checks a resumed or merged file's rows against its bytes).
 //!
 //! Serialising goes through serde and formats every number afresh, but in a
 //! sweep most columns (the parameters that are not swept, the model, the
-//! stop reason) repeat from one row to the next. [`RowWriter`] keeps the
+//! stop reason) repeat from one row to the next. [`SweepCsv`] keeps the
 //! text of each column's last value and formats only what changed, with
-//! the same formatters the csv crate uses (`ryu` for floats, `itoa` for
-//! integers, the serde name for enums) and writes the record's bytes
-//! itself; a row with free text (an error) is left to `csv`, which quotes
-//! it. A test checks the bytes against `serialize` on rows of every kind.
+//! the bytes the csv crate writes (floats as `ryu` writes them, by `zmij`,
+//! `float_text.rs`; integers by `itoa`; the serde name for enums), and
+//! writes the record's bytes itself; a row with free text (an error) is
+//! left to `csv`, which quotes it. A test checks the bytes against
+//! `serialize` on rows of every kind.
 
 use serde::Serialize;
 use snowroll::sweep::{Param, SweepRow};
+
+use crate::float_text::push_any_float;
 
 /// The text of one column's last value.
 struct Last<K> {
@@ -41,18 +46,6 @@ impl<K: PartialEq + Copy> Last<K> {
 /// The numeric axes of a sweep, each a column of its rows.
 const AXES: usize = Param::ALL.len();
 
-/// A float as `csv` serialises it (`ryu`).
-fn float(bits: u64, out: &mut Vec<u8>) {
-    out.extend_from_slice(ryu::Buffer::new().format(f64::from_bits(bits)).as_bytes());
-}
-
-/// An optional float: empty for `None`, as `csv` serialises it.
-fn opt_float(bits: Option<u64>, out: &mut Vec<u8>) {
-    if let Some(bits) = bits {
-        float(bits, out);
-    }
-}
-
 /// A unit enum variant under its serde name, as `csv` serialises it.
 fn variant<T: Serialize>(value: T, out: &mut Vec<u8>) {
     if let Ok(serde_json::Value::String(name)) = serde_json::to_value(value) {
@@ -61,23 +54,31 @@ fn variant<T: Serialize>(value: T, out: &mut Vec<u8>) {
 }
 
 /// Writes [`SweepRow`]s as CSV records, remembering each column's last text.
-pub struct RowWriter {
+pub struct SweepCsv {
     floats: [Last<Option<u64>>; AXES + 4],
     model: Last<snowroll::ModelKind>,
     on_hop: Last<snowroll::OnHop>,
     collision: Last<snowroll::CollisionModel>,
     stop: Last<Option<snowroll::StopReason>>,
+    number: zmij::Buffer,
 }
 
-impl RowWriter {
+impl Default for SweepCsv {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl SweepCsv {
     /// A writer with nothing remembered.
     pub fn new() -> Self {
-        RowWriter {
+        SweepCsv {
             floats: std::array::from_fn(|_| Last::new()),
             model: Last::new(),
             on_hop: Last::new(),
             collision: Last::new(),
             stop: Last::new(),
+            number: zmij::Buffer::new(),
         }
     }
 
@@ -111,6 +112,12 @@ impl RowWriter {
             opt(row.v_m_s),
             opt(row.a_over_g_sin_alpha),
         ]);
+        let number = &mut self.number;
+        let mut float = |bits: Option<u64>, out: &mut Vec<u8>| {
+            if let Some(bits) = bits {
+                push_any_float(out, number, f64::from_bits(bits));
+            }
+        };
         let mut field = |text: &[u8]| {
             out.extend_from_slice(text);
             out.push(b',');
@@ -120,7 +127,7 @@ impl RowWriter {
         let (params, results) = floats.split_at(AXES);
         let (params_text, results_text) = self.floats.split_at_mut(AXES);
         for (&v, last) in params.iter().zip(params_text) {
-            field(last.get(v, opt_float));
+            field(last.get(v, &mut float));
         }
         field(self.on_hop.get(row.on_hop, variant));
         field(self.collision.get(row.collision, variant));
@@ -130,7 +137,7 @@ impl RowWriter {
             }
         }));
         for (&v, last) in results.iter().zip(results_text) {
-            field(last.get(v, opt_float));
+            field(last.get(v, &mut float));
         }
         if let Some(k) = row.turns {
             field(itoa::Buffer::new().format(k).as_bytes());
@@ -164,7 +171,7 @@ mod tests {
 
     fn written(rows: &[SweepRow]) -> Vec<u8> {
         let mut out = Vec::new();
-        let mut r = RowWriter::new();
+        let mut r = SweepCsv::new();
         for row in rows {
             r.write(&mut out, row).unwrap();
         }
@@ -222,6 +229,8 @@ mod tests {
             123456789.0,
             1e21,
             1e-7,
+            1e16,
+            -2.5e16,
         ];
         for (k, &stop) in stops.iter().enumerate() {
             for (j, &f) in floats.iter().enumerate() {
