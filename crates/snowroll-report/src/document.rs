@@ -228,18 +228,27 @@ impl Report {
             .collect()
     }
 
-    /// The self-contained HTML page, with the figures' SVGs inline.
+    /// The self-contained HTML page, with the figures' SVGs inline, each
+    /// drawn for a page that may be a phone's
+    /// ([`Chart::render_svg_page`](crate::plot::Chart::render_svg_page):
+    /// narrower, the legend under the plot).
     ///
     /// # Errors
     /// [`ReportError`] when a figure cannot be drawn or the data not serialised.
     pub fn to_html(&self) -> Result<String, ReportError> {
         self.validate()?;
-        let svgs = self
-            .figures
+        html::render(self, &self.page_svgs()?)
+    }
+
+    /// Every figure drawn for the page, in order.
+    ///
+    /// # Errors
+    /// [`ReportError::Plot`] when a figure cannot be drawn.
+    pub(crate) fn page_svgs(&self) -> Result<Vec<String>, ReportError> {
+        self.figures
             .iter()
-            .map(|f| f.chart.render_svg(&f.provenance(&self.metadata)))
-            .collect::<Result<Vec<_>, _>>()?;
-        html::render(self, &svgs)
+            .map(|f| Ok(f.chart.render_svg_page(&f.provenance(&self.metadata))?))
+            .collect()
     }
 
     /// The Markdown report (figures linked as `figures/NAME.svg`).

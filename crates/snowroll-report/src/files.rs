@@ -298,8 +298,7 @@ pub(super) fn write_all(
     put(data_dir.join(CLAIMS_CSV), claims_csv(report)?.as_bytes())?;
     put(dir.join("claims.json"), report.claims_json()?.as_bytes())?;
     put(dir.join("report.md"), report.to_markdown().as_bytes())?;
-    let svgs: Vec<String> = rendered.iter().map(|r| r.svg.clone()).collect();
-    let page = super::html::render(report, &svgs)?;
+    let page = super::html::render(report, &report.page_svgs()?)?;
     put(dir.join("report.html"), page.as_bytes())?;
     Ok(written)
 }
