@@ -35,6 +35,7 @@ pub use claim::{Claim, ClaimResult, Criterion, Tally, Tolerance, Verdict, EXPECT
 pub use claim_id::{ClaimId, UnknownClaimId};
 pub use claims::{tuned_to_default, ClaimCheck, Finding, Lab, Runner, CLAIMS};
 pub use findings::{algebra_only, headline, ALGEBRA_ONLY};
+pub use story::{abstract_sentences, abstract_text, scenario_text, ABSTRACT_CLAIMS, ABSTRACT_MAX_WORDS};
 pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
 pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
@@ -44,6 +45,7 @@ mod document;
 mod errata;
 mod files;
 mod findings;
+mod findings_table;
 mod html;
 mod intro;
 mod loss_figures;
@@ -55,6 +57,7 @@ mod paper;
 pub mod plot;
 pub mod run_plot;
 mod snowball;
+mod story;
 
 pub use animation::{Animation, Frame};
 pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};
