@@ -17,8 +17,8 @@
 //   - every figure's legend lies below its plot area at the phones' widths
 //     or inside it at 1400 px, and no figure text is smaller than 9 px;
 //   - nothing is written to the console and no script error is raised.
-// --shots DIR writes report.png (1400 px) and report-phone.png (400 px):
-// the first screen of each. --measure prints the heights and the tallest
+// --shots DIR writes browser-report.png (1400 px) and
+// browser-report-phone.png (400 px): the first screen of each. --measure prints the heights and the tallest
 // sections and checks nothing.
 'use strict';
 const path = require('path');
@@ -41,8 +41,8 @@ function check(ok, what, detail) {
 
 // Widths (px), the first screen's height there, and the page's height limit.
 const SCREENS = [
-  { width: 1400, height: 900, limit: 15000, shot: 'report.png' },
-  { width: 400, height: 800, limit: 25000, shot: 'report-phone.png' },
+  { width: 1400, height: 900, limit: 15000, shot: 'browser-report.png' },
+  { width: 400, height: 800, limit: 25000, shot: 'browser-report-phone.png' },
   { width: 360, height: 740, limit: 25000 },
 ];
 // The smallest readable figure text on screen, px.

@@ -10,7 +10,7 @@
 
 use std::fmt::Write as _;
 
-use crate::claim::{ClaimResult, Tally};
+use crate::claim::ClaimResult;
 use crate::findings::headline;
 use crate::markup::{esc, prose};
 use crate::ClaimId;
@@ -50,8 +50,8 @@ pub fn abstract_text(claims: &[ClaimResult]) -> String {
     text
 }
 
-/// The abstract's opening words.
-const OPENING: &str = "Every analysis of the note, run and checked.";
+/// The abstract's opening word, set in bold.
+const OPENING: &str = "Abstract.";
 
 /// One parameter of the scenario as the first screen states it: the
 /// symbol, the value and the unit, from its key in the report's parameters.
@@ -64,8 +64,8 @@ fn scenario_item(key: &str, value: &str) -> String {
         "density" => ("ρ", " kg/m³"),
         "length" => ("l", " m"),
         "v0" => ("v0", " m/s"),
-        "rtol" => ("relative tolerance", ""),
-        "atol" => ("absolute tolerance", ""),
+        "rtol" => return format!("tolerances {value} (relative)"),
+        "atol" => return format!("{value} (absolute)"),
         "long_run_turns" => return format!("{value} turns in the long runs"),
         other => (other, ""),
     };
@@ -94,9 +94,8 @@ pub(crate) fn abstract_section(h: &mut String, claims: &[ClaimResult], params: &
     h.push_str("</p>\n");
     let _ = writeln!(
         h,
-        "<p id=\"scenario\" class=\"scenario\">{} {} <a href=\"#parameters\">All parameters</a>.</p>\n</section>",
-        prose(&scenario_text(params)),
-        prose(&Tally::of(claims).sentence())
+        "<p id=\"scenario\" class=\"scenario\">{} <a href=\"#parameters\">All parameters</a>.</p>\n</section>",
+        prose(&scenario_text(params))
     );
 }
 
