@@ -4,7 +4,8 @@
 //!
 //! Hooks for the browser test (`.ci/browser-test.sh`): `body[data-figures]`
 //! and `body[data-claims]` give the expected counts, each figure is a
-//! `figure[data-figure=NAME]`, the claims table is `#claims-table`, each
+//! `figure[data-figure=NAME]`, the claims' tables (one per verdict group)
+//! are inside `#claims-table`, the abstract is `#abstract`, each
 //! animation is a `section[data-shape]` whose `#PREFIX-status` (`anim` for
 //! the log, `ball-anim` for the snowball) carries `data-frame`,
 //! `data-max-frame` and `data-ticks`, and script errors are counted in
@@ -113,9 +114,7 @@ fn page_top(h: &mut String, report: &Report) {
         esc(&m.title),
         esc(&m.software)
     );
-    h.push_str(
-        "<nav><a href=\"#findings\">Findings</a><a href=\"#problem\">The problem</a>",
-    );
+    h.push_str("<nav><a href=\"#findings\">Findings</a><a href=\"#problem\">The problem</a>");
     for (i, t) in report.tables.iter().enumerate() {
         let _ = write!(
             h,
@@ -213,7 +212,12 @@ fn table_section(h: &mut String, index: usize, t: &super::Table) {
     for row in &t.rows {
         h.push_str("<tr>");
         for (k, c) in row.iter().enumerate() {
-            let _ = write!(h, "<td data-label=\"{}\">{}</td>", esc(&t.header.get(k).cloned().unwrap_or_default()), prose(c));
+            let _ = write!(
+                h,
+                "<td data-label=\"{}\">{}</td>",
+                esc(&t.header.get(k).cloned().unwrap_or_default()),
+                prose(c)
+            );
         }
         h.push_str("</tr>\n");
     }

@@ -35,8 +35,10 @@ pub use claim::{Claim, ClaimResult, Criterion, Tally, Tolerance, Verdict, EXPECT
 pub use claim_id::{ClaimId, UnknownClaimId};
 pub use claims::{tuned_to_default, ClaimCheck, Finding, Lab, Runner, CLAIMS};
 pub use findings::{algebra_only, headline, ALGEBRA_ONLY};
-pub use story::{abstract_sentences, abstract_text, scenario_text, ABSTRACT_CLAIMS, ABSTRACT_MAX_WORDS};
 pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
+pub use story::{
+    abstract_sentences, abstract_text, scenario_text, ABSTRACT_CLAIMS, ABSTRACT_MAX_WORDS,
+};
 pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 mod animation;

@@ -80,7 +80,11 @@ pub fn scenario_text(params: &[(String, String)]) -> String {
 
 /// The first screen's section: the abstract, each result linked to its
 /// row of the findings, then the scenario.
-pub(crate) fn abstract_section(h: &mut String, claims: &[ClaimResult], params: &[(String, String)]) {
+pub(crate) fn abstract_section(
+    h: &mut String,
+    claims: &[ClaimResult],
+    params: &[(String, String)],
+) {
     h.push_str("<section id=\"abstract\">\n<p class=\"abstract\">");
     let _ = write!(h, "<strong>{}</strong>", esc(OPENING));
     for (id, sentence) in abstract_sentences(claims) {
@@ -105,10 +109,11 @@ mod tests {
 
     #[test]
     fn the_scenario_names_each_parameter_by_its_symbol_and_unit() {
-        let params: Vec<(String, String)> = [("alpha_deg", "70"), ("snow_depth", "0.01"), ("r0", "0.1")]
-            .iter()
-            .map(|(k, v)| (k.to_string(), v.to_string()))
-            .collect();
+        let params: Vec<(String, String)> =
+            [("alpha_deg", "70"), ("snow_depth", "0.01"), ("r0", "0.1")]
+                .iter()
+                .map(|(k, v)| (k.to_string(), v.to_string()))
+                .collect();
         assert_eq!(
             scenario_text(&params),
             "Computed for α = 70°, b = 0.01 m, r0 = 0.1 m."

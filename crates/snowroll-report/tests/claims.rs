@@ -15,8 +15,8 @@ use snowroll::{
     TurnModel, TurnSummary, TurnTable, TurnVariant,
 };
 use snowroll_report::{
-    abstract_sentences, abstract_text, headline, ClaimCheck, ClaimId, Lab, Verdict, ABSTRACT_CLAIMS,
-    ABSTRACT_MAX_WORDS, ALGEBRA_ONLY, CLAIMS,
+    abstract_sentences, abstract_text, headline, ClaimCheck, ClaimId, Lab, Verdict,
+    ABSTRACT_CLAIMS, ABSTRACT_MAX_WORDS, ALGEBRA_ONLY, CLAIMS,
 };
 
 /// 10^4 turns are enough for the long-run claims' verdicts (the last-decade
@@ -975,7 +975,10 @@ fn issue36_the_abstract_follows_each_headline_claims_measured_outcome() {
     ];
     for ((id, sentence), want) in real.iter().zip(expect) {
         assert!(sentence.contains(want), "{id}: {sentence}");
-        assert!(text.contains(sentence.as_str()), "{id} missing from the abstract");
+        assert!(
+            text.contains(sentence.as_str()),
+            "{id} missing from the abstract"
+        );
     }
 
     let s = Scenario::default();
@@ -1031,7 +1034,10 @@ fn issue36_the_abstract_follows_each_headline_claims_measured_outcome() {
         let sentence = abstract_sentences(std::slice::from_ref(&got));
         let real_sentence = &real.iter().find(|(r, _)| r == id).unwrap().1;
         assert_eq!(sentence.len(), 1);
-        assert_ne!(&sentence[0].1, real_sentence, "{id} kept its sentence on a wrong model");
+        assert_ne!(
+            &sentence[0].1, real_sentence,
+            "{id} kept its sentence on a wrong model"
+        );
         assert!(
             sentence[0].1.contains("did not reach its finding"),
             "{id}: {}",

@@ -233,8 +233,12 @@ fn issue36_the_page_figure_has_its_legend_under_the_plot_and_fits_a_phone() {
     let k = f64::from(snowroll_report::plot::SVG_OVERSAMPLE);
     let w = f64::from(snowroll_report::plot::PAGE_WIDTH);
     assert!(svg.contains(&format!("width=\"{w}\"")) && svg.contains("viewBox=\"0 0 "));
-    let (body, legend) = svg.split_once("<g class=\"legend\">").expect("no legend group");
-    let legend_top = attr_values(legend, "y").into_iter().fold(f64::INFINITY, f64::min);
+    let (body, legend) = svg
+        .split_once("<g class=\"legend\">")
+        .expect("no legend group");
+    let legend_top = attr_values(legend, "y")
+        .into_iter()
+        .fold(f64::INFINITY, f64::min);
     let lowest_plot = attr_values(body, "y")
         .into_iter()
         .chain(attr_values(body, "cy"))
@@ -262,18 +266,34 @@ fn issue36_the_page_figure_has_its_legend_under_the_plot_and_fits_a_phone() {
     let sizes = attr_values(&svg, "font-size");
     for line in legend.split("</text>").filter_map(|t| {
         let x: f64 = t.split(" x=\"").nth(1)?.split('"').next()?.parse().ok()?;
-        let size: f64 = t.split("font-size=\"").nth(1)?.split('"').next()?.parse().ok()?;
+        let size: f64 = t
+            .split("font-size=\"")
+            .nth(1)?
+            .split('"')
+            .next()?
+            .parse()
+            .ok()?;
         let text = t.rsplit('>').next()?.trim().to_string();
         Some((x, size, text))
     }) {
         let (x, size, text) = line;
         let right = x + 0.62 * size * text.chars().count() as f64;
-        assert!(right <= w * k, "legend line {text:?} reaches {right} of {}", w * k);
+        assert!(
+            right <= w * k,
+            "legend line {text:?} reaches {right} of {}",
+            w * k
+        );
     }
-    assert!(chart.series.len() < legend.matches("</text>").count(), "the long label was not broken");
+    assert!(
+        chart.series.len() < legend.matches("</text>").count(),
+        "the long label was not broken"
+    );
     let smallest = sizes.into_iter().fold(f64::INFINITY, f64::min) / k;
     let shown = smallest * 327.0 / w;
-    assert!(shown >= 9.0, "smallest text {smallest} px is {shown:.2} px on a phone");
+    assert!(
+        shown >= 9.0,
+        "smallest text {smallest} px is {shown:.2} px on a phone"
+    );
 }
 
 #[test]

@@ -157,7 +157,12 @@ impl Chart {
         let n = self.series.len();
         let font: TextStyle = (FAMILY, LEGEND_FONT * PAGE_TEXT * scale).into_font().into();
         let text_width = |t: &str| area.estimate_text_size(t, &font).map_or(0, |(w, _)| w);
-        let longest = self.series.iter().map(|s| text_width(&s.name)).max().unwrap_or(0);
+        let longest = self
+            .series
+            .iter()
+            .map(|s| text_width(&s.name))
+            .max()
+            .unwrap_or(0);
         let key = (KEY + 3.0 * PAD) * scale;
         let room = f64::from(width) - 2.0 * PAD * scale;
         let cols = ((room / (f64::from(longest) + key)).floor() as usize).clamp(1, n.max(1));
@@ -251,8 +256,12 @@ impl Chart {
             let x = p(2.0 * PAD) + (column * col as f64).round() as i32;
             self.draw_key(area, s, PALETTE[slot % PALETTE.len()], (x, y(0)), scale)?;
             for (i, text) in entries[k].iter().enumerate() {
-                area.draw(&Text::new(text.clone(), (x + p(KEY + PAD), y(i)), font.clone()))
-                    .map_err(draw_err)?;
+                area.draw(&Text::new(
+                    text.clone(),
+                    (x + p(KEY + PAD), y(i)),
+                    font.clone(),
+                ))
+                .map_err(draw_err)?;
             }
         }
         Ok(())

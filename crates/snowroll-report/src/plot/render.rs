@@ -192,9 +192,7 @@ impl Chart {
             (Scale::Linear, Scale::Linear) => self.draw_in(plot, xr, yr, scale, look),
             (Scale::Linear, Scale::Log) => self.draw_in(plot, xr, log_axis(yr), scale, look),
             (Scale::Log, Scale::Linear) => self.draw_in(plot, log_axis(xr), yr, scale, look),
-            (Scale::Log, Scale::Log) => {
-                self.draw_in(plot, log_axis(xr), log_axis(yr), scale, look)
-            }
+            (Scale::Log, Scale::Log) => self.draw_in(plot, log_axis(xr), log_axis(yr), scale, look),
         }
     }
 
