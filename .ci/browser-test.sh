@@ -20,9 +20,17 @@
 #     page does not scroll sideways,
 #   - at both widths neither animation's distance labels run together,
 #     no figure's legend box (<g class="legend">) covers a plotted point,
-#     and the smallest figure text is at least 9 px as rendered.
+#     and the smallest figure text is at least 9 px as rendered,
+#   - and, in viewports 1400, 400 and 360 px wide (playwright-core driving
+#     the same Chromium, .ci/browser/report-layout.js): no horizontal
+#     overflow, every element and figure inside the viewport's width, the
+#     legends under the plots on the phones, the page at most 15,000 px
+#     tall at 1400 px and 25,000 px on the phones, and the abstract's five
+#     results and the scenario on the first screen.
 # Screenshots (desktop and phone widths) are kept in REPORT_DIR as
-# browser-desktop.png and browser-phone.png. Exits non-zero on any failure.
+# browser-desktop.png and browser-phone.png (whole windows), and
+# browser-report.png and browser-report-phone.png (the first screens at
+# 1400 and 400 px). Exits non-zero on any failure.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -101,4 +109,24 @@ echo "ok   no console messages"
 
 python3 "$here/browser/check_dom.py" "$work/dom.html" "$report_dir" "$work/phone-dom.html" \
     || fail "DOM checks failed"
+
+# The layout at a desktop's and two phones' widths, in real viewports (a
+# window narrower than 500 px needs the DevTools protocol): playwright-core
+# 1.57.0 from npm, no browser download, in the directory the explorer's
+# browser test uses.
+root=$(cd "$here/.." && pwd)
+node=$("$here/install-node.sh") || fail "node is not available"
+node_dir=${CARGO_TARGET_DIR:-$root/target}/explorer-node
+case $node_dir in /*) ;; *) node_dir=$root/$node_dir ;; esac
+if [ ! -f "$node_dir/node_modules/playwright-core/package.json" ]; then
+    mkdir -p "$node_dir"
+    npm install --prefix "$node_dir" --no-audit --no-fund --silent playwright-core@1.57.0 >&2 \
+        || fail "npm could not install playwright-core"
+fi
+# A home of its own, as in .ci/explorer-browser-test.sh.
+mkdir -p "$work/home"
+HOME=$work/home XDG_CONFIG_HOME=$work/home/.config XDG_CACHE_HOME=$work/home/.cache \
+    PLAYWRIGHT_CORE=$node_dir/node_modules/playwright-core \
+    timeout 300 "$node" "$here/browser/report-layout.js" --chromium "$chromium" --page "$page" \
+    --shots "$report_dir" || fail "layout checks failed"
 echo "browser-test: passed; screenshots in $report_dir/browser-desktop.png, browser-phone.png"

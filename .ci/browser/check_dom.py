@@ -154,11 +154,13 @@ def main():
     check(want_claims >= 1 and len(dom.claim_rows) == want_claims,
           f"claims table has {len(dom.claim_rows)} rows, page declares {want_claims}")
     rows = [r.get("id", "") for r in dom.claim_rows]
-    check(dom.sections[:1] == ["findings"],
-          f"the page opens with its findings (first section: {dom.sections[:1]})")
-    check(sorted("claim-" + c for c in dom.findings) == sorted(rows)
-          and all(("claim-" + c, "findings") in dom.hrefs for c in dom.findings),
-          f"the findings give one line per claim, linked to its row ({len(dom.findings)} lines)")
+    check(dom.sections[:2] == ["abstract", "findings"],
+          f"the page opens with its abstract, then its findings (first sections: {dom.sections[:2]})")
+    abstract = [t for t, owner in dom.hrefs if owner == "abstract" and t.startswith("claim-")]
+    check(len(abstract) == 5 and len(set(abstract)) == 5 and set(abstract) <= set(rows),
+          f"the abstract links its five results to their claims' rows ({abstract})")
+    check(not dom.findings and len(set(rows)) == len(rows),
+          f"each claim appears once in full: one row each, no second list ({len(dom.findings)} list lines)")
     folded = [r for r in rows if dom.claim_details.get(r) == [False]]
     check(len(folded) == len(rows),
           f"each claim's checking folds out of its row, closed at first ({len(folded)} of {len(rows)})")

@@ -57,6 +57,21 @@ fn paper_writes_the_report_with_every_claim_as_expected() {
         );
     }
     assert_no_source_text(&html);
+    // Issue 36, item 2: the page opens with the abstract and the scenario
+    // it was computed for, every parameter by its symbol, before the findings.
+    let scenario = html.find("<p id=\"scenario\"").expect("no scenario");
+    assert!(html.find("<section id=\"abstract\"").unwrap() < scenario);
+    assert!(scenario < html.find("<section id=\"findings\"").unwrap());
+    let line = &html[scenario..scenario + html[scenario..].find("</p>").unwrap()];
+    for part in [
+        "α = 30°",
+        "b = 0.01 m",
+        "r0 = 0.1 m",
+        "ρ = 400 kg/m³",
+        "10000 turns",
+    ] {
+        assert!(line.contains(part), "{part} missing from {line}");
+    }
     // Issue 36, item 4: what the page shows, `<code>` and the figures' text
     // included, and the Markdown, hold no source text; no link is a path.
     let shown = source_text::without_scripts(&html);

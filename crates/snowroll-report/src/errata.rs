@@ -101,7 +101,9 @@ fn cells(line: &str) -> Vec<&str> {
 
 /// The errata section of `report.html`.
 pub(super) fn errata_section(h: &mut String) {
-    h.push_str("<section id=\"errata\">\n<h2>Errata of the note</h2>\n");
+    h.push_str(
+        "<section id=\"errata\">\n<details class=\"fold\"><summary><h2>Errata of the note</h2></summary>\n",
+    );
     let _ = writeln!(
         h,
         "<p class=\"source\">The project's list of the note's errata, as compiled into this program.</p>"
@@ -160,7 +162,7 @@ pub(super) fn errata_section(h: &mut String) {
         h.push_str("</tbody></table></div>\n");
     }
     flush(h, &mut paragraph);
-    h.push_str("</section>\n");
+    h.push_str("</details>\n</section>\n");
 }
 
 #[cfg(test)]

@@ -36,18 +36,27 @@ fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
 /// every file written into a folder (here, above the renderers they call,
 /// rather than beside the report's types).
 impl Report {
-    /// The self-contained HTML page, with the figures' SVGs inline.
+    /// The self-contained HTML page, with the figures' SVGs inline, each
+    /// drawn for a page that may be a phone's
+    /// ([`Chart::render_svg_page`](crate::plot::Chart::render_svg_page):
+    /// narrower, the legend under the plot).
     ///
     /// # Errors
     /// [`ReportError`] when a figure cannot be drawn or the data not serialised.
     pub fn to_html(&self) -> Result<String, ReportError> {
         self.validate()?;
-        let svgs = self
-            .figures
+        html::render(self, &self.page_svgs()?)
+    }
+
+    /// Every figure drawn for the page, in order.
+    ///
+    /// # Errors
+    /// [`ReportError::Plot`] when a figure cannot be drawn.
+    pub(crate) fn page_svgs(&self) -> Result<Vec<String>, ReportError> {
+        self.figures
             .iter()
-            .map(|f| f.chart.render_svg(&f.provenance(&self.metadata)))
-            .collect::<Result<Vec<_>, _>>()?;
-        html::render(self, &svgs)
+            .map(|f| Ok(f.chart.render_svg_page(&f.provenance(&self.metadata))?))
+            .collect()
     }
 
     /// The Markdown report (figures linked as `figures/NAME.svg`).
@@ -265,8 +274,7 @@ pub(super) fn write_all(
     put(data_dir.join(CLAIMS_CSV), claims_csv(report)?.as_bytes())?;
     put(dir.join("claims.json"), report.claims_json()?.as_bytes())?;
     put(dir.join("report.md"), report.to_markdown().as_bytes())?;
-    let svgs: Vec<String> = rendered.iter().map(|r| r.svg.clone()).collect();
-    let page = super::html::render(report, &svgs)?;
+    let page = super::html::render(report, &report.page_svgs()?)?;
     put(dir.join("report.html"), page.as_bytes())?;
     Ok(written)
 }

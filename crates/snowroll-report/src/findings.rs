@@ -170,6 +170,16 @@ impl Group {
         Group::Holds,
     ];
 
+    /// A short name of the group, for the page's markup.
+    pub fn key(self) -> &'static str {
+        match self {
+            Group::Refuted => "refuted",
+            Group::Corrected => "corrected",
+            Group::Beyond => "beyond",
+            Group::Holds => "holds",
+        }
+    }
+
     /// The group's heading.
     pub fn title(self) -> &'static str {
         match self {

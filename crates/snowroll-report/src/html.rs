@@ -4,7 +4,8 @@
 //!
 //! Hooks for the browser test (`.ci/browser-test.sh`): `body[data-figures]`
 //! and `body[data-claims]` give the expected counts, each figure is a
-//! `figure[data-figure=NAME]`, the claims table is `#claims-table`, each
+//! `figure[data-figure=NAME]`, the claims' tables (one per verdict group)
+//! are inside `#claims-table`, the abstract is `#abstract`, each
 //! animation is a `section[data-shape]` whose `#PREFIX-status` (`anim` for
 //! the log, `ball-anim` for the snowball) carries `data-frame`,
 //! `data-max-frame` and `data-ticks`, and script errors are counted in
@@ -12,12 +13,12 @@
 
 use std::fmt::Write as _;
 
-use super::errata::{errata_section, link_citations};
-use super::findings::{headline, method_text, short_measured, Group};
+use super::errata::errata_section;
+use super::findings_table::findings_section;
 use super::intro::intro_section;
 use super::markup::{esc, prose};
-use super::CLAIMS_CSV;
-use super::{ClaimId, ClaimResult, Figure, Report, ReportError, Tally, EXPECTATION_NOTE};
+use super::story::abstract_section;
+use super::{Report, ReportError};
 
 const CSS: &str = include_str!("../assets/report.css");
 const SCRIPT: &str = include_str!("../assets/report.js");
@@ -50,9 +51,9 @@ pub(super) fn render(report: &Report, svgs: &[String]) -> Result<String, ReportE
     let mut h = String::with_capacity(64 * 1024 + svgs.iter().map(String::len).sum::<usize>());
     page_head(&mut h, report);
     page_top(&mut h, report);
-    findings_section(&mut h, &report.claims);
+    abstract_section(&mut h, &report.claims, &report.metadata.params);
+    findings_section(&mut h, &report.claims, &report.figures);
     intro_section(&mut h);
-    claims_section(&mut h, &report.claims, &report.figures);
     for (i, t) in report.tables.iter().enumerate() {
         table_section(&mut h, i, t);
     }
@@ -113,16 +114,18 @@ fn page_top(h: &mut String, report: &Report) {
         esc(&m.title),
         esc(&m.software)
     );
-    h.push_str(
-        "<nav><a href=\"#findings\">Findings</a><a href=\"#problem\">The problem</a><a href=\"#claims\">Claims</a>",
-    );
+    h.push_str("<nav><a href=\"#findings\">Findings</a><a href=\"#problem\">The problem</a>");
     for (i, t) in report.tables.iter().enumerate() {
-        let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
+        let _ = write!(
+            h,
+            "<a class=\"minor\" href=\"#table-{i}\">{}</a>",
+            esc(&t.title)
+        );
     }
     if super::losses_section::applies(report) {
         let _ = write!(
             h,
-            "<a href=\"#{}\">{}</a>",
+            "<a class=\"minor\" href=\"#{}\">{}</a>",
             super::losses_section::SECTION_ID,
             super::losses_section::TITLE
         );
@@ -130,7 +133,7 @@ fn page_top(h: &mut String, report: &Report) {
     for anim in &report.animations {
         let _ = write!(
             h,
-            "<a href=\"#{}\">{}</a>",
+            "<a class=\"minor\" href=\"#{}\">{}</a>",
             anim.name(),
             match anim.shape {
                 snowroll::scenario::Shape::Cylinder => "Animation",
@@ -173,144 +176,34 @@ fn page_end(h: &mut String, report: &Report) -> Result<(), ReportError> {
     Ok(())
 }
 
-/// Links to the figures that support claim `id`, numbered as in the report,
-/// each with its data file, and to the claim's row of `data/claims.csv`.
-fn figure_links(id: ClaimId, figures: &[Figure]) -> String {
-    let links: Vec<String> = figures
-        .iter()
-        .enumerate()
-        .filter(|(_, f)| f.supports.contains(&id))
-        .map(|(i, f)| {
-            let name = esc(&f.chart.name);
-            format!(
-                "<a href=\"#fig-{name}\">Figure {}</a> (<a href=\"data/{name}.csv\">data</a>)",
-                i + 1
-            )
-        })
-        .collect();
-    let see = if links.is_empty() {
-        String::new()
-    } else {
-        format!("See {}. ", links.join(", "))
-    };
-    format!(
-        "<br><span class=\"figlinks\">{see}Measured values: row <code>{}</code> of \
-         <a href=\"data/{CLAIMS_CSV}\">the claims' data (CSV)</a>.</span>",
-        esc(id.as_str())
-    )
-}
-
-/// "Findings": the tally, then one line per claim (its verdict, its
-/// headline linked to its row of the claims table, the measured value),
-/// grouped: refuted, corrected (naming the erratum), beyond the note, holds.
-fn findings_section(h: &mut String, claims: &[ClaimResult]) {
-    h.push_str("<section id=\"findings\">\n<h2>Findings</h2>\n");
-    let _ = writeln!(
-        h,
-        "<p class=\"tally\">{}</p>",
-        prose(&Tally::of(claims).sentence())
-    );
-    for group in Group::ALL {
-        let rows: Vec<&ClaimResult> = claims.iter().filter(|r| Group::of(r) == group).collect();
-        if rows.is_empty() {
-            continue;
-        }
-        let _ = writeln!(h, "<h3>{}</h3>\n<ul class=\"findings\">", group.title());
-        for r in rows {
-            let erratum = match r.verdict {
-                super::Verdict::HoldsAfterCorrection(e) => {
-                    format!(
-                        " <span class=\"erratum\">({})</span>",
-                        link_citations(&prose(e))
-                    )
-                }
-                _ => String::new(),
-            };
-            let _ = writeln!(
-                h,
-                "<li data-claim=\"{id}\"><span class=\"verdict {class}\" title=\"{label}\">{symbol}</span> \
-                 <a href=\"#claim-{id}\">{headline}</a>{erratum}: <span class=\"measured\">{measured}</span></li>",
-                id = esc(r.claim.id.as_str()),
-                class = r.verdict.class(),
-                label = esc(r.verdict.class()),
-                symbol = r.verdict.symbol(),
-                headline = prose(&headline(r)),
-                measured = prose(&short_measured(&r.measured)),
-            );
-        }
-        h.push_str("</ul>\n");
-    }
-    h.push_str("</section>\n");
-}
-
-/// "Claims of the note": one line per claim (where in the note, statement,
-/// the measured value, verdict); how it was checked, the tolerances, the
-/// whole measurement and the evidence fold out of the statement.
-fn claims_section(h: &mut String, claims: &[ClaimResult], figures: &[Figure]) {
-    let tally = Tally::of(claims);
-    h.push_str("<section id=\"claims\">\n<h2>Claims of the note</h2>\n");
-    let _ = writeln!(h, "<p class=\"tally\">{}</p>", prose(&tally.sentence()));
-    let _ = writeln!(
-        h,
-        "<p class=\"expectation\">{}</p>",
-        prose(EXPECTATION_NOTE)
-    );
-    h.push_str(
-        "<p class=\"legend\"><span class=\"verdict holds\">✓ holds</span> \
-         <span class=\"verdict corrected\">✎ holds after correction</span> \
-         <span class=\"verdict refuted\">✗ refuted</span> \
-         <span class=\"verdict inconclusive\">? inconclusive</span></p>\n",
-    );
-    h.push_str(
-        "<div class=\"table-wrap\"><table id=\"claims-table\" class=\"claims\">\n<thead><tr>\
-         <th scope=\"col\">Claim</th><th scope=\"col\">Statement</th>\
-         <th scope=\"col\">Measured</th><th scope=\"col\">Verdict</th>\
-         </tr></thead>\n<tbody>\n",
-    );
-    for r in claims {
-        let c = r.claim;
-        let expected = if r.as_expected() {
-            String::new()
-        } else {
-            format!(
-                "<br><span class=\"unexpected\">expected: {}</span>",
-                esc(&c.expected.label())
-            )
-        };
+/// Opens a section below the first screen, folded (`<details>`, closed)
+/// when `fold`: its heading is the summary a reader clicks.
+fn open_section(h: &mut String, id: &str, title: &str, fold: bool) {
+    if fold {
         let _ = writeln!(
             h,
-            "<tr id=\"claim-{id}\" data-verdict=\"{class}\" data-as-expected=\"{ok}\">\
-             <td data-label=\"Claim\"><strong>{paper}</strong><br><code>{id}</code></td>\
-             <td data-label=\"Statement\">{statement}<details><summary>How it was checked</summary>\
-             <p>{method}</p><p class=\"tol\">Tolerances: {tol}</p><p>Measured: {measured}</p>\
-             <p>{evidence}{figures}</p></details></td>\
-             <td data-label=\"Measured\">{short}</td>\
-             <td data-label=\"Verdict\"><span class=\"verdict {class}\">{symbol} {label}</span>{expected}</td></tr>",
-            id = esc(c.id.as_str()),
-            class = r.verdict.class(),
-            ok = r.as_expected(),
-            paper = prose(c.paper_ref),
-            statement = prose(c.statement),
-            method = prose(&method_text(c)),
-            tol = prose(&c.tolerances_text()),
-            measured = prose(&r.measured),
-            short = prose(&short_measured(&r.measured)),
-            symbol = r.verdict.symbol(),
-            label = link_citations(&prose(&r.verdict.label())),
-            evidence = link_citations(&prose(&r.evidence)),
-            figures = figure_links(c.id, figures),
+            "<section id=\"{id}\">\n<details class=\"fold\"><summary><h2>{title}</h2></summary>"
         );
+    } else {
+        let _ = writeln!(h, "<section id=\"{id}\">\n<h2>{title}</h2>");
     }
-    h.push_str("</tbody></table></div>\n</section>\n");
+}
+
+/// Closes a section opened by [`open_section`].
+fn close_section(h: &mut String, fold: bool) {
+    h.push_str(if fold {
+        "</details>\n</section>\n"
+    } else {
+        "</section>\n"
+    });
 }
 
 fn table_section(h: &mut String, index: usize, t: &super::Table) {
-    let _ = writeln!(
-        h,
-        "<section id=\"table-{index}\">\n<h2>{}</h2>\n<p>{}</p>",
-        esc(&t.title),
-        prose(&t.caption)
-    );
+    // Each table is folded: its title shows, the caption and the table
+    // open on a click (on a phone each row is a card a screen tall).
+    let fold = true;
+    open_section(h, &format!("table-{index}"), &esc(&t.title), fold);
+    let _ = writeln!(h, "<p>{}</p>", prose(&t.caption));
     h.push_str("<div class=\"table-wrap\"><table class=\"parting\">\n<thead><tr>");
     for c in &t.header {
         let _ = write!(h, "<th scope=\"col\">{}</th>", prose(c));
@@ -318,12 +211,18 @@ fn table_section(h: &mut String, index: usize, t: &super::Table) {
     h.push_str("</tr></thead>\n<tbody>\n");
     for row in &t.rows {
         h.push_str("<tr>");
-        for c in row {
-            let _ = write!(h, "<td>{}</td>", prose(c));
+        for (k, c) in row.iter().enumerate() {
+            let _ = write!(
+                h,
+                "<td data-label=\"{}\">{}</td>",
+                esc(&t.header.get(k).cloned().unwrap_or_default()),
+                prose(c)
+            );
         }
         h.push_str("</tr>\n");
     }
-    h.push_str("</tbody></table></div>\n</section>\n");
+    h.push_str("</tbody></table></div>\n");
+    close_section(h, fold);
 }
 
 fn animation_section(h: &mut String, anim: &super::Animation) {
@@ -364,7 +263,7 @@ fn animation_section(h: &mut String, anim: &super::Animation) {
 }
 
 fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
-    h.push_str("<section id=\"figures\">\n<h2>Figures</h2>\n");
+    h.push_str("<section id=\"figures\">\n<h2>Figures</h2>\n<div class=\"figure-grid\">\n");
     for (i, (fig, svg)) in report.figures.iter().zip(svgs).enumerate() {
         let name = esc(&fig.chart.name);
         let prov = fig.provenance(&report.metadata).line();
@@ -390,21 +289,21 @@ fn figures_section(h: &mut String, report: &Report, svgs: &[String]) {
             h,
             "<figure id=\"fig-{name}\" class=\"figure\" data-figure=\"{name}\">\n<div class=\"svg-wrap\">{svg}</div>\n\
              <figcaption><strong>Figure {num}. {title}.</strong> {caption}{supports} \
-             <span class=\"files\">Files: <a href=\"figures/{name}.svg\">SVG</a>, \
+             <details class=\"files\"><summary>Files and parameters</summary>Files: <a href=\"figures/{name}.svg\">SVG</a>, \
              <a href=\"figures/{name}.png\">PNG</a>, <a href=\"data/{name}.csv\">data (CSV)</a>. \
-             {prov}</span></figcaption>\n</figure>",
+             {prov}</details></figcaption>\n</figure>",
             num = i + 1,
             title = prose(&fig.chart.title),
             caption = prose(&fig.caption),
             prov = esc(&prov),
         );
     }
-    h.push_str("</section>\n");
+    h.push_str("</div>\n</section>\n");
 }
 
 fn params_section(h: &mut String, report: &Report) {
     let m = &report.metadata;
-    h.push_str("<section id=\"parameters\">\n<h2>Parameters and version</h2>\n");
+    open_section(h, "parameters", "Parameters and version", true);
     h.push_str("<table class=\"params\"><tbody>\n");
     let _ = writeln!(
         h,
@@ -419,7 +318,8 @@ fn params_section(h: &mut String, report: &Report) {
             esc(v)
         );
     }
-    h.push_str("</tbody></table>\n</section>\n");
+    h.push_str("</tbody></table>\n");
+    close_section(h, true);
 }
 
 /// Where to explore the models interactively: the explorer written beside

@@ -187,7 +187,7 @@ pub(super) fn intro_section(h: &mut String) {
         "</div>\n<figcaption><strong>The geometry.</strong> {GEOMETRY_CAPTION}</figcaption>\n</figure>"
     );
     h.push_str(
-        "<h3 id=\"models\">The models</h3>\n<p>Each model is one equation of motion; the circular ones share \
+        "<details class=\"fold\" id=\"models\"><summary><h3>The models</h3></summary>\n<p>Each model is one equation of motion; the circular ones share \
          one form and differ in coefficients, written out below from the coefficients the program \
          integrates.</p>\n<div class=\"table-wrap\"><table class=\"parting models\">\n<thead><tr>\
          <th scope=\"col\">Model (alias)</th><th scope=\"col\">Note</th>\
@@ -208,9 +208,9 @@ pub(super) fn intro_section(h: &mut String) {
             terminal = prose(&terminal_text(kind)),
         );
     }
-    h.push_str("</tbody></table></div>\n");
+    h.push_str("</tbody></table></div>\n</details>\n");
     h.push_str(
-        "<h3 id=\"symbols\">Symbols</h3>\n<div class=\"table-wrap\"><table class=\"parting symbols\">\n\
+        "<details class=\"fold\" id=\"symbols\"><summary><h3>Symbols</h3></summary>\n<div class=\"table-wrap\"><table class=\"parting symbols\">\n\
          <thead><tr><th scope=\"col\">Symbol</th><th scope=\"col\">Meaning</th><th scope=\"col\">Unit</th>\
          </tr></thead>\n<tbody>\n",
     );
@@ -223,7 +223,7 @@ pub(super) fn intro_section(h: &mut String) {
             esc(unit)
         );
     }
-    h.push_str("</tbody></table></div>\n</section>\n");
+    h.push_str("</tbody></table></div>\n</details>\n</section>\n");
 }
 
 /// A point of the slope's frame (u down the slope, w normal to it, in px)

@@ -36,6 +36,9 @@ pub use claim_id::{ClaimId, UnknownClaimId};
 pub use claims::{tuned_to_default, ClaimCheck, Finding, Lab, Runner, CLAIMS};
 pub use findings::{algebra_only, headline, ALGEBRA_ONLY};
 pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
+pub use story::{
+    abstract_sentences, abstract_text, scenario_text, ABSTRACT_CLAIMS, ABSTRACT_MAX_WORDS,
+};
 pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 mod animation;
@@ -45,6 +48,7 @@ mod errata;
 mod error;
 mod files;
 mod findings;
+mod findings_table;
 mod html;
 mod intro;
 mod loss_figures;
@@ -56,6 +60,7 @@ mod paper;
 pub mod plot;
 pub mod run_plot;
 mod snowball;
+mod story;
 
 pub use animation::{Animation, Frame};
 pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};

@@ -14,7 +14,10 @@ use snowroll::{
     run_turns, Coefficients, Derivation, Model, ModelKind, Scenario, ScenarioFile, SimOptions,
     TurnModel, TurnSummary, TurnTable, TurnVariant,
 };
-use snowroll_report::{headline, ClaimCheck, ClaimId, Lab, Verdict, ALGEBRA_ONLY, CLAIMS};
+use snowroll_report::{
+    abstract_sentences, abstract_text, headline, ClaimCheck, ClaimId, Lab, Verdict,
+    ABSTRACT_CLAIMS, ABSTRACT_MAX_WORDS, ALGEBRA_ONLY, CLAIMS,
+};
 
 /// 10^4 turns are enough for the long-run claims' verdicts (the last-decade
 /// means are within 1e-3 G of their limits there); the report runs 10^5.
@@ -935,4 +938,110 @@ fn regression_32_regime_map_borders_notice_a_one_percent_error_in_the_lift() {
         "{}",
         r.measured
     );
+}
+
+/// The abstract's sentences of the five headline claims on `lab`.
+fn abstract_on(lab: &Lab) -> Vec<(ClaimId, String)> {
+    let results: Vec<_> = ABSTRACT_CLAIMS
+        .iter()
+        .map(|&id| check(id).run(lab).unwrap())
+        .collect();
+    abstract_sentences(&results)
+}
+
+/// Issue 36, item 2: the report's abstract states the five headline
+/// results in at most 120 words, each sentence composed from its claim's
+/// measured outcome; fed a wrong model, that claim's sentence changes (it
+/// says which verdict the check reached instead) and the others do not.
+#[test]
+fn issue36_the_abstract_follows_each_headline_claims_measured_outcome() {
+    let real = abstract_on(&lab());
+    assert_eq!(
+        real.iter().map(|(id, _)| *id).collect::<Vec<_>>(),
+        ABSTRACT_CLAIMS
+    );
+    let results: Vec<_> = CLAIMS.iter().map(|c| c.run(&lab()).unwrap()).collect();
+    let text = abstract_text(&results);
+    let words = text.split_whitespace().count();
+    assert!(words <= ABSTRACT_MAX_WORDS, "{words} words: {text}");
+    // The numbers are the runs': the terminal fractions read off each
+    // equation, the long-run mean, the hop slope arctan 2, the ball's a/G.
+    let expect = [
+        "terminal accelerations G/5, G/6, G/3, 2G/9 (eqs. (4), (6), (14), (21)), a factor 2.00 apart",
+        "The printed eq. (21) is wrong: omitting ∂T/∂x",
+        "0.250 G with the collisions (0.333 G within a turn), not the 4G/9 of eq. (79)",
+        "exactly when tan α > 2 (α > 63.43°)",
+        "tends to a/G = 0.1667 (1/6) with torque about the centre",
+    ];
+    for ((id, sentence), want) in real.iter().zip(expect) {
+        assert!(sentence.contains(want), "{id}: {sentence}");
+        assert!(
+            text.contains(sentence.as_str()),
+            "{id} missing from the abstract"
+        );
+    }
+
+    let s = Scenario::default();
+    let mut free = long_run(ModelKind::TurnsExact, &s);
+    for i in 0..free.rows.len() {
+        free.rows[i].v_after_m_s = free.rows[i].v_end_m_s;
+        if i > 0 {
+            free.rows[i].v_start_m_s = free.rows[i - 1].v_end_m_s;
+        }
+    }
+    let free = edited_table(free, |_| {});
+    let wrong_labs: [(ClaimId, Lab); 5] = [
+        (
+            ClaimId::CircularAnalysesDiffer,
+            lab().with_coefficients(
+                Derivation::TorqueAboutContact,
+                perturbed(Derivation::TorqueAboutContact, |c| c.drag = 1.4),
+            ),
+        ),
+        (
+            ClaimId::LagrangianDiffersFromEnergy,
+            lab().with_coefficients(
+                Derivation::LagrangianPrinted,
+                perturbed(Derivation::LagrangianPrinted, |c| c.drag = 1.01),
+            ),
+        ),
+        (
+            ClaimId::MultiTurnMeanFourNinths,
+            lab().with_long_run(true, free),
+        ),
+        (
+            ClaimId::Fn10HopThreshold,
+            lab().with_runner(|kind, s, opts| {
+                (kind == ModelKind::Turns).then(|| {
+                    let opts = SimOptions {
+                        on_hop: snowroll::OnHop::Continue,
+                        ..opts.clone()
+                    };
+                    TurnModel::new(TurnVariant::Paper).simulate(s, &opts)
+                })
+            }),
+        ),
+        (
+            ClaimId::SnowballTerminalFractions,
+            lab().with_coefficients(
+                Derivation::TorqueAboutContact,
+                ball_perturbed(Derivation::TorqueAboutContact, |c| c.drag *= 1.01),
+            ),
+        ),
+    ];
+    for (id, wrong) in &wrong_labs {
+        let got = check(*id).run(wrong).unwrap();
+        let sentence = abstract_sentences(std::slice::from_ref(&got));
+        let real_sentence = &real.iter().find(|(r, _)| r == id).unwrap().1;
+        assert_eq!(sentence.len(), 1);
+        assert_ne!(
+            &sentence[0].1, real_sentence,
+            "{id} kept its sentence on a wrong model"
+        );
+        assert!(
+            sentence[0].1.contains("did not reach its finding"),
+            "{id}: {}",
+            sentence[0].1
+        );
+    }
 }

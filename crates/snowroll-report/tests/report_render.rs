@@ -210,6 +210,92 @@ fn svg_has_title_axis_units_legend_and_provenance() {
     )));
 }
 
+/// The numbers of attribute `key` in `text` (`key="N"`), in order.
+fn attr_values(text: &str, key: &str) -> Vec<f64> {
+    text.split(&format!(" {key}=\""))
+        .skip(1)
+        .filter_map(|s| s.split('"').next()?.parse().ok())
+        .collect()
+}
+
+/// Issue 36, item 3: the page's figure is drawn for a phone's width. It is
+/// PAGE_WIDTH wide in its viewBox (so it scales to any box), its legend is
+/// a group under every plotted point and every axis label, no entry runs
+/// past the figure's right edge, and its smallest text, shown 327 px wide
+/// (a 360 px phone inside the page's margins), is at least 9 px.
+#[test]
+fn issue36_the_page_figure_has_its_legend_under_the_plot_and_fits_a_phone() {
+    let runs = circular_runs();
+    let mut chart = speed_chart(&runs);
+    // A label longer than the figure is wide: broken into lines that fit.
+    chart.series[0].name = "a very long legend entry that names a model, its equation and its terminal value, 0.3333 G".to_string();
+    let svg = chart.render_svg_page(&provenance()).unwrap();
+    let k = f64::from(snowroll_report::plot::SVG_OVERSAMPLE);
+    let w = f64::from(snowroll_report::plot::PAGE_WIDTH);
+    assert!(svg.contains(&format!("width=\"{w}\"")) && svg.contains("viewBox=\"0 0 "));
+    let (body, legend) = svg
+        .split_once("<g class=\"legend\">")
+        .expect("no legend group");
+    let legend_top = attr_values(legend, "y")
+        .into_iter()
+        .fold(f64::INFINITY, f64::min);
+    let lowest_plot = attr_values(body, "y")
+        .into_iter()
+        .chain(attr_values(body, "cy"))
+        .chain(
+            body.split("points=\"")
+                .skip(1)
+                .flat_map(|p| p.split('"').next().unwrap_or("").split_whitespace())
+                .filter_map(|xy| xy.split(',').nth(1)?.parse().ok()),
+        )
+        .fold(0.0, f64::max);
+    assert!(
+        lowest_plot < legend_top,
+        "the plot reaches {lowest_plot}, the legend starts at {legend_top}"
+    );
+    // No title or footer: the page's caption has them.
+    for t in body.split("<text").skip(1) {
+        let t = t.split("</text>").next().unwrap_or("");
+        assert!(
+            !t.contains("Speed down the slope") && !t.contains(VERSION),
+            "title or footer drawn: {t}"
+        );
+    }
+    // Every legend line fits the figure's width (the font's advance is at
+    // most 0.62 em for these labels in DejaVu Sans).
+    let sizes = attr_values(&svg, "font-size");
+    for line in legend.split("</text>").filter_map(|t| {
+        let x: f64 = t.split(" x=\"").nth(1)?.split('"').next()?.parse().ok()?;
+        let size: f64 = t
+            .split("font-size=\"")
+            .nth(1)?
+            .split('"')
+            .next()?
+            .parse()
+            .ok()?;
+        let text = t.rsplit('>').next()?.trim().to_string();
+        Some((x, size, text))
+    }) {
+        let (x, size, text) = line;
+        let right = x + 0.62 * size * text.chars().count() as f64;
+        assert!(
+            right <= w * k,
+            "legend line {text:?} reaches {right} of {}",
+            w * k
+        );
+    }
+    assert!(
+        chart.series.len() < legend.matches("</text>").count(),
+        "the long label was not broken"
+    );
+    let smallest = sizes.into_iter().fold(f64::INFINITY, f64::min) / k;
+    let shown = smallest * 327.0 / w;
+    assert!(
+        shown >= 9.0,
+        "smallest text {smallest} px is {shown:.2} px on a phone"
+    );
+}
+
 #[test]
 fn a_chart_missing_a_unit_or_data_is_refused() {
     let base = Chart::new("c", "T", Axis::linear("x", ""), Axis::linear("y", "m"))
@@ -513,7 +599,7 @@ fn html_is_self_contained_and_holds_claims_figures_and_animation() {
     assert!(html.contains("✓ holds</span>"));
     assert!(html.contains("✗ refuted</span>"));
     assert!(html.contains("class=\"expectation\""));
-    assert!(html.contains("<td>&lt;2&gt;</td>"));
+    assert!(html.contains("\">&lt;2&gt;</td>"));
     assert!(html.contains("expected: holds after correction (docs/errata.md (21))"));
     for name in ["speed", "radius"] {
         let start = html

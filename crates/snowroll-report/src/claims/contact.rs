@@ -108,7 +108,7 @@ pub(super) fn hop_threshold(lab: &Lab) -> Result<Finding, SimError> {
     }
     Ok(Finding {
         headline: Some(format!(
-            "A turn-model log hops in late turns exactly when tan α > 2 (α > {threshold:.2}°): both turn models hop {margin}° above and roll on {margin}° below"
+            "A turn-model log hops in late turns exactly when tan α > 2 (α > {threshold:.2}°): both models hop {margin}° above, neither {margin}° below"
         )),
         measured: format!("α* = arctan 2 = {threshold:.4}°; {}", parts.join("; ")),
         verdict: holds_if(ok, &numbers),

@@ -122,8 +122,16 @@ pub(super) fn ball_terminal_fractions(lab: &Lab) -> Result<Finding, SimError> {
         parts.push(format!("{} {a:.8} (→ {fraction:.8})", kind.id()));
     }
     let ok = BALL_TERMINAL_LIMIT.accepts_deviation(worst);
+    // numbers: a/G and its deviation of each model, torque-cm first.
+    let others = numbers[2..].iter().step_by(2).copied();
+    let (lo, hi) = others.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), a| {
+        (lo.min(a), hi.max(a))
+    });
     Ok(Finding {
-        headline: None,
+        headline: Some(format!(
+            "The always-round snowball (swath 2r) tends to a/G = {:.4} (1/6) with torque about the centre; other analyses, {lo:.3} to {hi:.3}",
+            numbers[0]
+        )),
         measured: format!("ball, a/G at x = {BALL_X_FAR:e} m: {}", parts.join("; ")),
         verdict: holds_if(ok, &numbers),
         evidence: format!(

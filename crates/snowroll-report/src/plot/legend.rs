@@ -1,7 +1,9 @@
-//! The legend beside the plot, and the colours of the series.
+//! The legend beside the plot (or under it), and the colours of the series.
 //!
 //! The legend is a column to the right of the plotting area, so that it
-//! covers no curve and no point; in the SVG it is a group
+//! covers no curve and no point (in a figure drawn for a page,
+//! [`Chart::render_svg_page`], it is a box of rows under the plot); in the
+//! SVG it is a group
 //! `<g class="legend">`, which the report's browser test finds and checks
 //! against every plotted point. Each curve has a colour of its own; a series
 //! drawn [`Series::in_colour_of`] an earlier one (a closed form beside its
@@ -11,7 +13,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::font::FAMILY;
+use super::font::{FAMILY, PAGE_TEXT};
 use super::{Chart, Marker, PlotError, Series, Style};
 
 /// Colours of successive curves: Tableau 10 (distinct, colour-blind aware),
@@ -138,6 +140,129 @@ impl Chart {
                 font.clone(),
             ))
             .map_err(draw_err)?;
+        }
+        Ok(())
+    }
+
+    /// The legend under the plot on an area `width` px wide (at `scale`):
+    /// its number of columns (as many of the longest label as fit, at most
+    /// one per series) and the lines of each entry. In one column, a label
+    /// wider than the column is broken at spaces into lines that fit.
+    pub(crate) fn legend_layout<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        width: u32,
+        scale: f64,
+    ) -> (usize, Vec<Vec<String>>) {
+        let n = self.series.len();
+        let font: TextStyle = (FAMILY, LEGEND_FONT * PAGE_TEXT * scale).into_font().into();
+        let text_width = |t: &str| area.estimate_text_size(t, &font).map_or(0, |(w, _)| w);
+        let longest = self
+            .series
+            .iter()
+            .map(|s| text_width(&s.name))
+            .max()
+            .unwrap_or(0);
+        let key = (KEY + 3.0 * PAD) * scale;
+        let room = f64::from(width) - 2.0 * PAD * scale;
+        let cols = ((room / (f64::from(longest) + key)).floor() as usize).clamp(1, n.max(1));
+        let room_for_text = (room - key).max(1.0) as u32;
+        let lines = self
+            .series
+            .iter()
+            .map(|s| {
+                if cols > 1 {
+                    return vec![s.name.clone()];
+                }
+                let mut lines: Vec<String> = Vec::new();
+                for word in s.name.split(' ') {
+                    match lines.last_mut() {
+                        Some(line) if text_width(&format!("{line} {word}")) <= room_for_text => {
+                            line.push(' ');
+                            line.push_str(word);
+                        }
+                        _ => lines.push(word.to_string()),
+                    }
+                }
+                lines
+            })
+            .collect();
+        (cols, lines)
+    }
+
+    /// Lines of text the legend under the plot takes: the rows of its
+    /// columns, each row as many lines as its tallest entry.
+    pub(crate) fn legend_lines(cols: usize, entries: &[Vec<String>]) -> usize {
+        if cols <= 1 {
+            return entries.iter().map(Vec::len).sum();
+        }
+        entries.len().div_ceil(cols)
+    }
+
+    /// Height of the legend under the plot of `lines` lines of text, px at
+    /// scale 1: the gap above its box, the box and a margin below.
+    pub(crate) fn legend_rows_height(lines: usize) -> f64 {
+        if lines == 0 {
+            return 0.0;
+        }
+        TOP + 2.0 * PAD + ROW * PAGE_TEXT * lines as f64 + PAD
+    }
+
+    /// Draws the legend under the plot on `area`: a framed box across the
+    /// figure, the entries in as many columns as fit
+    /// ([`Chart::legend_layout`]), filled column by column so that each
+    /// curve's entries stay together.
+    pub(crate) fn draw_legend_rows<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        scale: f64,
+    ) -> Result<(), PlotError> {
+        if self.series.is_empty() {
+            return Ok(());
+        }
+        let p = |v: f64| (v * scale).round() as i32;
+        let (w, _) = area.dim_in_pixel();
+        let (cols, entries) = self.legend_layout(area, w, scale);
+        let lines = Chart::legend_lines(cols, &entries);
+        let rows = entries.len().div_ceil(cols);
+        let line_height = ROW * PAGE_TEXT;
+        let top = p(TOP);
+        let bottom = top + p(2.0 * PAD + line_height * lines as f64);
+        let frame = [(p(PAD), top), (w as i32 - p(PAD), bottom)];
+        let draw_err = |e: DrawingAreaErrorKind<DB::ErrorType>| self.backend_error(e);
+        area.draw(&Rectangle::new(frame, WHITE.filled()))
+            .map_err(draw_err)?;
+        area.draw(&Rectangle::new(frame, RGBColor(160, 160, 160)))
+            .map_err(draw_err)?;
+        let font = TextStyle::from((FAMILY, LEGEND_FONT * PAGE_TEXT * scale).into_font())
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        let column = f64::from(w as i32 - 2 * p(PAD)) / cols as f64;
+        // The line each entry starts on (in one column, after the lines of
+        // the entries above it).
+        let mut line = 0usize;
+        for ((k, s), slot) in self
+            .series
+            .iter()
+            .enumerate()
+            .zip(colour_slots(&self.series))
+        {
+            let (col, first) = if cols > 1 {
+                (k / rows, k % rows)
+            } else {
+                (0, line)
+            };
+            line += entries[k].len();
+            let y = |i: usize| top + p(PAD + line_height * ((first + i) as f64 + 0.5));
+            let x = p(2.0 * PAD) + (column * col as f64).round() as i32;
+            self.draw_key(area, s, PALETTE[slot % PALETTE.len()], (x, y(0)), scale)?;
+            for (i, text) in entries[k].iter().enumerate() {
+                area.draw(&Text::new(
+                    text.clone(),
+                    (x + p(KEY + PAD), y(i)),
+                    font.clone(),
+                ))
+                .map_err(draw_err)?;
+            }
         }
         Ok(())
     }

@@ -25,7 +25,7 @@ mod ticks;
 pub use font::register_embedded_font;
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use panels::{render_panels_png, render_panels_svg};
-pub use render::{png_size, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
+pub use render::{png_size, FIGURE_SIZE, PAGE_WIDTH, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
 

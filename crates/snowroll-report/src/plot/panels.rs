@@ -7,8 +7,8 @@ use plotters::prelude::*;
 
 use super::font::register_embedded_font;
 use super::render::{
-    png_size, with_legend_group, with_provenance_comment, Part, FIGURE_SIZE, PNG_SCALE,
-    SVG_OVERSAMPLE,
+    png_size, with_legend_group, with_provenance_comment, Part, FIGURE_SIZE, PAGE_PLOT_HEIGHT,
+    PAGE_WIDTH, PNG_SCALE, SVG_OVERSAMPLE,
 };
 use super::{Chart, PlotError, Provenance};
 
@@ -77,6 +77,58 @@ pub fn render_panels_svg(charts: &[Chart], provenance: &Provenance) -> Result<St
         svg,
         &[&first.name, &first.title, &provenance.line()],
     ))
+}
+
+impl Chart {
+    /// Renders the chart as an SVG document for a page that may be a
+    /// phone's: [`PAGE_WIDTH`] wide (shown at any width through its
+    /// `viewBox`), the legend in a box under the plot rather than beside it,
+    /// fewer and larger tick labels, and no title or footer: the page's
+    /// caption has the title, the version and the parameters (`provenance`,
+    /// also recorded in the comment). The figure files keep the layout of [`Chart::render_svg`].
+    ///
+    /// # Errors
+    /// [`PlotError`] when the chart is invalid or drawing fails.
+    pub fn render_svg_page(&self, provenance: &Provenance) -> Result<String, PlotError> {
+        self.validate()?;
+        register_embedded_font()?;
+        let k = SVG_OVERSAMPLE;
+        let w = PAGE_WIDTH;
+        // The legend's rows decide the height: measure on a canvas of the width.
+        let lines = {
+            let mut probe = String::new();
+            let root = SVGBackend::with_string(&mut probe, (w * k, k)).into_drawing_area();
+            let (cols, entries) = self.legend_layout(&root, w * k, f64::from(k));
+            Chart::legend_lines(cols, &entries)
+        };
+        let h = (PAGE_PLOT_HEIGHT + Chart::legend_rows_height(lines)).round() as u32;
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, (w * k, h * k)).into_drawing_area();
+            self.draw_page(&root, f64::from(k), Part::Body)?;
+            root.present().map_err(|e| self.backend(e))?;
+        }
+        let mut legend = String::new();
+        {
+            let root = SVGBackend::with_string(&mut legend, (w * k, h * k)).into_drawing_area();
+            self.draw_page(&root, f64::from(k), Part::Legend)?;
+            root.present().map_err(|e| self.backend(e))?;
+        }
+        let svg = with_legend_group(&svg, &legend)
+            .replacen(
+                &format!("width=\"{}\" height=\"{}\"", w * k, h * k),
+                &format!("width=\"{w}\" height=\"{h}\""),
+                1,
+            )
+            .replace(
+                "<polyline fill=\"none\"",
+                "<polyline fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\"",
+            );
+        Ok(with_provenance_comment(
+            svg,
+            &[&self.name, &self.title, &provenance.line()],
+        ))
+    }
 }
 
 /// Renders `charts` as one PNG image, panels stacked as in

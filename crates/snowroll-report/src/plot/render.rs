@@ -8,7 +8,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::font::FAMILY;
+use super::font::{FAMILY, PAGE_TEXT};
 use super::legend::{colour_slots, PALETTE};
 use super::ticks::{log_ticks, AxisTicks};
 use super::{
@@ -91,15 +91,7 @@ impl Chart {
             return self.draw_legend_column(&legend, scale);
         }
         root.fill(&WHITE).map_err(|e| self.backend(e))?;
-        let centred = TextStyle::from((FAMILY, px(26.0)).into_font())
-            .pos(Pos::new(HPos::Center, VPos::Center));
-        title
-            .draw_text(
-                &self.title,
-                &centred,
-                ((width / 2) as i32, px(TITLE_HEIGHT / 2.0 + 4.0) as i32),
-            )
-            .map_err(|e| self.backend(e))?;
+        self.draw_title(&title, scale)?;
         footer
             .draw_text(
                 &provenance.line(),
@@ -107,23 +99,74 @@ impl Chart {
                 (px(12.0) as i32, px(4.0) as i32),
             )
             .map_err(|e| self.backend(e))?;
+        self.draw_plot(&plot, scale, AxisLook::FILE)
+    }
+
+    /// Draws the figure for a page ([`PAGE_WIDTH`] wide, see
+    /// [`Chart::render_svg_page`]) on `root`: the title, the plot
+    /// [`PAGE_PLOT_HEIGHT`] high labelled as [`AxisLook::PAGE`], and the
+    /// legend under it; no footer (the page's caption names
+    /// the version and the parameters). `part` as in [`Chart::draw`].
+    pub(super) fn draw_page<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        scale: f64,
+        part: Part,
+    ) -> Result<(), PlotError> {
+        let px = |v: f64| (v * scale).round() as u32;
+        let (plot, legend) = root.split_vertically(px(PAGE_PLOT_HEIGHT));
+        if part == Part::Legend {
+            return self.draw_legend_rows(&legend, scale);
+        }
+        root.fill(&WHITE).map_err(|e| self.backend(e))?;
+        self.draw_plot(&plot, scale, AxisLook::PAGE)
+    }
+
+    /// The title, centred in its band `area`.
+    fn draw_title<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        scale: f64,
+    ) -> Result<(), PlotError> {
+        let px = |v: f64| (v * scale).round() as u32;
+        let width = area.dim_in_pixel().0;
+        let centred = TextStyle::from((FAMILY, px(26.0)).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        area.draw_text(
+            &self.title,
+            &centred,
+            ((width / 2) as i32, px(TITLE_HEIGHT / 2.0 + 4.0) as i32),
+        )
+        .map_err(|e| self.backend(e))
+    }
+
+    /// The axes and the series on `plot`, labelled as `look` says.
+    fn draw_plot<DB: DrawingBackend>(
+        &self,
+        plot: &DrawingArea<DB, Shift>,
+        scale: f64,
+        look: AxisLook,
+    ) -> Result<(), PlotError> {
         let (xr, yr) = self.ranges();
         match (self.x.scale, self.y.scale) {
-            (Scale::Linear, Scale::Linear) => self.draw_in(&plot, xr, yr, scale),
-            (Scale::Linear, Scale::Log) => self.draw_in(&plot, xr, log_axis(yr), scale),
-            (Scale::Log, Scale::Linear) => self.draw_in(&plot, log_axis(xr), yr, scale),
-            (Scale::Log, Scale::Log) => self.draw_in(&plot, log_axis(xr), log_axis(yr), scale),
+            (Scale::Linear, Scale::Linear) => self.draw_in(plot, xr, yr, scale, look),
+            (Scale::Linear, Scale::Log) => self.draw_in(plot, xr, log_axis(yr), scale, look),
+            (Scale::Log, Scale::Linear) => self.draw_in(plot, log_axis(xr), yr, scale, look),
+            (Scale::Log, Scale::Log) => self.draw_in(plot, log_axis(xr), log_axis(yr), scale, look),
         }
     }
 
     /// Draws the axes and every series on `area` over the ranges `xr` ×
-    /// `yr`, every length times `scale`; every tick of an axis in one format.
+    /// `yr`, every length times `scale`, at most `look.ticks` labels an
+    /// axis and its text `look.text` times the usual size; every tick of an
+    /// axis in one format.
     fn draw_in<'a, DB, XR, YR>(
         &self,
         area: &'a DrawingArea<DB, Shift>,
         xr: XR,
         yr: YR,
         scale: f64,
+        look: AxisLook,
     ) -> Result<(), PlotError>
     where
         DB: DrawingBackend + 'a,
@@ -133,23 +176,27 @@ impl Chart {
         YR::CoordDescType: ValueFormatter<f64>,
     {
         let px = |v: f64| (v * scale).round() as u32;
-        let font = |size: f64| (FAMILY, px(size)).into_font();
+        let font = |size: f64| (FAMILY, px(size * look.text)).into_font();
+        let ticks = look.ticks;
         let (xc, yc): (XR::CoordDescType, YR::CoordDescType) = (xr.into(), yr.into());
-        let (xf, yf) = (axis_ticks(&xc, &self.x), axis_ticks(&yc, &self.y));
+        let (xf, yf) = (
+            axis_ticks(&xc, &self.x, ticks),
+            axis_ticks(&yc, &self.y, ticks),
+        );
         // Room for the widest y tick label and the axis title beside it.
         let label_font: TextStyle = font(18.0).into();
         let widest = yc
-            .key_points(BoldPoints(TICKS))
+            .key_points(BoldPoints(ticks))
             .iter()
             .filter_map(|&v| area.estimate_text_size(&yf.label(v), &label_font).ok())
             .map(|(w, _)| w)
             .max()
             .unwrap_or(0);
-        let y_area = px(86.0).max(widest + px(44.0));
+        let y_area = px(86.0 * look.text).max(widest + px(44.0 * look.text));
         let mut chart = ChartBuilder::on(area)
             .margin(px(14.0))
             .margin_right(px(16.0))
-            .x_label_area_size(px(58.0))
+            .x_label_area_size(px(58.0 * look.text))
             .y_label_area_size(y_area)
             .build_cartesian_2d(xc, yc)
             .map_err(|e| self.backend(e))?;
@@ -159,8 +206,8 @@ impl Chart {
             .y_desc(self.y.title())
             .axis_desc_style(font(21.0))
             .label_style(font(18.0))
-            .x_labels(TICKS)
-            .y_labels(TICKS)
+            .x_labels(ticks)
+            .y_labels(ticks)
             .x_label_formatter(&|v| xf.label(*v))
             .y_label_formatter(&|v| yf.label(*v))
             .bold_line_style(RGBColor(220, 220, 220))
@@ -274,8 +321,40 @@ pub(super) enum Part {
 /// Ticks (bold grid lines with a label) asked of each axis.
 pub(super) const TICKS: usize = 11;
 
+/// How the axes of a figure are labelled: how many tick labels at most,
+/// and their text's size against the figure files'.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct AxisLook {
+    /// Tick labels asked of each axis.
+    pub ticks: usize,
+    /// Size of the axes' text, times that of the figure files.
+    pub text: f64,
+}
+
+impl AxisLook {
+    /// The figure files' axes: [`TICKS`] labels, 18 px labels, 21 px titles.
+    pub const FILE: AxisLook = AxisLook {
+        ticks: TICKS,
+        text: 1.0,
+    };
+    /// The axes of a figure drawn for a page ([`Chart::render_svg_page`]):
+    /// its plot is about half as wide, so fewer labels, and its text
+    /// [`PAGE_TEXT`] times larger, to stay readable on a phone.
+    pub const PAGE: AxisLook = AxisLook {
+        ticks: 7,
+        text: PAGE_TEXT,
+    };
+}
+
 /// Height of the band of the title above plot and legend, px.
 const TITLE_HEIGHT: f64 = 40.0;
+
+/// Width of a figure drawn for a page ([`Chart::render_svg_page`]), px:
+/// on a desktop two figures side by side show it at about full size.
+pub const PAGE_WIDTH: u32 = 540;
+
+/// Height of the plot (axes and their labels) of such a figure, px.
+pub(super) const PAGE_PLOT_HEIGHT: f64 = 400.0;
 
 /// A log axis over `r` labelled at [`log_ticks`]: every decade, and 2 and 5
 /// of each where a decade is wide, with light lines at the other multiples.
@@ -284,11 +363,16 @@ pub(super) fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> 
     r.log_scale().with_key_points(bold).with_light_points(light)
 }
 
-/// The one format of the tick labels of `axis`, drawn by `coord`.
-pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(coord: &R, axis: &Axis) -> AxisTicks {
+/// The one format of the tick labels of `axis`, drawn by `coord` with at
+/// most `ticks` labels.
+pub(super) fn axis_ticks<R: Ranged<ValueType = f64>>(
+    coord: &R,
+    axis: &Axis,
+    ticks: usize,
+) -> AxisTicks {
     let r = coord.range();
     AxisTicks::new(
-        &coord.key_points(BoldPoints(TICKS)),
+        &coord.key_points(BoldPoints(ticks)),
         r.end - r.start,
         axis.scale == Scale::Log,
     )

@@ -88,7 +88,11 @@ impl RegimeMap {
         let font = |size: u32| (FAMILY, size).into_font();
         let (plot, legend) = area.split_horizontally(MAP_SIZE.0 - LEGEND_WIDTH);
         let (xc, yc): (XR::CoordDescType, YR::CoordDescType) = (xr.into(), yr.into());
-        let (xf, yf) = (axis_ticks(&xc, &self.x), axis_ticks(&yc, &self.y));
+        let ticks = super::super::render::TICKS;
+        let (xf, yf) = (
+            axis_ticks(&xc, &self.x, ticks),
+            axis_ticks(&yc, &self.y, ticks),
+        );
         let mut chart = ChartBuilder::on(&plot)
             .caption(&self.title, font(24))
             .margin(14)
