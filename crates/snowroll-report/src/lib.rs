@@ -39,6 +39,8 @@ pub use part_ways::{where_turn_models_part_ways, FirstTurn, PartingRow};
 pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 mod animation;
+#[cfg(feature = "comment")]
+mod comment;
 mod contact;
 mod document;
 mod errata;
@@ -57,6 +59,8 @@ pub mod run_plot;
 mod snowball;
 
 pub use animation::{Animation, Frame};
+#[cfg(feature = "comment")]
+pub use comment::{write_comment, Comment, CommentError};
 pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};
 pub use files::{figure_csv, ReportError};
 /// The file in `data/` with every claim's row (linked from the pages).

@@ -23,6 +23,8 @@ mod ticks;
 
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use panels::{render_panels_png, render_panels_svg};
+#[cfg(feature = "comment")]
+pub(crate) use render::FONT;
 pub use render::{png_size, register_embedded_font, FIGURE_SIZE, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
