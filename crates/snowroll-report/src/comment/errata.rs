@@ -56,7 +56,7 @@ pub(super) fn errata_tables() -> Vec<Vec<Erratum>> {
 /// A corrected form as the comment prints it: a path of the program's
 /// notes becomes a citation of the program.
 fn corrected_text(cell: &str) -> String {
-    notation(&cell.replace("`docs/turn-model.md`", "the program's notes [4]"))
+    notation(cell)
 }
 
 /// The two errata tables as typst figures, with their captions.

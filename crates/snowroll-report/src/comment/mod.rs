@@ -159,12 +159,16 @@ impl Comment {
                 software: prov.software,
                 params: symbol_params(&prov.params),
             };
-            let svg = figure.chart.render_svg(&prov).map_err(ReportError::from)?;
+            let mut chart = figure.chart.clone();
+            for series in &mut chart.series {
+                series.name = markup::legend(&series.name);
+            }
+            let svg = chart.render_svg(&prov).map_err(ReportError::from)?;
             let file = format!("{name}.svg");
             refs.push(FigureRef {
                 label: format!("fig-{name}"),
                 markup: format!(
-                    "#figure(\n  {{\n    set text(font: \"DejaVu Sans\")\n    image(\"{figures_dir}/{file}\", width: 100%)\n  }},\n  caption: [{caption}],\n) <fig-{name}>"
+                    "#figure(\n  placement: auto,\n  {{\n    set text(font: \"DejaVu Sans\")\n    image(\"{figures_dir}/{file}\", width: 100%)\n  }},\n  caption: [{caption}],\n) <fig-{name}>"
                 ),
             });
             figures.push((file, svg));
