@@ -87,7 +87,7 @@ const FIGURES: [(&str, &str); 4] = [
     ),
     (
         "turns-long-run-means",
-        "Mean acceleration of the turn-by-turn log over its late turns, within the turns and with the collisions counted, against the number of turns completed; the horizontal lines mark the note's $4G\\/9$ of eq. (79) and the limits $G\\/3$ and $G\\/4$.",
+        "Mean acceleration of the turn-by-turn log over its late turns, within the turns and with the collisions counted, against the number of turns completed; the horizontal lines mark the note's $4G\\/9$ of eq. (79) and the two limits derived for the model.",
     ),
     (
         "regime-map-turns",

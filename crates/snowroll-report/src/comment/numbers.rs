@@ -139,7 +139,9 @@ mod tests {
         assert_eq!(fraction(0.50009), Some((1, 2)));
         assert_eq!(fraction(0.222222), Some((2, 9)));
         assert_eq!(fraction(0.16666667), Some((1, 6)));
-        assert_eq!(fraction(0.2856649), None);
+        assert_eq!(fraction(0.2856649), Some((2, 7)));
+        // 5/28: a denominator above 12 is not named.
+        assert_eq!(fraction(0.17854323), None);
         assert_eq!(fraction(f64::NAN), None);
     }
 

@@ -157,23 +157,36 @@ pub(super) fn open_questions(
 
 /// §5: every claim by verdict, by where it is in the note.
 pub(super) fn all_claims(out: &mut String, report: &Report) {
-    out.push_str("= Every statement checked\n\nThe program checks each statement below with its own tolerance, stated with the check; a statement is marked refuted only when the check has also measured what holds instead. By verdict, and by where the statement is in the note:\n\n");
+    out.push_str("= Every claim checked\n\nThe program checks each claim below with its own tolerance, stated with the check; a claim is marked refuted only when the check has also measured what holds instead. By verdict, and by where the claim is in the note (or which part of the note it goes beyond):\n\n");
     for (verdict, title) in [
         (Verdict::Refuted, "Refuted"),
         (Verdict::HoldsAfterCorrection(""), "Hold after a correction"),
         (Verdict::Holds, "Hold as printed"),
         (Verdict::Inconclusive, "Not decided in this run"),
     ] {
-        let refs: Vec<String> = report
+        let claims: Vec<&str> = report
             .claims
             .iter()
             .filter(|r| verdict_words(r.verdict) == verdict_words(verdict))
-            .map(|r| notation(r.claim.paper_ref))
+            .map(|r| r.claim.paper_ref)
             .collect();
-        if refs.is_empty() {
+        if claims.is_empty() {
             continue;
         }
-        let _ = writeln!(out, "- *{title}* ({}): {}.", refs.len(), refs.join("; "));
+        // Each place once (two statements of one footnote are one place).
+        let mut places: Vec<&str> = Vec::with_capacity(claims.len());
+        for place in &claims {
+            if !places.contains(place) {
+                places.push(place);
+            }
+        }
+        let places: Vec<String> = places.into_iter().map(notation).collect();
+        let _ = writeln!(
+            out,
+            "- *{title}* ({} claims): {}.",
+            claims.len(),
+            places.join("; ")
+        );
     }
     out.push('\n');
 }

@@ -116,7 +116,7 @@ pub(super) fn abstract_(out: &mut String, report: &Report) -> Result<(), Comment
     let tally = Tally::of(&report.claims);
     let total = tally.holds + tally.holds_after_correction + tally.refuted + tally.inconclusive;
     let mut s = format!(
-        "We have implemented every analysis of McDonald's note on a log that rolls down a snowy slope and picks up the snow, and checked {total} of its statements by closed forms and numerical integration: {} hold as printed, {} hold once a misprint is corrected, and {} are refuted",
+        "We have implemented every analysis of McDonald's note on a log that rolls down a snowy slope and picks up the snow, and checked {total} claims, the note's statements and answers to questions it leaves open, against closed forms and numerical integration: {} hold as printed, {} hold once a misprint is corrected, and {} are refuted",
         tally.holds, tally.holds_after_correction, tally.refuted
     );
     if tally.inconclusive > 0 {
@@ -222,7 +222,7 @@ pub(super) fn circular(
         Verdict::Holds => {
             let f = terminal_fractions(differ)?;
             format!(
-                "The note states that the four analyses of §2 lead to different equations of motion, and they do. Integrated side by side (@{}), the torque analysis about the centre, eq. (4), tends to the terminal acceleration {} $G$; the torque about the contact line, eq. (6), to {} $G$; the energy balance, eq. (14), to {} $G$; and the Lagrangian equation (21) as printed to {} $G$. A log that stays circular must shed or gain energy to keep that shape, and each analysis charges the snow's uptake differently, so none of them is the motion of a real log.",
+                "The note states that the four analyses of §2 lead to different equations of motion, and they do. Integrated side by side (@{}), the torque analysis about the centre, eq. (4), tends to the terminal acceleration {} $G$; the torque about the contact line, eq. (6), to {} $G$; the energy balance, eq. (14), to {} $G$; and the Lagrangian equation (21) as printed to {} $G$. The note itself calls the circular shape unphysical: snow taken up along the line of contact would have to spread over the whole surface at once, and each analysis accounts for that differently. None of the four is the motion of a real log.",
                 fig.label,
                 f[0].with_fraction(), f[1].with_fraction(), f[2].with_fraction(), f[3].with_fraction()
             )
