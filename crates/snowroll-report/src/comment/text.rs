@@ -45,7 +45,7 @@ fn grouped(digits: &str) -> String {
         .chars()
         .enumerate()
         .flat_map(|(i, c)| {
-            let gap = i > 0 && (n - i) % 3 == 0 && n > 4;
+            let gap = i > 0 && (n - i).is_multiple_of(3) && n > 4;
             gap.then_some('\u{2009}').into_iter().chain([c])
         })
         .collect()
