@@ -91,6 +91,12 @@ finish() {
     echo "test: $3 done at ${SECONDS} s (started at ${started[$1]} s)"
 }
 
+# pdftotext and pdftoppm (Debian's poppler-utils), which the tests of
+# `snowroll paper --comment` read the PDF with: installed first (a no-op
+# when they are), before any other step could run apt-get.
+bash .ci/install-poppler.sh >/dev/null
+stamp "the poppler-utils install check"
+
 # The Python tests' environment is installed (pip, mostly downloads) while
 # cargo compiles.
 start bash scripts/test-python.sh --setup

@@ -2,6 +2,7 @@
 //! one per file); each file is a module, named as before.
 
 mod cli;
+mod comment;
 mod crash_safety;
 mod determinism;
 mod edges;

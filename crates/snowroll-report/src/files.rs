@@ -13,7 +13,7 @@ use super::{html, markdown, Figure, Metadata, RenderedFigure, Report, Tally, CLA
 use snowroll_io::CsvTable;
 
 /// Writes `bytes` to a temporary file next to `path`, then renames it into place.
-fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
+pub(crate) fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), ReportError> {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())

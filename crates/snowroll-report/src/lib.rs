@@ -42,6 +42,8 @@ pub use story::{
 pub use turn_digest::{LedgerPoint, TurnDigest, HEAD_ROWS, LEDGER_POINTS};
 
 mod animation;
+#[cfg(feature = "comment")]
+mod comment;
 mod contact;
 mod document;
 mod errata;
@@ -63,6 +65,8 @@ mod snowball;
 mod story;
 
 pub use animation::{Animation, Frame};
+#[cfg(feature = "comment")]
+pub use comment::{write_comment, Comment, CommentError};
 pub use document::{params_of, Figure, Metadata, RenderedFigure, Report, Table};
 pub use error::ReportError;
 pub use files::figure_csv;

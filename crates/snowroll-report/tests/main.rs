@@ -2,4 +2,6 @@
 //! one per file); each file is a module, named as before.
 
 mod claims;
+#[cfg(feature = "comment")]
+mod comment;
 mod report_render;

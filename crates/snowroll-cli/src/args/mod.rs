@@ -157,6 +157,10 @@ pub struct PaperArgs {
     #[arg(long, value_name = "FILE.html")]
     pub explorer: Option<PathBuf>,
 
+    /// Also write the findings as a short journal comment on the note: FILE.pdf, typeset in the program (the `comment` feature), with its typst source FILE.typ and the figures it includes in FILE-figures/ beside it [default: none]
+    #[arg(long, value_name = "FILE.pdf")]
+    pub comment: Option<PathBuf>,
+
     /// The scenario every claim is judged on (the flags of `simulate`;
     /// the defaults where none is given). Claims whose check needs the
     /// default scenario say so in their verdict.

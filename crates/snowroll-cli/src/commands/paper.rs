@@ -22,7 +22,12 @@ use crate::outdir::StagedDir;
 pub fn run(args: &PaperArgs) -> Result<()> {
     // `paper` reads no file, so its one output cannot clash today; it goes
     // through the check every command does, which an input added later needs.
-    refuse_clashes(&[RunFile::output(&args.out, "--out report directory")])?;
+    let mut outputs = vec![RunFile::output(&args.out, "--out report directory")];
+    if let Some(pdf) = &args.comment {
+        check_comment_path(pdf)?;
+        outputs.push(RunFile::output(pdf, "--comment PDF"));
+    }
+    refuse_clashes(&outputs)?;
     // Check --out and stdout (where the claims table goes) before the long
     // computation, so that a bad path or a closed stdout fails at once.
     console::check_stdout().context("writing the claims table to stdout")?;
@@ -54,6 +59,10 @@ pub fn run(args: &PaperArgs) -> Result<()> {
             .with_context(|| format!("writing {}", args.out.join(EXPLORER).display()))?;
     }
     staged.commit()?;
+    if let Some(pdf) = &args.comment {
+        bar.set_message("typesetting the comment");
+        write_comment(&report, pdf)?;
+    }
     bar.finish_and_clear();
     let tally = print_claims(&report.claims)?;
     writeln!(
@@ -63,6 +72,9 @@ pub fn run(args: &PaperArgs) -> Result<()> {
         written.len(),
         args.out.display()
     )?;
+    if let Some(pdf) = &args.comment {
+        writeln!(console::Stdout, "Comment: {}", pdf.display())?;
+    }
     if args.strict && tally.unexpected > 0 {
         bail!(
             "--strict: {} verdict(s) differ from the claims table's expectation: {}",
@@ -71,6 +83,56 @@ pub fn run(args: &PaperArgs) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// Refuses a `--comment` path before the long computation: a build
+/// without the `comment` feature, a name that does not end in `.pdf`, a
+/// folder that does not exist.
+fn check_comment_path(pdf: &Path) -> Result<()> {
+    if !cfg!(feature = "comment") {
+        bail!(
+            "--comment {}: this snowroll was built without the `comment` feature, which typesets the comment; \
+             build it with `cargo build --release -p snowroll-cli --features comment`",
+            pdf.display()
+        );
+    }
+    let is_pdf = pdf
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("pdf"));
+    if !is_pdf || pdf.file_stem().is_none() {
+        bail!(
+            "--comment {}: the comment is a PDF: give a file name ending in .pdf (its source is written beside it as .typ)",
+            pdf.display()
+        );
+    }
+    let dir = pdf
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if !dir.is_dir() {
+        bail!(
+            "--comment {}: the folder {} does not exist",
+            pdf.display(),
+            dir.display()
+        );
+    }
+    Ok(())
+}
+
+/// Typesets the comment on `report` and writes it as `pdf`, its source
+/// and its figures beside it.
+#[cfg(feature = "comment")]
+fn write_comment(report: &snowroll_report::Report, pdf: &Path) -> Result<()> {
+    snowroll_report::write_comment(report, pdf)
+        .with_context(|| format!("writing the comment {}", pdf.display()))?;
+    Ok(())
+}
+
+/// Never called: [`check_comment_path`] refuses `--comment` first in a
+/// build without the `comment` feature.
+#[cfg(not(feature = "comment"))]
+fn write_comment(_report: &snowroll_report::Report, pdf: &Path) -> Result<()> {
+    check_comment_path(pdf)
 }
 
 /// The explorer's name in the report directory.

@@ -10,7 +10,7 @@ use super::PlotError;
 
 /// The embedded font (DejaVu Sans, Bitstream Vera licence, see
 /// `assets/fonts/DejaVuSans-LICENSE.txt`).
-const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+pub(crate) const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
 /// The family name the embedded font is registered under.
 pub(crate) const FAMILY: &str = "sans-serif";

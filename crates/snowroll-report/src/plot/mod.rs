@@ -25,6 +25,8 @@ mod ticks;
 pub use font::register_embedded_font;
 pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use panels::{render_panels_png, render_panels_svg};
+#[cfg(feature = "comment")]
+pub(crate) use font::FONT;
 pub use render::{png_size, FIGURE_SIZE, PAGE_WIDTH, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;
