@@ -5,7 +5,8 @@
 //! every key is one of the table, and that no error text of the crate's
 //! source writes a flag.
 
-use snowroll::error::{render_keys, Namer};
+use snowroll::error::Namer;
+use snowroll::params::render_keys;
 use snowroll::{
     check_turn_scale, ModelKind, ParamError, Scenario, ScenarioFile, Shape, SimError, SimOptions,
     PARAMS,

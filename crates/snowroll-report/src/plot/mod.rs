@@ -23,10 +23,10 @@ mod render;
 mod ticks;
 
 pub use font::register_embedded_font;
-pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
-pub use panels::{render_panels_png, render_panels_svg};
 #[cfg(feature = "comment")]
 pub(crate) use font::FONT;
+pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
+pub use panels::{render_panels_png, render_panels_svg};
 pub use render::{png_size, FIGURE_SIZE, PAGE_WIDTH, PNG_SCALE, SVG_OVERSAMPLE};
 
 use thiserror::Error;

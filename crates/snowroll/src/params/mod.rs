@@ -18,6 +18,7 @@
 //! them ([`Param::default_value`]) rather than repeating them.
 
 mod given;
+mod keys;
 mod record;
 mod sampling;
 mod table;
@@ -31,6 +32,7 @@ use crate::scenario::{ScenarioFile, Shape};
 use crate::trajectory::{CollisionModel, OnHop, SimOptions};
 
 pub use given::Given;
+pub use keys::{named_keys, render_keys};
 pub use sampling::{RecordedSampling, UnknownSampling};
 pub use table::PARAMS;
 pub(crate) use table::TABLE;

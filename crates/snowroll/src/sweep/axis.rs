@@ -577,3 +577,15 @@ mod tests {
         }
     }
 }
+
+impl GridError {
+    /// The message with the parameters it names written by `name`
+    /// ([`ParamError::render`]).
+    pub fn render(&self, name: crate::error::Namer<'_>) -> String {
+        match self {
+            GridError::Value { error, .. } => error.render(name),
+            GridError::NoModel => crate::error::no_model(name),
+            other => other.to_string(),
+        }
+    }
+}
