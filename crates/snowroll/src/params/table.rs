@@ -60,7 +60,7 @@ fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Resul
 pub static PARAMS: [Param; 28] = TABLE;
 
 /// [`PARAMS`] as a constant, for what is computed from it at compile time
-/// (the sweep's axes, [`crate::sweep::Param::ALL`]).
+/// (the sweep's axes, [`crate::sweep::AxisParam::ALL`]).
 pub(crate) const TABLE: [Param; 28] = [
     Param {
         key: "alpha_deg",

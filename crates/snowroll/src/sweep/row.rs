@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::axis::Param;
+use super::axis::AxisParam;
 use super::grid::Point;
 use crate::models::{run_warnings, warning_codes, CollisionModel, ModelKind};
 use crate::scenario::ScenarioFile;
@@ -162,28 +162,28 @@ impl SweepRow {
 
 impl SweepRow {
     /// The value of parameter `p` in this row (NaN for an unset `x_end` or `mu`).
-    pub fn param(&self, p: Param) -> f64 {
+    pub fn param(&self, p: AxisParam) -> f64 {
         self.param_value(p).unwrap_or(f64::NAN)
     }
 
     /// The value of parameter `p` in this row; `None` for an unset `x_end`
     /// or `mu` (an empty cell). The writers of the CSV, Parquet and Python
-    /// columns go through this, axis by axis in [`Param::ALL`] order, which
+    /// columns go through this, axis by axis in [`AxisParam::ALL`] order, which
     /// is the columns' order.
-    pub fn param_value(&self, p: Param) -> Option<f64> {
+    pub fn param_value(&self, p: AxisParam) -> Option<f64> {
         // Each axis is a field of the row; the table names them.
-        const ALPHA_DEG: Param = Param::named("alpha_deg");
-        const SNOW_DEPTH: Param = Param::named("snow_depth");
-        const R0: Param = Param::named("r0");
-        const G: Param = Param::named("g");
-        const DENSITY: Param = Param::named("density");
-        const LENGTH: Param = Param::named("length");
-        const V0: Param = Param::named("v0");
-        const T_END: Param = Param::named("t_end");
-        const X_END: Param = Param::named("x_end");
-        const RTOL: Param = Param::named("rtol");
-        const ATOL: Param = Param::named("atol");
-        const MU: Param = Param::named("mu");
+        const ALPHA_DEG: AxisParam = AxisParam::named("alpha_deg");
+        const SNOW_DEPTH: AxisParam = AxisParam::named("snow_depth");
+        const R0: AxisParam = AxisParam::named("r0");
+        const G: AxisParam = AxisParam::named("g");
+        const DENSITY: AxisParam = AxisParam::named("density");
+        const LENGTH: AxisParam = AxisParam::named("length");
+        const V0: AxisParam = AxisParam::named("v0");
+        const T_END: AxisParam = AxisParam::named("t_end");
+        const X_END: AxisParam = AxisParam::named("x_end");
+        const RTOL: AxisParam = AxisParam::named("rtol");
+        const ATOL: AxisParam = AxisParam::named("atol");
+        const MU: AxisParam = AxisParam::named("mu");
         match p {
             ALPHA_DEG => Some(self.alpha_deg),
             SNOW_DEPTH => Some(self.snow_depth),
