@@ -7,7 +7,7 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Choices, Grid, GridError, Method, AxisParam, SweepRow, Values,
+    run_chunks, shard_range, Axis, AxisParam, Choices, Grid, GridError, Method, SweepRow, Values,
     DEFAULT_CHUNK,
 };
 use snowroll::trajectory::StopReason;
@@ -265,7 +265,10 @@ impl Columns {
         let f = || try_vec::<f64>(n, "sweep()");
         Ok(Self {
             index: try_vec(n, "sweep()")?,
-            params: AxisParam::ALL.iter().map(|_| f()).collect::<PyResult<_>>()?,
+            params: AxisParam::ALL
+                .iter()
+                .map(|_| f())
+                .collect::<PyResult<_>>()?,
             results: [f()?, f()?, f()?, f()?, f()?],
             model: Interned::with_room(n)?,
             on_hop: Interned::with_room(n)?,

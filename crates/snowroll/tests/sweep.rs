@@ -2,7 +2,7 @@
 //! count, chunk size and shard split, and rows that agree with single runs.
 
 use snowroll::sweep::{
-    run_chunks, run_point, shard_range, Axis, Grid, Method, AxisParam, SweepRow, Values,
+    run_chunks, run_point, shard_range, Axis, AxisParam, Grid, Method, SweepRow, Values,
 };
 use snowroll::{ModelKind, ParamError, Sampling, SimOptions, StopReason};
 
@@ -138,13 +138,16 @@ fn app_a_snowless_rows_match_the_closed_form() {
     .unwrap();
     for i in 0..g.len() {
         let row = run_point(&g, i, Method::Ode).unwrap();
-        let a = 2.0 / 3.0 * row.g * row.alpha_deg.to_radians().sin();
+        let a = 2.0 / 3.0
+            * row.param(AxisParam::named("g"))
+            * row.param(AxisParam::named("alpha_deg")).to_radians().sin();
         let x = 0.5 * a * 16.0;
         // DOP853 at rtol 1e-10 on a constant acceleration: exact to rounding.
         assert!((row.x_m.unwrap() - x).abs() < 1e-9 * x, "{row:?}");
         assert!((row.a_over_g_sin_alpha.unwrap() - 2.0 / 3.0).abs() < 1e-12);
         assert_eq!(row.stop, Some(StopReason::EndTime));
-        let turns = (x / (2.0 * std::f64::consts::PI * row.r0)).floor() as u64;
+        let turns =
+            (x / (2.0 * std::f64::consts::PI * row.param(AxisParam::named("r0")))).floor() as u64;
         assert_eq!(row.turns, Some(turns));
     }
 }

@@ -2,7 +2,7 @@
 //! closed-form borders (fn. 7 stall slope, fn. 10 hop, §5 slip), and the
 //! settings axes (mu, on_hop, collision) in grid order.
 
-use snowroll::sweep::{run_point, Axis, Choices, Grid, Method, Outcome, AxisParam, Values};
+use snowroll::sweep::{run_point, Axis, AxisParam, Choices, Grid, Method, Outcome, Values};
 use snowroll::{CollisionModel, ModelKind, OnHop, Scenario};
 
 /// Degrees either side of a stall or hop slope: far more than the closed

@@ -149,7 +149,7 @@ impl RowWriter {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use snowroll::sweep::{Axis, Grid, Method, AxisParam, Values};
+    use snowroll::sweep::{Axis, AxisParam, Grid, Method, Values};
     use snowroll::{CollisionModel, ModelKind, OnHop, StopReason};
 
     fn serialized(rows: &[SweepRow]) -> Vec<u8> {
@@ -228,10 +228,13 @@ mod tests {
                 let mut r = base.clone();
                 r.index = (k * 100 + j) as u64;
                 r.stop = stop;
-                r.alpha_deg = f;
-                r.snow_depth = -f;
-                r.x_end = (j % 2 == 0).then_some(f);
-                r.mu = (j % 3 == 0).then_some(f);
+                let mut set = |key: &str, v: Option<f64>| {
+                    r.params[AxisParam::named(key).axis_index()] = v;
+                };
+                set("alpha_deg", Some(f));
+                set("snow_depth", Some(-f));
+                set("x_end", (j % 2 == 0).then_some(f));
+                set("mu", (j % 3 == 0).then_some(f));
                 r.t_s = (j % 2 == 1).then_some(f);
                 r.a_over_g_sin_alpha = Some(f);
                 r.turns = (j % 2 == 0).then_some(j as u64);

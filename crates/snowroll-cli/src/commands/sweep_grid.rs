@@ -7,7 +7,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::ValueEnum;
-use snowroll::sweep::{Axis, Choices, Grid, GridError, Method, AxisParam, Values};
+use snowroll::sweep::{Axis, AxisParam, Choices, Grid, GridError, Method, Values};
 use snowroll::{CollisionModel, OnHop};
 
 use crate::args::{sweep_axes, SweepArgs};

@@ -4,7 +4,7 @@ use std::io::Read;
 use std::path::Path;
 
 use anyhow::{anyhow, Context, Result};
-use snowroll::sweep::{Grid, AxisParam, SweepRow};
+use snowroll::sweep::{AxisParam, Grid, SweepRow};
 use snowroll_io::VERSION;
 use snowroll_report::plot::{ColorBy, Provenance, RegimeMap};
 

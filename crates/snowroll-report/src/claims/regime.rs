@@ -19,7 +19,7 @@ use crate::{Criterion, Tolerance};
 use snowroll::error::SimError;
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile};
-use snowroll::sweep::{Axis, Grid, Outcome, AxisParam, SweepRow, Values};
+use snowroll::sweep::{Axis, AxisParam, Grid, Outcome, SweepRow, Values};
 use snowroll::trajectory::{Sampling, SimOptions, StopReason};
 
 /// Turns of each run of the map. The hop angle of §4.3 expands the
@@ -157,7 +157,10 @@ pub(super) fn map_rows(lab: &Lab) -> Result<MapRows, SimError> {
         vec![ModelKind::Turns],
         vec![
             list(const { AxisParam::named("alpha_deg") }, map_alphas()),
-            list(const { AxisParam::named("snow_depth") }, map_depths(base.r0)),
+            list(
+                const { AxisParam::named("snow_depth") },
+                map_depths(base.r0),
+            ),
             list(const { AxisParam::named("r0") }, vec![base.r0]),
             list(const { AxisParam::named("g") }, vec![base.g]),
             list(const { AxisParam::named("v0") }, vec![0.0]),

@@ -27,7 +27,7 @@ const fn is_axis(p: &crate::params::Param) -> bool {
 }
 
 /// How many rows of the table are axes.
-const AXES: usize = {
+pub(crate) const AXES: usize = {
     let mut n = 0;
     let mut i = 0;
     while i < TABLE.len() {
@@ -97,6 +97,29 @@ impl AxisParam {
     /// Its row of the parameter table.
     pub fn spec(self) -> &'static crate::params::Param {
         &PARAMS[usize::from(self.0)]
+    }
+
+    /// Its key, in a `const` (the sweep rows' column names are computed
+    /// from it at compile time).
+    pub(crate) const fn key_const(self) -> &'static str {
+        TABLE[self.0 as usize].key
+    }
+
+    /// Its place among the axes: its index in [`AxisParam::ALL`] (a sweep
+    /// row's [`params`](super::SweepRow::params)).
+    pub fn axis_index(self) -> usize {
+        /// The axis index of each row of the table (`u8::MAX` for a row
+        /// that is not an axis).
+        const OF_ROW: [u8; TABLE.len()] = {
+            let mut of = [u8::MAX; TABLE.len()];
+            let mut k = 0;
+            while k < AxisParam::ALL.len() {
+                of[AxisParam::ALL[k].0 as usize] = k as u8;
+                k += 1;
+            }
+            of
+        };
+        usize::from(OF_ROW[usize::from(self.0)])
     }
 
     /// The snake-case key (config files, CSV columns, metadata).

@@ -7,7 +7,7 @@
 //! one varying fastest (nested loops written in that order). Ranges are
 //! never expanded into memory: [`Values::get`] computes the k-th value.
 
-use super::axis::{Axis, DecimalRange, GridError, AxisParam};
+use super::axis::{Axis, AxisParam, DecimalRange, GridError};
 use crate::error::ParamError;
 use crate::models::{CollisionModel, ModelKind};
 use crate::params::Settings;
@@ -354,7 +354,11 @@ mod tests {
     #[test]
     fn grid_checks_values_duplicates_and_size() {
         let m = vec![ModelKind::TorqueCm];
-        let e = Grid::new(m.clone(), vec![axis(AxisParam::named("alpha_deg"), "10:95:5")]).unwrap_err();
+        let e = Grid::new(
+            m.clone(),
+            vec![axis(AxisParam::named("alpha_deg"), "10:95:5")],
+        )
+        .unwrap_err();
         assert!(
             e.to_string().contains("= 95: expected 0 < alpha_deg < 90"),
             "{e}"
@@ -429,7 +433,11 @@ mod tests {
             "1.2345e18"
         );
         // Exactly at the limit is allowed (nothing is expanded).
-        let g = Grid::new(m, vec![axis(AxisParam::named("alpha_deg"), "10:80:1000000000")]).unwrap();
+        let g = Grid::new(
+            m,
+            vec![axis(AxisParam::named("alpha_deg"), "10:80:1000000000")],
+        )
+        .unwrap();
         assert_eq!(g.len(), MAX_GRID_POINTS);
     }
 

@@ -19,13 +19,14 @@ mod axis;
 mod grid;
 mod regime;
 mod row;
+mod row_serde;
 mod run;
 
 pub use crate::models::{circular_end, ContactCheck, FastEnd, SpeedSquared};
-pub use axis::{Axis, DecimalRange, GridError, AxisParam, Values};
+pub use axis::{Axis, AxisParam, DecimalRange, GridError, Values};
 pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
-pub use row::{point_warnings, SweepRow};
+pub use row::{point_warnings, AxisValues, SweepRow};
 pub use run::{
     count_warnings, run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL,
 };

@@ -17,7 +17,7 @@ use std::ops::Range;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Parser;
 use snowroll::params::Value;
-use snowroll::sweep::{Grid, Method, AxisParam, SweepRow, Values};
+use snowroll::sweep::{AxisParam, Grid, Method, SweepRow, Values};
 use snowroll_io::VERSION;
 
 use super::sweep_csv::RowWriter;

@@ -5,7 +5,7 @@
 use super::super::ticks::AxisTicks;
 use super::super::Axis;
 use super::{Cell, Class, ColorBy, MapError};
-use snowroll::sweep::{Outcome, AxisParam, SweepRow};
+use snowroll::sweep::{AxisParam, Outcome, SweepRow};
 
 /// Fill colours of the outcomes (colour-blind aware, stalls in shades of
 /// one hue by turn).

@@ -10,7 +10,7 @@ mod draw;
 
 use super::{Axis, Chart, Scale, Series, Style};
 use cells::{classes_of, distinct, edges, param_axis, place_cells};
-use snowroll::sweep::{boundaries, Grid, AxisParam, SweepRow};
+use snowroll::sweep::{boundaries, AxisParam, Grid, SweepRow};
 
 /// What colours the cells.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
