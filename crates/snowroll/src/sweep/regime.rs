@@ -61,12 +61,14 @@ impl Outcome {
         }
         match row.stop {
             None => Outcome::Failed,
-            // At terminal velocity the body still rolls on.
+            // At terminal velocity the body still rolls on; an unwinding
+            // roll that reached its core rolled all the way.
             Some(
                 StopReason::EndTime
                 | StopReason::Distance
                 | StopReason::Turns
-                | StopReason::Terminal,
+                | StopReason::Terminal
+                | StopReason::Unwound,
             ) => Outcome::RollsOn,
             // Cut short by a limit of the program: no verdict on the physics.
             Some(StopReason::StepLimit | StopReason::RowLimit) => Outcome::Failed,
