@@ -20,3 +20,4 @@ mod turns;
 mod turns_closed;
 mod turns_precision;
 mod turns_reference;
+mod unwinding;
