@@ -340,3 +340,38 @@ fn validity_warns_on_a_thick_laid_layer() {
     let thin = roll(Shape::Cylinder, 10.0, 0.0);
     assert!(snowroll::validity_warnings(ModelKind::EnergyThin, &thin).is_empty());
 }
+
+/// A roll nearing its core at hundreds of m/s takes steps of nanoseconds at
+/// t ≈ 89 s, where the hop watch's search for an extremum of N asked for a
+/// width below the spacing of doubles there and never ended. The run ends
+/// (here at the core), well within the 60 s this waits.
+#[test]
+fn a_fast_roll_near_its_core_ends() {
+    let s = Scenario::new(ScenarioFile {
+        alpha_deg: 5.0,
+        snow_depth: -1e-5,
+        r0: R,
+        core_radius: Some(1e-5),
+        ..ScenarioFile::default()
+    })
+    .unwrap();
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let opts = SimOptions {
+            t_end: 1e4,
+            sampling: Sampling::Ends,
+            ..SimOptions::default()
+        };
+        let _ = tx.send(
+            ModelKind::Energy
+                .build()
+                .simulate(&s, &opts)
+                .map(|t| t.stop.reason),
+        );
+    });
+    let reason = rx
+        .recv_timeout(std::time::Duration::from_secs(60))
+        .expect("the run did not end in 60 s")
+        .unwrap();
+    assert_eq!(reason, StopReason::Unwound);
+}
