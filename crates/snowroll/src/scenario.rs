@@ -115,7 +115,7 @@ impl Default for ScenarioFile {
     }
 }
 
-fn check(
+pub(crate) fn check(
     name: &'static str,
     value: f64,
     ok: impl Fn(f64) -> bool,
@@ -298,7 +298,7 @@ impl Scenario {
             v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
             swath: swath_of(&file)?,
-            core: core_of(&file)?,
+            core: crate::unwinding::core_of(&file)?,
         })
     }
 
@@ -428,47 +428,6 @@ fn swath_of(file: &ScenarioFile) -> Result<Swath, ParamError> {
         }),
     }
 }
-
-/// The core radius of a scenario file, checked: required for an unwinding
-/// roll (b < 0), where 0 < core_radius < r0; refused otherwise. The ball's
-/// chord swath is refused with b < 0 (the chord is where a layer's top cuts
-/// a ball pressed into it: there is no such layer to press into).
-fn core_of(file: &ScenarioFile) -> Result<Option<Meters>, ParamError> {
-    const NAME: &str = "core_radius (m)";
-    let core = match file.core_radius {
-        Some(c) => Some(check(NAME, c, |c| c > 0.0 && c < file.r0, CORE_RANGE)?),
-        None => None,
-    };
-    match core {
-        Some(c) if file.snow_depth >= 0.0 => Err(ParamError::InvalidParameter {
-            name: NAME,
-            value: c,
-            expected: "no core_radius with snow_depth >= 0: the core is where an unwinding \
-                       roll (snow_depth < 0) stops; drop --core-radius or give a negative \
-                       --snow-depth",
-        }),
-        None if file.snow_depth < 0.0 => Err(ParamError::InvalidParameter {
-            name: "snow_depth (m)",
-            value: file.snow_depth,
-            expected: "snow_depth >= 0 without core_radius: a negative snow depth is an \
-                       unwinding roll, which needs --core-radius (0 < core_radius < r0), the \
-                       radius where it stops",
-        }),
-        _ if file.snow_depth < 0.0 && matches!(file.swath_width, Some(SwathWidth::Chord(_))) => {
-            Err(ParamError::InvalidParameter {
-                name: "snow_depth (m)",
-                value: file.snow_depth,
-                expected: "snow_depth >= 0 with swath_width = chord (an unwinding ball lays \
-                           its layer on its diameter or a fixed width); give another \
-                           --swath-width",
-            })
-        }
-        core => Ok(core),
-    }
-}
-
-/// The range of the core radius, as the parameter table states it.
-const CORE_RANGE: &str = "0 < core_radius < r0 m (only with snow_depth < 0)";
 
 impl TryFrom<ScenarioFile> for Scenario {
     type Error = ParamError;

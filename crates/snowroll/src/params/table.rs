@@ -84,9 +84,8 @@ pub(crate) const TABLE: [Param; 29] = [
         unit: "m",
         value_name: "M",
         range: "finite snow_depth m (< 0: an unwinding roll, with core_radius)",
-        help: "Snow depth b normal to the slope, in m (0 = no snow; b < 0: an unwinding roll, a \
-               roll of paper or carpet that lays a layer |b| thick down instead of picking one \
-               up, pi r^2 = pi r0^2 + b x, down to --core-radius; docs/unwinding.md)",
+        help: "Snow depth b normal to the slope, in m (0 = no snow; b < 0: a roll of paper that \
+               unwinds, laying |b| down, pi r^2 = pi r0^2 + b x, to --core-radius)",
         get: |s| Value::Real(s.scenario.snow_depth),
         set: |s, v| v.real().map(|x| s.scenario.snow_depth = x),
         ..BASE
@@ -205,9 +204,9 @@ pub(crate) const TABLE: [Param; 29] = [
         value_name: "M",
         kind: Kind::OptionalReal,
         range: "0 < core_radius < r0 m (only with snow_depth < 0)",
-        help: "Radius of the core (the cardboard tube) of an unwinding roll, in m \
-               (0 < core_radius < r0; required with a negative --snow-depth): the run stops \
-               there with `unwound`. Its mass is neglected (docs/unwinding.md)",
+        help:
+            "Core radius of an unwinding roll (its tube), in m (0 < core_radius < r0, needed with \
+               a negative --snow-depth): the run stops there (`unwound`); its mass is neglected",
         default_note: Some("none (no unwinding)"),
         json: Presence::WhenSet,
         csv: (Section::Extra, Presence::WhenSet),

@@ -17,6 +17,7 @@
 
 mod axis;
 mod grid;
+mod grid_error;
 mod regime;
 mod row;
 mod row_serde;
