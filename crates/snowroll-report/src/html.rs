@@ -122,14 +122,7 @@ fn page_top(h: &mut String, report: &Report) {
             esc(&t.title)
         );
     }
-    if super::losses_section::applies(report) {
-        let _ = write!(
-            h,
-            "<a class=\"minor\" href=\"#{}\">{}</a>",
-            super::losses_section::SECTION_ID,
-            super::losses_section::TITLE
-        );
-    }
+    super::losses_section::nav(h, report);
     for anim in &report.animations {
         let _ = write!(
             h,

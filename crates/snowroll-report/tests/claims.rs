@@ -1045,3 +1045,14 @@ fn issue36_the_abstract_follows_each_headline_claims_measured_outcome() {
         );
     }
 }
+
+#[test]
+fn unwinding_textbook_speed_notices_a_wrong_lift_term() {
+    // eq. (15) whose lift term g b cos α/(π r) is 1 % too strong: the
+    // unrolling roll is pushed 1 % harder by its falling centre.
+    let wrong = lab().with_coefficients(
+        Derivation::EnergyLinearised,
+        perturbed(Derivation::EnergyLinearised, |c| c.lift *= 1.01),
+    );
+    changes(ClaimId::UnwindingTextbookSpeed, &wrong);
+}

@@ -41,6 +41,8 @@ pub struct Scenario {
     /// sweep row reads them several times; the same bits as computing them
     /// on each call).
     gravity_parts: (MetersPerSecondSquared, MetersPerSecondSquared),
+    /// The core radius of an unwinding roll (b < 0), m.
+    core: Option<Meters>,
 }
 
 /// (g sin alpha, g cos alpha).
@@ -61,10 +63,15 @@ pub use crate::body::{ChordWord, Shape, Swath, SwathWidth};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ScenarioFile {
-    /// Slope angle alpha, degrees, 0 < alpha < 90. Default 30.
+    /// Slope angle alpha, degrees, 0 < alpha < 90 (0 <= alpha for an
+    /// unwinding roll, b < 0). Default 30.
     #[serde(alias = "slope_deg", alias = "alpha-deg")]
     pub alpha_deg: f64,
-    /// Snow depth b normal to the slope, m, b >= 0 (0 = no snow). Default 0.01.
+    /// Snow depth b normal to the slope, m (0 = no snow). Default 0.01.
+    /// Negative: the unwinding roll (`docs/unwinding.md`), which lays a
+    /// layer of thickness |b| down per unit of distance instead of picking
+    /// one up (π r² = π r0² + b x, eq. (8), with b < 0), down to
+    /// [`core_radius`](Self::core_radius).
     #[serde(alias = "snow_depth_m", alias = "snow-depth")]
     pub snow_depth: f64,
     /// Initial radius r0 of the log, m, > 0. Default 0.1.
@@ -92,6 +99,12 @@ pub struct ScenarioFile {
     /// log's swath is its length.
     #[serde(alias = "swath-width", skip_serializing_if = "Option::is_none")]
     pub swath_width: Option<SwathWidth>,
+    /// Radius of the core of an unwinding roll (b < 0), m, 0 < core < r0:
+    /// the run stops with `unwound` where r reaches it. Its mass is
+    /// neglected (`docs/unwinding.md`). Required with b < 0, refused with
+    /// b >= 0.
+    #[serde(alias = "core-radius", skip_serializing_if = "Option::is_none")]
+    pub core_radius: Option<f64>,
 }
 
 impl Default for ScenarioFile {
@@ -106,11 +119,12 @@ impl Default for ScenarioFile {
             v0: 0.0,
             shape: Shape::Cylinder,
             swath_width: None,
+            core_radius: None,
         }
     }
 }
 
-fn check(
+pub(crate) fn check(
     name: &'static str,
     value: f64,
     ok: impl Fn(f64) -> bool,
@@ -196,10 +210,11 @@ impl Scenario {
         check_scale("initial speed v0 (m/s)", v0, true, "change {v0}")?;
         // The slope component of gravity g sin alpha divides accelerations
         // (a over g sin alpha): a subnormal alpha_deg (4.9e-324) becomes 0 rad.
+        // A level floor (exactly 0) is allowed for the unwinding roll only.
         check_scale(
             "slope angle alpha (rad)",
             self.alpha,
-            false,
+            b < 0.0,
             "change {alpha_deg}",
         )?;
         let area = PI * r0 * r0;
@@ -262,22 +277,25 @@ impl Scenario {
 
     /// [`Scenario::new`] without the checks of scale.
     fn new_unscaled(file: ScenarioFile) -> Result<Self, ParamError> {
+        let unwinding = file.snow_depth < 0.0;
         let alpha_deg = check(
             "alpha_deg (degrees)",
             file.alpha_deg,
-            |a| a > 0.0 && a < 90.0,
-            "0 < alpha_deg < 90 degrees",
+            |a| (a > 0.0 || (unwinding && a == 0.0)) && a < 90.0,
+            "0 < alpha_deg < 90 degrees (0 <= alpha_deg for an unwinding roll, snow_depth < 0)",
         )?;
+        let b = check(
+            "snow_depth (m)",
+            file.snow_depth,
+            |_| true,
+            "finite snow_depth m (< 0: an unwinding roll, with core_radius)",
+        )?;
+        let r0 = check("r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?;
         let mut s = Self {
             alpha: alpha_deg.to_radians(),
             alpha_deg,
-            b: check(
-                "snow_depth (m)",
-                file.snow_depth,
-                |b| b >= 0.0,
-                "snow_depth >= 0 m",
-            )?,
-            r0: check("r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?,
+            b,
+            r0,
             g: check("g (m/s^2)", file.g, |g| g > 0.0, "g > 0 m/s^2")?,
             rho: check(
                 "density (kg/m^3)",
@@ -289,6 +307,7 @@ impl Scenario {
             v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
             swath: swath_of(&file)?,
+            core: crate::unwinding::core_of(&file)?,
             gravity_parts: (0.0, 0.0),
         };
         s.gravity_parts = gravity_parts(s.g, s.alpha);
@@ -330,6 +349,20 @@ impl Scenario {
     /// C = g cos alpha, the normal component of gravity, m/s².
     pub fn g_normal(&self) -> MetersPerSecondSquared {
         self.gravity_parts.1
+    }
+    /// The core radius of an unwinding roll (b < 0), m; `None` otherwise.
+    pub fn core_radius(&self) -> Option<Meters> {
+        self.core
+    }
+    /// Whether the body lays a layer down (b < 0, the unwinding roll)
+    /// rather than picking one up.
+    pub fn unwinds(&self) -> bool {
+        self.b < 0.0
+    }
+    /// The distance rolled where an unwinding roll reaches its core, m
+    /// ([`Body::distance_to_radius`]); `None` when it does not unwind.
+    pub fn unwound_at(&self) -> Option<Meters> {
+        self.body().distance_to_radius(self.core?)
     }
     /// The body's shape.
     pub fn shape(&self) -> Shape {
@@ -431,6 +464,7 @@ impl From<Scenario> for ScenarioFile {
                 Swath::Fixed(w) => Some(SwathWidth::Metres(w)),
                 Swath::Chord => Some(SwathWidth::Chord(ChordWord::Chord)),
             },
+            core_radius: s.core,
         }
     }
 }
@@ -453,6 +487,7 @@ impl Default for Scenario {
             shape: f.shape,
             swath: Swath::Diameter,
             gravity_parts: gravity_parts(f.g, f.alpha_deg.to_radians()),
+            core: None,
         }
     }
 }

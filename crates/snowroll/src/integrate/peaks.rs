@@ -171,7 +171,11 @@ pub(super) fn crossing_before_extremum<S: OdeSystem<N>, const N: usize>(
     };
     let g = |tt: f64| system.event(i, tt, &p.at(tt));
     let (mut a, mut b) = (t_lo, t_hi);
-    let tol = SEARCH_TOL * (t_hi - t_lo);
+    // Never below a few ulps of t: a step of 1e-9 s at t = 89 s asks for
+    // 1e-19 s, which no two times near 89 differ by, and the search never
+    // ended (an unwinding roll nearing its hop, issue 35).
+    let ulps = 4.0 * f64::EPSILON * t_lo.abs().max(t_hi.abs()).max(f64::MIN_POSITIVE);
+    let tol = (SEARCH_TOL * (t_hi - t_lo)).max(ulps);
     let (mut c, mut d) = (b - INV_PHI * (b - a), a + INV_PHI * (b - a));
     let (mut gc, mut gd) = (sign * g(c), sign * g(d));
     while b - a > tol {

@@ -22,7 +22,9 @@ pub enum StopReason {
     Turns,
     /// The speed returned to zero (the log would have to shed snow to roll back, `docs/turn-model.md`, Conventions).
     Stalled,
-    /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7).
+    /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7),
+    /// or an unwinding roll on a level floor has nothing in its equation to drive it
+    /// (the torque balances, `docs/unwinding.md`).
     DoesNotStart,
     /// The normal force reached zero: the log leaves the ground (fn. 10,
     /// `docs/contact-forces.md` §4; with `--collision pivot` also at the edge of
@@ -44,6 +46,9 @@ pub enum StopReason {
     /// [`Losses::terminal_tol`](crate::Losses::terminal_tol) of the initial
     /// drive (`docs/snowball-and-losses.md` §2.2).
     Terminal,
+    /// An unwinding roll (b < 0) laid its layer down to its core: r reached
+    /// [`core_radius`](crate::ScenarioFile::core_radius) (`docs/unwinding.md`).
+    Unwound,
 }
 
 impl StopReason {
@@ -55,7 +60,8 @@ impl StopReason {
             StopReason::Turns => "completed the requested number of turns",
             StopReason::Stalled => "the speed returned to zero (stall)",
             StopReason::DoesNotStart => {
-                "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7)"
+                "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7), or, an \
+                 unwinding roll on a level floor, nothing in its equation drives it"
             }
             StopReason::Hop => "the normal force reached zero: the log hops (fn. 10)",
             StopReason::Slip => {
@@ -71,6 +77,7 @@ impl StopReason {
             StopReason::Terminal => {
                 "the acceleration fell below the terminal tolerance: terminal velocity reached"
             }
+            StopReason::Unwound => "the roll unwound down to its core (core_radius)",
         }
     }
 

@@ -195,7 +195,13 @@ pub(super) fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
     // A run that ended has every result and no error; one that failed has
     // an error and no result (`SweepRow::new`).
     let results = row.results();
-    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(|r| r.1.is_some());
+    // On a level floor (α = 0, the unwinding roll) a/(g sin α) is empty.
+    let level = row.param_value(const { AxisParam::named("alpha_deg") }) == Some(0.0);
+    let ended = row.stop.is_some()
+        && row.turns.is_some()
+        && results
+            .iter()
+            .all(|(name, v)| v.is_some() || (level && *name == "a_over_g_sin_alpha"));
     let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(|r| r.1.is_none());
     match (row.error.is_some(), ended, failed) {
         (false, true, _) | (true, _, true) => Ok(row),
@@ -244,7 +250,7 @@ pub(super) fn check_point(row: &SweepRow, grid: &Grid) -> Result<(), String> {
             text(&want.warnings),
         ));
     }
-    for p in Param::ALL {
+    for p in AxisParam::ALL {
         let (a, b) = (row.param_value(p), want.param_value(p));
         if a.map(f64::to_bits) != b.map(f64::to_bits) {
             let text = |v: Option<f64>| v.map_or("none".to_string(), |x| x.to_string());

@@ -20,6 +20,7 @@ const EVENT_DISTANCE: usize = 1;
 const EVENT_HOP: usize = 2;
 const EVENT_SLIP: usize = 3;
 const EVENT_TERMINAL: usize = 4;
+const EVENT_UNWOUND: usize = 5;
 
 /// The ODE `x' = v, v' = a(x, v)` of one scenario, with the events stall
 /// (v = 0), end distance, hop (N = 0), slip (|F| = μN), `docs/contact-forces.md`
@@ -50,6 +51,8 @@ pub(super) struct CircularSystem<const N: usize> {
     /// on the area law without losses (`series.rs`); `None` for the other
     /// runs (and with the ledger's quadratures), which take DOP853 steps.
     series: Option<AreaSeries>,
+    /// Where an unwinding roll reaches its core, m (`docs/unwinding.md`).
+    unwound_at: Option<f64>,
 }
 
 impl<const N: usize> CircularSystem<N> {
@@ -80,6 +83,7 @@ impl<const N: usize> CircularSystem<N> {
             mu: opts.mu.filter(|_| !never.slip),
             stop_on_hop: opts.on_hop == OnHop::Stop && !never.hop,
             terminal_accel,
+            unwound_at: scenario.unwound_at().filter(|_| coeffs.accretes),
         }
     }
 
@@ -163,7 +167,7 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
     }
 
     fn event_count(&self) -> usize {
-        5
+        6
     }
 
     fn event(&self, index: usize, _t: f64, y: &[f64; N]) -> f64 {
@@ -179,23 +183,29 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
                 Some(mu) => self.forces(y).slip_margin(mu),
                 None => -1.0,
             },
-            _ => match self.terminal_accel {
+            EVENT_TERMINAL => match self.terminal_accel {
                 Some(tol) => self.accel.at(y[0], y[1]).abs() - tol,
                 None => 1.0,
+            },
+            _ => match self.unwound_at {
+                Some(x_core) => y[0] - x_core,
+                None => -1.0,
             },
         }
     }
 
     /// The end distance only when one is given, the hop only when asked to
     /// stop there and N may reach 0, the slip only with a friction
-    /// coefficient, the terminal stop only where a terminal velocity exists.
+    /// coefficient, the terminal stop only where a terminal velocity exists,
+    /// the core only for an unwinding roll.
     fn event_armed(&self, index: usize) -> bool {
         match index {
             EVENT_STALL => true,
             EVENT_DISTANCE => self.x_end.is_some(),
             EVENT_HOP => self.stop_on_hop && !self.normal_stays_positive,
             EVENT_SLIP => self.mu.is_some(),
-            _ => self.terminal_accel.is_some(),
+            EVENT_TERMINAL => self.terminal_accel.is_some(),
+            _ => self.unwound_at.is_some(),
         }
     }
 
@@ -255,6 +265,7 @@ impl<const N: usize> OdeModel<N> for CircularSystem<N> {
             EVENT_HOP => StopReason::Hop,
             EVENT_SLIP => StopReason::Slip,
             EVENT_TERMINAL => StopReason::Terminal,
+            EVENT_UNWOUND => StopReason::Unwound,
             _ => StopReason::Stalled,
         }
     }

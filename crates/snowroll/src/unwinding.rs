@@ -1,0 +1,47 @@
+//! The checks of the unwinding roll's set-up (b < 0, `docs/unwinding.md`):
+//! its core radius, and what it goes with.
+
+use crate::error::ParamError;
+use crate::scenario::{check, ScenarioFile, SwathWidth};
+use crate::units::Meters;
+
+/// The core radius of a scenario file, checked: required for an unwinding
+/// roll (b < 0), where 0 < core_radius < r0; refused otherwise. The ball's
+/// chord swath is refused with b < 0 (the chord is where a layer's top cuts
+/// a ball pressed into it: there is no such layer to press into).
+pub(crate) fn core_of(file: &ScenarioFile) -> Result<Option<Meters>, ParamError> {
+    const NAME: &str = "core_radius (m)";
+    let core = match file.core_radius {
+        Some(c) => Some(check(NAME, c, |c| c > 0.0 && c < file.r0, CORE_RANGE)?),
+        None => None,
+    };
+    match core {
+        Some(c) if file.snow_depth >= 0.0 => Err(ParamError::InvalidParameter {
+            name: NAME,
+            value: c,
+            expected: "no core_radius with snow_depth >= 0: the core is where an unwinding \
+                       roll (snow_depth < 0) stops; drop --core-radius or give a negative \
+                       --snow-depth",
+        }),
+        None if file.snow_depth < 0.0 => Err(ParamError::InvalidParameter {
+            name: "snow_depth (m)",
+            value: file.snow_depth,
+            expected: "snow_depth >= 0 without core_radius: a negative snow depth is an \
+                       unwinding roll, which needs --core-radius (0 < core_radius < r0), the \
+                       radius where it stops",
+        }),
+        _ if file.snow_depth < 0.0 && matches!(file.swath_width, Some(SwathWidth::Chord(_))) => {
+            Err(ParamError::InvalidParameter {
+                name: "snow_depth (m)",
+                value: file.snow_depth,
+                expected: "snow_depth >= 0 with swath_width = chord (an unwinding ball lays \
+                           its layer on its diameter or a fixed width); give another \
+                           --swath-width",
+            })
+        }
+        core => Ok(core),
+    }
+}
+
+/// The range of the core radius, as the parameter table states it.
+const CORE_RANGE: &str = "0 < core_radius < r0 m (only with snow_depth < 0)";
