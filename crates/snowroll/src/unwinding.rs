@@ -20,14 +20,14 @@ pub(crate) fn core_of(file: &ScenarioFile) -> Result<Option<Meters>, ParamError>
             name: NAME,
             value: c,
             expected: "no core_radius with snow_depth >= 0: the core is where an unwinding \
-                       roll (snow_depth < 0) stops; drop --core-radius or give a negative \
-                       --snow-depth",
+                       roll (snow_depth < 0) stops; drop {core_radius} or give a negative \
+                       {snow_depth}",
         }),
         None if file.snow_depth < 0.0 => Err(ParamError::InvalidParameter {
             name: "snow_depth (m)",
             value: file.snow_depth,
             expected: "snow_depth >= 0 without core_radius: a negative snow depth is an \
-                       unwinding roll, which needs --core-radius (0 < core_radius < r0), the \
+                       unwinding roll, which needs {core_radius} (0 < core_radius < r0), the \
                        radius where it stops",
         }),
         _ if file.snow_depth < 0.0 && matches!(file.swath_width, Some(SwathWidth::Chord(_))) => {
@@ -36,7 +36,7 @@ pub(crate) fn core_of(file: &ScenarioFile) -> Result<Option<Meters>, ParamError>
                 value: file.snow_depth,
                 expected: "snow_depth >= 0 with swath_width = chord (an unwinding ball lays \
                            its layer on its diameter or a fixed width); give another \
-                           --swath-width",
+                           {swath_width}",
             })
         }
         core => Ok(core),

@@ -278,7 +278,7 @@ fn turn_models_refuse_and_the_core_goes_with_a_negative_depth() {
         ..ScenarioFile::default()
     };
     let e = Scenario::new(file).unwrap_err().to_string();
-    assert!(e.contains("needs --core-radius"), "{e}");
+    assert!(e.contains("needs core_radius"), "{e}");
     let e = Scenario::new(ScenarioFile {
         core_radius: Some(0.05),
         ..ScenarioFile::default()

@@ -85,7 +85,7 @@ pub(crate) const TABLE: [Param; 29] = [
         value_name: "M",
         range: "finite snow_depth m (< 0: an unwinding roll, with core_radius)",
         help: "Snow depth b normal to the slope, in m (0 = no snow; b < 0: a roll of paper that \
-               unwinds, laying |b| down, pi r^2 = pi r0^2 + b x, to --core-radius)",
+               unwinds, laying |b| down, pi r^2 = pi r0^2 + b x, down to its core radius)",
         get: |s| Value::Real(s.scenario.snow_depth),
         set: |s, v| v.real().map(|x| s.scenario.snow_depth = x),
         ..BASE
@@ -206,7 +206,7 @@ pub(crate) const TABLE: [Param; 29] = [
         range: "0 < core_radius < r0 m (only with snow_depth < 0)",
         help:
             "Core radius of an unwinding roll (its tube), in m (0 < core_radius < r0, needed with \
-               a negative --snow-depth): the run stops there (`unwound`); its mass is neglected",
+               a negative snow depth): the run stops there (`unwound`); its mass is neglected",
         default_note: Some("none (no unwinding)"),
         json: Presence::WhenSet,
         csv: (Section::Extra, Presence::WhenSet),

@@ -197,8 +197,8 @@ pub(crate) fn check_turn_unwinding(kind: ModelKind, scenario: &Scenario) -> Resu
     }
     Err(ParamError::Unsupported {
         model: kind.id(),
-        what: "a negative --snow-depth (an unwinding roll)",
-        reason: "the turn models follow a log that climbs a step of height b onto the new layer \
+        what: "snow_depth",
+        reason: "a negative snow depth is an unwinding roll, and the turn models follow a log that climbs a step of height b onto the new layer \
                  at the end of each turn (eqs. (37)-(76), the collision of eqs. (81)-(89)); an \
                  unwinding roll lays its layer down under itself and meets no step, so their \
                  geometry does not describe it (docs/unwinding.md). Use a circular model \
