@@ -19,6 +19,7 @@ use snowroll::{Losses, Settings, TurnMethod};
 mod error;
 mod finite;
 mod ledger;
+pub mod measured;
 pub mod notes;
 pub mod page_table;
 mod row;

@@ -44,6 +44,7 @@ mod document;
 mod errata;
 mod files;
 mod findings;
+pub mod fit_plot;
 mod html;
 mod intro;
 mod loss_figures;
