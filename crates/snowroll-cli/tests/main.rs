@@ -5,6 +5,7 @@ mod cli;
 mod crash_safety;
 mod determinism;
 mod edges;
+mod fit;
 mod fuzz_findings;
 mod guards;
 mod inputs;

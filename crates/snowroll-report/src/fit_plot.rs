@@ -38,12 +38,20 @@ pub fn fit_panels(data: &[(f64, f64)], data_name: &str, fits: &[FitCurve]) -> Ve
             .style(Style::Markers)
             .marker(Marker::Circle),
     );
+    // The zero line first, so that each model has the same colour in both
+    // panels (a chart hands out colours by series index).
+    let (t_lo, t_hi) = data
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &(t, _)| {
+            (a.min(t), b.max(t))
+        });
     let mut bottom = Chart::new(
         "fit-residuals",
         "residuals: model − data",
         time(),
         Axis::linear("residual", "m").column("residual_m"),
-    );
+    )
+    .with_series(Series::new("zero", vec![(t_lo, 0.0), (t_hi, 0.0)]).style(Style::Dotted));
     for (k, f) in fits.iter().enumerate() {
         let name = format!("{}. {}", f.rank, f.model.id());
         let style = Style::ALL[k % 4];
@@ -80,7 +88,7 @@ mod tests {
         let panels = fit_panels(&data, "data (SYNTHETIC)", &fits);
         assert_eq!(panels.len(), 2);
         assert_eq!(panels[0].series.len(), 3);
-        assert_eq!(panels[1].series.len(), 2);
+        assert_eq!(panels[1].series.len(), 3);
         let svg = render_panels_svg(&panels, &Provenance::default()).unwrap();
         for word in ["SYNTHETIC", "1. energy", "2. torque-cm", "residuals"] {
             assert!(svg.contains(word), "{word}");

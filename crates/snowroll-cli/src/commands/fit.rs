@@ -21,7 +21,7 @@ use crate::sink::Sink;
 
 /// The largest data file read, bytes: a video's track is a few thousand
 /// lines, and memory stays bounded whatever is named.
-const MAX_DATA_BYTES: u64 = 64 << 20;
+const MAX_DATA_BYTES: u64 = 16 << 20;
 /// Points of each fitted curve in the figure.
 const CURVE_POINTS: usize = 400;
 
@@ -111,7 +111,7 @@ pub fn run(args: FitArgs) -> Result<()> {
             .copied()
             .zip(track.x().iter().copied())
             .collect();
-        let label = format!("data: {}", measured.name.as_deref().unwrap_or(&data_name));
+        let label = data_label(measured.name.as_deref().unwrap_or(&data_name));
         let panels = fit_panels(&points, &label, &curves);
         let ids: Vec<ModelKind> = fits.iter().map(|f| f.model).collect();
         let mut prov = figure::provenance(&ids, &given);
@@ -178,5 +178,19 @@ pub(super) fn describe(data_name: &str, m: &MeasuredTrack) -> String {
     match &m.name {
         Some(name) => format!("{data_name} ({name})"),
         None => data_name.to_string(),
+    }
+}
+
+/// The data's entry in the figure's legend: `data (SYNTHETIC)` for data
+/// that say they are synthetic, else `data: NAME`, shortened.
+fn data_label(name: &str) -> String {
+    if name.to_ascii_lowercase().contains("synthetic") {
+        return "data (SYNTHETIC)".into();
+    }
+    let short: String = name.chars().take(32).collect();
+    if short.len() < name.len() {
+        format!("data: {short}…")
+    } else {
+        format!("data: {short}")
     }
 }
