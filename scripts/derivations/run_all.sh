@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 status=0
-for script in contact_forces.py collisions.py sphere.py losses.py circular_numerics.py turn_numerics.py near_stall_times.py; do
+for script in contact_forces.py collisions.py sphere.py losses.py circular_numerics.py turn_numerics.py near_stall_times.py unwinding.py; do
     echo "### $script"
     python3 "$script" || status=1
 done

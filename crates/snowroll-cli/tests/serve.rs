@@ -131,6 +131,24 @@ fn cli_error(out: &Output) -> String {
 /// ball with the chord swath, losses, a grid, chosen times, a turn model.
 const SIMULATE: &[(&str, &[&str])] = &[
     ("model=torque-cm", &["--model", "torque-cm"]),
+    // The unwinding roll (issue 35): a negative depth in exponent form,
+    // which the page passes as --snow-depth=VALUE.
+    (
+        "model=energy-thin&alpha_deg=0&snow_depth=-1e-4&r0=0.06&core_radius=0.02&t_end=1000",
+        &[
+            "--model",
+            "energy-thin",
+            "--alpha-deg",
+            "0",
+            "--snow-depth=-1e-4",
+            "--r0",
+            "0.06",
+            "--core-radius",
+            "0.02",
+            "--t-end",
+            "1000",
+        ],
+    ),
     (
         "model=energy&alpha_deg=12.5&shape=sphere&swath_width=chord&snow_depth=0.02",
         &[

@@ -133,7 +133,9 @@ pub fn bounds(p: &Param) -> (Option<f64>, bool, Option<f64>) {
 
 /// A slider's span for a real parameter: its range where that is finite and
 /// within a thousand times the default's size, else up to ten times the
-/// default; logarithmic for the tolerances. `null` for other kinds.
+/// default; logarithmic for the tolerances. A parameter with no lower bound
+/// (the snow depth, negative for the unwinding roll) spans as far below 0
+/// as above. `null` for other kinds.
 fn slider(p: &Param) -> serde_json::Value {
     if !matches!(
         p.kind,
@@ -142,6 +144,7 @@ fn slider(p: &Param) -> serde_json::Value {
         return serde_json::Value::Null;
     }
     let (lo, strict, hi) = bounds(p);
+    let unbounded_below = lo.is_none();
     let lo = lo.unwrap_or(0.0);
     let size = match p.get(&Settings::default()) {
         Value::Real(x) => x.abs().max(1.0),
@@ -151,7 +154,9 @@ fn slider(p: &Param) -> serde_json::Value {
         Some(h) if p.exponent || h - lo <= 1000.0 * size => h,
         _ => lo + 10.0 * size,
     };
-    let min = if strict && !p.exponent {
+    let min = if unbounded_below {
+        -max
+    } else if strict && !p.exponent {
         lo + (max - lo) * 1e-3
     } else {
         lo
@@ -167,7 +172,13 @@ mod tests {
     fn bounds_read_the_range_text() {
         let b = |key| bounds(Param::of_key(key).unwrap());
         assert_eq!(b("alpha_deg"), (Some(0.0), true, Some(90.0)));
-        assert_eq!(b("snow_depth"), (Some(0.0), false, None));
+        // Any finite depth: negative for the unwinding roll.
+        assert_eq!(b("snow_depth"), (None, false, None));
+        let depth = slider(Param::of_key("snow_depth").unwrap());
+        assert_eq!(
+            (depth["min"].as_f64(), depth["max"].as_f64()),
+            (Some(-10.0), Some(10.0))
+        );
         assert_eq!(b("rtol"), (Some(1e-15), false, Some(1.0)));
         assert_eq!(b("t_end"), (Some(0.0), true, None));
     }

@@ -342,8 +342,8 @@ fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MAX_MEMORY", guard::MAX_MEMORY_DEFAULT)?;
     m.add(
         "SWEEP_AXES",
-        snowroll::sweep::Param::ALL
-            .map(snowroll::sweep::Param::key)
+        snowroll::sweep::AxisParam::ALL
+            .map(snowroll::sweep::AxisParam::key)
             .to_vec(),
     )?;
     m.add("SWEEP_ROW_BYTES", sweep::SWEEP_ROW_BYTES)?;

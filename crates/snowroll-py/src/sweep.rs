@@ -7,7 +7,7 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use snowroll::sweep::{
-    run_chunks, shard_range, Axis, Choices, Grid, GridError, Method, Param, SweepRow, Values,
+    run_chunks, shard_range, Axis, AxisParam, Choices, Grid, GridError, Method, SweepRow, Values,
     DEFAULT_CHUNK,
 };
 use snowroll::trajectory::StopReason;
@@ -85,7 +85,7 @@ fn choice_list<T: Copy>(
 
 /// Runs a sweep (`snowroll sweep`): every model in `grid["model"]` at every
 /// point of the other axes, one summary row each, in grid order (the last
-/// axis in `Param` order varies fastest), rows computed in parallel with the
+/// axis in `AxisParam` order varies fastest), rows computed in parallel with the
 /// GIL released. `shard = (i, n)` runs only shard i of n, as `--shard i/n`.
 /// Returns `{"columns": {name: ndarray}, "len": int, "shard": (i, n),
 /// "rows": (start, end), "settings": [(name, text)], "version": str}`:
@@ -186,7 +186,7 @@ impl From<ParamError> for Stop {
 /// size before the run, so there is no doubling to pay for. The rows were
 /// 448 bytes by an estimate and 737 measured, when each text cell was a
 /// string object of its own and the library's rows were kept whole.
-pub(crate) const SWEEP_ROW_BYTES: u64 = (8 * (6 + Param::ALL.len()) + 4 * 5 + 8 * 6) as u64;
+pub(crate) const SWEEP_ROW_BYTES: u64 = (8 * (6 + AxisParam::ALL.len()) + 4 * 5 + 8 * 6) as u64;
 
 /// Bytes of a failed row's message besides its text: a Python string's
 /// header (49 bytes on CPython) and the allocator's rounding. Counted as
@@ -247,7 +247,7 @@ impl<T: PartialEq> Interned<T> {
 /// a time while the rows are computed (the library's rows are not kept).
 struct Columns {
     index: Vec<u64>,
-    /// One per parameter, in [`Param::ALL`] order.
+    /// One per parameter, in [`AxisParam::ALL`] order.
     params: Vec<Vec<f64>>,
     /// t_s, x_m, v_m_s, a_over_g_sin_alpha, turns.
     results: [Vec<f64>; 5],
@@ -265,7 +265,10 @@ impl Columns {
         let f = || try_vec::<f64>(n, "sweep()");
         Ok(Self {
             index: try_vec(n, "sweep()")?,
-            params: Param::ALL.iter().map(|_| f()).collect::<PyResult<_>>()?,
+            params: AxisParam::ALL
+                .iter()
+                .map(|_| f())
+                .collect::<PyResult<_>>()?,
             results: [f()?, f()?, f()?, f()?, f()?],
             model: Interned::with_room(n)?,
             on_hop: Interned::with_room(n)?,
@@ -281,7 +284,7 @@ impl Columns {
         for r in rows {
             let at = self.index.len();
             self.index.push(r.index);
-            for (col, p) in self.params.iter_mut().zip(Param::ALL) {
+            for (col, p) in self.params.iter_mut().zip(AxisParam::ALL) {
                 col.push(r.param(p));
             }
             let results = [
@@ -316,7 +319,7 @@ impl Columns {
         let rows = self.index.len();
         c.set_item("index", self.index.into_pyarray(py))?;
         c.set_item("model", self.model.into_py(py, |m| text(m.id()))?)?;
-        for (p, col) in Param::ALL.into_iter().zip(self.params) {
+        for (p, col) in AxisParam::ALL.into_iter().zip(self.params) {
             c.set_item(p.key(), col.into_pyarray(py))?;
         }
         c.set_item("on_hop", self.on_hop.into_py(py, |h| text(h.id()))?)?;
@@ -356,7 +359,7 @@ fn settings(grid: &Grid, method: Method) -> Vec<(String, String)> {
         "model".to_string(),
         ids(grid.models().iter().map(|m| m.id()).collect()),
     )];
-    for p in Param::ALL {
+    for p in AxisParam::ALL {
         let text = match grid.axes().iter().find(|a| a.param == p) {
             Some(a) => match &a.values {
                 Values::Range {
@@ -412,10 +415,10 @@ fn parse_grid(grid: &Bound<'_, PyDict>) -> PyResult<Grid> {
             }
             _ => {}
         }
-        let param = Param::from_key(&key).ok_or_else(|| {
+        let param = AxisParam::from_key(&key).ok_or_else(|| {
             PyValueError::new_err(format!(
                 "unknown axis {key:?}: expected model, collision, on_hop or one of {}",
-                Param::ALL.map(Param::key).join(", ")
+                AxisParam::ALL.map(AxisParam::key).join(", ")
             ))
         })?;
         axes.push(Axis {

@@ -141,12 +141,16 @@ def test_every_column_is_a_numpy_array():
         assert isinstance(col, np.ndarray), (name, type(col))
         assert len(col) == len(s), name
         assert col.dtype == (object if name in TEXT_COLUMNS else np.uint64 if name == "index" else np.float64), name
-    # Each column named in the docstring, and reachable as an attribute
-    # (`s.model` and `s.stop` are the columns, not metadata).
+    # Each column named in the docstring (the axes' columns by SWEEP_AXES,
+    # the parameter table's numeric sweep parameters), and reachable as an
+    # attribute (`s.model` and `s.stop` are the columns, not metadata).
     doc = snowroll.SweepResult.__doc__
+    assert ":data:`SWEEP_AXES`" in doc
     for name in s.columns:
-        assert f"``{name}``" in doc, name
+        assert name in snowroll.SWEEP_AXES or f"``{name}``" in doc, name
         assert getattr(s, name) is s[name], name
+    axes = [c for c in s.columns if c in snowroll.SWEEP_AXES]
+    assert axes == list(snowroll.SWEEP_AXES)
 
 
 @pytest.mark.parametrize(

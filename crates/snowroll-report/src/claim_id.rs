@@ -116,6 +116,8 @@ claim_ids! {
     SnowlessDragTerminalVelocity: "snowless-drag-terminal-velocity";
     /// fn. 5: with the losses the energy is still accounted for.
     EnergyLedgerBalances: "energy-ledger-balances";
+    /// Issue 35, eq. (15) with b < 0: the unwinding roll on a level floor.
+    UnwindingTextbookSpeed: "unwinding-textbook-speed";
 }
 
 impl fmt::Display for ClaimId {

@@ -130,12 +130,15 @@ pub(crate) fn established(id: ClaimId) -> &'static str {
         RegimeMapBorders => "The closed-form stall and hop slopes border the simulated regime map",
         SnowlessDragTerminalVelocity => "With air drag and no snow the log reaches the closed-form terminal velocity",
         EnergyLedgerBalances => "With losses every joule is accounted for in the energy ledger",
+        UnwindingTextbookSpeed => {
+            "A roll that unwinds on a level floor follows the textbook v² = 4g(R³ − r³)/(3r²) under eq. (15); the torque analyses leave it at rest"
+        }
     }
 }
 
 /// Claims the note leaves open (it names the question but not the answer,
 /// or does not ask): they open the "found beyond the note" group when they hold.
-const BEYOND_THE_NOTE: [ClaimId; 10] = [
+const BEYOND_THE_NOTE: [ClaimId; 11] = [
     ClaimId::Fn10HopThreshold,
     ClaimId::Fn7StallThreshold,
     ClaimId::Fn7StallInFirstTurn,
@@ -146,6 +149,7 @@ const BEYOND_THE_NOTE: [ClaimId; 10] = [
     ClaimId::RegimeMapBorders,
     ClaimId::SnowlessDragTerminalVelocity,
     ClaimId::EnergyLedgerBalances,
+    ClaimId::UnwindingTextbookSpeed,
 ];
 
 /// The groups of the opening, in the order the report prints them.

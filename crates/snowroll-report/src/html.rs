@@ -119,14 +119,7 @@ fn page_top(h: &mut String, report: &Report) {
     for (i, t) in report.tables.iter().enumerate() {
         let _ = write!(h, "<a href=\"#table-{i}\">{}</a>", esc(&t.title));
     }
-    if super::losses_section::applies(report) {
-        let _ = write!(
-            h,
-            "<a href=\"#{}\">{}</a>",
-            super::losses_section::SECTION_ID,
-            super::losses_section::TITLE
-        );
-    }
+    super::losses_section::nav(h, report);
     for anim in &report.animations {
         let _ = write!(
             h,

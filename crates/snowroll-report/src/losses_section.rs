@@ -1,19 +1,58 @@
-//! The report's section on the snowball and the losses (issue 11): the
-//! results the claims of `docs/snowball-and-losses.md` established, one
-//! paragraph each, with the verdict and the measured numbers of the claim
-//! that carries it and links to its row of the claims table, its figures
-//! and the snowball's animation. It reads the report; nothing is computed
-//! here.
+//! The report's sections of results beyond the note: the snowball and the
+//! losses (issue 11, `docs/snowball-and-losses.md`) and the unwinding roll
+//! (issue 35, `docs/unwinding.md`). Each lists the results its claims
+//! established, one paragraph each, with the verdict and the measured
+//! numbers of the claim that carries it and links to its row of the claims
+//! table, its figures and the snowball's animation. It reads the report;
+//! nothing is computed here.
 
 use std::fmt::Write as _;
 
 use super::markup::{esc, prose};
 use super::{ClaimId, ClaimResult, Report};
 
-/// Id of the section in the page.
+/// Id of the snowball's section in the page.
 pub(super) const SECTION_ID: &str = "snowball-and-losses";
 /// Its heading.
 pub(super) const TITLE: &str = "The snowball and the losses";
+
+/// One section: its id in the page, heading, opening paragraph and results.
+pub(super) struct Section {
+    id: &'static str,
+    title: &'static str,
+    intro: &'static str,
+    results: &'static [Item],
+}
+
+/// The sections, in the order of the report.
+const SECTIONS: [Section; 2] = [
+    Section {
+        id: SECTION_ID,
+        title: TITLE,
+        intro: "The note's title names a snowball but treats only the log, and fn. 5 sets the losses aside. \
+             The program adds both on the same models, integrator and outputs (docs/snowball-and-losses.md): \
+             the ball with I = (2/5) M r² in every circular model, and air drag, rolling resistance and the \
+             work of compacting the snow picked up, each with its energy in a ledger. What the claims below found:",
+        results: &RESULTS,
+    },
+    Section {
+        id: "unwinding-roll",
+        title: "The unwinding roll",
+        intro: "Run backwards, the snow log is a roll of paper, tape or carpet that lays its layer down as it rolls \
+             (b < 0 in eq. (8), down to the core radius; docs/unwinding.md): an experiment for a classroom. Every \
+             circular model takes it; the turn models do not (their log climbs a step onto each layer). The laid \
+             layer leaves at rest: the momentum balance of eq. (2) counts that, the torque balances of eqs. (3) \
+             and (5) differ in the angular momentum it takes away, and the energy balances of eqs. (11), (14) and \
+             (15) in the potential energy it keeps. What the claims below found:",
+        results: &UNWINDING,
+    },
+];
+
+/// The unwinding roll's results.
+const UNWINDING: [Item; 1] = [Item {
+    claim: ClaimId::UnwindingTextbookSpeed,
+    lead: "On a level floor, from rest, only the energy balances move the roll: as it thins, its centre falls. Eq. (15) is then the textbook unrolling carpet (Serway, ch. 10), v² = 4g(R³ − r³)/(3r²) and √(14gR/3) at r = R/2, while the torque analyses of eqs. (4) and (6) have no term that starts it. Down a slope every model unwinds it, the torque balances fastest (docs/unwinding.md gives each model's speed at R/2 and time to unwind).",
+}];
 
 /// One result: the claim that carries it and the sentence that says what it
 /// means.
@@ -73,27 +112,41 @@ fn has_ball(report: &Report) -> bool {
 
 /// Whether the report holds any of the section's claims (a report without
 /// them has no section).
-pub(super) fn applies(report: &Report) -> bool {
-    RESULTS.iter().any(|r| result(report, r.claim).is_some())
+fn applies(section: &Section, report: &Report) -> bool {
+    section
+        .results
+        .iter()
+        .any(|r| result(report, r.claim).is_some())
 }
 
-/// The section in the page.
+/// The links of the navigation bar to the sections the report has.
+pub(super) fn nav(h: &mut String, report: &Report) {
+    for section in SECTIONS.iter().filter(|s| applies(s, report)) {
+        let _ = write!(h, "<a href=\"#{}\">{}</a>", section.id, section.title);
+    }
+}
+
+/// The sections in the page.
 pub(super) fn html(h: &mut String, report: &Report) {
-    if !applies(report) {
+    for section in &SECTIONS {
+        section_html(h, section, report);
+    }
+}
+
+/// One section in the page.
+fn section_html(h: &mut String, section: &Section, report: &Report) {
+    if !applies(section, report) {
         return;
     }
     let _ = writeln!(
         h,
-        "<section id=\"{SECTION_ID}\">\n<h2>{TITLE}</h2>\n<p>{}</p>",
-        prose(
-            "The note's title names a snowball but treats only the log, and fn. 5 sets the losses aside. \
-             The program adds both on the same models, integrator and outputs (docs/snowball-and-losses.md): \
-             the ball with I = (2/5) M r² in every circular model, and air drag, rolling resistance and the \
-             work of compacting the snow picked up, each with its energy in a ledger. What the claims below found:"
-        )
+        "<section id=\"{}\">\n<h2>{}</h2>\n<p>{}</p>",
+        section.id,
+        section.title,
+        prose(section.intro)
     );
     h.push_str("<ul class=\"results\">\n");
-    for r in &RESULTS {
+    for r in section.results {
         let Some(found) = result(report, r.claim) else {
             continue;
         };
@@ -125,13 +178,20 @@ pub(super) fn html(h: &mut String, report: &Report) {
     h.push_str("</ul>\n</section>\n");
 }
 
-/// The section in `report.md`.
+/// The sections in `report.md`.
 pub(super) fn markdown(md: &mut String, report: &Report) {
-    if !applies(report) {
+    for section in &SECTIONS {
+        section_markdown(md, section, report);
+    }
+}
+
+/// One section in `report.md`.
+fn section_markdown(md: &mut String, section: &Section, report: &Report) {
+    if !applies(section, report) {
         return;
     }
-    let _ = writeln!(md, "\n## {TITLE}\n");
-    for r in &RESULTS {
+    let _ = writeln!(md, "\n## {}\n", section.title);
+    for r in section.results {
         let Some(found) = result(report, r.claim) else {
             continue;
         };
@@ -222,5 +282,26 @@ mod tests {
         let mut h = String::new();
         html(&mut h, &empty);
         assert!(h.is_empty());
+        // The unwinding roll's section comes with its claim, and its link.
+        assert!(!report_has("unwinding-roll", &report));
+        let mut with = report.clone();
+        let mut found = with.claims[0].clone();
+        found.claim = &CLAIMS
+            .iter()
+            .find(|c| c.claim.id == ClaimId::UnwindingTextbookSpeed)
+            .unwrap()
+            .claim;
+        with.claims.push(found);
+        assert!(report_has("unwinding-roll", &with));
+    }
+
+    /// Whether the page and the navigation of `report` have section `id`.
+    fn report_has(id: &str, report: &Report) -> bool {
+        let (mut h, mut n) = (String::new(), String::new());
+        html(&mut h, report);
+        nav(&mut n, report);
+        let page = h.contains(&format!("<section id=\"{id}\">"));
+        assert_eq!(page, n.contains(&format!("href=\"#{id}\"")), "{id}");
+        page
     }
 }

@@ -936,3 +936,14 @@ fn regression_32_regime_map_borders_notice_a_one_percent_error_in_the_lift() {
         r.measured
     );
 }
+
+#[test]
+fn unwinding_textbook_speed_notices_a_wrong_lift_term() {
+    // eq. (15) whose lift term g b cos α/(π r) is 1 % too strong: the
+    // unrolling roll is pushed 1 % harder by its falling centre.
+    let wrong = lab().with_coefficients(
+        Derivation::EnergyLinearised,
+        perturbed(Derivation::EnergyLinearised, |c| c.lift *= 1.01),
+    );
+    changes(ClaimId::UnwindingTextbookSpeed, &wrong);
+}

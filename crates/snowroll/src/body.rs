@@ -205,6 +205,25 @@ impl Body {
         }
     }
 
+    /// The distance rolled where the radius is `r`, m, the inverse of
+    /// [`Body::radius_at`] on the area law (`π (r² − r0²)/b`, eq. (8)) and
+    /// on a fixed swath (`4π (r³ − r0³)/(3 b w)`); `None` without a layer
+    /// (b = 0) and on the chord swath (the unwinding roll's core, whose
+    /// radius the run stops at, is reached only with b < 0).
+    pub fn distance_to_radius(&self, r: Meters) -> Option<Meters> {
+        let (r0, b) = (self.r0, self.snow_depth);
+        if b == 0.0 {
+            return None;
+        }
+        match self.ball_swath() {
+            Swath::Diameter => Some(PI * (r - r0) * (r + r0) / b),
+            Swath::Fixed(w) => {
+                Some(4.0 * PI * (r - r0) * (r * r + r * r0 + r0 * r0) / (3.0 * b * w))
+            }
+            Swath::Chord => None,
+        }
+    }
+
     /// The swath that sets the growth: the ball's own, the log's length
     /// (which follows the area law as [`Swath::Diameter`] does).
     fn ball_swath(&self) -> Swath {

@@ -37,6 +37,8 @@ pub struct Scenario {
     v0: MetersPerSecond,
     shape: Shape,
     swath: Swath,
+    /// The core radius of an unwinding roll (b < 0), m.
+    core: Option<Meters>,
 }
 
 pub use crate::body::{ChordWord, Shape, Swath, SwathWidth};
@@ -52,10 +54,15 @@ pub use crate::body::{ChordWord, Shape, Swath, SwathWidth};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ScenarioFile {
-    /// Slope angle alpha, degrees, 0 < alpha < 90. Default 30.
+    /// Slope angle alpha, degrees, 0 < alpha < 90 (0 <= alpha for an
+    /// unwinding roll, b < 0). Default 30.
     #[serde(alias = "slope_deg", alias = "alpha-deg")]
     pub alpha_deg: f64,
-    /// Snow depth b normal to the slope, m, b >= 0 (0 = no snow). Default 0.01.
+    /// Snow depth b normal to the slope, m (0 = no snow). Default 0.01.
+    /// Negative: the unwinding roll (`docs/unwinding.md`), which lays a
+    /// layer of thickness |b| down per unit of distance instead of picking
+    /// one up (π r² = π r0² + b x, eq. (8), with b < 0), down to
+    /// [`core_radius`](Self::core_radius).
     #[serde(alias = "snow_depth_m", alias = "snow-depth")]
     pub snow_depth: f64,
     /// Initial radius r0 of the log, m, > 0. Default 0.1.
@@ -83,6 +90,12 @@ pub struct ScenarioFile {
     /// log's swath is its length.
     #[serde(alias = "swath-width", skip_serializing_if = "Option::is_none")]
     pub swath_width: Option<SwathWidth>,
+    /// Radius of the core of an unwinding roll (b < 0), m, 0 < core < r0:
+    /// the run stops with `unwound` where r reaches it. Its mass is
+    /// neglected (`docs/unwinding.md`). Required with b < 0, refused with
+    /// b >= 0.
+    #[serde(alias = "core-radius", skip_serializing_if = "Option::is_none")]
+    pub core_radius: Option<f64>,
 }
 
 impl Default for ScenarioFile {
@@ -97,6 +110,7 @@ impl Default for ScenarioFile {
             v0: 0.0,
             shape: Shape::Cylinder,
             swath_width: None,
+            core_radius: None,
         }
     }
 }
@@ -187,10 +201,11 @@ impl Scenario {
         check_scale("initial speed v0 (m/s)", v0, true, "change --v0")?;
         // The slope component of gravity g sin alpha divides accelerations
         // (a over g sin alpha): a subnormal alpha_deg (4.9e-324) becomes 0 rad.
+        // A level floor (exactly 0) is allowed for the unwinding roll only.
         check_scale(
             "slope angle alpha (rad)",
             self.alpha,
-            false,
+            b < 0.0,
             "change --alpha-deg",
         )?;
         let area = PI * r0 * r0;
@@ -253,22 +268,25 @@ impl Scenario {
 
     /// [`Scenario::new`] without the checks of scale.
     fn new_unscaled(file: ScenarioFile) -> Result<Self, ParamError> {
+        let unwinding = file.snow_depth < 0.0;
         let alpha_deg = check(
             "alpha_deg (degrees)",
             file.alpha_deg,
-            |a| a > 0.0 && a < 90.0,
-            "0 < alpha_deg < 90 degrees",
+            |a| (a > 0.0 || (unwinding && a == 0.0)) && a < 90.0,
+            "0 < alpha_deg < 90 degrees (0 <= alpha_deg for an unwinding roll, snow_depth < 0)",
         )?;
+        let b = check(
+            "snow_depth (m)",
+            file.snow_depth,
+            |_| true,
+            "finite snow_depth m (< 0: an unwinding roll, with core_radius)",
+        )?;
+        let r0 = check("r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?;
         Ok(Self {
             alpha: alpha_deg.to_radians(),
             alpha_deg,
-            b: check(
-                "snow_depth (m)",
-                file.snow_depth,
-                |b| b >= 0.0,
-                "snow_depth >= 0 m",
-            )?,
-            r0: check("r0 (m)", file.r0, |r| r > 0.0, "r0 > 0 m")?,
+            b,
+            r0,
             g: check("g (m/s^2)", file.g, |g| g > 0.0, "g > 0 m/s^2")?,
             rho: check(
                 "density (kg/m^3)",
@@ -280,6 +298,7 @@ impl Scenario {
             v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
             swath: swath_of(&file)?,
+            core: core_of(&file)?,
         })
     }
 
@@ -318,6 +337,20 @@ impl Scenario {
     /// C = g cos alpha, the normal component of gravity, m/s².
     pub fn g_normal(&self) -> MetersPerSecondSquared {
         self.g * self.alpha.cos_p()
+    }
+    /// The core radius of an unwinding roll (b < 0), m; `None` otherwise.
+    pub fn core_radius(&self) -> Option<Meters> {
+        self.core
+    }
+    /// Whether the body lays a layer down (b < 0, the unwinding roll)
+    /// rather than picking one up.
+    pub fn unwinds(&self) -> bool {
+        self.b < 0.0
+    }
+    /// The distance rolled where an unwinding roll reaches its core, m
+    /// ([`Body::distance_to_radius`]); `None` when it does not unwind.
+    pub fn unwound_at(&self) -> Option<Meters> {
+        self.body().distance_to_radius(self.core?)
     }
     /// The body's shape.
     pub fn shape(&self) -> Shape {
@@ -396,6 +429,47 @@ fn swath_of(file: &ScenarioFile) -> Result<Swath, ParamError> {
     }
 }
 
+/// The core radius of a scenario file, checked: required for an unwinding
+/// roll (b < 0), where 0 < core_radius < r0; refused otherwise. The ball's
+/// chord swath is refused with b < 0 (the chord is where a layer's top cuts
+/// a ball pressed into it: there is no such layer to press into).
+fn core_of(file: &ScenarioFile) -> Result<Option<Meters>, ParamError> {
+    const NAME: &str = "core_radius (m)";
+    let core = match file.core_radius {
+        Some(c) => Some(check(NAME, c, |c| c > 0.0 && c < file.r0, CORE_RANGE)?),
+        None => None,
+    };
+    match core {
+        Some(c) if file.snow_depth >= 0.0 => Err(ParamError::InvalidParameter {
+            name: NAME,
+            value: c,
+            expected: "no core_radius with snow_depth >= 0: the core is where an unwinding \
+                       roll (snow_depth < 0) stops; drop --core-radius or give a negative \
+                       --snow-depth",
+        }),
+        None if file.snow_depth < 0.0 => Err(ParamError::InvalidParameter {
+            name: "snow_depth (m)",
+            value: file.snow_depth,
+            expected: "snow_depth >= 0 without core_radius: a negative snow depth is an \
+                       unwinding roll, which needs --core-radius (0 < core_radius < r0), the \
+                       radius where it stops",
+        }),
+        _ if file.snow_depth < 0.0 && matches!(file.swath_width, Some(SwathWidth::Chord(_))) => {
+            Err(ParamError::InvalidParameter {
+                name: "snow_depth (m)",
+                value: file.snow_depth,
+                expected: "snow_depth >= 0 with swath_width = chord (an unwinding ball lays \
+                           its layer on its diameter or a fixed width); give another \
+                           --swath-width",
+            })
+        }
+        core => Ok(core),
+    }
+}
+
+/// The range of the core radius, as the parameter table states it.
+const CORE_RANGE: &str = "0 < core_radius < r0 m (only with snow_depth < 0)";
+
 impl TryFrom<ScenarioFile> for Scenario {
     type Error = ParamError;
     fn try_from(file: ScenarioFile) -> Result<Self, ParamError> {
@@ -419,6 +493,7 @@ impl From<Scenario> for ScenarioFile {
                 Swath::Fixed(w) => Some(SwathWidth::Metres(w)),
                 Swath::Chord => Some(SwathWidth::Chord(ChordWord::Chord)),
             },
+            core_radius: s.core,
         }
     }
 }
@@ -440,6 +515,7 @@ impl Default for Scenario {
             v0: f.v0,
             shape: f.shape,
             swath: Swath::Diameter,
+            core: None,
         }
     }
 }

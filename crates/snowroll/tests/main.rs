@@ -21,3 +21,4 @@ mod turns;
 mod turns_closed;
 mod turns_precision;
 mod turns_reference;
+mod unwinding;

@@ -2,11 +2,11 @@
 //! count, chunk size and shard split, and rows that agree with single runs.
 
 use snowroll::sweep::{
-    run_chunks, run_point, shard_range, Axis, Grid, Method, Param, SweepRow, Values,
+    run_chunks, run_point, shard_range, Axis, AxisParam, Grid, Method, SweepRow, Values,
 };
 use snowroll::{ModelKind, ParamError, Sampling, SimOptions, StopReason};
 
-fn axis(param: Param, text: &str) -> Axis {
+fn axis(param: AxisParam, text: &str) -> Axis {
     Axis {
         param,
         values: Values::parse(param.key(), text).unwrap(),
@@ -23,9 +23,9 @@ fn grid() -> Grid {
             ModelKind::Turns,
         ],
         vec![
-            axis(Param::named("alpha_deg"), "5:60:7"),
-            axis(Param::named("snow_depth"), "0,0.01,0.05"),
-            axis(Param::named("t_end"), "3"),
+            axis(AxisParam::named("alpha_deg"), "5:60:7"),
+            axis(AxisParam::named("snow_depth"), "0,0.01,0.05"),
+            axis(AxisParam::named("t_end"), "3"),
         ],
     )
     .unwrap()
@@ -130,21 +130,24 @@ fn app_a_snowless_rows_match_the_closed_form() {
     let g = Grid::new(
         vec![ModelKind::TorqueCm],
         vec![
-            axis(Param::named("alpha_deg"), "10:50:5"),
-            axis(Param::named("snow_depth"), "0"),
-            axis(Param::named("t_end"), "4"),
+            axis(AxisParam::named("alpha_deg"), "10:50:5"),
+            axis(AxisParam::named("snow_depth"), "0"),
+            axis(AxisParam::named("t_end"), "4"),
         ],
     )
     .unwrap();
     for i in 0..g.len() {
         let row = run_point(&g, i, Method::Ode).unwrap();
-        let a = 2.0 / 3.0 * row.g * row.alpha_deg.to_radians().sin();
+        let a = 2.0 / 3.0
+            * row.param(AxisParam::named("g"))
+            * row.param(AxisParam::named("alpha_deg")).to_radians().sin();
         let x = 0.5 * a * 16.0;
         // DOP853 at rtol 1e-10 on a constant acceleration: exact to rounding.
         assert!((row.x_m.unwrap() - x).abs() < 1e-9 * x, "{row:?}");
         assert!((row.a_over_g_sin_alpha.unwrap() - 2.0 / 3.0).abs() < 1e-12);
         assert_eq!(row.stop, Some(StopReason::EndTime));
-        let turns = (x / (2.0 * std::f64::consts::PI * row.r0)).floor() as u64;
+        let turns =
+            (x / (2.0 * std::f64::consts::PI * row.param(AxisParam::named("r0")))).floor() as u64;
         assert_eq!(row.turns, Some(turns));
     }
 }
@@ -174,13 +177,13 @@ fn fast_path_agrees_with_the_ode_to_1e_9() {
     let g = Grid::new(
         models,
         vec![
-            axis(Param::named("alpha_deg"), "3,10,25,45,80"),
-            axis(Param::named("snow_depth"), "0,0.001,0.05,0.3"),
-            axis(Param::named("v0"), "0,0.01,2"),
-            axis(Param::named("t_end"), "0.5,100"),
-            axis(Param::named("x_end"), "3,1e9"),
-            axis(Param::named("rtol"), "1e-12"),
-            axis(Param::named("atol"), "1e-14"),
+            axis(AxisParam::named("alpha_deg"), "3,10,25,45,80"),
+            axis(AxisParam::named("snow_depth"), "0,0.001,0.05,0.3"),
+            axis(AxisParam::named("v0"), "0,0.01,2"),
+            axis(AxisParam::named("t_end"), "0.5,100"),
+            axis(AxisParam::named("x_end"), "3,1e9"),
+            axis(AxisParam::named("rtol"), "1e-12"),
+            axis(AxisParam::named("atol"), "1e-14"),
         ],
     )
     .unwrap();
@@ -221,14 +224,14 @@ fn series_path_agrees_with_the_ode_to_1e_12() {
             ModelKind::QuasiCircular,
         ],
         vec![
-            axis(Param::named("alpha_deg"), "29:31:7"),
-            axis(Param::named("snow_depth"), "0.01"),
-            axis(Param::named("r0"), "0.1"),
-            axis(Param::named("v0"), "0,0.5"),
-            axis(Param::named("t_end"), "100"),
-            axis(Param::named("x_end"), "200,1e9"),
-            axis(Param::named("rtol"), "1e-10"),
-            axis(Param::named("atol"), "1e-12"),
+            axis(AxisParam::named("alpha_deg"), "29:31:7"),
+            axis(AxisParam::named("snow_depth"), "0.01"),
+            axis(AxisParam::named("r0"), "0.1"),
+            axis(AxisParam::named("v0"), "0,0.5"),
+            axis(AxisParam::named("t_end"), "100"),
+            axis(AxisParam::named("x_end"), "200,1e9"),
+            axis(AxisParam::named("rtol"), "1e-10"),
+            axis(AxisParam::named("atol"), "1e-12"),
         ],
     )
     .unwrap();
@@ -255,8 +258,8 @@ fn rows_that_hop_are_not_taken_by_the_fast_path() {
     let g = Grid::new(
         vec![ModelKind::TorqueCm, ModelKind::TorqueContact],
         vec![
-            axis(Param::named("v0"), "80,200"),
-            axis(Param::named("t_end"), "10"),
+            axis(AxisParam::named("v0"), "80,200"),
+            axis(AxisParam::named("t_end"), "10"),
         ],
     )
     .unwrap();

@@ -2,7 +2,7 @@
 //! closed-form borders (fn. 7 stall slope, fn. 10 hop, §5 slip), and the
 //! settings axes (mu, on_hop, collision) in grid order.
 
-use snowroll::sweep::{run_point, Axis, Choices, Grid, Method, Outcome, Param, Values};
+use snowroll::sweep::{run_point, Axis, AxisParam, Choices, Grid, Method, Outcome, Values};
 use snowroll::{CollisionModel, ModelKind, OnHop, Scenario};
 
 /// Degrees either side of a stall or hop slope: far more than the closed
@@ -10,7 +10,7 @@ use snowroll::{CollisionModel, ModelKind, OnHop, Scenario};
 /// tan α* for the first-turn stall of `turns`, well under 0.2° here).
 const MARGIN_DEG: f64 = 0.2;
 
-fn axis(param: Param, values: &[f64]) -> Axis {
+fn axis(param: AxisParam, values: &[f64]) -> Axis {
     Axis {
         param,
         values: Values::List(values.to_vec()),
@@ -39,11 +39,11 @@ fn fn7_circular_model_starts_only_above_its_stall_slope() {
         ModelKind::Energy,
         vec![
             axis(
-                Param::named("alpha_deg"),
+                AxisParam::named("alpha_deg"),
                 &[star - MARGIN_DEG, star + MARGIN_DEG],
             ),
-            axis(Param::named("snow_depth"), &[b]),
-            axis(Param::named("t_end"), &[5.0]),
+            axis(AxisParam::named("snow_depth"), &[b]),
+            axis(AxisParam::named("t_end"), &[5.0]),
         ],
         Choices::default(),
     );
@@ -62,11 +62,11 @@ fn fn7_turn_model_stalls_in_turn_0_below_its_threshold() {
         ModelKind::Turns,
         vec![
             axis(
-                Param::named("alpha_deg"),
+                AxisParam::named("alpha_deg"),
                 &[star - MARGIN_DEG, star + MARGIN_DEG],
             ),
-            axis(Param::named("snow_depth"), &[b]),
-            axis(Param::named("t_end"), &[5.0]),
+            axis(AxisParam::named("snow_depth"), &[b]),
+            axis(AxisParam::named("t_end"), &[5.0]),
         ],
         Choices::default(),
     );
@@ -81,8 +81,8 @@ fn fn10_turn_model_hops_at_80_degrees_in_turn_1_unless_told_to_continue() {
     let grid = Grid::new(
         vec![ModelKind::Turns],
         vec![
-            axis(Param::named("alpha_deg"), &[30.0, 80.0]),
-            axis(Param::named("t_end"), &[3.0]),
+            axis(AxisParam::named("alpha_deg"), &[30.0, 80.0]),
+            axis(AxisParam::named("t_end"), &[3.0]),
         ],
     )
     .unwrap()
@@ -116,8 +116,8 @@ fn slip_of_the_snowless_log_at_mu_tan_alpha_over_3() {
     let got = outcomes(
         ModelKind::Snowless,
         vec![
-            axis(Param::named("mu"), &[0.95 * mu, 1.05 * mu]),
-            axis(Param::named("t_end"), &[5.0]),
+            axis(AxisParam::named("mu"), &[0.95 * mu, 1.05 * mu]),
+            axis(AxisParam::named("t_end"), &[5.0]),
         ],
         Choices::default(),
     );
@@ -128,7 +128,7 @@ fn slip_of_the_snowless_log_at_mu_tan_alpha_over_3() {
 fn settings_axes_follow_the_model_in_grid_order() {
     let grid = Grid::new(
         vec![ModelKind::Turns],
-        vec![axis(Param::named("alpha_deg"), &[20.0, 40.0])],
+        vec![axis(AxisParam::named("alpha_deg"), &[20.0, 40.0])],
     )
     .unwrap()
     .with_choices(Choices {

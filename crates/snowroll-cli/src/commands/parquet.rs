@@ -13,7 +13,7 @@ use parquet::arrow::ArrowWriter;
 use parquet::file::metadata::KeyValue;
 use parquet::file::properties::WriterProperties;
 use snowroll::params::Kind;
-use snowroll::sweep::{Param, SweepRow};
+use snowroll::sweep::{AxisParam, SweepRow};
 
 /// Rows per record batch (and per read of the CSV).
 const BATCH_ROWS: usize = 65_536;
@@ -28,7 +28,7 @@ pub fn schema() -> Schema {
     ];
     // The numeric axes, in grid order; those a run may leave unset
     // (optional in the parameter table: `x_end`, `mu`) nullable.
-    for p in Param::ALL {
+    for p in AxisParam::ALL {
         fields.push(Field::new(p.key(), DataType::Float64, is_optional(p)));
     }
     fields.push(required("on_hop", DataType::Utf8));
@@ -45,7 +45,7 @@ pub fn schema() -> Schema {
 
 /// Whether a run may leave axis `p` unset (an optional number of the
 /// parameter table: `x_end`, `mu`), so that its column is nullable.
-fn is_optional(p: Param) -> bool {
+fn is_optional(p: AxisParam) -> bool {
     snowroll::Param::of_key(p.key()).is_some_and(|q| q.kind == Kind::OptionalReal)
 }
 
@@ -86,7 +86,7 @@ fn batch(schema: &Arc<Schema>, rows: &[SweepRow]) -> Result<RecordBatch> {
             rows.iter().map(|r| r.model.id()).collect::<Vec<_>>(),
         )),
     ];
-    for p in Param::ALL {
+    for p in AxisParam::ALL {
         let column: ArrayRef = if is_optional(p) {
             Arc::new(Float64Array::from(
                 rows.iter().map(|r| r.param_value(p)).collect::<Vec<_>>(),

@@ -11,7 +11,7 @@
 //! it. A test checks the bytes against `serialize` on rows of every kind.
 
 use serde::Serialize;
-use snowroll::sweep::{Param, SweepRow};
+use snowroll::sweep::{AxisParam, SweepRow};
 
 /// The text of one column's last value.
 struct Last<K> {
@@ -39,7 +39,7 @@ impl<K: PartialEq + Copy> Last<K> {
 }
 
 /// The numeric axes of a sweep, each a column of its rows.
-const AXES: usize = Param::ALL.len();
+const AXES: usize = AxisParam::ALL.len();
 
 /// A float as `csv` serialises it (`ryu`).
 fn float(bits: u64, out: &mut Vec<u8>) {
@@ -102,7 +102,7 @@ impl RowWriter {
         let opt = |v: Option<f64>| v.map(f64::to_bits);
         // The axes' columns in grid order, then the results.
         let mut floats = [None; AXES + 4];
-        for (slot, p) in floats.iter_mut().zip(Param::ALL) {
+        for (slot, p) in floats.iter_mut().zip(AxisParam::ALL) {
             *slot = opt(row.param_value(p));
         }
         floats[AXES..].copy_from_slice(&[
@@ -149,7 +149,7 @@ impl RowWriter {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use snowroll::sweep::{Axis, Grid, Method, Param, Values};
+    use snowroll::sweep::{Axis, AxisParam, Grid, Method, Values};
     use snowroll::{CollisionModel, ModelKind, OnHop, StopReason};
 
     fn serialized(rows: &[SweepRow]) -> Vec<u8> {
@@ -183,9 +183,9 @@ mod tests {
         let grid = Grid::new(
             ModelKind::ALL.to_vec(),
             vec![
-                axis(Param::named("alpha_deg"), "1,30,80"),
-                axis(Param::named("v0"), "0,150"),
-                axis(Param::named("t_end"), "2"),
+                axis(AxisParam::named("alpha_deg"), "1,30,80"),
+                axis(AxisParam::named("v0"), "0,150"),
+                axis(AxisParam::named("t_end"), "2"),
             ],
         )
         .unwrap();
@@ -228,10 +228,13 @@ mod tests {
                 let mut r = base.clone();
                 r.index = (k * 100 + j) as u64;
                 r.stop = stop;
-                r.alpha_deg = f;
-                r.snow_depth = -f;
-                r.x_end = (j % 2 == 0).then_some(f);
-                r.mu = (j % 3 == 0).then_some(f);
+                let mut set = |key: &str, v: Option<f64>| {
+                    r.params[AxisParam::named(key).axis_index()] = v;
+                };
+                set("alpha_deg", Some(f));
+                set("snow_depth", Some(-f));
+                set("x_end", (j % 2 == 0).then_some(f));
+                set("mu", (j % 3 == 0).then_some(f));
                 r.t_s = (j % 2 == 1).then_some(f);
                 r.a_over_g_sin_alpha = Some(f);
                 r.turns = (j % 2 == 0).then_some(j as u64);

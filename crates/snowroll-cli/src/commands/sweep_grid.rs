@@ -7,7 +7,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::ValueEnum;
-use snowroll::sweep::{Axis, Choices, Grid, GridError, Method, Param, Values};
+use snowroll::sweep::{Axis, AxisParam, Choices, Grid, GridError, Method, Values};
 use snowroll::{CollisionModel, OnHop};
 
 use crate::args::{sweep_axes, SweepArgs};
@@ -80,7 +80,7 @@ pub fn grid_of(
     let models = given.remove("model");
     let mut axes = Vec::new();
     for (key, text) in &given {
-        let param = Param::from_key(key).ok_or_else(|| anyhow!("unknown axis {key:?}"))?;
+        let param = AxisParam::from_key(key).ok_or_else(|| anyhow!("unknown axis {key:?}"))?;
         let values = Values::parse(param.key(), text).map_err(|e| match e {
             GridError::Syntax { reason, .. } => {
                 anyhow!("{}: cannot read it: {reason}", origin(key, text))

@@ -4,7 +4,7 @@ use std::io::Read;
 use std::path::Path;
 
 use anyhow::{anyhow, Context, Result};
-use snowroll::sweep::{Grid, Param, SweepRow};
+use snowroll::sweep::{AxisParam, Grid, SweepRow};
 use snowroll_io::VERSION;
 use snowroll_report::plot::{ColorBy, Provenance, RegimeMap};
 
@@ -13,14 +13,14 @@ use crate::sink::Sink;
 
 /// The two plotted parameters: the flags, or the first swept axes with two
 /// or more values, in grid order.
-fn plane(args: &SweepArgs, grid: &Grid) -> Result<(Param, Param)> {
-    let named = |flag: &str, text: &Option<String>| -> Result<Option<Param>> {
+fn plane(args: &SweepArgs, grid: &Grid) -> Result<(AxisParam, AxisParam)> {
+    let named = |flag: &str, text: &Option<String>| -> Result<Option<AxisParam>> {
         text.as_deref()
             .map(|t| {
-                Param::from_key(t).ok_or_else(|| {
+                AxisParam::from_key(t).ok_or_else(|| {
                     anyhow!(
                         "{flag} {t:?}: expected one of {}",
-                        Param::ALL.map(Param::key).join(", ")
+                        AxisParam::ALL.map(AxisParam::key).join(", ")
                     )
                 })
             })
@@ -52,8 +52,8 @@ fn plane(args: &SweepArgs, grid: &Grid) -> Result<(Param, Param)> {
 /// What `--plot` draws: the plane and the colouring.
 #[derive(Debug, Clone, Copy)]
 pub struct Plan {
-    x: Param,
-    y: Param,
+    x: AxisParam,
+    y: AxisParam,
     color: ColorBy,
 }
 

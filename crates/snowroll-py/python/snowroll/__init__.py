@@ -40,6 +40,10 @@ __version__: str = _snowroll.__version__
 #: may hold before it raises ``MemoryError``.
 MAX_MEMORY: int = _snowroll.MAX_MEMORY
 
+#: The axes a sweep's grid takes, in grid order: the parameter table's
+#: numeric sweep parameters (each also a column of :class:`SweepResult`).
+SWEEP_AXES: Tuple[str, ...] = tuple(_snowroll.SWEEP_AXES)
+
 __all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "Results", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
 
 
@@ -304,15 +308,15 @@ class SweepResult(_Columns):
     """The rows of a sweep: what :func:`sweep` returns.
 
     Columns (those of the CLI's ``snowroll sweep`` CSV, in its order), every
-    one a numpy array: ``index`` (uint64, the grid index), ``model``,
-    ``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``, ``length``,
-    ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``, ``mu``, ``on_hop``,
+    one a numpy array: ``index`` (uint64, the grid index), ``model``, one
+    column per axis of :data:`SWEEP_AXES` (the parameter table's numeric
+    sweep parameters, in its order, under their keys), ``on_hop``,
     ``collision``, ``stop``, ``t_s``, ``x_m``, ``v_m_s``,
     ``a_over_g_sin_alpha``, ``turns``, ``error``, ``warnings`` (the codes of
     the warnings :func:`simulate` gives for the row's point, ``;``-separated,
     such as ``b-over-r0;loose-tolerance``). The numbers are float64
-    arrays with NaN where the CSV cell is empty (``x_end`` or ``mu`` not
-    swept, a failed run). The text columns ``model``, ``on_hop``,
+    arrays with NaN where the CSV cell is empty (an optional parameter such
+    as ``x_end`` or ``mu`` unset, a failed run). The text columns ``model``, ``on_hop``,
     ``collision``, ``stop``, ``error`` and ``warnings`` are numpy object arrays of ``str``,
     ``None`` where the cell is empty (a fixed-width numpy ``str`` array could
     not hold the missing cells); :meth:`to_pandas` makes them ``string``
@@ -443,9 +447,8 @@ def sweep(
     released.
 
     ``grid``: ``{"model": "torque-cm,energy" or a list of ids, AXIS: values}``
-    with AXIS one of ``alpha_deg``, ``snow_depth``, ``r0``, ``g``, ``density``,
-    ``length``, ``v0``, ``t_end``, ``x_end``, ``rtol``, ``atol``, ``mu`` and
-    values a number, a sequence of numbers, or a string as the CLI reads it:
+    with AXIS one of :data:`SWEEP_AXES` (the parameter table's numeric sweep
+    parameters) and values a number, a sequence of numbers, or a string as the CLI reads it:
     ``"10,20,30"`` or ``"start:end:count"`` (both ends included); and the
     settings ``collision`` (``"note"``, ``"charged"``, ``"pivot"``) and
     ``on_hop`` (``"stop"``, ``"continue"``), a list of ids or ``"a,b"``.

@@ -28,6 +28,7 @@ def simulate(
     v0: Optional[float] = None,
     shape: Optional[str] = None,
     swath_width: Optional[Union[float, str]] = None,
+    core_radius: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     turns: Optional[int] = None,
@@ -77,6 +78,7 @@ def turns(
     v0: Optional[float] = None,
     shape: Optional[str] = None,
     swath_width: Optional[Union[float, str]] = None,
+    core_radius: Optional[float] = None,
     t_end: Optional[float] = None,
     x_end: Optional[float] = None,
     rtol: Optional[float] = None,
@@ -115,6 +117,7 @@ def models(
     v0: Optional[float] = None,
     shape: Optional[str] = None,
     swath_width: Optional[Union[float, str]] = None,
+    core_radius: Optional[float] = None,
     drag_coefficient: Optional[float] = None,
     air_density: Optional[float] = None,
     rolling_resistance: Optional[float] = None,
@@ -147,7 +150,7 @@ def sweep(
     max_memory: int = ...,
 ) -> Dict[str, Any]:
     """Every model of ``grid["model"]`` at every point of the other axes
-    (``alpha_deg`` ... ``atol``, ``mu``; a number, a sequence, or ``"a,b,c"`` /
+    (each key of ``SWEEP_AXES``; a number, a sequence, or ``"a,b,c"`` /
     ``"start:end:count"``) and of the settings ``collision`` (``note``,
     ``charged``, ``pivot``) and ``on_hop`` (``stop``, ``continue``), each a
     list of ids or ``"a,b"``, one summary row each, in grid order; shard

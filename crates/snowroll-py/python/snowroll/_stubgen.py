@@ -81,7 +81,7 @@ def sweep(
     max_memory: int = ...,
 ) -> Dict[str, Any]:
     """Every model of ``grid["model"]`` at every point of the other axes
-    (``alpha_deg`` ... ``atol``, ``mu``; a number, a sequence, or ``"a,b,c"`` /
+    (each key of ``SWEEP_AXES``; a number, a sequence, or ``"a,b,c"`` /
     ``"start:end:count"``) and of the settings ``collision`` (``note``,
     ``charged``, ``pivot``) and ``on_hop`` (``stop``, ``continue``), each a
     list of ids or ``"a,b"``, one summary row each, in grid order; shard

@@ -19,7 +19,7 @@ use crate::{Criterion, Tolerance};
 use snowroll::error::SimError;
 use snowroll::models::ModelKind;
 use snowroll::scenario::{Scenario, ScenarioFile};
-use snowroll::sweep::{Axis, Grid, Outcome, Param, SweepRow, Values};
+use snowroll::sweep::{Axis, AxisParam, Grid, Outcome, SweepRow, Values};
 use snowroll::trajectory::{Sampling, SimOptions, StopReason};
 
 /// Turns of each run of the map. The hop angle of §4.3 expands the
@@ -156,12 +156,15 @@ pub(super) fn map_rows(lab: &Lab) -> Result<MapRows, SimError> {
     let grid = Grid::new(
         vec![ModelKind::Turns],
         vec![
-            list(const { Param::named("alpha_deg") }, map_alphas()),
-            list(const { Param::named("snow_depth") }, map_depths(base.r0)),
-            list(const { Param::named("r0") }, vec![base.r0]),
-            list(const { Param::named("g") }, vec![base.g]),
-            list(const { Param::named("v0") }, vec![0.0]),
-            list(const { Param::named("t_end") }, vec![1e4]),
+            list(const { AxisParam::named("alpha_deg") }, map_alphas()),
+            list(
+                const { AxisParam::named("snow_depth") },
+                map_depths(base.r0),
+            ),
+            list(const { AxisParam::named("r0") }, vec![base.r0]),
+            list(const { AxisParam::named("g") }, vec![base.g]),
+            list(const { AxisParam::named("v0") }, vec![0.0]),
+            list(const { AxisParam::named("t_end") }, vec![1e4]),
         ],
     )
     .map_err(grid_err)?;
@@ -341,8 +344,8 @@ pub(crate) fn regime_figure(lab: &Lab) -> Result<Figure, ReportError> {
     let map = RegimeMap::from_rows(
         grid,
         rows,
-        const { Param::named("alpha_deg") },
-        const { Param::named("snow_depth") },
+        const { AxisParam::named("alpha_deg") },
+        const { AxisParam::named("snow_depth") },
         ColorBy::Outcome,
     )
     .map_err(|e| PlotError::Backend {

@@ -44,6 +44,7 @@ use super::terminal::{
     EQ33_PRINTED_APART, EQ34_LATE, EQ35_LIMIT, EQ35_POSITION, ERRATUM_33_35, TERMINAL_LIMIT,
     TERMINAL_PRINTED,
 };
+use super::unwinding::{unwinding_textbook_speed, UNWINDING_SPEED};
 use super::ClaimCheck;
 use crate::{Claim, ClaimId, Verdict};
 
@@ -441,6 +442,17 @@ pub static CLAIMS: &[ClaimCheck] = &[
             expected: Verdict::Holds,
         },
         check: ledger_balances,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: ClaimId::UnwindingTextbookSpeed,
+            paper_ref: "eqs. (4), (6), (15) with b < 0",
+            statement: "A roll that lays its layer down instead of picking it up (b < 0 in eq. (8), docs/unwinding.md) and starts from rest on a level floor moves, under eq. (15), as the textbook energy balance of an unrolling carpet says: v² = 4g(R³ − r³)/(3r²), √(14gR/3) at r = R/2; the torque analyses, eqs. (4) and (6), do not start it.",
+            method: "energy-thin with R = 0.1 m, b = −1e-4 m, core 0.02 m, α = 0, from rest, stopped at r = 0.09, 0.07, 0.05 and 0.03 m (x_end = π(r² − R²)/b); its speed against the textbook v², typed in the check; torque-cm and torque-contact from rest on the same floor",
+            tolerances: &[UNWINDING_SPEED],
+            expected: Verdict::Holds,
+        },
+        check: unwinding_textbook_speed,
     },
 ];
 

@@ -57,11 +57,11 @@ fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Resul
 }
 
 /// Every parameter. See [`Param`] for the meaning of each field.
-pub static PARAMS: [Param; 28] = TABLE;
+pub static PARAMS: [Param; 29] = TABLE;
 
 /// [`PARAMS`] as a constant, for what is computed from it at compile time
-/// (the sweep's axes, [`crate::sweep::Param::ALL`]).
-pub(crate) const TABLE: [Param; 28] = [
+/// (the sweep's axes, [`crate::sweep::AxisParam::ALL`]).
+pub(crate) const TABLE: [Param; 29] = [
     Param {
         key: "alpha_deg",
         sweep: true,
@@ -69,8 +69,9 @@ pub(crate) const TABLE: [Param; 28] = [
         aliases: &["slope_deg"],
         unit: "deg",
         value_name: "DEG",
-        range: "0 < alpha_deg < 90 degrees",
-        help: "Slope angle alpha, in degrees (0 < alpha < 90)",
+        range: "0 < alpha_deg < 90 degrees (0 <= alpha_deg for an unwinding roll, snow_depth < 0)",
+        help: "Slope angle alpha, in degrees (0 < alpha < 90; 0, a level floor, for an unwinding \
+               roll)",
         get: |s| Value::Real(s.scenario.alpha_deg),
         set: |s, v| v.real().map(|x| s.scenario.alpha_deg = x),
         ..BASE
@@ -82,8 +83,10 @@ pub(crate) const TABLE: [Param; 28] = [
         aliases: &["snow_depth_m"],
         unit: "m",
         value_name: "M",
-        range: "snow_depth >= 0 m",
-        help: "Snow depth b normal to the slope, in m (b >= 0; 0 = no snow)",
+        range: "finite snow_depth m (< 0: an unwinding roll, with core_radius)",
+        help: "Snow depth b normal to the slope, in m (0 = no snow; b < 0: an unwinding roll, a \
+               roll of paper or carpet that lays a layer |b| thick down instead of picking one \
+               up, pi r^2 = pi r0^2 + b x, down to --core-radius; docs/unwinding.md)",
         get: |s| Value::Real(s.scenario.snow_depth),
         set: |s, v| v.real().map(|x| s.scenario.snow_depth = x),
         ..BASE
@@ -192,6 +195,22 @@ pub(crate) const TABLE: [Param; 28] = [
             };
             Ok(())
         },
+        ..BASE
+    },
+    Param {
+        key: "core_radius",
+        unit: "m",
+        value_name: "M",
+        kind: Kind::OptionalReal,
+        range: "0 < core_radius < r0 m (only with snow_depth < 0)",
+        help: "Radius of the core (the cardboard tube) of an unwinding roll, in m \
+               (0 < core_radius < r0; required with a negative --snow-depth): the run stops \
+               there with `unwound`. Its mass is neglected (docs/unwinding.md)",
+        default_note: Some("none (no unwinding)"),
+        json: Presence::WhenSet,
+        csv: (Section::Extra, Presence::WhenSet),
+        get: |s| Value::of_option(s.scenario.core_radius),
+        set: |s, v| v.optional_real().map(|x| s.scenario.core_radius = x),
         ..BASE
     },
     Param {

@@ -1,4 +1,4 @@
-//! The axes of a sweep: the parameters a sweep can vary ([`Param`]), the
+//! The axes of a sweep: the parameters a sweep can vary ([`AxisParam`]), the
 //! values of one axis ([`Values`], a list or a range never expanded into
 //! memory), and what can be wrong with them ([`GridError`]).
 
@@ -16,7 +16,7 @@ use crate::params::{Kind, Settings, Value, PARAMS, TABLE};
 /// setters, and the sweep rows' columns all follow from the table: a new
 /// numeric sweep parameter is a new row there and nothing here.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Param(
+pub struct AxisParam(
     /// Its row's place in [`PARAMS`] (the grid's order is the table's).
     u8,
 );
@@ -27,7 +27,7 @@ const fn is_axis(p: &crate::params::Param) -> bool {
 }
 
 /// How many rows of the table are axes.
-const AXES: usize = {
+pub(crate) const AXES: usize = {
     let mut n = 0;
     let mut i = 0;
     while i < TABLE.len() {
@@ -55,15 +55,15 @@ const fn same_key(a: &str, b: &str) -> bool {
     true
 }
 
-impl Param {
+impl AxisParam {
     /// Every parameter, in grid order (the last varies fastest): the
     /// table's numeric sweep rows, in the table's order.
-    pub const ALL: [Param; AXES] = {
-        let mut all = [Param(0); AXES];
+    pub const ALL: [AxisParam; AXES] = {
+        let mut all = [AxisParam(0); AXES];
         let (mut n, mut i) = (0, 0);
         while i < TABLE.len() {
             if is_axis(&TABLE[i]) {
-                all[n] = Param(i as u8);
+                all[n] = AxisParam(i as u8);
                 n += 1;
             }
             i += 1;
@@ -72,7 +72,7 @@ impl Param {
     };
 
     /// The axis of `key`, for a key known when the program is written:
-    /// use it in a `const` (`const ALPHA: Param = Param::named("alpha_deg")`)
+    /// use it in a `const` (`const ALPHA: AxisParam = AxisParam::named("alpha_deg")`)
     /// so that a key that is not an axis fails to compile.
     ///
     /// # Panics
@@ -83,11 +83,11 @@ impl Param {
         clippy::panic,
         reason = "called in `const` items and blocks: a wrong key fails the build"
     )]
-    pub const fn named(key: &str) -> Param {
+    pub const fn named(key: &str) -> AxisParam {
         let mut k = 0;
-        while k < Param::ALL.len() {
-            if same_key(TABLE[Param::ALL[k].0 as usize].key, key) {
-                return Param::ALL[k];
+        while k < AxisParam::ALL.len() {
+            if same_key(TABLE[AxisParam::ALL[k].0 as usize].key, key) {
+                return AxisParam::ALL[k];
             }
             k += 1;
         }
@@ -99,15 +99,38 @@ impl Param {
         &PARAMS[usize::from(self.0)]
     }
 
+    /// Its key, in a `const` (the sweep rows' column names are computed
+    /// from it at compile time).
+    pub(crate) const fn key_const(self) -> &'static str {
+        TABLE[self.0 as usize].key
+    }
+
+    /// Its place among the axes: its index in [`AxisParam::ALL`] (a sweep
+    /// row's [`params`](super::SweepRow::params)).
+    pub fn axis_index(self) -> usize {
+        /// The axis index of each row of the table (`u8::MAX` for a row
+        /// that is not an axis).
+        const OF_ROW: [u8; TABLE.len()] = {
+            let mut of = [u8::MAX; TABLE.len()];
+            let mut k = 0;
+            while k < AxisParam::ALL.len() {
+                of[AxisParam::ALL[k].0 as usize] = k as u8;
+                k += 1;
+            }
+            of
+        };
+        usize::from(OF_ROW[usize::from(self.0)])
+    }
+
     /// The snake-case key (config files, CSV columns, metadata).
     pub fn key(self) -> &'static str {
         self.spec().key
     }
 
     /// The parameter of a snake-case key or a kebab-case flag name.
-    pub fn from_key(key: &str) -> Option<Param> {
+    pub fn from_key(key: &str) -> Option<AxisParam> {
         let key = key.replace('-', "_");
-        Param::ALL.into_iter().find(|p| p.key() == key)
+        AxisParam::ALL.into_iter().find(|p| p.key() == key)
     }
 
     /// Sets it to `x` in `settings`, with the table's setter.
@@ -128,13 +151,13 @@ impl Param {
     }
 }
 
-impl fmt::Debug for Param {
+impl fmt::Debug for AxisParam {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Param({})", self.key())
+        write!(f, "AxisParam({})", self.key())
     }
 }
 
-impl fmt::Display for Param {
+impl fmt::Display for AxisParam {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.key())
     }
@@ -161,7 +184,7 @@ pub enum GridError {
     #[error("{error}")]
     Value {
         /// The axis.
-        param: Param,
+        param: AxisParam,
         /// The range check that failed.
         error: ParamError,
     },
@@ -486,7 +509,7 @@ fn decimal_to_f64(v: i128, exp: i32) -> f64 {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
     /// Which parameter.
-    pub param: Param,
+    pub param: AxisParam,
     /// Its values.
     pub values: Values,
 }

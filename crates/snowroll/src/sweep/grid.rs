@@ -3,11 +3,11 @@
 //!
 //! A point's index `i` in `0..len` is a mixed-radix number: the model is the
 //! most significant digit, then the collision law and the hop setting (the
-//! two [`Choices`]), then the parameters in [`Param::ALL`] order, the last
+//! two [`Choices`]), then the parameters in [`AxisParam::ALL`] order, the last
 //! one varying fastest (nested loops written in that order). Ranges are
 //! never expanded into memory: [`Values::get`] computes the k-th value.
 
-use super::axis::{Axis, DecimalRange, GridError, Param};
+use super::axis::{Axis, AxisParam, DecimalRange, GridError};
 use crate::error::ParamError;
 use crate::models::{CollisionModel, ModelKind};
 use crate::params::Settings;
@@ -39,7 +39,7 @@ pub struct Grid {
     models: Vec<ModelKind>,
     /// The collision laws and hop settings.
     choices: Choices,
-    /// At most one per parameter, in [`Param::ALL`] order.
+    /// At most one per parameter, in [`AxisParam::ALL`] order.
     axes: Vec<Axis>,
     /// The decimal plan of each axis ([`Values::decimal_range`](super::Values::decimal_range)), made once.
     plans: Vec<Option<DecimalRange>>,
@@ -253,7 +253,7 @@ impl Choices {
 
 /// Checks one value of `param` with the library's own checks: the default
 /// scenario and options with that value put in.
-fn check_value(param: Param, x: f64) -> Result<(), ParamError> {
+fn check_value(param: AxisParam, x: f64) -> Result<(), ParamError> {
     let mut s = Settings::default();
     param.set(&mut s, x)?;
     Scenario::new(s.scenario)?;
@@ -277,16 +277,16 @@ mod tests {
             .filter(numeric)
             .map(|p| p.key)
             .collect();
-        let axes: Vec<&str> = Param::ALL.iter().map(|p| p.key()).collect();
+        let axes: Vec<&str> = AxisParam::ALL.iter().map(|p| p.key()).collect();
         assert_eq!(axes, table);
-        for p in Param::ALL {
+        for p in AxisParam::ALL {
             let mut s = Settings::default();
             p.set(&mut s, 0.375).unwrap();
             let spec = crate::params::Param::of_key(p.key()).unwrap();
             assert_eq!(spec.get(&s), Value::Real(0.375), "{}", p.key());
             assert_eq!(p.get(&s), Some(0.375), "{}", p.key());
             assert!(!p.spec().plot.0.is_empty(), "{}: no plot label", p.key());
-            assert_eq!(Param::named(p.key()), p);
+            assert_eq!(AxisParam::named(p.key()), p);
         }
         // The words a sweep lists: the table's choice parameters.
         let choices: Vec<&str> = PARAMS
@@ -344,7 +344,7 @@ mod tests {
         }
     }
 
-    fn axis(param: Param, text: &str) -> Axis {
+    fn axis(param: AxisParam, text: &str) -> Axis {
         Axis {
             param,
             values: Values::parse(param.key(), text).unwrap(),
@@ -354,7 +354,11 @@ mod tests {
     #[test]
     fn grid_checks_values_duplicates_and_size() {
         let m = vec![ModelKind::TorqueCm];
-        let e = Grid::new(m.clone(), vec![axis(Param::named("alpha_deg"), "10:95:5")]).unwrap_err();
+        let e = Grid::new(
+            m.clone(),
+            vec![axis(AxisParam::named("alpha_deg"), "10:95:5")],
+        )
+        .unwrap_err();
         assert!(
             e.to_string().contains("= 95: expected 0 < alpha_deg < 90"),
             "{e}"
@@ -364,32 +368,35 @@ mod tests {
         assert!(std::error::Error::source(&e).is_none(), "{e:?}");
         let e = Grid::new(
             m.clone(),
-            vec![axis(Param::named("snow_depth"), "0.1,-0.1")],
+            vec![axis(AxisParam::named("snow_depth"), "0.1,-0.1")],
         )
         .unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 m"
+        // A negative depth is an unwinding roll, which needs a core radius.
+        assert!(
+            e.to_string().starts_with(
+                "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 without core_radius"
+            ),
+            "{e}"
         );
         // A bad value is found before the missing model.
-        let e = Grid::new(vec![], vec![axis(Param::named("alpha_deg"), "5:95:3")]).unwrap_err();
+        let e = Grid::new(vec![], vec![axis(AxisParam::named("alpha_deg"), "5:95:3")]).unwrap_err();
         assert!(
             matches!(
                 e,
                 GridError::Value {
                     param,
                     ..
-                } if param == Param::named("alpha_deg")
+                } if param == AxisParam::named("alpha_deg")
             ),
             "{e:?}"
         );
-        let e = Grid::new(m.clone(), vec![axis(Param::named("rtol"), "1e-20")]).unwrap_err();
+        let e = Grid::new(m.clone(), vec![axis(AxisParam::named("rtol"), "1e-20")]).unwrap_err();
         assert!(e.to_string().contains("rtol"), "{e}");
         let e = Grid::new(
             m.clone(),
             vec![
-                axis(Param::named("r0"), "0.1"),
-                axis(Param::named("r0"), "0.2"),
+                axis(AxisParam::named("r0"), "0.1"),
+                axis(AxisParam::named("r0"), "0.2"),
             ],
         )
         .unwrap_err();
@@ -398,8 +405,8 @@ mod tests {
         let e = Grid::new(
             m.clone(),
             vec![
-                axis(Param::named("alpha_deg"), "10:80:100000"),
-                axis(Param::named("snow_depth"), "0:1:100000"),
+                axis(AxisParam::named("alpha_deg"), "10:80:100000"),
+                axis(AxisParam::named("snow_depth"), "0:1:100000"),
             ],
         )
         .unwrap_err();
@@ -413,8 +420,8 @@ mod tests {
         let e = Grid::new(
             m.clone(),
             vec![
-                axis(Param::named("alpha_deg"), "10:80:1000000000000"),
-                axis(Param::named("snow_depth"), "0:1:1000000000000"),
+                axis(AxisParam::named("alpha_deg"), "10:80:1000000000000"),
+                axis(AxisParam::named("snow_depth"), "0:1:1000000000000"),
             ],
         )
         .unwrap_err()
@@ -429,7 +436,11 @@ mod tests {
             "1.2345e18"
         );
         // Exactly at the limit is allowed (nothing is expanded).
-        let g = Grid::new(m, vec![axis(Param::named("alpha_deg"), "10:80:1000000000")]).unwrap();
+        let g = Grid::new(
+            m,
+            vec![axis(AxisParam::named("alpha_deg"), "10:80:1000000000")],
+        )
+        .unwrap();
         assert_eq!(g.len(), MAX_GRID_POINTS);
     }
 
@@ -439,8 +450,8 @@ mod tests {
             vec![ModelKind::TorqueCm, ModelKind::Energy],
             // Given out of order: the grid orders them.
             vec![
-                axis(Param::named("snow_depth"), "0.001,0.01,0.1"),
-                axis(Param::named("alpha_deg"), "20,30"),
+                axis(AxisParam::named("snow_depth"), "0.001,0.01,0.1"),
+                axis(AxisParam::named("alpha_deg"), "20,30"),
             ],
         )
         .unwrap();

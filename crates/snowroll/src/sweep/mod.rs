@@ -2,7 +2,7 @@
 //! summary row each ([`SweepRow`]), in grid order whatever the number of
 //! threads.
 //!
-//! - [`Grid`] holds the models and one [`Axis`] per swept [`Param`], each a
+//! - [`Grid`] holds the models and one [`Axis`] per swept [`AxisParam`], each a
 //!   list or a range that is never expanded into memory.
 //! - [`run_chunks`] computes the rows of a range of grid indices in parallel
 //!   (rayon), a chunk at a time, and hands each chunk over in order: memory
@@ -19,13 +19,14 @@ mod axis;
 mod grid;
 mod regime;
 mod row;
+mod row_serde;
 mod run;
 
 pub use crate::models::{circular_end, ContactCheck, FastEnd, SpeedSquared};
-pub use axis::{Axis, DecimalRange, GridError, Param, Values};
+pub use axis::{Axis, AxisParam, DecimalRange, GridError, Values};
 pub use grid::{Choices, Grid, Point, MAX_GRID_POINTS};
 pub use regime::{boundaries, hop_slope_within, slip_mu, Boundary, Outcome};
-pub use row::{point_warnings, SweepRow};
+pub use row::{point_warnings, AxisValues, SweepRow};
 pub use run::{
     count_warnings, run_chunks, run_point, shard_range, Method, DEFAULT_CHUNK, FAST_MIN_RTOL,
 };

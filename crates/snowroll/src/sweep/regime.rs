@@ -22,7 +22,7 @@ use crate::portable::Portable as _;
 use std::f64::consts::PI;
 use std::fmt;
 
-use super::axis::{Param, Values};
+use super::axis::{AxisParam, Values};
 use super::grid::{Grid, Point};
 use super::row::SweepRow;
 use crate::models::{CollisionModel, ModelKind};
@@ -61,12 +61,14 @@ impl Outcome {
         }
         match row.stop {
             None => Outcome::Failed,
-            // At terminal velocity the body still rolls on.
+            // At terminal velocity the body still rolls on; an unwinding
+            // roll that reached its core rolled all the way.
             Some(
                 StopReason::EndTime
                 | StopReason::Distance
                 | StopReason::Turns
-                | StopReason::Terminal,
+                | StopReason::Terminal
+                | StopReason::Unwound,
             ) => Outcome::RollsOn,
             // Cut short by a limit of the program: no verdict on the physics.
             Some(StopReason::StepLimit | StopReason::RowLimit) => Outcome::Failed,
@@ -168,16 +170,16 @@ fn value_range(values: &Values) -> (f64, f64) {
 }
 
 /// The slope angle's axis, one of every map that has borders.
-const ALPHA: Param = Param::named("alpha_deg");
+const ALPHA: AxisParam = AxisParam::named("alpha_deg");
 
 /// The friction coefficient's axis: its border is the slip border.
-const MU: Param = Param::named("mu");
+const MU: AxisParam = AxisParam::named("mu");
 
 /// The plane of a map: α on one axis, `other` on the other, which the
 /// borders sample at [`CURVE_POINTS`] values from `lo` to `hi` (evenly in
 /// its logarithm when it spans two decades or more).
 struct Plane {
-    other: Param,
+    other: AxisParam,
     alpha_is_x: bool,
     lo: f64,
     hi: f64,
@@ -186,7 +188,7 @@ struct Plane {
 
 impl Plane {
     /// The plane of `x` and `y`, if one is α and the other a swept axis.
-    fn of(grid: &Grid, x: Param, y: Param) -> Option<Plane> {
+    fn of(grid: &Grid, x: AxisParam, y: AxisParam) -> Option<Plane> {
         let (other, alpha_is_x) = match (x, y) {
             (ALPHA, p) => (p, true),
             (p, ALPHA) => (p, false),
@@ -352,7 +354,7 @@ impl ModelBorders<'_> {
 /// Parameters off the plane take the values of the model's first grid point;
 /// `rows` supply the number of turns the turn models reached (for the
 /// early-turn hop angle).
-pub fn boundaries(grid: &Grid, rows: &[SweepRow], x: Param, y: Param) -> Vec<Boundary> {
+pub fn boundaries(grid: &Grid, rows: &[SweepRow], x: AxisParam, y: AxisParam) -> Vec<Boundary> {
     let mut out = Vec::new();
     let Some(plane) = Plane::of(grid, x, y) else {
         return out;

@@ -1,10 +1,9 @@
 //! One row of a sweep: a trajectory's parameters and its summary.
 
-use serde::{Deserialize, Serialize};
-
-use super::axis::Param;
+use super::axis::{AxisParam, AXES};
 use super::grid::Point;
 use crate::models::{run_warnings, warning_codes, CollisionModel, ModelKind};
+use crate::params::Settings;
 use crate::scenario::ScenarioFile;
 use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
 
@@ -12,39 +11,23 @@ use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
 /// swept or not, under the command line's names in snake case) and its
 /// summary. Results are empty when the run failed (`error` says why).
 ///
-/// A new result (such as the time of a first hop or slip) is one more field
-/// here and one more line in [`SweepRow::new`]; the CSV and Parquet schemas
-/// follow from the fields.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+/// The parameters' columns are the parameter table's: one per sweep axis
+/// ([`AxisParam::ALL`], the table's numeric rows with `sweep: true`), in
+/// [`SweepRow::params`], named by the row's key; a new axis is a new row of
+/// the table and nothing here. A new result (such as the time of a first
+/// hop or slip) is one more field here, its column in [`SweepRow::COLUMNS`]
+/// and in the serde impls (`row_serde.rs`), and one more line in
+/// [`SweepRow::new`].
+#[derive(Debug, Clone, PartialEq)]
 pub struct SweepRow {
     /// Index of the point in grid order, from 0.
     pub index: u64,
     /// The model.
     pub model: ModelKind,
-    /// Slope angle α, degrees.
-    pub alpha_deg: f64,
-    /// Snow depth b, m.
-    pub snow_depth: f64,
-    /// Initial radius r0, m.
-    pub r0: f64,
-    /// Gravitational acceleration g, m/s².
-    pub g: f64,
-    /// Density ρ, kg/m³.
-    pub density: f64,
-    /// Length l, m.
-    pub length: f64,
-    /// Initial speed v0, m/s.
-    pub v0: f64,
-    /// End time, s.
-    pub t_end: f64,
-    /// End distance, m (empty: none).
-    pub x_end: Option<f64>,
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance.
-    pub atol: f64,
-    /// Coefficient of static friction μ (empty: no slip check).
-    pub mu: Option<f64>,
+    /// The value of each axis, in [`AxisParam::ALL`] order (read them with
+    /// [`SweepRow::param_value`]); `None` for an optional one that is unset
+    /// (`x_end`, `mu`).
+    pub params: AxisValues,
     /// What the run does where N reaches 0.
     pub on_hop: OnHop,
     /// The collision law of the turn models.
@@ -76,54 +59,38 @@ pub struct SweepRow {
 }
 
 impl SweepRow {
-    /// The column names, in order: the field names (a test checks them
-    /// against the serialised header).
-    pub const COLUMNS: [&'static str; 24] = [
-        "index",
-        "model",
-        "alpha_deg",
-        "snow_depth",
-        "r0",
-        "g",
-        "density",
-        "length",
-        "v0",
-        "t_end",
-        "x_end",
-        "rtol",
-        "atol",
-        "mu",
-        "on_hop",
-        "collision",
-        "stop",
-        "t_s",
-        "x_m",
-        "v_m_s",
-        "a_over_g_sin_alpha",
-        "turns",
-        "error",
-        "warnings",
-    ];
+    /// The column names, in order: `index`, `model`, the axes' keys in
+    /// [`AxisParam::ALL`] order, then the choices and the results (a test
+    /// checks them against the serialised header).
+    pub const COLUMNS: [&'static str; COLUMN_COUNT] = {
+        let mut all = [""; COLUMN_COUNT];
+        all[0] = "index";
+        all[1] = "model";
+        let mut k = 0;
+        while k < AXES {
+            all[2 + k] = AxisParam::ALL[k].key_const();
+            k += 1;
+        }
+        let mut j = 0;
+        while j < TAIL.len() {
+            all[2 + AXES + j] = TAIL[j];
+            j += 1;
+        }
+        all
+    };
 
     /// The row of `point` with its parameters and no results.
     pub fn parameters(point: &Point) -> SweepRow {
-        let s = ScenarioFile::from(point.scenario);
+        let settings = Settings {
+            scenario: ScenarioFile::from(point.scenario),
+            options: point.options.clone(),
+            per_turn: false,
+        };
         let o = &point.options;
         SweepRow {
             index: point.index,
             model: point.model,
-            alpha_deg: s.alpha_deg,
-            snow_depth: s.snow_depth,
-            r0: s.r0,
-            g: s.g,
-            density: s.density,
-            length: s.length,
-            v0: s.v0,
-            t_end: o.t_end,
-            x_end: o.x_end,
-            rtol: o.tolerances.rtol,
-            atol: o.tolerances.atol,
-            mu: o.mu,
+            params: AxisParam::ALL.map(|p| p.get(&settings)),
             on_hop: o.on_hop,
             collision: o.collision,
             stop: None,
@@ -162,43 +129,16 @@ impl SweepRow {
 
 impl SweepRow {
     /// The value of parameter `p` in this row (NaN for an unset `x_end` or `mu`).
-    pub fn param(&self, p: Param) -> f64 {
+    pub fn param(&self, p: AxisParam) -> f64 {
         self.param_value(p).unwrap_or(f64::NAN)
     }
 
     /// The value of parameter `p` in this row; `None` for an unset `x_end`
     /// or `mu` (an empty cell). The writers of the CSV, Parquet and Python
-    /// columns go through this, axis by axis in [`Param::ALL`] order, which
-    /// is the columns' order.
-    pub fn param_value(&self, p: Param) -> Option<f64> {
-        // Each axis is a field of the row; the table names them.
-        const ALPHA_DEG: Param = Param::named("alpha_deg");
-        const SNOW_DEPTH: Param = Param::named("snow_depth");
-        const R0: Param = Param::named("r0");
-        const G: Param = Param::named("g");
-        const DENSITY: Param = Param::named("density");
-        const LENGTH: Param = Param::named("length");
-        const V0: Param = Param::named("v0");
-        const T_END: Param = Param::named("t_end");
-        const X_END: Param = Param::named("x_end");
-        const RTOL: Param = Param::named("rtol");
-        const ATOL: Param = Param::named("atol");
-        const MU: Param = Param::named("mu");
-        match p {
-            ALPHA_DEG => Some(self.alpha_deg),
-            SNOW_DEPTH => Some(self.snow_depth),
-            R0 => Some(self.r0),
-            G => Some(self.g),
-            DENSITY => Some(self.density),
-            LENGTH => Some(self.length),
-            V0 => Some(self.v0),
-            T_END => Some(self.t_end),
-            X_END => self.x_end,
-            RTOL => Some(self.rtol),
-            ATOL => Some(self.atol),
-            MU => self.mu,
-            _ => None,
-        }
+    /// columns go through this, axis by axis in [`AxisParam::ALL`] order,
+    /// which is the columns' order.
+    pub fn param_value(&self, p: AxisParam) -> Option<f64> {
+        self.params[p.axis_index()]
     }
 
     /// The numeric results, each with its column's name: empty (`None`)
@@ -254,6 +194,26 @@ pub fn point_warnings(point: &Point) -> Option<String> {
     warning_codes(&run_warnings(point.model, &point.scenario, &point.options))
 }
 
+/// The value of each sweep axis in a row, in [`AxisParam::ALL`] order.
+pub type AxisValues = [Option<f64>; AXES];
+
+/// The columns after the axes', in order.
+pub(super) const TAIL: [&str; 10] = [
+    "on_hop",
+    "collision",
+    "stop",
+    "t_s",
+    "x_m",
+    "v_m_s",
+    "a_over_g_sin_alpha",
+    "turns",
+    "error",
+    "warnings",
+];
+
+/// How many columns a row has: `index`, `model`, the axes, [`TAIL`].
+const COLUMN_COUNT: usize = 2 + AXES + TAIL.len();
+
 /// Full turns of a circular log that rolled `x` without slipping and grew
 /// from `r0` to `r` (eq. (8)): `⌊x/(π (r + r0))⌋`.
 pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
@@ -302,10 +262,7 @@ mod tests {
         assert!(error.contains("a_over_g_sin_alpha = -inf"), "{error}");
         assert!(failed.results().iter().all(|r| r.1.is_none()));
         assert_eq!((failed.stop, failed.turns), (None, None));
-        assert_eq!(
-            SweepRow::parameters(&point).alpha_deg.to_bits(),
-            failed.alpha_deg.to_bits()
-        );
+        assert_eq!(SweepRow::parameters(&point).params, failed.params);
         let fine = Sample {
             a_m_s2: -1.0,
             ..sample

@@ -46,6 +46,9 @@ pub enum StopReason {
     /// [`Losses::terminal_tol`](crate::Losses::terminal_tol) of the initial
     /// drive (`docs/snowball-and-losses.md` §2.2).
     Terminal,
+    /// An unwinding roll (b < 0) laid its layer down to its core: r reached
+    /// [`core_radius`](crate::ScenarioFile::core_radius) (`docs/unwinding.md`).
+    Unwound,
 }
 
 impl StopReason {
@@ -73,6 +76,7 @@ impl StopReason {
             StopReason::Terminal => {
                 "the acceleration fell below the terminal tolerance: terminal velocity reached"
             }
+            StopReason::Unwound => "the roll unwound down to its core (core_radius)",
         }
     }
 

@@ -17,7 +17,7 @@ use std::ops::Range;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Parser;
 use snowroll::params::Value;
-use snowroll::sweep::{Grid, Method, Param, SweepRow, Values};
+use snowroll::sweep::{AxisParam, Grid, Method, SweepRow, Values};
 use snowroll_io::VERSION;
 
 use super::sweep_csv::RowWriter;
@@ -192,7 +192,7 @@ impl Recorded {
         ];
         let choices = grid.choices();
         for p in sweep_axes() {
-            let text = match Param::from_key(p.key) {
+            let text = match AxisParam::from_key(p.key) {
                 Some(axis) => axis_text(grid, axis, p.default_value()),
                 None if p.key == "collision" => {
                     ids(choices.collision.iter().map(|c| c.id()).collect())
@@ -343,7 +343,7 @@ fn header_lines(input: &mut impl BufRead, shown: &str) -> Result<(Vec<String>, S
 
 /// The values of `axis` in `grid` as text, `start:end:count` for a range
 /// of several values; its default (from the table) when not swept.
-fn axis_text(grid: &Grid, axis: Param, default: Value) -> String {
+fn axis_text(grid: &Grid, axis: AxisParam, default: Value) -> String {
     match grid.axes().iter().find(|a| a.param == axis) {
         Some(a) => match &a.values {
             Values::Range {

@@ -244,7 +244,7 @@ pub(super) fn check_point(row: &SweepRow, grid: &Grid) -> Result<(), String> {
             text(&want.warnings),
         ));
     }
-    for p in Param::ALL {
+    for p in AxisParam::ALL {
         let (a, b) = (row.param_value(p), want.param_value(p));
         if a.map(f64::to_bits) != b.map(f64::to_bits) {
             let text = |v: Option<f64>| v.map_or("none".to_string(), |x| x.to_string());

@@ -5,7 +5,7 @@
 use super::super::ticks::AxisTicks;
 use super::super::Axis;
 use super::{Cell, Class, ColorBy, MapError};
-use snowroll::sweep::{Outcome, Param, SweepRow};
+use snowroll::sweep::{AxisParam, Outcome, SweepRow};
 
 /// Fill colours of the outcomes (colour-blind aware, stalls in shades of
 /// one hue by turn).
@@ -38,7 +38,7 @@ const SCALE: [(u8, u8, u8); 7] = [
 /// The axis of a parameter: label and unit of its row in the parameter
 /// table (`plot`), logarithmic when
 /// its values are positive and span two decades or more.
-pub(super) fn param_axis(p: Param, values: &[f64]) -> Axis {
+pub(super) fn param_axis(p: AxisParam, values: &[f64]) -> Axis {
     let (label, unit) = p.spec().plot;
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -192,8 +192,8 @@ pub(super) fn round_bins(lo: f64, hi: f64, most: usize) -> (f64, f64, usize) {
 pub(super) fn place_cells(
     rows: &[SweepRow],
     class_of_row: Vec<usize>,
-    (x, xs, xe): (Param, &[f64], &[f64]),
-    (y, ys, ye): (Param, &[f64], &[f64]),
+    (x, xs, xe): (AxisParam, &[f64], &[f64]),
+    (y, ys, ye): (AxisParam, &[f64], &[f64]),
 ) -> Result<Vec<Cell>, MapError> {
     let find = |v: &[f64], t: f64| v.iter().position(|u| u.to_bits() == t.to_bits());
     let mut owner: Vec<Option<u64>> = vec![None; xs.len() * ys.len()];

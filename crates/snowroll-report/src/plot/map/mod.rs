@@ -10,7 +10,7 @@ mod draw;
 
 use super::{Axis, Chart, Scale, Series, Style};
 use cells::{classes_of, distinct, edges, param_axis, place_cells};
-use snowroll::sweep::{boundaries, Grid, Param, SweepRow};
+use snowroll::sweep::{boundaries, AxisParam, Grid, SweepRow};
 
 /// What colours the cells.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -99,10 +99,10 @@ impl ColorBy {
 pub enum MapError {
     /// The two axes are the same parameter.
     #[error("the map needs two different parameters, got {0} twice")]
-    SameAxis(Param),
+    SameAxis(AxisParam),
     /// An axis is not swept with at least two values.
     #[error("{0} is not swept over at least two values: a map needs two such axes")]
-    NotSwept(Param),
+    NotSwept(AxisParam),
     /// Two rows fall in the same cell.
     #[error(
         "rows {first} and {second} fall in the same cell of the map: sweep only the two plotted \
@@ -122,9 +122,9 @@ pub enum MapError {
     )]
     NotAPlane {
         /// The plotted parameters.
-        x: Param,
+        x: AxisParam,
         /// The plotted parameters.
-        y: Param,
+        y: AxisParam,
         /// Points of the grid.
         points: u64,
         /// Cells of the plane.
@@ -182,11 +182,11 @@ impl RegimeMap {
     ///
     /// # Errors
     /// [`MapError::SameAxis`], [`MapError::NotSwept`], [`MapError::NotAPlane`].
-    pub fn check_plane(grid: &Grid, x: Param, y: Param) -> Result<(), MapError> {
+    pub fn check_plane(grid: &Grid, x: AxisParam, y: AxisParam) -> Result<(), MapError> {
         if x == y {
             return Err(MapError::SameAxis(x));
         }
-        let count = |p: Param| {
+        let count = |p: AxisParam| {
             grid.axes()
                 .iter()
                 .find(|a| a.param == p)
@@ -218,8 +218,8 @@ impl RegimeMap {
     pub fn from_rows(
         grid: &Grid,
         rows: &[SweepRow],
-        x: Param,
-        y: Param,
+        x: AxisParam,
+        y: AxisParam,
         color: ColorBy,
     ) -> Result<RegimeMap, MapError> {
         if x == y {
@@ -290,8 +290,8 @@ impl RegimeMap {
 fn borders_inside(
     grid: &Grid,
     rows: &[SweepRow],
-    (x, xe): (Param, &[f64]),
-    (y, ye): (Param, &[f64]),
+    (x, xe): (AxisParam, &[f64]),
+    (y, ye): (AxisParam, &[f64]),
 ) -> Vec<(String, Vec<(f64, f64)>)> {
     let (nx, ny) = (xe.len() - 1, ye.len() - 1);
     let (lo_x, hi_x) = (xe[0].min(xe[nx]), xe[0].max(xe[nx]));

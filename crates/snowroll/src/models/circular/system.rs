@@ -18,6 +18,7 @@ const EVENT_DISTANCE: usize = 1;
 const EVENT_HOP: usize = 2;
 const EVENT_SLIP: usize = 3;
 const EVENT_TERMINAL: usize = 4;
+const EVENT_UNWOUND: usize = 5;
 
 /// The ODE `x' = v, v' = a(x, v)` of one scenario, with the events stall
 /// (v = 0), end distance, hop (N = 0), slip (|F| = μN), `docs/contact-forces.md`
@@ -41,6 +42,8 @@ pub(super) struct CircularSystem<const N: usize> {
     /// `tol × (G − c_rr C)/(1 + k)`, m/s²: the terminal stop's threshold on
     /// |a|, armed only where a terminal velocity exists (§2.2).
     terminal_accel: Option<f64>,
+    /// Where an unwinding roll reaches its core, m (`docs/unwinding.md`).
+    unwound_at: Option<f64>,
 }
 
 impl<const N: usize> CircularSystem<N> {
@@ -65,6 +68,7 @@ impl<const N: usize> CircularSystem<N> {
             mu: opts.mu,
             stop_on_hop: opts.on_hop == OnHop::Stop,
             terminal_accel,
+            unwound_at: scenario.unwound_at().filter(|_| coeffs.accretes),
         }
     }
 
@@ -123,7 +127,7 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
     }
 
     fn event_count(&self) -> usize {
-        5
+        6
     }
 
     fn event(&self, index: usize, _t: f64, y: &[f64; N]) -> f64 {
@@ -139,9 +143,13 @@ impl<const N: usize> OdeSystem<N> for CircularSystem<N> {
                 Some(mu) => self.forces(y).slip_margin(mu),
                 None => -1.0,
             },
-            _ => match self.terminal_accel {
+            EVENT_TERMINAL => match self.terminal_accel {
                 Some(tol) => self.accel.at(y[0], y[1]).abs() - tol,
                 None => 1.0,
+            },
+            _ => match self.unwound_at {
+                Some(x_core) => y[0] - x_core,
+                None => -1.0,
             },
         }
     }
@@ -202,6 +210,7 @@ impl<const N: usize> OdeModel<N> for CircularSystem<N> {
             EVENT_HOP => StopReason::Hop,
             EVENT_SLIP => StopReason::Slip,
             EVENT_TERMINAL => StopReason::Terminal,
+            EVENT_UNWOUND => StopReason::Unwound,
             _ => StopReason::Stalled,
         }
     }

@@ -32,6 +32,13 @@ pub fn circular_end(
     x_end: Option<f64>,
     contact: ContactCheck,
 ) -> Option<FastEnd> {
+    // An unwinding roll (b < 0, `docs/unwinding.md`): u(x) of (F1) holds
+    // while s > 0, but the time's panels and series, and the stall test,
+    // are built for a cross-section that grows; its runs take the ODE path,
+    // which also stops them at the core.
+    if c.accretes && scenario.unwinds() {
+        return None;
+    }
     let u = SpeedSquared::new(c, scenario, contact)?;
     if !u.never_stalls() {
         return None;

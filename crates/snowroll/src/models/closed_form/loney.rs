@@ -226,7 +226,10 @@ impl Model for LoneyModel {
         sink: &mut dyn SampleSink,
     ) -> Result<RunEnd, SimError> {
         self.check(scenario, opts)?;
-        if opts.losses.records_ledger() {
+        // With the ledger, or for an unwinding roll (b < 0: the clock's
+        // panels and series assume a growing cross-section, and the run must
+        // stop at the core), the ODE of eq. (4).
+        if opts.losses.records_ledger() || scenario.unwinds() {
             return CircularModel::new(Derivation::TorqueAboutCentre)
                 .simulate_into(scenario, opts, sink);
         }

@@ -185,6 +185,25 @@ pub(crate) fn check_turn_losses(kind: ModelKind, opts: &SimOptions) -> Result<()
     })
 }
 
+/// The turn models refuse the unwinding roll (b < 0, `docs/unwinding.md`):
+/// their log is a circle of radius r on a layer it climbs at the end of each
+/// turn (eqs. (37)–(76), the collision of eqs. (81)–(89)), and a roll that
+/// lays its layer down under itself meets no such step.
+pub(crate) fn check_turn_unwinding(kind: ModelKind, scenario: &Scenario) -> Result<(), ParamError> {
+    if !scenario.unwinds() {
+        return Ok(());
+    }
+    Err(ParamError::Unsupported {
+        model: kind.id(),
+        what: "a negative --snow-depth (an unwinding roll)",
+        reason: "the turn models follow a log that climbs a step of height b onto the new layer \
+                 at the end of each turn (eqs. (37)-(76), the collision of eqs. (81)-(89)); an \
+                 unwinding roll lays its layer down under itself and meets no step, so their \
+                 geometry does not describe it (docs/unwinding.md). Use a circular model \
+                 (energy-thin, energy, torque-cm, ...)",
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

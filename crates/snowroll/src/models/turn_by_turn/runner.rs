@@ -153,6 +153,7 @@ impl Model for TurnModel {
     fn check(&self, scenario: &Scenario, opts: &SimOptions) -> Result<(), SimError> {
         opts.validate()?;
         self.kind().check_shape(scenario)?;
+        super::check_turn_unwinding(self.kind(), scenario)?;
         check_turn_scale(scenario, opts)?;
         check_turn_losses(self.kind(), opts)?;
         crate::models::check_tolerances(self.kind(), scenario, opts)?;

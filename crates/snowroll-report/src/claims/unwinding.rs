@@ -1,0 +1,97 @@
+//! The unwinding roll (issue 35, `docs/unwinding.md`): a negative snow
+//! depth lays a layer down; on a level floor the energy balance of eq. (15)
+//! is the textbook unrolling carpet, and the torque analyses do not start.
+
+use std::f64::consts::PI;
+
+use super::{holds_if, Finding, Lab};
+use crate::{Criterion, Tolerance};
+use snowroll::error::SimError;
+use snowroll::models::ModelKind;
+use snowroll::scenario::{Scenario, ScenarioFile};
+use snowroll::trajectory::{Sampling, SimOptions, StopReason};
+
+/// `unwinding-textbook-speed`: eq. (15) with b < 0 against the textbook.
+pub(super) const UNWINDING_SPEED: Criterion = Criterion {
+    quantity: "|v²/(4g(R³ − r³)/(3r²)) − 1| of energy-thin at r = 0.09, 0.07, 0.05 (R/2, where the textbook gives 14gR/3) and 0.03 m",
+    tolerance: Tolerance::Relative { value: 1e-9 },
+    reason: "the runs are integrated at rtol 1e-12 on a smooth right-hand side (DOP853 keeps a few times rtol); the issue asks 1e-9",
+};
+
+/// The roll of the check: R = 10 cm, a layer of 0.1 mm, core 2 cm, level floor.
+const R: f64 = 0.1;
+const B: f64 = -1e-4;
+const CORE: f64 = 0.02;
+
+/// The radii at which the speed is compared.
+const RADII: [f64; 4] = [0.09, 0.07, 0.05, 0.03];
+
+/// The check: energy-thin's speed on its way to the core against the
+/// textbook energy balance (typed here: M0 g R = M g r + (3/4) M v², M ∝ r²),
+/// and eqs. (4), (6) stopped at the start (`does-not-start`).
+pub(super) fn unwinding_textbook_speed(lab: &Lab) -> Result<Finding, SimError> {
+    let g = lab.scenario().gravity();
+    let s = Scenario::new(ScenarioFile {
+        alpha_deg: 0.0,
+        snow_depth: B,
+        r0: R,
+        g,
+        core_radius: Some(CORE),
+        ..ScenarioFile::default()
+    })?;
+    let mut worst: f64 = 0.0;
+    let mut numbers = Vec::new();
+    let mut at_half = f64::NAN;
+    for r in RADII {
+        let mut opts = SimOptions {
+            t_end: 1e6,
+            x_end: Some(PI * (r * r - R * R) / B),
+            sampling: Sampling::Ends,
+            ..SimOptions::default()
+        };
+        opts.tolerances.rtol = 1e-12;
+        opts.tolerances.atol = 1e-14;
+        let traj = lab.run(ModelKind::EnergyThin, &s, &opts)?;
+        let v = traj.stop.v_m_s;
+        let want = 4.0 * g * (R.powi(3) - r.powi(3)) / (3.0 * r * r);
+        let dev = if traj.stop.reason == StopReason::Distance {
+            (v * v / want - 1.0).abs()
+        } else {
+            f64::INFINITY
+        };
+        worst = worst.max(dev);
+        numbers.extend([v, want]);
+        if r == R / 2.0 {
+            at_half = v;
+        }
+    }
+    let opts = SimOptions {
+        t_end: 10.0,
+        sampling: Sampling::Ends,
+        ..SimOptions::default()
+    };
+    let mut still = Vec::new();
+    for kind in [ModelKind::TorqueCm, ModelKind::TorqueContact] {
+        let traj = lab.run(kind, &s, &opts)?;
+        still.push((kind, traj.stop.reason == StopReason::DoesNotStart));
+    }
+    let torque_still = still.iter().all(|(_, s)| *s);
+    let ok = worst.is_finite() && UNWINDING_SPEED.accepts_deviation(worst) && torque_still;
+    Ok(Finding {
+        headline: None,
+        measured: format!(
+            "energy-thin at r = R/2: v = {at_half:.12} m/s, √(14gR/3) = {:.12} m/s; torque-cm and torque-contact {}",
+            (14.0 * g * R / 3.0).sqrt(),
+            if torque_still {
+                "do not start"
+            } else {
+                "START (a wrong torque balance)"
+            }
+        ),
+        verdict: holds_if(ok, &numbers),
+        evidence: format!(
+            "largest |v²/v²_textbook − 1| = {worst:.2e} ({}) over r = 0.09 … 0.03 m; R = {R} m, b = {B} m, core {CORE} m, α = 0 (synthetic runs of the program)",
+            UNWINDING_SPEED.tolerance
+        ),
+    })
+}
