@@ -37,7 +37,9 @@ fn main() -> Result<(), Box<dyn Error>> {
         r0: 0.1,
         ..ScenarioFile::default()
     };
-    let t: Vec<f64> = (1..=POINTS).map(|i| 5.0 * i as f64 / POINTS as f64).collect();
+    let t: Vec<f64> = (1..=POINTS)
+        .map(|i| 5.0 * i as f64 / POINTS as f64)
+        .collect();
     let opts = SimOptions {
         t_end: 5.0,
         sampling: Sampling::Times(t.clone()),

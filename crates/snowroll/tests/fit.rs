@@ -272,3 +272,57 @@ fn bad_tracks_and_free_keys_are_refused() {
         assert!(err.to_string().contains(word), "{free}: {err}");
     }
 }
+
+/// The unwinding roll (b < 0, a core): eq. (4) still depends on r0 and b
+/// only through πr0²/b, now negative; the fit names r0^2/snow_depth and
+/// gives its value, −r0²/|b| (−0.0036/1e-4 = −36 m here), within 5 of its
+/// standard errors. The energy models (which start on a level floor) fit
+/// |b| back on the level floor with r0 known.
+#[test]
+fn the_unwinding_roll_fits_and_names_its_combination() {
+    let roll = |b: f64| ScenarioFile {
+        alpha_deg: 5.0,
+        snow_depth: b,
+        r0: 0.06,
+        core_radius: Some(0.02),
+        ..ScenarioFile::default()
+    };
+    let t = times(60, 2.0);
+    let x = noisy(&positions(ModelKind::TorqueCm, &roll(-1e-4), &t), 0.002, 21);
+    let track = Track::new(t.clone(), x).unwrap();
+    let start = ScenarioFile {
+        r0: 0.05,
+        ..roll(-1.5e-4)
+    };
+    let f = &fit(
+        &track,
+        &[ModelKind::TorqueCm],
+        &spec(start, &["r0", "snow_depth"]),
+    )
+    .unwrap()[0];
+    assert_eq!(f.unseparated.len(), 1, "{:?}", f.unseparated);
+    let u = &f.unseparated[0];
+    assert!(u.text.contains("r0^2/snow_depth"), "{}", u.text);
+    let (value, rel) = (u.value.unwrap(), u.rel_stderr.unwrap());
+    assert!((value / -36.0 - 1.0).abs() < 5.0 * rel, "{value} ± {rel}");
+
+    let level = ScenarioFile {
+        alpha_deg: 0.0,
+        ..roll(-1e-4)
+    };
+    let x = noisy(&positions(ModelKind::EnergyThin, &level, &t), 0.002, 22);
+    let track = Track::new(t, x).unwrap();
+    let start = ScenarioFile {
+        snow_depth: -2e-4,
+        ..level
+    };
+    let f = &fit(
+        &track,
+        &[ModelKind::EnergyThin],
+        &spec(start, &["snow_depth"]),
+    )
+    .unwrap()[0];
+    assert!(f.converged, "{}", f.reason);
+    let b = &f.params[0];
+    assert!((b.value + 1e-4).abs() < 5.0 * b.stderr.unwrap(), "{b:?}");
+}

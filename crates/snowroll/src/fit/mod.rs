@@ -263,7 +263,9 @@ fn plan(track: &Track, spec: &FitSpec) -> Result<Plan, FitError> {
                     }
                 };
                 let b = bounds::Bounds::of(p);
-                let rel = b.lo >= 0.0;
+                // Measured relative to its size (so that a combination such
+                // as r0^2/snow_depth can be named) unless it starts at 0.
+                let rel = s != 0.0;
                 (s, b, if s != 0.0 { s.abs() } else { 1e-2 }, rel)
             }
             Free::T0 => (spec.t0.unwrap_or(t[0]), bounds::Bounds::ALL, span_t, false),

@@ -89,8 +89,8 @@ pub(crate) fn summarise(
     // Columns in units of each parameter's size: u_j = δp_j / c_j.
     let c: Vec<f64> = (0..n)
         .map(|j| {
-            if relative[j] && p[j] > 0.0 {
-                p[j]
+            if relative[j] && p[j] != 0.0 {
+                p[j].abs()
             } else {
                 scale[j]
             }
@@ -216,10 +216,12 @@ fn name(keys: &[String], p: &[f64], relative: &[bool], v: &[f64], cov_u: &Sym) -
         };
     }
     if let [i, j] = involved[..] {
-        if relative[i] && relative[j] && p[i] > 0.0 && p[j] > 0.0 {
-            // Along v, ln p_i and ln p_j move as v_i : v_j, so
-            // p_i^{v_j} p_j^{-v_i} stays fixed: that is what the data measure.
-            let (mut wi, mut wj) = (v[j], -v[i]);
+        if relative[i] && relative[j] && p[i] != 0.0 && p[j] != 0.0 {
+            // Along v (u = δp/|p|), ln|p_i| and ln|p_j| move as
+            // v_i sgn p_i : v_j sgn p_j, so p_i^{w_i} p_j^{w_j} with
+            // w = (v_j sgn p_j, −v_i sgn p_i) stays fixed: that is what the
+            // data measure.
+            let (mut wi, mut wj) = (v[j] * p[j].signum(), -v[i] * p[i].signum());
             let least = wi.abs().min(wj.abs());
             wi /= least;
             wj /= least;
@@ -227,11 +229,11 @@ fn name(keys: &[String], p: &[f64], relative: &[bool], v: &[f64], cov_u: &Sym) -
                 wi = -wi;
                 wj = -wj;
             }
-            let value = p[i].powf(wi) * p[j].powf(wj);
+            let value = power(p[i], wi) * power(p[j], wj);
             let mut var = 0.0;
             for (a, wa) in [(i, wi), (j, wj)] {
                 for (b, wb) in [(i, wi), (j, wj)] {
-                    var += wa * wb * cov_u.at(a, b);
+                    var += wa * wb * p[a].signum() * p[b].signum() * cov_u.at(a, b);
                 }
             }
             let text = format!(
@@ -265,6 +267,16 @@ fn name(keys: &[String], p: &[f64], relative: &[bool], v: &[f64], cov_u: &Sym) -
         ),
         value: None,
         rel_stderr: None,
+    }
+}
+
+/// `x^w`: by whole powers where w is a whole number to 1e-6 (so that a
+/// negative b keeps its sign), else of |x|.
+fn power(x: f64, w: f64) -> f64 {
+    if (w - w.round()).abs() < 1e-6 && w.abs() < 64.0 {
+        x.powi(w.round() as i32)
+    } else {
+        x.abs().powf(w)
     }
 }
 
