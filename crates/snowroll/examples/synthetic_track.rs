@@ -7,7 +7,7 @@
 //!
 //! ```text
 //! cargo run --release -p snowroll --example synthetic_track -- \
-//!     [--model energy] [--alpha-deg 30] [--snow-depth 0.01] [--r0 0.1] \
+//!     [--model energy] [--alpha-deg 30] [--snow-depth 0.01] [--r0 0.1] [--core-radius M] \
 //!     [--fps 30] [--t-end 3] [--t0 0.2] [--x0 0.05] [--sigma 0.002] [--seed 1]
 //! ```
 //! Before t0 the body is at rest at x0 (the frames before it is let go).
@@ -57,6 +57,7 @@ fn parse() -> Result<Args, Box<dyn Error>> {
             "--alpha-deg" => a.scenario.alpha_deg = real()?,
             "--snow-depth" => a.scenario.snow_depth = real()?,
             "--r0" => a.scenario.r0 = real()?,
+            "--core-radius" => a.scenario.core_radius = Some(real()?),
             "--fps" => a.fps = real()?,
             "--t-end" => a.t_end = real()?,
             "--t0" => a.t0 = real()?,
@@ -97,12 +98,15 @@ fn main() -> Result<(), Box<dyn Error>> {
         .collect();
     let x = noisy(&exact, a.sigma, a.seed);
     println!(
-        "roll (SYNTHETIC: snowroll {} {}, alpha_deg {}, snow_depth {}, r0 {}, t0 {}, x0 {}, noise sigma {} m, seed {}; not a measurement)",
+        "roll (SYNTHETIC: snowroll {} {}, alpha_deg {}, snow_depth {}, r0 {}{}, t0 {}, x0 {}, noise sigma {} m, seed {}; not a measurement)",
         a.model.id(),
         a.model.equation(),
         a.scenario.alpha_deg,
         a.scenario.snow_depth,
         a.scenario.r0,
+        a.scenario
+            .core_radius
+            .map_or(String::new(), |c| format!(", core_radius {c}")),
         a.t0,
         a.x0,
         a.sigma,

@@ -54,6 +54,9 @@ const STEP_TOL: f64 = 1e-8;
 /// moves no parameter by more than [`LOOSE_STEP_TOL`].
 const SUM_TOL: f64 = 1e-12;
 const LOOSE_STEP_TOL: f64 = 1e-5;
+/// Negligible steps while an unlimited Gauss–Newton step would lower S by
+/// more than this fraction of it: the search is stuck, not converged.
+const STUCK: f64 = 1e-4;
 /// Margin inside an open end of a range, relative to the end.
 const MARGIN: f64 = 1e-9;
 
@@ -156,19 +159,28 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
             .map(|j| taken[j].abs() / (p[j].abs().max(problem.typical[j])))
             .fold(0.0_f64, f64::max);
         let gain = (s - s_new) / s;
+        // What a Gauss–Newton step from here promised: about nothing at a
+        // minimum; much when the steps were cut short (λ raised) by trial
+        // points the model refused, at a limit of its range.
+        let promised = gauss_newton_gain(&a, &g, &diag) / s;
         p = trial;
         std::mem::swap(&mut r, &mut trial_r);
         s = s_new;
-        let converged = moved <= STEP_TOL || (gain <= SUM_TOL && moved <= LOOSE_STEP_TOL);
-        if converged || iterations >= problem.max_iterations {
+        let small = moved <= STEP_TOL || (gain <= SUM_TOL && moved <= LOOSE_STEP_TOL);
+        let stuck = small && promised > STUCK;
+        if small || iterations >= problem.max_iterations {
             let jac = jacobian(problem, f, &p, &r)?;
-            let reason = if converged {
+            let reason = if stuck {
+                "stuck: the steps became negligible while a step without limits would still lower \
+                 the residuals much (the model refuses the parameters just beyond, e.g. a depth \
+                 reaching 0 or a radius its limit): start nearer the answer"
+            } else if small {
                 "the steps became negligible"
             } else {
                 "reached the most iterations allowed"
             };
             return Ok(plateau(
-                done(p, r, jac, iterations, converged, reason),
+                done(p, r, jac, iterations, small && !stuck, reason),
                 moving,
             ));
         }

@@ -120,7 +120,7 @@ pub struct ModelFit {
     pub aic: f64,
     /// The Bayesian (Schwarz) criterion.
     pub bic: f64,
-    /// 1 for the best model by AIC.
+    /// 1 for the best model: converged fits first, then by AIC.
     pub rank: usize,
     /// Whether the search converged.
     pub converged: bool,
@@ -268,7 +268,7 @@ fn plan(track: &Track, spec: &FitSpec) -> Result<Plan, FitError> {
                 let rel = s != 0.0;
                 (s, b, if s != 0.0 { s.abs() } else { 1e-2 }, rel)
             }
-            Free::T0 => (spec.t0.unwrap_or(t[0]), bounds::Bounds::ALL, span_t, false),
+            Free::T0 => (spec.t0.unwrap_or_else(|| release_time(track)), bounds::Bounds::ALL, span_t, false),
             Free::X0 => (spec.x0.unwrap_or(x[0]), bounds::Bounds::ALL, span_x, false),
         };
         start.push(s);
@@ -293,6 +293,25 @@ fn plan(track: &Track, spec: &FitSpec) -> Result<Plan, FitError> {
     })
 }
 
+/// Where a free t0 starts when none is given: the release time of a body
+/// let go from rest at x0 = the first distance with a constant
+/// acceleration through the middle point and the last (√(x − x0) is then
+/// linear in t); the first data time where that gives nothing sensible
+/// (no motion, or a time outside [first − span, middle)).
+fn release_time(track: &Track) -> f64 {
+    let (t, x) = (track.t(), track.x());
+    let (mid, last) = (t.len() / 2, t.len() - 1);
+    let (a, b) = ((x[mid] - x[0]).abs().sqrt(), (x[last] - x[0]).abs().sqrt());
+    let span = t[last] - t[0];
+    if b > a && a > 0.0 {
+        let t0 = t[mid] - (t[last] - t[mid]) * a / (b - a);
+        if t0 >= t[0] - span && t0 < t[mid] {
+            return t0;
+        }
+    }
+    t[0]
+}
+
 /// The settings, t0 and x0 at the parameters `p`.
 fn at(
     plan: &Plan,
@@ -315,8 +334,9 @@ fn at(
     Ok((settings, t0, x0))
 }
 
-/// Fits each of `models` to `track`, and ranks the fits by AIC (1 = best;
-/// equal AIC keeps the order given). The result is sorted by rank.
+/// Fits each of `models` to `track`, and ranks the fits: those that
+/// converged first, each group by AIC (1 = best; equal AIC keeps the order
+/// given). The result is sorted by rank.
 ///
 /// # Errors
 /// [`FitError::Free`] for a free parameter that cannot be one,
@@ -328,8 +348,15 @@ pub fn fit(track: &Track, models: &[ModelKind], spec: &FitSpec) -> Result<Vec<Mo
         .iter()
         .map(|&m| fit_one(track, m, spec, &plan))
         .collect::<Result<Vec<_>, _>>()?;
+    // Converged fits first, each group by AIC, equal ones in the order given.
     let mut order: Vec<usize> = (0..fits.len()).collect();
-    order.sort_by(|&i, &j| fits[i].aic.total_cmp(&fits[j].aic).then(i.cmp(&j)));
+    order.sort_by(|&i, &j| {
+        fits[j]
+            .converged
+            .cmp(&fits[i].converged)
+            .then(fits[i].aic.total_cmp(&fits[j].aic))
+            .then(i.cmp(&j))
+    });
     for (rank, &i) in order.iter().enumerate() {
         fits[i].rank = rank + 1;
     }

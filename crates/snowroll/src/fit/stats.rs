@@ -119,12 +119,15 @@ pub(crate) fn summarise(
     let (values, vectors) = norm.eigen();
     let mut cov_u = Sym::zeros(n);
     let mut loose_share = vec![0.0; n];
-    let mut unseparated: Vec<Vec<f64>> = Vec::new();
+    // Each direction the data do not fix: in u (for the combination's
+    // powers) and its unit vector in the normalised coordinates (for which
+    // parameters take part).
+    let mut unseparated: Vec<(Vec<f64>, Vec<f64>)> = Vec::new();
     for j in (0..n).filter(|j| !live.contains(j)) {
         loose_share[j] = 1.0;
         let mut v = vec![0.0; n];
         v[j] = 1.0;
-        unseparated.push(v);
+        unseparated.push((v.clone(), v));
     }
     let mut rank = 0;
     for (lambda, w) in values.iter().zip(&vectors) {
@@ -153,11 +156,12 @@ pub(crate) fn summarise(
                 }
             }
         } else {
-            let len: f64 = v.iter().map(|x| x * x).sum::<f64>().sqrt();
-            for j in 0..n {
-                loose_share[j] += (v[j] / len).powi(2);
+            let mut unit = vec![0.0; n];
+            for (i, &j) in live.iter().enumerate() {
+                unit[j] = w[i];
+                loose_share[j] += w[i] * w[i];
             }
-            unseparated.push(v);
+            unseparated.push((v, unit));
         }
     }
     let stderr: Vec<Option<f64>> = (0..n)
@@ -181,8 +185,8 @@ pub(crate) fn summarise(
         _ => 1.0,
     };
     let mut named: Vec<Unseparated> = Vec::new();
-    for v in &unseparated {
-        let u = name(keys, p, relative, v, &cov_u);
+    for (v, unit) in &unseparated {
+        let u = name(keys, p, relative, v, unit, &cov_u);
         if !named.iter().any(|w| w.text == u.text) {
             named.push(u);
         }
@@ -198,11 +202,16 @@ pub(crate) fn summarise(
 }
 
 /// The combination along `v` in words (see [`Unseparated::text`]).
-fn name(keys: &[String], p: &[f64], relative: &[bool], v: &[f64], cov_u: &Sym) -> Unseparated {
+fn name(
+    keys: &[String],
+    p: &[f64],
+    relative: &[bool],
+    v: &[f64],
+    unit: &[f64],
+    cov_u: &Sym,
+) -> Unseparated {
     let big = v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
-    let involved: Vec<usize> = (0..v.len())
-        .filter(|&j| v[j].abs() >= SHARE * big)
-        .collect();
+    let involved: Vec<usize> = (0..v.len()).filter(|&j| unit[j].abs() >= SHARE).collect();
     let names: Vec<String> = involved.iter().map(|&j| keys[j].clone()).collect();
     if let [j] = involved[..] {
         return Unseparated {
@@ -253,8 +262,8 @@ fn name(keys: &[String], p: &[f64], relative: &[bool], v: &[f64], cov_u: &Sym) -
     let terms: Vec<String> = involved
         .iter()
         .map(|&j| {
-            let unit = if relative[j] { " (relative)" } else { "" };
-            format!("{:+.2} {}{unit}", v[j] / big, keys[j])
+            let tag = if relative[j] { " (relative)" } else { "" };
+            format!("{:+.2} {}{tag}", v[j] / big, keys[j])
         })
         .collect();
     Unseparated {
