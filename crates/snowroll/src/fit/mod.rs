@@ -268,7 +268,12 @@ fn plan(track: &Track, spec: &FitSpec) -> Result<Plan, FitError> {
                 let rel = s != 0.0;
                 (s, b, if s != 0.0 { s.abs() } else { 1e-2 }, rel)
             }
-            Free::T0 => (spec.t0.unwrap_or_else(|| release_time(track)), bounds::Bounds::ALL, span_t, false),
+            Free::T0 => (
+                spec.t0.unwrap_or_else(|| release_time(track)),
+                bounds::Bounds::ALL,
+                span_t,
+                false,
+            ),
             Free::X0 => (spec.x0.unwrap_or(x[0]), bounds::Bounds::ALL, span_x, false),
         };
         start.push(s);
