@@ -18,6 +18,7 @@ use snowroll::{Losses, Settings, TurnMethod};
 
 mod error;
 mod finite;
+pub mod fit_record;
 mod ledger;
 pub mod measured;
 pub mod notes;

@@ -29,7 +29,7 @@ pub struct FitArgs {
     #[arg(long, value_name = "ID[,ID...]", ignore_case = true)]
     pub model: Option<ModelList>,
 
-    /// The parameters to fit, KEY[,KEY...]: any real parameter of the scenario or the losses (alpha_deg, snow_depth, r0, g, density, length, v0, drag_coefficient, ...; the long flag's name in snake case), and t0 (s, the time the body is let go, on the data's clock) and x0 (m, where it is then, on the data's ruler). Each starts from its flag's value (or the config's, or the default); the others stay fixed [default: snow_depth,t0]
+    /// The parameters to fit, KEY[,KEY...]: any real parameter of the scenario or the losses (alpha_deg, snow_depth, r0, g, density, length, v0, drag_coefficient, ...; the long flag's name in snake case), and t0 (s, the time the body is let go, on the data's clock) and x0 (m, where it is then, on the data's ruler). Each starts from its flag's value (or the config's, or the default); the others stay fixed [default: snow_depth,t0,x0]
     #[arg(long, value_name = "KEY[,KEY...]", value_delimiter = ',')]
     pub free: Option<Vec<String>>,
 

@@ -62,7 +62,7 @@ pub fn run(args: FitArgs) -> Result<()> {
         free: args
             .free
             .clone()
-            .unwrap_or_else(|| vec!["snow_depth".into(), fit::START_TIME.into()]),
+            .unwrap_or_else(|| fit::DEFAULT_FREE.map(String::from).to_vec()),
         t0: args.t0,
         x0: args.x0,
         max_iterations: match args.max_iterations {

@@ -4,22 +4,14 @@
 //! give, a condition number of a parameter without effect).
 
 use anyhow::Result;
-use serde_json::{json, Map, Value};
+use serde_json::{json, Value};
 use snowroll::fit::{FitSpec, ModelFit};
 use snowroll::Scenario;
+use snowroll_io::fit_record::{finite_or_null as num, fit_record};
 use snowroll_io::measured::MeasuredTrack;
 use snowroll_io::{RunParams, VERSION};
 
 use super::fit::describe;
-
-/// `x` as a JSON number, or `null` when not finite.
-fn num(x: f64) -> Value {
-    if x.is_finite() {
-        json!(x)
-    } else {
-        Value::Null
-    }
-}
 
 /// `x` to `digits` significant digits, as people read it.
 fn sig(x: f64, digits: usize) -> String {
@@ -49,7 +41,7 @@ pub fn json(
         .map(|s| serde_json::to_value(RunParams::new(&s, &spec.settings.options)))
         .ok()
         .transpose()?;
-    let fits: Vec<Value> = fits.iter().map(fit_json).collect();
+    let fits: Vec<Value> = fits.iter().map(fit_record).collect();
     let doc = json!({
         "version": VERSION,
         "data": {
@@ -65,56 +57,6 @@ pub fn json(
         "fits": fits,
     });
     Ok(serde_json::to_string_pretty(&doc)? + "\n")
-}
-
-fn fit_json(f: &ModelFit) -> Value {
-    let mut params = Map::new();
-    for p in &f.params {
-        params.insert(
-            p.key.clone(),
-            json!({
-                "value": num(p.value),
-                "stderr": p.stderr.map_or(Value::Null, num),
-                "unit": p.unit,
-                "start": num(p.start),
-            }),
-        );
-    }
-    let mut correlations = Map::new();
-    for (i, a) in f.params.iter().enumerate() {
-        for (j, b) in f.params.iter().enumerate().skip(i + 1) {
-            let r = f.correlations[i][j].map_or(Value::Null, num);
-            correlations.insert(format!("{},{}", a.key, b.key), r);
-        }
-    }
-    let unseparated: Vec<Value> = f
-        .unseparated
-        .iter()
-        .map(|u| {
-            json!({
-                "keys": u.keys,
-                "text": u.text,
-                "value": u.value.map_or(Value::Null, num),
-                "rel_stderr": u.rel_stderr.map_or(Value::Null, num),
-            })
-        })
-        .collect();
-    json!({
-        "model": f.model.id(),
-        "equation": f.model.equation(),
-        "params": params,
-        "correlations": correlations,
-        "unseparated": unseparated,
-        "rms_m": num(f.rms_m),
-        "aic": num(f.aic),
-        "bic": num(f.bic),
-        "rank": f.rank,
-        "converged": f.converged,
-        "reason": f.reason,
-        "iterations": f.iterations,
-        "directions_fixed": f.rank_params,
-        "condition": num(f.condition),
-    })
 }
 
 /// The text report.

@@ -38,6 +38,10 @@ pub use track::{Track, MIN_POINTS};
 pub const START_TIME: &str = "t0";
 /// The key of the start position x0 among the free parameters, m.
 pub const START_POSITION: &str = "x0";
+/// The free parameters when none are named: the depth (the paper's
+/// thickness for the unwinding roll), and the release time and position,
+/// which a video rarely shows better than the fit finds them.
+pub const DEFAULT_FREE: [&str; 3] = ["snow_depth", START_TIME, START_POSITION];
 /// Iterations (Jacobians) at most, by default.
 pub const MAX_ITERATIONS: usize = 200;
 
