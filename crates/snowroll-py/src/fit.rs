@@ -57,13 +57,7 @@ pub(crate) fn fit<'py>(
                 .map_err(value_error)?,
             Vec::new(),
         ),
-        None => {
-            let circular: Vec<ModelKind> = ModelKind::ALL
-                .into_iter()
-                .filter(|m| m.is_circular())
-                .collect();
-            lib::models_that_take(&circular, &spec)
-        }
+        None => lib::models_that_take(&ModelKind::ALL, &spec),
     };
     if kinds.is_empty() {
         return Err(PyValueError::new_err("no model can run this scenario"));

@@ -25,7 +25,7 @@ pub struct FitArgs {
     #[arg(value_name = "DATA")]
     pub data: PathBuf,
 
-    /// The models to fit, ID[,ID...] (`snowroll models` lists them) [default: every model that can run the scenario]
+    /// The models to fit, ID[,ID...] (`snowroll models` lists them) [default: every model that can run the scenario, the turn models included where they take it]
     #[arg(long, value_name = "ID[,ID...]", ignore_case = true)]
     pub model: Option<ModelList>,
 

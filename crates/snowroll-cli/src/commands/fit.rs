@@ -74,11 +74,7 @@ pub fn run(args: FitArgs) -> Result<()> {
     let models = match &args.model {
         Some(list) => list.models().to_vec(),
         None => {
-            let circular: Vec<ModelKind> = ModelKind::ALL
-                .into_iter()
-                .filter(|m| m.is_circular())
-                .collect();
-            let (ok, refused) = fit::models_that_take(&circular, &spec);
+            let (ok, refused) = fit::models_that_take(&ModelKind::ALL, &spec);
             for (m, why) in refused {
                 report!("note: {} is not fitted: {why}", m.id());
             }

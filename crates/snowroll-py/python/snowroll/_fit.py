@@ -108,7 +108,7 @@ def fit(
 
     ``t`` (s, increasing) and ``x`` (m, along the slope): the data, at least
     5 points, every value finite. ``models``: model ids (default: every
-    circular model that can run the scenario). ``free``: the parameters
+    model that can run the scenario). ``free``: the parameters
     fitted, any real parameter of the scenario or the losses (keys of
     :data:`snowroll.PARAMS`: ``alpha_deg``, ``snow_depth``, ``r0``, ...) and
     ``t0`` (s, the time the body is let go on the data's clock) and ``x0``
