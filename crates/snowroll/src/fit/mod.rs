@@ -1,5 +1,5 @@
 //! Fitting the models to a measured trajectory x(t): least squares by
-//! Levenberg–Marquardt ([`lm`]), one fit per model, each model's own runs
+//! Levenberg–Marquardt (`lm.rs`), one fit per model, each model's own runs
 //! as the function fitted (ODE runs, or the closed form of fn. 4 for
 //! `loney`), then the covariance s² (JᵀJ)⁻¹ at the end point, the
 //! combinations the data cannot separate, AIC and BIC, and a ranking.
@@ -9,7 +9,7 @@
 //! the time t0 at which the body is let go, on the data's clock
 //! ([`START_TIME`]), and its position x0 then, on the data's ruler
 //! ([`START_POSITION`]). Each starts from its value in the settings given;
-//! the box it is kept in is its row's range ([`bounds`]).
+//! the box it is kept in is its row's range (`bounds.rs`).
 //!
 //! Some parameters enter a model only together: eq. (4) depends on r0 and
 //! b only through πr0²/b (πr² = πr0² + b x), so a fit of both finds a line
