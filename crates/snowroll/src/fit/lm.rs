@@ -79,8 +79,10 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
     let mut r = Vec::new();
     f(&p, &mut r)?;
     let mut s = sum_sq(&r);
-    let mut lambda = 1e-3;
-    let mut nu = 2.0;
+    let mut damping = Damping {
+        lambda: 1e-3,
+        nu: 2.0,
+    };
     let mut trial_r = Vec::new();
     let mut iterations = 0;
     let mut moving: Option<usize> = None;
@@ -106,41 +108,13 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
                 "x(t) does not depend on the free parameters",
             ));
         }
-        // Inner loop: raise λ until a step lowers S.
-        let step = loop {
-            if lambda > 1e16 {
-                break None;
-            }
-            let mut m = a.clone();
-            for (j, d) in diag.iter().enumerate() {
-                m.set(j, j, a.at(j, j) + lambda * d);
-            }
-            let rhs: Vec<f64> = g.iter().map(|x| -x).collect();
-            let Some(delta) = m.cholesky_solve(&rhs) else {
-                lambda *= 10.0;
-                continue;
-            };
-            let trial: Vec<f64> = (0..n)
-                .map(|j| problem.bounds[j].clamp(p[j] + delta[j], MARGIN))
-                .collect();
-            let taken: Vec<f64> = (0..n).map(|j| trial[j] - p[j]).collect();
-            let predicted = s - predicted_sum(&jac, &r, &taken);
-            let ok = f(&trial, &mut trial_r).is_ok() && sum_sq(&trial_r) < s;
-            if ok {
-                let s_new = sum_sq(&trial_r);
-                let rho = if predicted > 0.0 {
-                    (s - s_new) / predicted
-                } else {
-                    0.0
-                };
-                lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
-                lambda = lambda.max(1e-15);
-                nu = 2.0;
-                break Some((trial, s_new, taken));
-            }
-            lambda *= nu;
-            nu *= 2.0;
+        let here = Point {
+            p: &p,
+            r: &r,
+            s,
+            jac: &jac,
         };
+        let step = damping.step(problem, f, &here, (&a, &g, &diag), &mut trial_r);
         let Some((trial, s_new, taken)) = step else {
             // No step lowers S: converged if the gradient promises nothing
             // measurable, else stuck.
@@ -204,6 +178,68 @@ fn plateau(mut out: Outcome, moving: usize) -> Outcome {
     out
 }
 
+/// Where the search stands: the parameters, residuals, S and Jacobian.
+struct Point<'a> {
+    p: &'a [f64],
+    r: &'a [f64],
+    s: f64,
+    jac: &'a [Vec<f64>],
+}
+
+/// Marquardt's λ and Nielsen's factor ν by which a refused step raises it.
+struct Damping {
+    lambda: f64,
+    nu: f64,
+}
+
+impl Damping {
+    /// Raises λ until a step from `at` lowers S, with the normal equations
+    /// `(JᵀJ, Jᵀr, D)`; the trial point, its S and the step taken (moved
+    /// into the box), with its residuals in `trial_r`; `None` when λ passes
+    /// 10¹⁶ first.
+    fn step(
+        &mut self,
+        problem: &Problem,
+        f: &mut Residuals<'_>,
+        at: &Point<'_>,
+        (a, g, diag): (&Sym, &[f64], &[f64]),
+        trial_r: &mut Vec<f64>,
+    ) -> Option<(Vec<f64>, f64, Vec<f64>)> {
+        let n = at.p.len();
+        let rhs: Vec<f64> = g.iter().map(|x| -x).collect();
+        while self.lambda <= 1e16 {
+            let mut m = a.clone();
+            for (j, d) in diag.iter().enumerate() {
+                m.set(j, j, a.at(j, j) + self.lambda * d);
+            }
+            let Some(delta) = m.cholesky_solve(&rhs) else {
+                self.lambda *= 10.0;
+                continue;
+            };
+            let trial: Vec<f64> = (0..n)
+                .map(|j| problem.bounds[j].clamp(at.p[j] + delta[j], MARGIN))
+                .collect();
+            let taken: Vec<f64> = (0..n).map(|j| trial[j] - at.p[j]).collect();
+            let predicted = at.s - predicted_sum(at.jac, at.r, &taken);
+            if f(&trial, trial_r).is_ok() && sum_sq(trial_r) < at.s {
+                let s_new = sum_sq(trial_r);
+                let rho = if predicted > 0.0 {
+                    (at.s - s_new) / predicted
+                } else {
+                    0.0
+                };
+                self.lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
+                self.lambda = self.lambda.max(1e-15);
+                self.nu = 2.0;
+                return Some((trial, s_new, taken));
+            }
+            self.lambda *= self.nu;
+            self.nu *= 2.0;
+        }
+        None
+    }
+}
+
 fn done(
     p: Vec<f64>,
     r: Vec<f64>,
@@ -257,6 +293,7 @@ pub(crate) fn normal_equations(jac: &[Vec<f64>], r: &[f64]) -> (Sym, Vec<f64>) {
             a.set(j, i, x);
         }
     }
+    // Jᵀr, or nothing when `r` is empty (JᵀJ alone is wanted).
     let g = jac
         .iter()
         .map(|c| c.iter().zip(r).map(|(u, v)| u * v).sum())

@@ -38,25 +38,44 @@ pub struct Unseparated {
     pub rel_stderr: Option<f64>,
 }
 
-/// The number of directions in which x(t) moves measurably: the
-/// eigenvalues of the normalised JᵀJ above [`SINGULAR`], columns of no
-/// effect left out.
-pub(crate) fn moving_directions(jac: &[Vec<f64>]) -> usize {
-    let n = jac.len();
-    let lengths: Vec<f64> = jac
-        .iter()
-        .map(|c| c.iter().map(|v| v * v).sum::<f64>())
-        .collect();
-    let top = lengths.iter().copied().fold(0.0_f64, f64::max);
-    let live: Vec<usize> = (0..n).filter(|&j| lengths[j] > NO_EFFECT * top).collect();
+/// JᵀJ of some columns, those of no effect at all (`live` leaves them
+/// out) set apart and the rest normalised to unit length (N, whose
+/// eigenvalues lie between 0 and the count and measure how nearly the
+/// columns are combinations of each other, whatever their units), with N's
+/// eigenpairs, ascending.
+struct Normalised {
+    live: Vec<usize>,
+    /// The live columns' lengths.
+    d: Vec<f64>,
+    values: Vec<f64>,
+    vectors: Vec<Vec<f64>>,
+}
+
+fn normalised(cols: &[Vec<f64>]) -> Normalised {
+    let (a, _) = normal_equations(cols, &[]);
+    let n = cols.len();
+    let top = (0..n).map(|j| a.at(j, j)).fold(0.0_f64, f64::max);
+    let live: Vec<usize> = (0..n).filter(|&j| a.at(j, j) > NO_EFFECT * top).collect();
+    let d: Vec<f64> = live.iter().map(|&j| a.at(j, j).sqrt()).collect();
     let mut norm = Sym::zeros(live.len());
     for (i, &ji) in live.iter().enumerate() {
         for (k, &jk) in live.iter().enumerate() {
-            let dot: f64 = jac[ji].iter().zip(&jac[jk]).map(|(a, b)| a * b).sum();
-            norm.set(i, k, dot / (lengths[ji] * lengths[jk]).sqrt());
+            norm.set(i, k, a.at(ji, jk) / (d[i] * d[k]));
         }
     }
-    norm.eigen().0.iter().filter(|&&l| l > SINGULAR).count()
+    let (values, vectors) = norm.eigen();
+    Normalised {
+        live,
+        d,
+        values,
+        vectors,
+    }
+}
+
+/// The number of directions in which x(t) moves measurably: the
+/// eigenvalues of N above [`SINGULAR`].
+pub(crate) fn moving_directions(jac: &[Vec<f64>]) -> usize {
+    normalised(jac).values.iter().filter(|&&l| l > SINGULAR).count()
 }
 
 /// The statistics of an end point.
@@ -101,71 +120,13 @@ pub(crate) fn summarise(
         .zip(&c)
         .map(|(col, cj)| col.iter().map(|v| v * cj).collect())
         .collect();
-    let (a, _) = normal_equations(&scaled, r);
-    // Columns of no effect at all stand alone; the rest are normalised to
-    // unit length, so that the eigenvalues of N measure how nearly the
-    // columns are combinations of each other, whatever their units.
-    let top_diag = (0..n).map(|j| a.at(j, j)).fold(0.0_f64, f64::max);
-    let live: Vec<usize> = (0..n)
-        .filter(|&j| a.at(j, j) > NO_EFFECT * top_diag)
-        .collect();
-    let d: Vec<f64> = live.iter().map(|&j| a.at(j, j).sqrt()).collect();
-    let mut norm = Sym::zeros(live.len());
-    for (i, &ji) in live.iter().enumerate() {
-        for (k, &jk) in live.iter().enumerate() {
-            norm.set(i, k, a.at(ji, jk) / (d[i] * d[k]));
-        }
-    }
-    let (values, vectors) = norm.eigen();
-    let mut cov_u = Sym::zeros(n);
-    let mut loose_share = vec![0.0; n];
-    // Each direction the data do not fix: in u (for the combination's
-    // powers) and its unit vector in the normalised coordinates (for which
-    // parameters take part).
-    let mut unseparated: Vec<(Vec<f64>, Vec<f64>)> = Vec::new();
-    for j in (0..n).filter(|j| !live.contains(j)) {
-        loose_share[j] = 1.0;
-        let mut v = vec![0.0; n];
-        v[j] = 1.0;
-        unseparated.push((v.clone(), v));
-    }
-    let mut rank = 0;
-    for (lambda, w) in values.iter().zip(&vectors) {
-        // The direction in u (units of each parameter's size), and the
-        // 1-σ move of each parameter along it.
-        let mut v = vec![0.0; n];
-        for (i, &j) in live.iter().enumerate() {
-            v[j] = w[i] / d[i];
-        }
-        let sd = if *lambda > 0.0 {
-            (s2 / lambda).sqrt()
-        } else {
-            f64::INFINITY
-        };
-        let widest = live
-            .iter()
-            .enumerate()
-            .map(|(i, _)| sd * w[i].abs() / d[i])
-            .fold(0.0_f64, f64::max);
-        let determined = *lambda > SINGULAR && widest <= LOOSE;
-        if determined {
-            rank += 1;
-            for i in 0..n {
-                for j in 0..n {
-                    cov_u.set(i, j, cov_u.at(i, j) + s2 * v[i] * v[j] / lambda);
-                }
-            }
-        } else {
-            let mut unit = vec![0.0; n];
-            for (i, &j) in live.iter().enumerate() {
-                unit[j] = w[i];
-                loose_share[j] += w[i] * w[i];
-            }
-            unseparated.push((v, unit));
-        }
-    }
+    let nrm = normalised(&scaled);
+    let split = split(&nrm, n, s2);
+    let cov_u = &split.cov_u;
     let stderr: Vec<Option<f64>> = (0..n)
-        .map(|j| (loose_share[j] < SHARE * SHARE).then(|| c[j] * cov_u.at(j, j).max(0.0).sqrt()))
+        .map(|j| {
+            (split.loose_share[j] < SHARE * SHARE).then(|| c[j] * cov_u.at(j, j).max(0.0).sqrt())
+        })
         .collect();
     let correlations = (0..n)
         .map(|i| {
@@ -178,27 +139,86 @@ pub(crate) fn summarise(
                 .collect()
         })
         .collect();
-    let condition = match (values.first(), values.last()) {
-        _ if live.len() < n => f64::INFINITY,
+    let condition = match (nrm.values.first(), nrm.values.last()) {
+        _ if nrm.live.len() < n => f64::INFINITY,
         (Some(&low), Some(&high)) if low > 0.0 => high / low,
         (Some(_), Some(_)) => f64::INFINITY,
         _ => 1.0,
     };
     let mut named: Vec<Unseparated> = Vec::new();
-    for (v, unit) in &unseparated {
-        let u = name(keys, p, relative, v, unit, &cov_u);
+    for (v, unit) in &split.loose {
+        let u = name(keys, p, relative, v, unit, cov_u);
         if !named.iter().any(|w| w.text == u.text) {
             named.push(u);
         }
     }
-    let unseparated = named;
     Summary {
         stderr,
         correlations,
-        unseparated,
-        rank,
+        unseparated: named,
+        rank: split.rank,
         condition,
     }
+}
+
+/// The directions of N split into those the data fix (their covariance,
+/// in u, summed in `cov_u`; `rank` of them) and those they do not
+/// (`loose`: each in u, for the combination's powers, and as a unit vector
+/// of N, for which parameters take part; `loose_share[j]`, parameter j's
+/// share of them).
+struct Split {
+    cov_u: Sym,
+    loose_share: Vec<f64>,
+    loose: Vec<(Vec<f64>, Vec<f64>)>,
+    rank: usize,
+}
+
+/// A direction is fixed when its eigenvalue is above [`SINGULAR`] and its
+/// 1-σ move (s/√λ) changes no parameter by more than [`LOOSE`] of its size.
+fn split(nrm: &Normalised, n: usize, s2: f64) -> Split {
+    let mut out = Split {
+        cov_u: Sym::zeros(n),
+        loose_share: vec![0.0; n],
+        loose: Vec::new(),
+        rank: 0,
+    };
+    for j in (0..n).filter(|j| !nrm.live.contains(j)) {
+        out.loose_share[j] = 1.0;
+        let mut v = vec![0.0; n];
+        v[j] = 1.0;
+        out.loose.push((v.clone(), v));
+    }
+    for (lambda, w) in nrm.values.iter().zip(&nrm.vectors) {
+        let mut v = vec![0.0; n];
+        for (i, &j) in nrm.live.iter().enumerate() {
+            v[j] = w[i] / nrm.d[i];
+        }
+        let sd = if *lambda > 0.0 {
+            (s2 / lambda).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        let widest = (0..nrm.live.len())
+            .map(|i| sd * w[i].abs() / nrm.d[i])
+            .fold(0.0_f64, f64::max);
+        if *lambda > SINGULAR && widest <= LOOSE {
+            out.rank += 1;
+            for i in 0..n {
+                for j in 0..n {
+                    let x = out.cov_u.at(i, j) + s2 * v[i] * v[j] / lambda;
+                    out.cov_u.set(i, j, x);
+                }
+            }
+        } else {
+            let mut unit = vec![0.0; n];
+            for (i, &j) in nrm.live.iter().enumerate() {
+                unit[j] = w[i];
+                out.loose_share[j] += w[i] * w[i];
+            }
+            out.loose.push((v, unit));
+        }
+    }
+    out
 }
 
 /// The combination along `v` in words (see [`Unseparated::text`]).
