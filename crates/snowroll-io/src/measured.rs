@@ -114,46 +114,7 @@ pub fn read_track(text: &str, columns: Option<(&str, &str)>) -> Result<MeasuredT
                 .into(),
         });
     }
-    let wanted = |name: &str, names: &[&str], given: Option<&str>| match given {
-        Some(g) => name == g.to_ascii_lowercase(),
-        None => names.contains(&name),
-    };
-    // The header: the first of the first two lines with both columns
-    // (a line above it is Tracker's name of the mass).
-    let mut found = None;
-    for (k, &(n, line)) in lines.iter().take(2).enumerate() {
-        let sep = ['\t', ',', ';'].into_iter().find(|c| line.contains(*c));
-        let heads = cells(line, sep);
-        let t = heads
-            .iter()
-            .position(|h| wanted(&header_cell(h, true).0, &TIME_NAMES, columns.map(|c| c.0)));
-        let x = heads.iter().position(|h| {
-            wanted(
-                &header_cell(h, false).0,
-                &DISTANCE_NAMES,
-                columns.map(|c| c.1),
-            )
-        });
-        if let (Some(t), Some(x)) = (t, x) {
-            found = Some((
-                k,
-                n,
-                sep,
-                heads.iter().map(|h| h.to_string()).collect::<Vec<_>>(),
-                t,
-                x,
-            ));
-            break;
-        }
-    }
-    let Some((k, header_line, sep, heads, ti, xi)) = found else {
-        let (t, x) = columns.unwrap_or(("t, t_s or time", "x, x_m or distance"));
-        return Err(TrackError::File(format!(
-            "no header naming a time column ({t}) and a distance column ({x}) on the first line, \
-             or on the second under Tracker's name of the mass: add one, or name the columns with \
-             --columns TIME,DISTANCE"
-        )));
-    };
+    let (k, header_line, sep, heads, ti, xi) = find_header(&lines, columns)?;
     let name = (k == 1).then(|| lines[0].1.trim().to_string());
     let (_, t_factor, t_unit) = header_cell(&heads[ti], true);
     let (_, x_factor, x_unit) = header_cell(&heads[xi], false);
@@ -204,6 +165,59 @@ pub fn read_track(text: &str, columns: Option<(&str, &str)>) -> Result<MeasuredT
         )));
     }
     Ok(track)
+}
+
+/// The header found: its index among the non-empty lines (0, or 1 under
+/// Tracker's name of the mass), its line, the separator, its cells, and
+/// the time and distance columns.
+type Header = (usize, usize, Option<char>, Vec<String>, usize, usize);
+
+/// The header: the first of the first two non-empty lines with both
+/// columns.
+fn find_header(
+    lines: &[(usize, &str)],
+    columns: Option<(&str, &str)>,
+) -> Result<Header, TrackError> {
+    let wanted = |name: &str, names: &[&str], given: Option<&str>| match given {
+        Some(g) => name == g.to_ascii_lowercase(),
+        None => names.contains(&name),
+    };
+    // The header: the first of the first two lines with both columns
+    // (a line above it is Tracker's name of the mass).
+    let mut found = None;
+    for (k, &(n, line)) in lines.iter().take(2).enumerate() {
+        let sep = ['\t', ',', ';'].into_iter().find(|c| line.contains(*c));
+        let heads = cells(line, sep);
+        let t = heads
+            .iter()
+            .position(|h| wanted(&header_cell(h, true).0, &TIME_NAMES, columns.map(|c| c.0)));
+        let x = heads.iter().position(|h| {
+            wanted(
+                &header_cell(h, false).0,
+                &DISTANCE_NAMES,
+                columns.map(|c| c.1),
+            )
+        });
+        if let (Some(t), Some(x)) = (t, x) {
+            found = Some((
+                k,
+                n,
+                sep,
+                heads.iter().map(|h| h.to_string()).collect::<Vec<_>>(),
+                t,
+                x,
+            ));
+            break;
+        }
+    }
+    found.ok_or_else(|| {
+        let (t, x) = columns.unwrap_or(("t, t_s or time", "x, x_m or distance"));
+        TrackError::File(format!(
+            "no header naming a time column ({t}) and a distance column ({x}) on the first line, \
+             or on the second under Tracker's name of the mass: add one, or name the columns with \
+             --columns TIME,DISTANCE"
+        ))
+    })
 }
 
 /// The number in cell `i` of `row`, finite; a comma as the decimal mark is

@@ -71,19 +71,7 @@ pub fn run(args: FitArgs) -> Result<()> {
             None => fit::MAX_ITERATIONS,
         },
     };
-    let models = match &args.model {
-        Some(list) => list.models().to_vec(),
-        None => {
-            let (ok, refused) = fit::models_that_take(&ModelKind::ALL, &spec);
-            for (m, why) in refused {
-                report!("note: {} is not fitted: {why}", m.id());
-            }
-            if ok.is_empty() {
-                bail!("no model can run this scenario (see the notes above)");
-            }
-            ok
-        }
-    };
+    let models = chosen_models(&args, &spec)?;
     let fits = fit::fit(&track, &models, &spec)?;
     let out = match args.format.unwrap_or_default() {
         FitFormat::Text => fit_text::text(&data_name, &measured, &spec, &fits),
@@ -97,24 +85,53 @@ pub fn run(args: FitArgs) -> Result<()> {
         report!("warning: {} did not converge: {}", f.model.id(), f.reason);
     }
     if let Some((path, format)) = plot {
-        let curves = fits
-            .iter()
-            .map(|f| curve(f, &track))
-            .collect::<Result<Vec<_>>>()?;
-        let points: Vec<(f64, f64)> = track
-            .t()
-            .iter()
-            .copied()
-            .zip(track.x().iter().copied())
-            .collect();
         let label = data_label(measured.name.as_deref().unwrap_or(&data_name));
-        let panels = fit_panels(&points, &label, &curves);
-        let ids: Vec<ModelKind> = fits.iter().map(|f| f.model).collect();
-        let mut prov = figure::provenance(&ids, &given);
+        let mut prov =
+            figure::provenance(&fits.iter().map(|f| f.model).collect::<Vec<_>>(), &given);
         prov.params.push(("free".into(), spec.free.join(",")));
-        figure::write(path, format, &panels, &prov)?;
+        draw(path, format, &fits, &track, &label, &prov)?;
     }
     Ok(())
+}
+
+/// The models asked for, or every model that can run the scenario (the
+/// others named on stderr).
+fn chosen_models(args: &FitArgs, spec: &FitSpec) -> Result<Vec<ModelKind>> {
+    if let Some(list) = &args.model {
+        return Ok(list.models().to_vec());
+    }
+    let (ok, refused) = fit::models_that_take(&ModelKind::ALL, spec);
+    for (m, why) in refused {
+        report!("note: {} is not fitted: {why}", m.id());
+    }
+    if ok.is_empty() {
+        bail!("no model can run this scenario (see the notes above)");
+    }
+    Ok(ok)
+}
+
+/// The figure: the data (named `label`) with each fit's curve, and the
+/// residuals, written to `path`.
+fn draw(
+    path: &Path,
+    format: figure::PlotFormat,
+    fits: &[ModelFit],
+    track: &Track,
+    label: &str,
+    prov: &snowroll_report::plot::Provenance,
+) -> Result<()> {
+    let curves = fits
+        .iter()
+        .map(|f| curve(f, track))
+        .collect::<Result<Vec<_>>>()?;
+    let points: Vec<(f64, f64)> = track
+        .t()
+        .iter()
+        .copied()
+        .zip(track.x().iter().copied())
+        .collect();
+    let panels = fit_panels(&points, label, &curves);
+    figure::write(path, format, &panels, prov)
 }
 
 /// `TIME,DISTANCE`.

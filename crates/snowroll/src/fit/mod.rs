@@ -401,10 +401,9 @@ fn fit_one(
         start: plan.start.clone(),
         bounds: plan.bounds.clone(),
         typical: plan.typical.clone(),
-        max_iterations: if spec.max_iterations == 0 {
-            MAX_ITERATIONS
-        } else {
-            spec.max_iterations
+        max_iterations: match spec.max_iterations {
+            0 => MAX_ITERATIONS,
+            n => n,
         },
         names: keys.clone(),
     };
@@ -425,22 +424,7 @@ fn fit_one(
     let m = track.len();
     let (aic, bic) = stats::criteria(ssr, m, summary.rank);
     let (settings, t0, x0) = at(plan, spec, track, &out.p).map_err(start_error)?;
-    let params = plan
-        .free
-        .iter()
-        .enumerate()
-        .map(|(j, f)| FitParam {
-            key: keys[j].clone(),
-            unit: match f {
-                Free::Row(p) => p.unit,
-                Free::T0 => "s",
-                Free::X0 => "m",
-            },
-            value: out.p[j],
-            stderr: summary.stderr[j],
-            start: plan.start[j],
-        })
-        .collect();
+    let params = fit_params(plan, &keys, &out.p, &summary.stderr);
     Ok(ModelFit {
         model: kind,
         params,
@@ -462,6 +446,26 @@ fn fit_one(
         t0,
         x0,
     })
+}
+
+/// The free parameters as fitted, with their units, values `p`, errors and
+/// starts.
+fn fit_params(plan: &Plan, keys: &[String], p: &[f64], stderr: &[Option<f64>]) -> Vec<FitParam> {
+    plan.free
+        .iter()
+        .enumerate()
+        .map(|(j, f)| FitParam {
+            key: keys[j].clone(),
+            unit: match f {
+                Free::Row(row) => row.unit,
+                Free::T0 => "s",
+                Free::X0 => "m",
+            },
+            value: p[j],
+            stderr: stderr[j],
+            start: plan.start[j],
+        })
+        .collect()
 }
 
 /// The models that can run `spec`'s scenario at its starting values, of

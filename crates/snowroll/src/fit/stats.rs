@@ -75,7 +75,11 @@ fn normalised(cols: &[Vec<f64>]) -> Normalised {
 /// The number of directions in which x(t) moves measurably: the
 /// eigenvalues of N above [`SINGULAR`].
 pub(crate) fn moving_directions(jac: &[Vec<f64>]) -> usize {
-    normalised(jac).values.iter().filter(|&&l| l > SINGULAR).count()
+    normalised(jac)
+        .values
+        .iter()
+        .filter(|&&l| l > SINGULAR)
+        .count()
 }
 
 /// The statistics of an end point.
