@@ -140,7 +140,8 @@ fn axis_value_errors_name_the_flag_once() {
         (
             "--alpha-deg",
             "5:95:3",
-            "invalid alpha_deg (degrees) = 95: expected 0 < alpha_deg < 90 degrees",
+            "invalid alpha_deg (degrees) = 95: expected 0 < alpha_deg < 90 degrees (0 <= \
+             alpha_deg for an unwinding roll, snow_depth < 0)",
         ),
         (
             "--t-end",
@@ -156,7 +157,9 @@ fn axis_value_errors_name_the_flag_once() {
         (
             "--snow-depth",
             "0.1,-0.1",
-            "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 m",
+            "invalid snow_depth (m) = -0.1: expected snow_depth >= 0 without core_radius: a \
+             negative snow depth is an unwinding roll, which needs --core-radius (0 < \
+             core_radius < r0), the radius where it stops",
         ),
     ] {
         for with_model in [true, false] {

@@ -294,3 +294,49 @@ fn turn_models_refuse_and_the_core_goes_with_a_negative_depth() {
     .to_string();
     assert!(e.contains("0 <= alpha_deg for an unwinding roll"), "{e}");
 }
+
+/// fn. 7's stall slope does not apply to the unwinding roll: every model
+/// with a lift term starts on every slope (`snowroll models` lists none),
+/// while the same body picking up a layer |b| thick has one.
+#[test]
+fn fn7_stall_slope_is_none_for_the_unwinding_roll() {
+    let unwinding = roll(Shape::Cylinder, 10.0, 0.0);
+    let snowy = Scenario::new(ScenarioFile {
+        snow_depth: -B,
+        core_radius: None,
+        ..ScenarioFile::from(unwinding)
+    })
+    .unwrap();
+    for d in [
+        snowroll::Derivation::Energy,
+        snowroll::Derivation::EnergyLinearised,
+        snowroll::Derivation::LagrangianPrinted,
+        snowroll::Derivation::QuasiCircularLift,
+    ] {
+        let none = snowroll::Losses::default();
+        assert_eq!(d.stall_slope_in(&unwinding, &none), None, "{d:?}");
+        assert!(d.stall_slope_in(&snowy, &none).is_some(), "{d:?}");
+    }
+}
+
+/// The range of validity in b/r0 holds for the layer's thickness |b|: a
+/// roll laying a layer a fifth of its radius thick is warned about, as a
+/// log picking it up is.
+#[test]
+fn validity_warns_on_a_thick_laid_layer() {
+    let thick = Scenario::new(ScenarioFile {
+        snow_depth: -0.02,
+        r0: 0.1,
+        core_radius: Some(CORE),
+        ..ScenarioFile::default()
+    })
+    .unwrap();
+    let w = snowroll::validity_warnings(ModelKind::EnergyThin, &thick);
+    assert!(
+        w.iter().any(|w| w.message.contains("b/r0 = 0.2")),
+        "{:?}",
+        w.iter().map(|w| &w.message).collect::<Vec<_>>()
+    );
+    let thin = roll(Shape::Cylinder, 10.0, 0.0);
+    assert!(snowroll::validity_warnings(ModelKind::EnergyThin, &thin).is_empty());
+}

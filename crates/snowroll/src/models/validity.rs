@@ -220,7 +220,9 @@ fn wider_than_the_ball(w: f64, r0: f64) -> String {
 /// # Ok::<(), snowroll::ParamError>(())
 /// ```
 pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWarning> {
-    let (b, r0) = (scenario.snow_depth(), scenario.initial_radius());
+    // The layer's thickness |b|: an unwinding roll (b < 0) is as far from
+    // its model's range as a log picking up the same layer.
+    let (b, r0) = (scenario.snow_depth().abs(), scenario.initial_radius());
     let ratio = b / r0;
     let validity = kind.validity();
     let mut out = Vec::new();
@@ -237,7 +239,7 @@ pub fn validity_warnings(kind: ModelKind, scenario: &Scenario) -> Vec<ValidityWa
             format!(
             "{} ignores the snow (snow_depth = {} m): it is the b = 0 limit of the other models",
             kind.id(),
-            crate::number::format_number(b)
+            crate::number::format_number(scenario.snow_depth())
         ),
         ),
         Some(max) if ratio > max * (1.0 + B_OVER_R0_ROUNDING) => warn(

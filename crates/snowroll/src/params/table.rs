@@ -199,6 +199,8 @@ pub(crate) const TABLE: [Param; 29] = [
     },
     Param {
         key: "core_radius",
+        sweep: true,
+        plot: ("core radius", "m"),
         unit: "m",
         value_name: "M",
         kind: Kind::OptionalReal,

@@ -63,6 +63,11 @@ impl Grid {
                 param: w[0].param.key().to_string(),
             });
         }
+        // Each value is checked in the company of the other axes' first
+        // values (a point of the grid): a parameter whose range depends on
+        // another (the core radius, with a negative snow depth and below r0)
+        // is checked against the grid's own, not against the defaults.
+        let mut first = Settings::default();
         for axis in &axes {
             if axis.values.is_empty() {
                 return Err(GridError::Syntax {
@@ -71,9 +76,17 @@ impl Grid {
                     reason: "no values".to_string(),
                 });
             }
+            axis.param
+                .set(&mut first, axis.values.get(0))
+                .map_err(|error| GridError::Value {
+                    param: axis.param,
+                    error,
+                })?;
+        }
+        for axis in &axes {
             let (lo, hi) = axis.values.bounds();
             for x in [lo, hi] {
-                check_value(axis.param, x).map_err(|error| GridError::Value {
+                check_value(&first, axis.param, x).map_err(|error| GridError::Value {
                     param: axis.param,
                     error,
                 })?;
@@ -251,10 +264,11 @@ impl Choices {
     }
 }
 
-/// Checks one value of `param` with the library's own checks: the default
-/// scenario and options with that value put in.
-fn check_value(param: AxisParam, x: f64) -> Result<(), ParamError> {
-    let mut s = Settings::default();
+/// Checks one value of `param` with the library's own checks: the settings
+/// `base` (the defaults with each axis at its first value) with that value
+/// put in.
+fn check_value(base: &Settings, param: AxisParam, x: f64) -> Result<(), ParamError> {
+    let mut s = base.clone();
     param.set(&mut s, x)?;
     Scenario::new(s.scenario)?;
     s.options.validate()

@@ -42,7 +42,7 @@ pub struct SweepRow {
     pub v_m_s: Option<f64>,
     /// Acceleration at the end as a fraction of g sin α (the late-time
     /// value of eq. (35) for a long run of a circular model; instantaneous,
-    /// within a turn, for the turn models).
+    /// within a turn, for the turn models); empty on a level floor (α = 0).
     pub a_over_g_sin_alpha: Option<f64>,
     /// Full turns completed: for the circular models the angle rolled
     /// without slipping, ∫dx/r = 2π(r − r0)/b with eq. (8), over 2π, which is
@@ -183,7 +183,10 @@ impl SweepRow {
         self.t_s = Some(end.t_s);
         self.x_m = Some(end.x_m);
         self.v_m_s = Some(end.v_m_s);
-        self.a_over_g_sin_alpha = Some(end.a_m_s2 / point.scenario.g_along());
+        // Empty on a level floor (the unwinding roll's α = 0), where there
+        // is no g sin α to measure the acceleration by.
+        let g_along = point.scenario.g_along();
+        self.a_over_g_sin_alpha = (g_along != 0.0).then(|| end.a_m_s2 / g_along);
         self.turns = Some(turns);
     }
 }

@@ -24,7 +24,9 @@ pub enum StopReason {
     Turns,
     /// The speed returned to zero (the log would have to shed snow to roll back, `docs/turn-model.md`, Conventions).
     Stalled,
-    /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7).
+    /// The acceleration at the start is not positive: the log cannot lift the snow (fn. 7),
+    /// or an unwinding roll on a level floor has nothing in its equation to drive it
+    /// (the torque balances, `docs/unwinding.md`).
     DoesNotStart,
     /// The normal force reached zero: the log leaves the ground (fn. 10,
     /// `docs/contact-forces.md` §4; with `--collision pivot` also at the edge of
@@ -60,7 +62,8 @@ impl StopReason {
             StopReason::Turns => "completed the requested number of turns",
             StopReason::Stalled => "the speed returned to zero (stall)",
             StopReason::DoesNotStart => {
-                "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7)"
+                "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7), or, an \
+                 unwinding roll on a level floor, nothing in its equation drives it"
             }
             StopReason::Hop => "the normal force reached zero: the log hops (fn. 10)",
             StopReason::Slip => {

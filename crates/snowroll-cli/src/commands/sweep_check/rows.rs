@@ -195,7 +195,13 @@ pub(super) fn parse_row(line: &[u8]) -> Result<SweepRow, String> {
     // A run that ended has every result and no error; one that failed has
     // an error and no result (`SweepRow::new`).
     let results = row.results();
-    let ended = row.stop.is_some() && row.turns.is_some() && results.iter().all(|r| r.1.is_some());
+    // On a level floor (α = 0, the unwinding roll) a/(g sin α) is empty.
+    let level = row.param_value(const { AxisParam::named("alpha_deg") }) == Some(0.0);
+    let ended = row.stop.is_some()
+        && row.turns.is_some()
+        && results
+            .iter()
+            .all(|(name, v)| v.is_some() || (level && *name == "a_over_g_sin_alpha"));
     let failed = row.stop.is_none() && row.turns.is_none() && results.iter().all(|r| r.1.is_none());
     match (row.error.is_some(), ended, failed) {
         (false, true, _) | (true, _, true) => Ok(row),

@@ -49,13 +49,19 @@ impl Coefficients {
     /// The initial acceleration with v = 0 is not positive below this slope
     /// (fn. 7: the snow must be lifted). From the common form at x = 0, v = 0:
     /// `tan α* = 3(λ₁ b r0 + λ₂ b²/3)/(2π r0²)` (for the ball 7/5 in place
-    /// of 3/2). `None` when the model has no lift term (it always starts).
+    /// of 3/2). `None` when the model has no lift term (it always starts),
+    /// and for an unwinding roll (b < 0) whose lift term pushes (|b| < 3r0
+    /// for eq. (14)): it starts on every slope, and on a level floor too
+    /// (`docs/unwinding.md`).
     pub fn stall_slope(&self, b: f64, r0: f64) -> Option<Radians> {
         if !self.accretes || (self.lift == 0.0 && self.lift_b2 == 0.0) {
             return None;
         }
         let (num, den) = self.shape.push_ratio();
         let tan = den * (self.lift * b * r0 + self.lift_b2 * b * b / 3.0) / (num * PI * r0 * r0);
+        if b < 0.0 && tan <= 0.0 {
+            return None;
+        }
         Some(tan.atan_p())
     }
 }
