@@ -100,7 +100,7 @@ impl ConfigFile {
     }
 
     /// The parameters the file sets that are flags of both commands.
-    fn shared(&self) -> Given {
+    pub(crate) fn shared(&self) -> Given {
         let mut given = Given::new();
         for (p, v) in self.given.iter().filter(|(p, _)| p.scope == Scope::Shared) {
             given.insert(p, v.clone());

@@ -215,7 +215,8 @@ fn regression_20_merge_simulate_and_turns_may_not_write_over_an_input() {
 fn regression_20_endless_inputs_are_refused_at_their_limit() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let cases: [(&[&str], &str); 7] = [
+    let cases: [(&[&str], &str); 8] = [
+        (&["fit", "/dev/zero"], "16 MiB"),
         (&["sweep", "-q", "--config", "/dev/zero"], "32 MiB"),
         (&["sweep", "-q", "--grid", "/dev/zero"], "8 MiB"),
         (&["sweep", "-q", "--grid", "/dev/urandom"], "8 MiB"),

@@ -6,6 +6,7 @@ mod comment;
 mod crash_safety;
 mod determinism;
 mod edges;
+mod fit;
 mod fuzz_findings;
 mod guards;
 mod inputs;

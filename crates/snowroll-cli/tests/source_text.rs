@@ -304,6 +304,10 @@ fn error_messages_show_no_source_text() {
         &["turns", "--collision", "bogus"],
         &["sweep", "--alpha-deg", "1:2:0"],
         &["merge"],
+        &["fit"],
+        &["fit", "/nonexistent/track.csv"],
+        &["fit", "/dev/null"],
+        &["fit", "/dev/null", "--free", "bogus"],
         &["paper", "--turns", "3"],
         &[
             "simulate",

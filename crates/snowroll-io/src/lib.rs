@@ -18,9 +18,11 @@ use snowroll::{Losses, Settings, TurnMethod};
 
 mod error;
 mod finite;
+pub mod fit_record;
 mod float_text;
 mod json;
 mod ledger;
+pub mod measured;
 pub mod notes;
 pub mod page_table;
 #[cfg(feature = "parquet")]

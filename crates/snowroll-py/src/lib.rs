@@ -17,6 +17,7 @@
 //! command line writes its flag (`--snow-depth`).
 
 mod columns;
+mod fit;
 mod guard;
 mod models;
 mod sweep;
@@ -165,7 +166,10 @@ fn param_table(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 }
 
 /// `value` (a serde record) as Python numbers, strings, lists, dicts, `None`.
-fn to_py<'py>(py: Python<'py>, value: &serde_json::Value) -> PyResult<Bound<'py, PyAny>> {
+pub(crate) fn to_py<'py>(
+    py: Python<'py>,
+    value: &serde_json::Value,
+) -> PyResult<Bound<'py, PyAny>> {
     use serde_json::Value;
     Ok(match value {
         Value::Null => py.None().into_bound(py),
@@ -333,6 +337,7 @@ fn _snowroll(m: &Bound<'_, PyModule>) -> PyResult<()> {
     )?;
     m.add("SWEEP_ROW_BYTES", sweep::SWEEP_ROW_BYTES)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(turns, m)?)?;
     m.add_function(wrap_pyfunction!(models::models, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;

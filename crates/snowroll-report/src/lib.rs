@@ -51,6 +51,7 @@ mod error;
 mod files;
 mod findings;
 mod findings_table;
+pub mod fit_plot;
 mod html;
 mod intro;
 mod loss_figures;

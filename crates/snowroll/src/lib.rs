@@ -123,6 +123,7 @@
 
 pub mod body;
 pub mod error;
+pub mod fit;
 pub mod integrate;
 pub mod losses;
 pub mod model_kind;

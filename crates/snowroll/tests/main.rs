@@ -6,6 +6,7 @@ mod circular;
 mod collision;
 mod contact;
 mod event_extrema;
+mod fit;
 mod integrator;
 mod invariants;
 mod loney;

@@ -14,7 +14,9 @@ use clap::{Parser, Subcommand, ValueEnum};
 use snowroll::sweep::Method;
 use snowroll::{ModelKind, Param};
 
+mod fit;
 mod table;
+pub use fit::{FitArgs, FitFormat};
 use snowroll_io::Format;
 pub use table::{sweep_axes, AxisArgs, BodyArgs, ParamArgs, SlopeArgs};
 
@@ -73,6 +75,16 @@ pub enum Command {
     /// the end of the run), a_over_g_sin_alpha (the acceleration there over
     /// g sin(alpha)), turns (full turns completed), error.
     Sweep(Box<SweepArgs>),
+    /// Fit the models to a measured trajectory x(t) (a CSV file, or Tracker's
+    /// exported table) by least squares, and rank them.
+    ///
+    /// Levenberg-Marquardt, each model's own runs as the function fitted,
+    /// finite-difference Jacobians, each free parameter kept in its range.
+    /// Per model: the best values with standard errors and correlations from
+    /// the covariance s^2 (J^T J)^-1, combinations of parameters the data
+    /// cannot separate (named, not given huge errors), the residuals' RMS,
+    /// AIC and BIC, whether it converged; models ranked by AIC.
+    Fit(Box<FitArgs>),
     /// Join the CSV files of `snowroll sweep --shard i/N` into one, in grid
     /// order, checking that every shard is there exactly once.
     ///

@@ -2,6 +2,8 @@
 //! that `simulate` and `turns` share into library types.
 
 mod figure;
+mod fit;
+mod fit_text;
 mod inputs;
 mod merge;
 mod models;
@@ -28,6 +30,7 @@ pub fn run(args: Args) -> Result<()> {
         Command::Paper(a) => paper::run(&a),
         Command::Sweep(a) => sweep::run(&a),
         Command::Merge(a) => merge::run(&a),
+        Command::Fit(a) => fit::run(*a),
         #[cfg(feature = "serve")]
         Command::Serve(a) => crate::serve::run(&a),
         #[cfg(not(feature = "serve"))]

@@ -12,7 +12,8 @@ range and default. Units are SI, angles in degrees.
 >>> r.stop["reason"], r.v_m_s[-1] > 0
 ('end-time', True)
 
-Functions: :func:`simulate`, :func:`turns`, :func:`models`, :func:`sweep`.
+Functions: :func:`simulate`, :func:`turns`, :func:`models`, :func:`sweep`,
+:func:`fit` (the models fitted to a measured x(t)).
 Bad parameters raise ``ValueError`` with the library's message (a
 parameter it names is written as its keyword, ``snow_depth=``, where the CLI
 writes ``--snow-depth``), a parameter of the wrong type ``TypeError`` naming its keyword, a
@@ -45,7 +46,7 @@ MAX_MEMORY: int = _snowroll.MAX_MEMORY
 #: numeric sweep parameters (each also a column of :class:`SweepResult`).
 SWEEP_AXES: Tuple[str, ...] = tuple(_snowroll.SWEEP_AXES)
 
-__all__ = ["simulate", "turns", "models", "sweep", "Result", "TurnResult", "Results", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
+__all__ = ["simulate", "turns", "models", "sweep", "fit", "FitResult", "Result", "TurnResult", "Results", "SweepResult", "sweep_chunks", "dask", "MAX_MEMORY", "__version__"]
 
 
 def _jaro(a: str, b: str) -> float:
@@ -724,7 +725,7 @@ _TYPE_OF_KIND = {
 }
 
 # The table's scopes each function takes.
-_SCOPES = {"simulate": ("shared", "sampling", "turns"), "turns": ("turns", "shared")}
+_SCOPES = {"simulate": ("shared", "sampling", "turns"), "turns": ("turns", "shared"), "fit": ("shared",)}
 
 
 def _keywords(function: str) -> List[Dict[str, Any]]:
@@ -743,7 +744,7 @@ def _keywords(function: str) -> List[Dict[str, Any]]:
 def _allowed(function: str) -> List[str]:
     """The keywords ``function`` takes, in its keyword order."""
     allowed = [p["key"] for p in _keywords(function)]
-    if function != "models":
+    if function not in ("models", "fit"):
         allowed.append("max_memory")
     return allowed
 
@@ -999,3 +1000,6 @@ models.__signature__ = _inspect.Signature(  # type: ignore[attr-defined]
 # `snowroll.dask.sweep`: a sweep as a dask.dataframe (imports dask only when
 # called). Last, since it uses the functions above.
 from . import dask  # noqa: E402
+
+
+from ._fit import FitResult, fit  # noqa: E402  (uses the helpers above)

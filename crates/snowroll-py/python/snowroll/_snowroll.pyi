@@ -132,6 +132,52 @@ def models(
     and ``stall_kind`` (fn. 7) for the body, snow and losses of the
     keywords, ``validity``."""
 
+def fit(
+    t: Sequence[float],
+    x: Sequence[float],
+    *,
+    models: Optional[Sequence[str]] = None,
+    free: Optional[Sequence[str]] = None,
+    t0: Optional[float] = None,
+    x0: Optional[float] = None,
+    max_iterations: Optional[int] = None,
+    alpha_deg: Optional[float] = None,
+    snow_depth: Optional[float] = None,
+    r0: Optional[float] = None,
+    g: Optional[float] = None,
+    density: Optional[float] = None,
+    length: Optional[float] = None,
+    v0: Optional[float] = None,
+    shape: Optional[str] = None,
+    swath_width: Optional[Union[float, str]] = None,
+    core_radius: Optional[float] = None,
+    t_end: Optional[float] = None,
+    x_end: Optional[float] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    max_rows: Optional[int] = None,
+    max_steps: Optional[int] = None,
+    mu: Optional[float] = None,
+    collision: Optional[str] = None,
+    on_hop: Optional[str] = None,
+    drag_coefficient: Optional[float] = None,
+    air_density: Optional[float] = None,
+    rolling_resistance: Optional[float] = None,
+    compaction_energy: Optional[float] = None,
+    ledger: bool = False,
+    terminal_tol: Optional[float] = None,
+) -> Dict[str, Any]:
+    """Fit each model's x(t) to the points ``t`` (s) and ``x`` (m) by
+    Levenberg-Marquardt (finite-difference Jacobians from the models' own
+    runs), the ``free`` parameters (table keys, ``t0``, ``x0``) from their
+    starts, the rest fixed by the keywords.
+
+    Returns ``{"fits": [dict], "free": [str], "t_s": [float], "x_m":
+    [float], "skipped": [(model, reason)], "version": str}``, ``fits``
+    sorted by rank, each the record of ``snowroll fit --format json`` plus
+    ``residuals_m``, ``curve_t_s``, ``curve_x_m``.
+    """
+
 MAX_MEMORY: int
 
 #: The numeric axes a sweep's grid takes, in grid order.

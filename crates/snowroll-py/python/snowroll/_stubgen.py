@@ -128,12 +128,45 @@ def _models() -> List[str]:
     return lines + [_MODELS_DOC.rstrip("\n"), ""]
 
 
+_FIT_DOC = '''    """Fit each model's x(t) to the points ``t`` (s) and ``x`` (m) by
+    Levenberg-Marquardt (finite-difference Jacobians from the models' own
+    runs), the ``free`` parameters (table keys, ``t0``, ``x0``) from their
+    starts, the rest fixed by the keywords.
+
+    Returns ``{"fits": [dict], "free": [str], "t_s": [float], "x_m":
+    [float], "skipped": [(model, reason)], "version": str}``, ``fits``
+    sorted by rank, each the record of ``snowroll fit --format json`` plus
+    ``residuals_m``, ``curve_t_s``, ``curve_x_m``.
+    """
+'''
+
+
+def _fit() -> List[str]:
+    lines = [
+        "def fit(",
+        "    t: Sequence[float],",
+        "    x: Sequence[float],",
+        "    *,",
+        "    models: Optional[Sequence[str]] = None,",
+        "    free: Optional[Sequence[str]] = None,",
+        "    t0: Optional[float] = None,",
+        "    x0: Optional[float] = None,",
+        "    max_iterations: Optional[int] = None,",
+    ]
+    for p in _keywords("fit"):
+        default = "False" if p["kind"] == "flag" else "None"
+        lines.append(f"    {p['key']}: {_TYPE_OF_KIND[p['kind']]} = {default},")
+    lines.append(") -> Dict[str, Any]:")
+    return lines + [_FIT_DOC.rstrip("\n"), ""]
+
+
 def stub() -> str:
     """The text of ``_snowroll.pyi``."""
     lines = [_HEAD]
     lines += _function("simulate", "torque-cm", _SIMULATE_DOC)
     lines += _function("turns", "turns", _TURNS_DOC)
     lines += _models()
+    lines += _fit()
     return "\n".join(lines) + _TAIL
 
 
