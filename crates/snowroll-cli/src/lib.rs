@@ -99,6 +99,8 @@ pub fn message(e: &anyhow::Error) -> String {
                 s.render(&flag_name)
             } else if let Some(g) = c.downcast_ref::<snowroll::sweep::GridError>() {
                 g.render(&flag_name)
+            } else if let Some(f) = c.downcast_ref::<snowroll::fit::FitError>() {
+                f.render(&flag_name)
             } else {
                 c.to_string()
             }

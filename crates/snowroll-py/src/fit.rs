@@ -11,7 +11,7 @@ use snowroll::params::Scope;
 use snowroll::{ModelKind, Param, Settings};
 use snowroll_io::fit_record::fit_record;
 
-use crate::{given, python_message, to_py, value_error};
+use crate::{given, keyword, to_py, value_error};
 
 /// Points of each fitted curve.
 const CURVE_POINTS: usize = 400;
@@ -34,7 +34,7 @@ pub(crate) fn fit<'py>(
     params: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = given("fit", &[Scope::Shared], params)?;
-    let err = |e: lib::FitError| PyValueError::new_err(python_message(&e.to_string()));
+    let err = |e: lib::FitError| PyValueError::new_err(e.render(&keyword));
     let track = Track::new(t, x).map_err(err)?;
     let atol_given = Param::of_key("atol").is_some_and(|p| given.get(p).is_some());
     let settings = given.apply(Settings::default()).map_err(value_error)?;
@@ -85,7 +85,7 @@ pub(crate) fn fit<'py>(
     out.set_item("x_m", track.x().to_vec())?;
     let skipped: Vec<(String, String)> = skipped
         .into_iter()
-        .map(|(m, why)| (m.id().to_string(), python_message(&why)))
+        .map(|(m, why)| (m.id().to_string(), why))
         .collect();
     out.set_item("skipped", skipped)?;
     out.set_item("version", snowroll_io::VERSION)?;

@@ -137,7 +137,6 @@ pub mod scenario;
 pub mod sweep;
 pub mod trajectory;
 pub mod units;
-mod unwinding;
 
 pub use error::{ParamError, SimError, SinkError};
 pub use losses::Losses;

@@ -50,6 +50,8 @@ fn gravity_parts(g: f64, alpha: f64) -> (f64, f64) {
     (g * alpha.sin_p(), g * alpha.cos_p())
 }
 
+mod unwinding;
+
 pub use crate::body::{ChordWord, Shape, Swath, SwathWidth};
 
 /// The user-facing form of a [`Scenario`], in the project's one parameter
@@ -307,7 +309,7 @@ impl Scenario {
             v0: check("v0 (m/s)", file.v0, |v| v >= 0.0, "v0 >= 0 m/s")?,
             shape: file.shape,
             swath: swath_of(&file)?,
-            core: crate::unwinding::core_of(&file)?,
+            core: unwinding::core_of(&file)?,
             gravity_parts: (0.0, 0.0),
         };
         s.gravity_parts = gravity_parts(s.g, s.alpha);

@@ -8,7 +8,7 @@ use std::path::Path;
 use anyhow::{anyhow, bail, Context, Result};
 use snowroll::fit::{self, FitSpec, ModelFit, Track};
 use snowroll::{ModelKind, Param, Settings};
-use snowroll_io::measured::{read_track, MeasuredTrack};
+use snowroll_io::measured::read_track;
 use snowroll_report::fit_plot::{fit_panels, FitCurve};
 
 use super::figure;
@@ -184,14 +184,6 @@ fn curve(f: &ModelFit, track: &Track) -> Result<FitCurve> {
         curve: times.into_iter().zip(xs).collect(),
         residuals: t.iter().copied().zip(f.residuals.iter().copied()).collect(),
     })
-}
-
-/// The measured file as the outputs describe it.
-pub(super) fn describe(data_name: &str, m: &MeasuredTrack) -> String {
-    match &m.name {
-        Some(name) => format!("{data_name} ({name})"),
-        None => data_name.to_string(),
-    }
 }
 
 /// The data's entry in the figure's legend: `data (SYNTHETIC)` for data

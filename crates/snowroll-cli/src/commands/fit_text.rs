@@ -11,8 +11,6 @@ use snowroll_io::fit_record::{finite_or_null as num, fit_record};
 use snowroll_io::measured::MeasuredTrack;
 use snowroll_io::{RunParams, VERSION};
 
-use super::fit::describe;
-
 /// `x` to `digits` significant digits, as people read it.
 fn sig(x: f64, digits: usize) -> String {
     if !x.is_finite() {
@@ -123,4 +121,12 @@ pub fn text(data_name: &str, m: &MeasuredTrack, spec: &FitSpec, fits: &[ModelFit
         }
     }
     out
+}
+
+/// The measured file as the outputs describe it.
+pub(super) fn describe(data_name: &str, m: &MeasuredTrack) -> String {
+    match &m.name {
+        Some(name) => format!("{data_name} ({name})"),
+        None => data_name.to_string(),
+    }
 }

@@ -136,6 +136,25 @@ impl Sym {
     }
 }
 
+/// JᵀJ and Jᵀr.
+pub(crate) fn normal_equations(jac: &[Vec<f64>], r: &[f64]) -> (Sym, Vec<f64>) {
+    let n = jac.len();
+    let mut a = Sym::zeros(n);
+    for i in 0..n {
+        for j in 0..=i {
+            let x: f64 = jac[i].iter().zip(&jac[j]).map(|(u, v)| u * v).sum();
+            a.set(i, j, x);
+            a.set(j, i, x);
+        }
+    }
+    // Jᵀr, or nothing when `r` is empty (JᵀJ alone is wanted).
+    let g = jac
+        .iter()
+        .map(|c| c.iter().zip(r).map(|(u, v)| u * v).sum())
+        .collect();
+    (a, g)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -12,7 +12,7 @@
 //! the last data time), is refused and λ grows.
 
 use super::bounds::Bounds;
-use super::dense::Sym;
+use super::dense::{normal_equations, Sym};
 use super::stats::moving_directions;
 
 /// A least-squares problem: the start, the box, and each parameter's
@@ -280,25 +280,6 @@ fn gauss_newton_gain(a: &Sym, g: &[f64], diag: &[f64]) -> f64 {
     }
     m.cholesky_solve(g)
         .map_or(f64::INFINITY, |x| x.iter().zip(g).map(|(a, b)| a * b).sum())
-}
-
-/// JᵀJ and Jᵀr.
-pub(crate) fn normal_equations(jac: &[Vec<f64>], r: &[f64]) -> (Sym, Vec<f64>) {
-    let n = jac.len();
-    let mut a = Sym::zeros(n);
-    for i in 0..n {
-        for j in 0..=i {
-            let x: f64 = jac[i].iter().zip(&jac[j]).map(|(u, v)| u * v).sum();
-            a.set(i, j, x);
-            a.set(j, i, x);
-        }
-    }
-    // Jᵀr, or nothing when `r` is empty (JᵀJ alone is wanted).
-    let g = jac
-        .iter()
-        .map(|c| c.iter().zip(r).map(|(u, v)| u * v).sum())
-        .collect();
-    (a, g)
 }
 
 /// Forward differences, one run per parameter; backwards where the step

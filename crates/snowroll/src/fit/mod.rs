@@ -27,8 +27,9 @@ mod track;
 
 use thiserror::Error;
 
+use crate::error::{neutral_name, Namer};
 use crate::model_kind::ModelKind;
-use crate::params::{Group, Kind, Param, Settings, Value};
+use crate::params::{render_keys, Group, Kind, Param, Settings, Value};
 
 pub use stats::Unseparated;
 pub use synthetic::{noisy, Noise};
@@ -49,10 +50,12 @@ pub const MAX_ITERATIONS: usize = 200;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum FitError {
     /// The measured points: too few, not finite, times not increasing.
-    #[error("bad data: {0}")]
+    #[error("bad data: {}", render_keys(.0, &neutral_name))]
     Data(String),
     /// A free parameter that is not one, or given twice, or without a start.
-    #[error("{0}")]
+    /// Its text names parameters by key (`{free alpha_deg}`), which a front
+    /// end spells ([`FitError::render`]).
+    #[error("{}", render_keys(.0, &neutral_name))]
     Free(String),
     /// A model that cannot be run at the starting values.
     #[error("{model}: cannot run at the starting values: {reason}")]
@@ -62,6 +65,18 @@ pub enum FitError {
         /// Why.
         reason: String,
     },
+}
+
+impl FitError {
+    /// The message with the parameters it names written by `name` (the
+    /// command line's `--free alpha_deg`, Python's `free='alpha_deg'`).
+    pub fn render(&self, name: Namer<'_>) -> String {
+        match self {
+            FitError::Data(text) => format!("bad data: {}", render_keys(text, name)),
+            FitError::Free(text) => render_keys(text, name),
+            other => other.to_string(),
+        }
+    }
 }
 
 /// What to fit: the settings (the fixed parameters, and the start of the
@@ -188,13 +203,13 @@ impl Free {
         match Param::find(key) {
             Some(p) if fittable(p) => Ok(Free::Row(p)),
             Some(p) => Err(FitError::Free(format!(
-                "--free {key}: {} is not a real parameter of the scenario or the losses; free \
+                "{{free {key}}}: {} is not a real parameter of the scenario or the losses; free \
                  parameters are {}",
                 p.key,
                 fittable_keys().join(", ")
             ))),
             None => Err(FitError::Free(format!(
-                "--free {key}: no such parameter; free parameters are {}",
+                "{{free {key}}}: no such parameter; free parameters are {}",
                 fittable_keys().join(", ")
             ))),
         }
@@ -242,7 +257,10 @@ fn plan(track: &Track, spec: &FitSpec) -> Result<Plan, FitError> {
     for key in &spec.free {
         let f = Free::parse(key.trim())?;
         if free.iter().any(|g| g.key() == f.key()) {
-            return Err(FitError::Free(format!("--free names {} twice", f.key())));
+            return Err(FitError::Free(format!(
+                "{{free {}}} is given twice",
+                f.key()
+            )));
         }
         free.push(f);
     }
@@ -260,9 +278,8 @@ fn plan(track: &Track, spec: &FitSpec) -> Result<Plan, FitError> {
                     Value::Real(v) => v,
                     _ => {
                         return Err(FitError::Free(format!(
-                            "--free {}: it has no value to start from; give one with --{}",
-                            p.key,
-                            p.flag()
+                            "{{free {0}}}: it has no value to start from; give one with {{{0}}}",
+                            p.key
                         )))
                     }
                 };

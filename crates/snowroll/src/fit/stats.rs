@@ -2,8 +2,7 @@
 //! errors and correlations, which combinations of the parameters the data
 //! cannot separate, and the information criteria.
 
-use super::dense::Sym;
-use super::lm::normal_equations;
+use super::dense::{normal_equations, Sym};
 
 /// An eigenvalue of N, JᵀJ with its columns normalised to unit length
 /// (its eigenvalues lie between 0 and n), below this is singular to the

@@ -9,8 +9,8 @@ use crate::number::format_number as number;
 use crate::params::Param;
 
 /// Keys a message may name besides those of [`crate::PARAMS`]: the model
-/// list of a run or sweep.
-const OTHER_KEYS: [&str; 1] = ["model"];
+/// list of a run or sweep, and the free parameters of a fit.
+const OTHER_KEYS: [&str; 2] = ["model", "free"];
 
 /// The parameters `text` names: each `{key}` or `{key word}` whose key is in
 /// the parameter table (or [`OTHER_KEYS`]), with its word and where it

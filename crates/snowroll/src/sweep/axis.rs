@@ -4,10 +4,13 @@
 
 use std::fmt;
 
-pub use super::grid_error::GridError;
+mod grid_error;
 use crate::error::ParamError;
 use crate::number::{format_number, READABLE_DIGITS};
 use crate::params::{Kind, Settings, Value, PARAMS, TABLE};
+#[cfg(test)]
+pub(crate) use grid_error::count_text;
+pub use grid_error::GridError;
 
 /// A parameter that a sweep can vary: a row of the parameter table
 /// ([`PARAMS`]) that a sweep varies (`sweep: true`) and that is a number

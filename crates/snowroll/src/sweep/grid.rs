@@ -442,11 +442,11 @@ mod tests {
         .to_string();
         assert!(e.contains("the grid has 1e24 points, more than"), "{e}");
         assert_eq!(
-            super::super::grid_error::count_text(1_000_000_000_000_000),
+            super::super::axis::count_text(1_000_000_000_000_000),
             "1000000000000000"
         );
         assert_eq!(
-            super::super::grid_error::count_text(1_234_500_000_000_000_000),
+            super::super::axis::count_text(1_234_500_000_000_000_000),
             "1.2345e18"
         );
         // Exactly at the limit is allowed (nothing is expanded).

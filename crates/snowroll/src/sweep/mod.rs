@@ -19,7 +19,6 @@
 
 mod axis;
 mod grid;
-mod grid_error;
 mod regime;
 mod row;
 mod row_serde;

@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use super::axis::AxisParam;
+use super::AxisParam;
 use crate::error::ParamError;
 
 /// A grid that cannot be built.
@@ -48,7 +48,7 @@ pub enum GridError {
     TooLarge {
         /// The product of the axis lengths (saturating).
         points: u128,
-        /// [`MAX_GRID_POINTS`](super::MAX_GRID_POINTS).
+        /// [`MAX_GRID_POINTS`](crate::sweep::MAX_GRID_POINTS).
         limit: u64,
     },
 }

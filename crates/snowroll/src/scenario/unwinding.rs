@@ -1,8 +1,8 @@
 //! The checks of the unwinding roll's set-up (b < 0, `docs/unwinding.md`):
 //! its core radius, and what it goes with.
 
+use super::{check, ScenarioFile, SwathWidth};
 use crate::error::ParamError;
-use crate::scenario::{check, ScenarioFile, SwathWidth};
 use crate::units::Meters;
 
 /// The core radius of a scenario file, checked: required for an unwinding
