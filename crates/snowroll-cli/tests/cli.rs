@@ -2038,3 +2038,31 @@ fn turns_say_when_a_pivot_hop_may_depend_on_the_tolerance() {
     assert!(!stderr.contains("may depend on the tolerance"), "{stderr}");
     assert!(!csv.contains("may depend on the tolerance"), "{csv}");
 }
+
+/// Issue 32, item 3, on `simulate`'s path: a turn-model run with the pivot
+/// collision (no closed form confirms its hop) says so when its first hop is
+/// within the integrator's estimated error, as `turns` does, on stderr and in
+/// the output's notes; and not where the margin is clear (5.41°).
+#[test]
+fn simulate_says_when_a_pivot_hop_may_depend_on_the_tolerance() {
+    let run = |alpha: &str| {
+        let out = snowroll()
+            .args(["simulate", "--model", "turns", "--collision", "pivot"])
+            .args(["--rtol", "1e-8", "--t-end", "60", "--dt", "1"])
+            .args(["--alpha-deg", alpha])
+            .assert()
+            .success();
+        let o = out.get_output();
+        (
+            String::from_utf8(o.stdout.clone()).unwrap(),
+            String::from_utf8(o.stderr.clone()).unwrap(),
+        )
+    };
+    let said = "the first hop may depend on the tolerance: turn 3 keeps least N/(m_k g) = ";
+    let (csv, stderr) = run("5.402677505844167");
+    assert!(stderr.contains(&format!("note: {said}")), "{stderr}");
+    assert!(csv.contains(&format!("# note = {said}")), "{csv}");
+    let (csv, stderr) = run("5.41");
+    assert!(!stderr.contains("may depend on the tolerance"), "{stderr}");
+    assert!(!csv.contains("may depend on the tolerance"), "{csv}");
+}

@@ -4,7 +4,7 @@
 //! `snowroll turns` and by the explorer's WebAssembly build alike, so that
 //! their outputs are the same bytes.
 
-use snowroll::trajectory::{SimOptions, Stop, StopReason, TurnState};
+use snowroll::trajectory::{HopDoubt, SimOptions, Stop, StopReason, TurnState};
 use snowroll::{format_number, ModelKind, Sampling, Scenario, TurnRunEnd};
 
 /// How many requested times were not written because the run stopped
@@ -101,9 +101,10 @@ pub fn turns_stop_note(end: &TurnRunEnd, wanted: u64, t_end: f64) -> Option<Stri
 }
 
 /// The note of a turn run whose first hop the integrator's error could
-/// decide ([`TurnRunEnd::hop_doubt`]): the turn, its least N and the error.
-pub fn hop_doubt_note(end: &TurnRunEnd) -> Option<String> {
-    let d = end.hop_doubt?;
+/// decide ([`TurnRunEnd::hop_doubt`], [`RunEnd::hop_doubt`](snowroll::trajectory::RunEnd::hop_doubt) of `simulate`):
+/// the turn, its least N and the error.
+pub fn hop_doubt_note(doubt: Option<HopDoubt>) -> Option<String> {
+    let d = doubt?;
     Some(format!(
         "the first hop may depend on the tolerance: turn {} keeps least N/(m_k g) = {}, within the \
          integrator's estimated error {} of 0 (no closed form of the turns confirms it here, \
@@ -120,6 +121,6 @@ pub fn hop_doubt_note(end: &TurnRunEnd) -> Option<String> {
 pub fn turns_notes(end: &TurnRunEnd, wanted: u64, t_end: f64) -> Vec<String> {
     turns_stop_note(end, wanted, t_end)
         .into_iter()
-        .chain(hop_doubt_note(end))
+        .chain(hop_doubt_note(end.hop_doubt))
         .collect()
 }

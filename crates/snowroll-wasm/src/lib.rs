@@ -18,7 +18,7 @@ use snowroll::{
     default_atol, run_warnings, ModelKind, Param, Sampling, Scenario, Settings, SimOptions,
     SinkError, TurnMethod, TurnModel, TurnRow, TurnSink, TurnVariant, Value, WarningCode,
 };
-use snowroll_io::notes::{stop_note, times_note, turns_notes};
+use snowroll_io::notes::{hop_doubt_note, stop_note, times_note, turns_notes};
 use snowroll_io::{Format, RunParams, TrajectoryWriter, TurnTableWriter};
 
 pub mod abi;
@@ -211,6 +211,7 @@ fn simulate(
         .into_iter()
         .collect();
     notes.extend(times_note(writer.rows(), end.stop, &opts));
+    notes.extend(hop_doubt_note(end.hop_doubt));
     let body = writer.finish(&end, &notes).map_err(|e| e.to_string())?;
     Ok(Answer {
         body,

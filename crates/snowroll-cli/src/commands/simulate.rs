@@ -4,7 +4,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use snowroll::{
     default_atol, format_number, run_warnings, ModelKind, Sampling, Scenario, SimError, SimOptions,
 };
-use snowroll_io::notes::{stop_note, times_note};
+use snowroll_io::notes::{hop_doubt_note, stop_note, times_note};
 use snowroll_io::{RunParams, TrajectoryWriter};
 
 use snowroll::trajectory::Collected;
@@ -167,6 +167,7 @@ impl One<'_> {
             .into_iter()
             .collect();
         notes.extend(times_note(writer.rows(), end.stop, opts));
+        notes.extend(hop_doubt_note(end.hop_doubt));
         writer
             .finish(&end, &notes)
             .with_context(|| format!("writing {name}"))?;

@@ -269,6 +269,7 @@ pub(crate) fn stopped_at_start<const N: usize, M: OdeModel<N>>(
     Ok(RunEnd {
         stop: stop_from(reason, 0.0, &first, turn),
         stats: Default::default(),
+        hop_doubt: None,
     })
 }
 
@@ -306,6 +307,7 @@ pub(crate) fn end_observed<const N: usize, M: OdeModel<N>, O: RunObserver<M, N>>
     Ok(RunEnd {
         stop: stop_at(system, reason, outcome.t, &outcome.y),
         stats: outcome.stats,
+        hop_doubt: None,
     })
 }
 

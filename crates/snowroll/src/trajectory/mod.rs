@@ -18,4 +18,4 @@ pub use options::{SimOptions, DEFAULT_MAX_ROWS};
 pub use sample::{LedgerRow, Sample, TurnState};
 pub use sampling::Sampling;
 pub use sink::{Collected, SampleSink, Trajectory};
-pub use stop::{RunEnd, Stop, StopReason};
+pub use stop::{HopDoubt, RunEnd, Stop, StopReason};

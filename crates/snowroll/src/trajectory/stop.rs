@@ -138,4 +138,22 @@ pub struct RunEnd {
     pub stop: Stop,
     /// Integrator counts (zero for closed forms).
     pub stats: Stats,
+    /// A turn model's run on the integrator's path whose first hop the
+    /// integrator's error could decide (`None` for every other run).
+    pub hop_doubt: Option<HopDoubt>,
+}
+
+/// A turn whose least normal force is within the integrator's error of 0,
+/// on a run the closed form does not cover: whether (and where) the first
+/// hop happens may depend on the tolerance. Rerun at a tighter `rtol`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct HopDoubt {
+    /// The turn (0-based).
+    pub turn: u64,
+    /// Its least N over `m_k g` (`m_k` the log's mass at the turn's start),
+    /// as the integrator's run has it.
+    pub least_normal_over_mkg: f64,
+    /// The estimated error of that value, from the integrator's error
+    /// carried along the run.
+    pub error_over_mkg: f64,
 }

@@ -269,6 +269,7 @@ impl Model for LoneyModel {
         Ok(RunEnd {
             stop,
             stats: Default::default(),
+            hop_doubt: None,
         })
     }
 }

@@ -183,7 +183,11 @@ impl Model for TurnModel {
         if let Some(reason) = system.start(&y0) {
             return stopped_at_start(&system, y0, reason, sink);
         }
-        run_ode(&mut system, y0, opts, sink)
+        let end = run_ode(&mut system, y0, opts, sink)?;
+        Ok(RunEnd {
+            hop_doubt: system.hop_doubt(),
+            ..end
+        })
     }
 }
 

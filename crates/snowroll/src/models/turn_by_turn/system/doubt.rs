@@ -16,26 +16,12 @@
 //! (twice the bound, as the hop's margin with the closed form).
 
 use super::*;
+pub use crate::trajectory::HopDoubt;
 
 /// Golden ratio conjugate, for the golden-section refinement of the pivot's least N.
 const GOLDEN: f64 = 0.618_033_988_749_894_8;
 /// Intervals of the grid over the pivot's angle range.
 const PIVOT_GRID: usize = 64;
-
-/// A turn whose least normal force is within the integrator's error of 0,
-/// on a run the closed form does not cover: whether (and where) the first
-/// hop happens may depend on the tolerance. Rerun at a tighter `rtol`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct HopDoubt {
-    /// The turn (0-based).
-    pub turn: u64,
-    /// Its least N over `m_k g` (`m_k` the log's mass at the turn's start),
-    /// as the integrator's run has it.
-    pub least_normal_over_mkg: f64,
-    /// The estimated error of that value, from the integrator's error
-    /// carried along the run.
-    pub error_over_mkg: f64,
-}
 
 /// The estimate carried along ([`TurnSystem::doubt`]).
 #[derive(Debug, Clone, Copy, Default)]
