@@ -206,9 +206,11 @@ def main():
           and (report_dir / "figures" / "geometry.svg").is_file(),
           f"the problem section has the geometry drawing and {dom.model_rows} model rows (page declares {want_models})")
     results = sorted(i for i in dom.ids if i.startswith("result-"))
-    check("snowball-and-losses" in dom.ids and len(results) == 5
+    check("snowball-and-losses" in dom.ids and "unwinding-roll" in dom.ids and len(results) == 6
+          and "result-unwinding-textbook-speed" in results
           and all(("claim-" + r[len("result-"):], r) in dom.hrefs for r in results),
-          f"the snowball-and-losses section has its 5 results, each linked to its claim ({results})")
+          "the snowball-and-losses section has its 5 results and the unwinding roll's its 1, "
+          f"each linked to its claim ({results})")
     check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
           "the errata section is there, with a row per erratum")
     unlinked = sorted(c for c in claim_ids if not dom.claim_supports.get(c))
