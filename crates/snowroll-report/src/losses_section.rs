@@ -137,14 +137,15 @@ pub(super) fn html(h: &mut String, report: &Report) {
     }
 }
 
-/// One section in the page.
+/// One section in the page, folded (below the first screen; its title shows,
+/// its results open on a click).
 fn section_html(h: &mut String, section: &Section, report: &Report) {
     if !applies(section, report) {
         return;
     }
     let _ = writeln!(
         h,
-        "<section id=\"{}\">\n<h2>{}</h2>\n<p>{}</p>",
+        "<section id=\"{}\">\n<details class=\"fold\"><summary><h2>{}</h2></summary>\n<p>{}</p>",
         section.id,
         section.title,
         prose(section.intro)
@@ -179,7 +180,7 @@ fn section_html(h: &mut String, section: &Section, report: &Report) {
             links = links.join(", "),
         );
     }
-    h.push_str("</ul>\n</section>\n");
+    h.push_str("</ul>\n</details>\n</section>\n");
 }
 
 /// The sections in `report.md`.

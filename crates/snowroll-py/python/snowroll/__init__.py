@@ -755,7 +755,7 @@ def _allowed(function: str) -> List[str]:
 _ALLOWED = {f: _allowed(f) for f in ("simulate", "turns", "models")}
 _CHECKS = {
     f: {p["key"]: _CHECK_OF_KIND[p["kind"]] for p in _keywords(f)}
-    for f in ("simulate", "turns", "models")
+    for f in ("simulate", "turns", "models", "fit")
 }
 
 
