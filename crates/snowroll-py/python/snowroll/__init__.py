@@ -752,11 +752,10 @@ def _allowed(function: str) -> List[str]:
 # Each function's keywords and the check of each (`max_memory` is a
 # keyword of its own, so it has no check here), built once: a call looks
 # its keywords up instead of sorting the table again.
-_ALLOWED = {f: _allowed(f) for f in ("simulate", "turns", "models")}
-_CHECKS = {
-    f: {p["key"]: _CHECK_OF_KIND[p["kind"]] for p in _keywords(f)}
-    for f in ("simulate", "turns", "models", "fit")
-}
+# The functions that take the table's keywords (``fit`` in ``_fit.py``).
+_FUNCTIONS = ("simulate", "turns", "models", "fit")
+_ALLOWED = {f: _allowed(f) for f in _FUNCTIONS}
+_CHECKS = {f: {p["key"]: _CHECK_OF_KIND[p["kind"]] for p in _keywords(f)} for f in _FUNCTIONS}
 
 
 # Each function's keywords of a real kind, and of the list kind: a float
