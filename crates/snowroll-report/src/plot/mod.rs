@@ -15,6 +15,7 @@
 //! naming the program version and the parameters ([`Provenance`]); the SVG
 //! also records them in a comment and the PNG in `iTXt` chunks.
 
+mod error;
 mod font;
 mod legend;
 mod map;
@@ -22,6 +23,7 @@ mod panels;
 mod render;
 mod ticks;
 
+pub use error::PlotError;
 pub use font::register_embedded_font;
 #[cfg(feature = "comment")]
 pub(crate) use font::FONT;
@@ -29,65 +31,7 @@ pub use map::{Cell, Class, ColorBy, MapError, RegimeMap};
 pub use panels::{render_panels_png, render_panels_svg};
 pub use render::{png_size, FIGURE_SIZE, PAGE_WIDTH, PNG_SCALE, SVG_OVERSAMPLE};
 
-use thiserror::Error;
-
 use snowroll::trajectory::Sample;
-
-/// A figure that could not be drawn.
-#[derive(Debug, Clone, PartialEq, Error)]
-#[non_exhaustive]
-pub enum PlotError {
-    /// A text every figure must have (title, axis label, unit, series name) is empty.
-    #[error("chart {chart:?}: the {field} is empty")]
-    MissingText {
-        /// The chart's name.
-        chart: String,
-        /// Which text.
-        field: &'static str,
-    },
-    /// The chart's name is not usable as a file stem.
-    #[error("chart name {name:?}: use lower-case letters, digits, '-' and '_' only")]
-    InvalidName {
-        /// The rejected name.
-        name: String,
-    },
-    /// The chart has more curves than colours: two would share one.
-    #[error("chart {chart:?} has {curves} curves of their own colour; at most {colours} can be told apart")]
-    TooManyColours {
-        /// The chart's name.
-        chart: String,
-        /// Curves that need a colour of their own.
-        curves: usize,
-        /// Colours in the palette.
-        colours: usize,
-    },
-    /// No cell of a regime map can be drawn. (A [`Chart`] with no point
-    /// is drawn, with the note [`NO_DATA`] over empty axes.)
-    #[error("chart {chart:?} has no point that can be drawn on its axes")]
-    NoDrawablePoints {
-        /// The chart's name.
-        chart: String,
-    },
-    /// The embedded font could not be parsed.
-    #[error("the embedded font could not be registered")]
-    Font,
-    /// The drawing backend failed.
-    #[error("drawing chart {chart:?} failed: {reason}")]
-    Backend {
-        /// The chart's name.
-        chart: String,
-        /// The backend's message.
-        reason: String,
-    },
-    /// PNG encoding failed.
-    #[error("encoding the PNG of chart {chart:?} failed: {reason}")]
-    Png {
-        /// The chart's name.
-        chart: String,
-        /// The encoder's message.
-        reason: String,
-    },
-}
 
 /// How an axis maps values to positions.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -20,17 +20,16 @@
 
 mod bounds;
 mod dense;
+mod error;
 mod lm;
 mod stats;
 mod synthetic;
 mod track;
 
-use thiserror::Error;
-
-use crate::error::{neutral_name, Namer};
 use crate::model_kind::ModelKind;
-use crate::params::{render_keys, Group, Kind, Param, Settings, Value};
+use crate::params::{Group, Kind, Param, Settings, Value};
 
+pub use error::FitError;
 pub use stats::Unseparated;
 pub use synthetic::{noisy, Noise};
 pub use track::{Track, MIN_POINTS};
@@ -45,39 +44,6 @@ pub const START_POSITION: &str = "x0";
 pub const DEFAULT_FREE: [&str; 3] = ["snow_depth", START_TIME, START_POSITION];
 /// Iterations (Jacobians) at most, by default.
 pub const MAX_ITERATIONS: usize = 200;
-
-/// A fit that cannot be made.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum FitError {
-    /// The measured points: too few, not finite, times not increasing.
-    #[error("bad data: {}", render_keys(.0, &neutral_name))]
-    Data(String),
-    /// A free parameter that is not one, or given twice, or without a start.
-    /// Its text names parameters by key (`{free alpha_deg}`), which a front
-    /// end spells ([`FitError::render`]).
-    #[error("{}", render_keys(.0, &neutral_name))]
-    Free(String),
-    /// A model that cannot be run at the starting values.
-    #[error("{model}: cannot run at the starting values: {reason}")]
-    Start {
-        /// The model's id.
-        model: &'static str,
-        /// Why.
-        reason: String,
-    },
-}
-
-impl FitError {
-    /// The message with the parameters it names written by `name` (the
-    /// command line's `--free alpha_deg`, Python's `free='alpha_deg'`).
-    pub fn render(&self, name: Namer<'_>) -> String {
-        match self {
-            FitError::Data(text) => format!("bad data: {}", render_keys(text, name)),
-            FitError::Free(text) => render_keys(text, name),
-            other => other.to_string(),
-        }
-    }
-}
 
 /// What to fit: the settings (the fixed parameters, and the start of the
 /// free ones), the free parameters' keys, and the start (or fixed) t0 and
