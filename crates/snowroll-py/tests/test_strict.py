@@ -87,6 +87,7 @@ def run_limited(code, headroom_mb):
         f"""
         import resource, snowroll
         snowroll.sweep({{"model": "eq4", "alpha_deg": "5:60:100"}})  # thread pool and numpy up
+        snowroll.turns("turns", turns=2000)  # the pool of the turns computed ahead up
         size = [int(l.split()[1]) * 1024 for l in open("/proc/self/status") if l.startswith("VmSize:")][0]
         cap = size + {headroom_mb} * 2**20
         resource.setrlimit(resource.RLIMIT_AS, (cap, cap))

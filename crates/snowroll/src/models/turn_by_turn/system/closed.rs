@@ -145,13 +145,10 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
     // with a block not yet prepared when it gets to it ([`Pipeline`]); the
     // pool has the other cores (a pool of every core would put one more
     // thread than cores at work, its spinning taking time from this one).
-    let workers = rayon::current_num_threads().saturating_sub(1).max(1);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(workers)
-        .build()
-        .ok();
+    let pool = pipeline_pool();
+    let workers = pool.map_or(1, rayon::ThreadPool::current_num_threads);
     let pipeline = Pipeline::new(ahead, first, limit);
-    in_place_scope(pool.as_ref(), |scope| {
+    in_place_scope(pool, |scope| {
         for _ in 0..workers {
             scope.spawn(|_| pipeline.work());
         }
@@ -180,6 +177,26 @@ fn run_ahead<O: RunObserver<TurnSystem, 2>>(
             }
         }
     })
+}
+
+/// The pool of the turns computed ahead: one less thread than rayon's global
+/// pool has, made once per process and kept. Made anew for every run, its
+/// threads would start while the run's tables take memory; under an
+/// address-space limit a new thread's first use of the Python module's
+/// thread-local data then failed in the C library, which ends the process
+/// rather than report it (seen once in four runs of the Python package's
+/// memory-limit test), and each run paid for the threads' start.
+fn pipeline_pool() -> Option<&'static rayon::ThreadPool> {
+    static POOL: std::sync::OnceLock<Option<rayon::ThreadPool>> = std::sync::OnceLock::new();
+    POOL.get_or_init(|| {
+        let workers = rayon::current_num_threads().saturating_sub(1).max(1);
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(workers)
+            .thread_name(|i| format!("snowroll-turns-{i}"))
+            .build()
+            .ok()
+    })
+    .as_ref()
 }
 
 /// `op` in a scope of `pool` (of rayon's global pool without one) that
