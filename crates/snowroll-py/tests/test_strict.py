@@ -87,15 +87,23 @@ def run_limited(code, headroom_mb):
         f"""
         import resource, snowroll
         snowroll.sweep({{"model": "eq4", "alpha_deg": "5:60:100"}})  # thread pool and numpy up
-        snowroll.turns("turns", turns=2000)  # the pool of the turns computed ahead up
+        snowroll.turns("turns", turns=20000)  # the pool of the turns computed ahead up (more than a block of 8192)
         size = [int(l.split()[1]) * 1024 for l in open("/proc/self/status") if l.startswith("VmSize:")][0]
         cap = size + {headroom_mb} * 2**20
-        resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
+        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+        resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
         try:
         {textwrap.indent(textwrap.dedent(code), "    ")}
             print("no error")
         except MemoryError as e:
             print("MemoryError:", e)
+        finally:
+            # The limit lifted once the call has answered: a thread that first
+            # touches the module's thread-local data after it (at exit) would
+            # otherwise meet the C library's lazy allocation of that data under
+            # the cap, which aborts the process instead of failing (status 127,
+            # 'cannot allocate memory for thread-local data').
+            resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
         """
     )
     return subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
