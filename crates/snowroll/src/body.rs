@@ -171,6 +171,27 @@ pub struct Body {
     /// A ball's swath ([`Swath::Diameter`] for the log, whose swath is its
     /// length whatever this says).
     pub swath: Swath,
+    /// The tube of an unwinding roll, when it has a mass of its own; `None`:
+    /// the body is of one material down to its centre.
+    pub tube: Option<Tube>,
+}
+
+/// The core of an unwinding roll as a body of its own (`docs/unwinding.md`,
+/// "The core"): a thin-walled tube of radius `radius` and mass `mass` (a
+/// thin spherical shell for the ball), hollow inside. The roll's material
+/// lies between it and r, so
+///
+/// `M(r) = m_c + M_u(r) − M_u(r_c)`,  `I(r) = I_c + I_u(r) − I_u(r_c)`,
+///
+/// with M_u, I_u = k M_u r² those of the uniform body and `I_c = m_c r_c²`
+/// (the ball's shell: `(2/3) m_c r_c²`). dM/dx and dI/dx are the uniform
+/// body's: the tube only shifts M and I by constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tube {
+    /// Its radius r_c, m (the scenario's core radius).
+    pub radius: Meters,
+    /// Its mass m_c, kg.
+    pub mass: Kilograms,
 }
 
 impl Body {
@@ -179,12 +200,62 @@ impl Body {
         self.shape.inertia_factor()
     }
 
-    /// M(r), kg: π ρ l r² for the log (eq. (37)), (4/3) π ρ r³ for the ball.
+    /// M(r), kg: π ρ l r² for the log (eq. (37)), (4/3) π ρ r³ for the ball;
+    /// with a [`Tube`], `m_c + M_u(r) − M_u(r_c)`, the difference written as a
+    /// product so that it does not cancel near the core.
     pub fn mass_of_radius(&self, r: Meters) -> Kilograms {
+        let Some(t) = self.tube else {
+            return self.uniform_mass(r);
+        };
+        let c = t.radius;
+        let shell = match self.shape {
+            Shape::Cylinder => PI * self.density * self.length * (r - c) * (r + c),
+            Shape::Sphere => 4.0 * PI * self.density * (r - c) * (r * r + r * c + c * c) / 3.0,
+        };
+        t.mass + shell
+    }
+
+    /// The mass the tube adds to the uniform body, m_c − M_u(r_c), kg (0
+    /// without one; negative when the tube is lighter than the material it
+    /// replaces).
+    pub fn tube_offset(&self) -> Kilograms {
+        self.tube
+            .map_or(0.0, |t| t.mass - self.uniform_mass(t.radius))
+    }
+
+    /// M_u(r) of the uniform body, kg: π ρ l r², (4/3) π ρ r³.
+    fn uniform_mass(&self, r: Meters) -> Kilograms {
         match self.shape {
             Shape::Cylinder => PI * self.density * self.length * r * r,
             Shape::Sphere => 4.0 * PI * self.density * r * r * r / 3.0,
         }
+    }
+
+    /// I(r) about the centre, kg m²: k M(r) r² for a uniform body; with a
+    /// [`Tube`], `I_c + I_u(r) − I_u(r_c)` ([`Tube`]), the difference as a
+    /// product: `(π ρ l/2)(r − r_c)(r + r_c)(r² + r_c²)` for the log,
+    /// `(8π ρ/15)(r − r_c)(r⁴ + r³r_c + r²r_c² + r r_c³ + r_c⁴)` for the ball.
+    pub fn moment_of_inertia(&self, r: Meters) -> f64 {
+        let k = self.inertia_factor();
+        let Some(t) = self.tube else {
+            return k * self.uniform_mass(r) * r * r;
+        };
+        let c = t.radius;
+        let (shell, tube) = match self.shape {
+            Shape::Cylinder => (
+                PI * self.density * self.length * (r - c) * (r + c) * (r * r + c * c) / 2.0,
+                t.mass * c * c,
+            ),
+            Shape::Sphere => (
+                8.0 * PI
+                    * self.density
+                    * (r - c)
+                    * (r.powi(4) + r.powi(3) * c + r * r * c * c + r * c.powi(3) + c.powi(4))
+                    / 15.0,
+                2.0 * t.mass * c * c / 3.0,
+            ),
+        };
+        tube + shell
     }
 
     /// m0 = M(r0), kg.
@@ -311,12 +382,17 @@ impl Body {
     pub fn growth_at(&self, x: Meters, accretes: bool) -> Growth {
         let b = self.snow_depth;
         if !accretes || b == 0.0 {
+            let (r, mass) = (self.r0, self.initial_mass());
             return Growth {
-                r: self.r0,
-                mass: self.initial_mass(),
+                r,
+                mass,
                 dr_dx: 0.0,
                 d2r_dx2: 0.0,
                 lambda: 0.0,
+                tube: self.tube.map(|_| TubeShares {
+                    inertia: self.moment_of_inertia(r) / (mass * r * r),
+                    inertia_rate: 0.0,
+                }),
             };
         }
         let r = self.radius_at(x);
@@ -330,12 +406,31 @@ impl Body {
                 (b * w / (4.0 * PI * r * r), 2.0 - 4.0 * b * r / (w * w))
             }
         };
+        let n = self.shape.mass_exponent();
+        let mass = self.mass_at(x);
+        // dM/dx = n M_u r′/r whatever the tube (it shifts M by a constant);
+        // dI/dx = (n + 2) k M_u r r′.
+        let (lambda, tube) = match self.tube {
+            None => (n * dr_dx / r, None),
+            Some(_) => {
+                let uniform = self.uniform_mass(r) / mass;
+                let k = self.inertia_factor();
+                (
+                    n * uniform * dr_dx / r,
+                    Some(TubeShares {
+                        inertia: self.moment_of_inertia(r) / (mass * r * r),
+                        inertia_rate: (n + 2.0) * k * uniform * dr_dx / r,
+                    }),
+                )
+            }
+        };
         Growth {
             r,
-            mass: self.mass_at(x),
+            mass,
             dr_dx,
             d2r_dx2: -bend * dr_dx * dr_dx / r,
-            lambda: self.shape.mass_exponent() * dr_dx / r,
+            lambda,
+            tube,
         }
     }
 }
@@ -355,8 +450,23 @@ pub struct Growth {
     /// r″ = d²r/dx², 1/m: −r′²/r on the area law, −2r′²/r for a fixed swath,
     /// −r′²(2/r − 4b/w²) for the chord.
     pub d2r_dx2: f64,
-    /// λ = (dM/dx)/M = n r′/r (M ∝ rⁿ), 1/m.
+    /// λ = (dM/dx)/M, 1/m: n r′/r (M ∝ rⁿ); with a [`Tube`],
+    /// n (M_u/M) r′/r.
     pub lambda: f64,
+    /// With a [`Tube`], the moment of inertia per unit mass, which is then no
+    /// longer k r²; `None` for a uniform body.
+    pub tube: Option<TubeShares>,
+}
+
+/// The moment of inertia of a body with a [`Tube`] per M r²
+/// (`docs/unwinding.md`, "The core"); for a uniform body these would be k
+/// and k (n + 2) r′/r.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TubeShares {
+    /// j = I/(M r²).
+    pub inertia: f64,
+    /// (dI/dx)/(M r²), 1/m.
+    pub inertia_rate: f64,
 }
 
 #[cfg(test)]
@@ -371,6 +481,7 @@ mod tests {
             r0: 0.1,
             snow_depth: 0.01,
             swath: Swath::Diameter,
+            tube: None,
         };
         let ball = Body {
             shape: Shape::Sphere,

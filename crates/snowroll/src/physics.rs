@@ -30,8 +30,16 @@ pub fn growth_at(s: &Scenario, x: Meters, accretes: bool) -> Growth {
 /// generalised, `docs/snowball-and-losses.md` §1.2; r′² v² = ṙ², eq. (1)).
 /// For the log, eq. (7) as printed:
 /// `T = 3πρl r² v²/4 + ρ l b² v²/(8π)`.
+///
+/// With a tube of its own mass (`docs/unwinding.md`, "The core"),
+/// `T = ½ (M (1 + r′²) + I/r²) v²` with M and I of [`crate::body::Tube`].
 pub fn kinetic_energy(s: &Scenario, x: Meters, v: MetersPerSecond) -> Joules {
     let (rho, l, b) = (s.density(), s.length(), s.snow_depth());
+    if s.core_mass().is_some() {
+        let gr = growth_at(s, x, true);
+        let j = gr.tube.map_or(s.shape().inertia_factor(), |t| t.inertia);
+        return 0.5 * gr.mass * (1.0 + j + gr.dr_dx * gr.dr_dx) * v * v;
+    }
     if s.shape() == Shape::Sphere {
         let gr = growth_at(s, x, true);
         return 0.5 * gr.mass * (1.0 + s.shape().inertia_factor() + gr.dr_dx * gr.dr_dx) * v * v;
@@ -102,7 +110,22 @@ pub(crate) fn chord_mass_integral(s: &Scenario, r: Meters) -> f64 {
 /// `ρlg[(π(r³ − r0³) + b²x/2) cos α − (bx²/2 + πr0²x) sin α]` (using
 /// `2πr² = 2πr0² + 2bx`, eq. (8)), which does not cancel when `x` is large
 /// or `b` small.
+///
+/// With a tube of its own mass (`docs/unwinding.md`, "The core"), the uniform
+/// body's V plus that of the mass the tube adds at the centre,
+/// `ΔM (C (r − r0) − G x)`, ΔM = m_c − M_u(r_c).
 pub fn potential_energy(s: &Scenario, x: Meters) -> Joules {
+    if s.core_mass().is_some() {
+        let extra = s.body().tube_offset();
+        let rise = radius_at(s, x) - s.initial_radius();
+        return uniform_potential_energy(&s.uniform(), x)
+            + extra * (s.g_normal() * rise - s.g_along() * x);
+    }
+    uniform_potential_energy(s, x)
+}
+
+/// [`potential_energy`] of a body of one material.
+fn uniform_potential_energy(s: &Scenario, x: Meters) -> Joules {
     if s.shape() == Shape::Sphere {
         return ball_potential_energy(s, x);
     }

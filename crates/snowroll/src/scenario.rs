@@ -3,10 +3,10 @@
 use crate::portable::Portable as _;
 use serde::{Deserialize, Serialize};
 
-use crate::body::Body;
+use crate::body::{Body, Tube};
 use crate::error::ParamError;
 use crate::units::{
-    KilogramsPerCubicMeter, Meters, MetersPerSecond, MetersPerSecondSquared, Radians,
+    Kilograms, KilogramsPerCubicMeter, Meters, MetersPerSecond, MetersPerSecondSquared, Radians,
 };
 
 /// A validated scenario: a log of radius `r0` starting at `x = 0` with speed
@@ -43,6 +43,9 @@ pub struct Scenario {
     gravity_parts: (MetersPerSecondSquared, MetersPerSecondSquared),
     /// The core radius of an unwinding roll (b < 0), m.
     core: Option<Meters>,
+    /// The mass of that core's tube, kg; `None`: the core is taken as the
+    /// roll's own material (`docs/unwinding.md`, "The core").
+    core_mass: Option<Kilograms>,
 }
 
 /// (g sin alpha, g cos alpha).
@@ -102,11 +105,17 @@ pub struct ScenarioFile {
     #[serde(alias = "swath-width", skip_serializing_if = "Option::is_none")]
     pub swath_width: Option<SwathWidth>,
     /// Radius of the core of an unwinding roll (b < 0), m, 0 < core < r0:
-    /// the run stops with `unwound` where r reaches it. Its mass is
-    /// neglected (`docs/unwinding.md`). Required with b < 0, refused with
-    /// b >= 0.
+    /// the run stops with `unwound` where r reaches it (`docs/unwinding.md`).
+    /// Required with b < 0, refused with b >= 0.
     #[serde(alias = "core-radius", skip_serializing_if = "Option::is_none")]
     pub core_radius: Option<f64>,
+    /// Mass of the core's tube, kg, > 0 (only with `core_radius`): a
+    /// thin-walled tube (a ball's core: a thin shell) of that mass at the
+    /// core radius, inside which the roll is hollow. `None` (the default):
+    /// the roll is of one material down to its centre, as the note's log
+    /// (`docs/unwinding.md`, "The core").
+    #[serde(alias = "core-mass", skip_serializing_if = "Option::is_none")]
+    pub core_mass: Option<f64>,
 }
 
 impl Default for ScenarioFile {
@@ -122,6 +131,7 @@ impl Default for ScenarioFile {
             shape: Shape::Cylinder,
             swath_width: None,
             core_radius: None,
+            core_mass: None,
         }
     }
 }
@@ -210,6 +220,9 @@ impl Scenario {
         check_scale("density (kg/m^3)", rho, false, "change {density}")?;
         check_scale("log length (m)", l, false, "change {length}")?;
         check_scale("initial speed v0 (m/s)", v0, true, "change {v0}")?;
+        if let Some(m) = self.core_mass {
+            check_scale("core mass (kg)", m, false, "change {core_mass}")?;
+        }
         // The slope component of gravity g sin alpha divides accelerations
         // (a over g sin alpha): a subnormal alpha_deg (4.9e-324) becomes 0 rad.
         // A level floor (exactly 0) is allowed for the unwinding roll only.
@@ -310,6 +323,7 @@ impl Scenario {
             shape: file.shape,
             swath: swath_of(&file)?,
             core: unwinding::core_of(&file)?,
+            core_mass: unwinding::core_mass_of(&file)?,
             gravity_parts: (0.0, 0.0),
         };
         s.gravity_parts = gravity_parts(s.g, s.alpha);
@@ -355,6 +369,26 @@ impl Scenario {
     /// The core radius of an unwinding roll (b < 0), m; `None` otherwise.
     pub fn core_radius(&self) -> Option<Meters> {
         self.core
+    }
+    /// The mass of the unwinding roll's tube, kg; `None` when the core is
+    /// the roll's own material, or the roll does not unwind.
+    pub fn core_mass(&self) -> Option<Kilograms> {
+        self.core_mass
+    }
+    /// Whether the equations of motion take the common form of §2
+    /// (`models/circular`): r(x) on the area law (eq. (8)) and a uniform
+    /// body, M ∝ rⁿ and I = k M r². A tube of its own mass
+    /// ([`core_mass`](Self::core_mass)) breaks the second.
+    pub fn has_common_form(&self) -> bool {
+        self.follows_area_law() && self.core_mass.is_none()
+    }
+    /// The same scenario with the core of the roll's own material
+    /// (no [`core_mass`](Self::core_mass)).
+    pub(crate) fn uniform(&self) -> Scenario {
+        Scenario {
+            core_mass: None,
+            ..*self
+        }
     }
     /// Whether the body lays a layer down (b < 0, the unwinding roll)
     /// rather than picking one up.
@@ -404,6 +438,10 @@ impl Scenario {
             r0: self.r0,
             snow_depth: self.b,
             swath: self.swath,
+            tube: match (self.core, self.core_mass) {
+                (Some(radius), Some(mass)) => Some(Tube { radius, mass }),
+                _ => None,
+            },
         }
     }
 }
@@ -467,6 +505,7 @@ impl From<Scenario> for ScenarioFile {
                 Swath::Chord => Some(SwathWidth::Chord(ChordWord::Chord)),
             },
             core_radius: s.core,
+            core_mass: s.core_mass,
         }
     }
 }
@@ -490,6 +529,7 @@ impl Default for Scenario {
             swath: Swath::Diameter,
             gravity_parts: gravity_parts(f.g, f.alpha_deg.to_radians()),
             core: None,
+            core_mass: None,
         }
     }
 }

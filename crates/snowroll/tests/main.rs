@@ -23,3 +23,4 @@ mod turns_closed;
 mod turns_precision;
 mod turns_reference;
 mod unwinding;
+mod unwinding_core;

@@ -64,7 +64,10 @@ impl ContactForces {
 /// (`docs/snowball-and-losses.md` §1.2):
 /// `N/M = C + r′ a + (λ r′ + r″) v²`, `F/M = G − a − λ v²`, with r′, r″, λ of
 /// its growth law ([`crate::physics::Growth`]); on the log's law these are
-/// the formulae above. The snowless ball: N = M C, F = (2/7) M G.
+/// the formulae above. The snowless ball: N = M C, F = (2/7) M G. The same
+/// general form serves a roll whose tube has a mass of its own
+/// (`docs/unwinding.md`, "The core"): the tube moves with the centre, so p is
+/// still M (v, ṙ), with M and λ of [`crate::body::Tube`].
 pub fn circular_forces(
     coeffs: &Coefficients,
     s: &Scenario,
@@ -72,7 +75,7 @@ pub fn circular_forces(
     v: MetersPerSecond,
     a: MetersPerSecondSquared,
 ) -> ContactForces {
-    if s.shape() == Shape::Sphere {
+    if s.shape() == Shape::Sphere || s.core_mass().is_some() {
         let gr = crate::physics::growth_at(s, x, coeffs.accretes);
         let normal = s.g_normal() + gr.dr_dx * a + (gr.lambda * gr.dr_dx + gr.d2r_dx2) * v * v;
         let friction = s.g_along() - a - gr.lambda * v * v;

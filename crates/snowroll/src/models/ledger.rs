@@ -49,11 +49,24 @@ pub(super) fn rates(
     let f_compaction = l.compaction_energy * dm_dx;
     // Rate of K + V, K = ½ M (1 + k + r′²) v²: dK/dt = v [M I a + ½ M′ I v² + M r′ r″ v²],
     // dV/dt = V′ v with V′ = M C [λ (r + b/2) + r′] − M G (§1.2).
-    let inertia = 1.0 + s.shape().inertia_factor() + r1 * r1;
+    // With a tube of its own mass (`docs/unwinding.md`, "The core"), I/(M r²)
+    // = j varies: dK/dt = v [M I a + ½ (M I)′ v² ...] with the r′² and spin
+    // parts of (M I)′ apart: M′ (1 + r′²) + (I/r²)′ (the M r′ r″ term is
+    // below), (I/r²)′ = M (i′ − 2 j r′/r); for a uniform body M′ I.
+    let (inertia, inertia_rate) = match gr.tube {
+        None => {
+            let inertia = 1.0 + s.shape().inertia_factor() + r1 * r1;
+            (inertia, dm_dx * inertia)
+        }
+        Some(t) => (
+            1.0 + t.inertia + r1 * r1,
+            dm_dx * (1.0 + r1 * r1) + m * (t.inertia_rate - 2.0 * t.inertia * r1 / r),
+        ),
+    };
     let v_prime = m * g_normal * (lambda * (r + b / 2.0) + r1) - m * g_along;
     let power = v
         * (m * inertia * a
-            + 0.5 * dm_dx * inertia * v * v
+            + 0.5 * inertia_rate * v * v
             + m * r1 * r2 * v * v
             + v_prime
             + f_drag
@@ -73,8 +86,9 @@ pub(super) fn row(s: &Scenario, coeffs: &Coefficients, x: f64, v: f64, w: [f64; 
         )
     } else {
         // App. A: K = ½ (1 + k) M v², V = −M G x.
-        let m = s.initial_mass();
-        let half = 0.5 * (1.0 + s.shape().inertia_factor());
+        let gr = growth_at(s, 0.0, false);
+        let m = gr.mass;
+        let half = 0.5 * (1.0 + gr.tube.map_or(s.shape().inertia_factor(), |t| t.inertia));
         let v0 = s.initial_speed();
         (half * m * v * v, -m * s.g_along() * x, half * m * v0 * v0)
     };

@@ -57,11 +57,11 @@ fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Resul
 }
 
 /// Every parameter. See [`Param`] for the meaning of each field.
-pub static PARAMS: [Param; 29] = TABLE;
+pub static PARAMS: [Param; 30] = TABLE;
 
 /// [`PARAMS`] as a constant, for what is computed from it at compile time
 /// (the sweep's axes, [`crate::sweep::AxisParam::ALL`]).
-pub(crate) const TABLE: [Param; 29] = [
+pub(crate) const TABLE: [Param; 30] = [
     Param {
         key: "alpha_deg",
         sweep: true,
@@ -206,12 +206,34 @@ pub(crate) const TABLE: [Param; 29] = [
         range: "0 < core_radius < r0 m (only with snow_depth < 0)",
         help:
             "Core radius of an unwinding roll (its tube), in m (0 < core_radius < r0, needed with \
-               a negative snow depth): the run stops there (`unwound`); its mass is neglected",
+               a negative snow depth): the run stops there (`unwound`); the tube's own mass is \
+               core_mass",
         default_note: Some("none (no unwinding)"),
         json: Presence::WhenSet,
         csv: (Section::Extra, Presence::WhenSet),
         get: |s| Value::of_option(s.scenario.core_radius),
         set: |s, v| v.optional_real().map(|x| s.scenario.core_radius = x),
+        ..BASE
+    },
+    Param {
+        key: "core_mass",
+        sweep: true,
+        plot: ("core mass", "kg"),
+        unit: "kg",
+        value_name: "KG",
+        kind: Kind::OptionalReal,
+        range: "core_mass > 0 kg (only with core_radius)",
+        help: "Mass of the unwinding roll's tube, in kg (core_mass > 0, with core_radius): a \
+               thin-walled tube of that mass at the core radius (I = m r_c^2; a sphere's core a \
+               thin shell, I = 2/3 m r_c^2), the roll hollow inside it",
+        default_note: Some(
+            "none = the roll is of one material down to its centre (M = pi rho l r^2, as the \
+             note's log)",
+        ),
+        json: Presence::WhenSet,
+        csv: (Section::Extra, Presence::WhenSet),
+        get: |s| Value::of_option(s.scenario.core_mass),
+        set: |s, v| v.optional_real().map(|x| s.scenario.core_mass = x),
         ..BASE
     },
     Param {

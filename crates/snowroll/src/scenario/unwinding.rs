@@ -3,7 +3,7 @@
 
 use super::{check, ScenarioFile, SwathWidth};
 use crate::error::ParamError;
-use crate::units::Meters;
+use crate::units::{Kilograms, Meters};
 
 /// The core radius of a scenario file, checked: required for an unwinding
 /// roll (b < 0), where 0 < core_radius < r0; refused otherwise. The ball's
@@ -45,3 +45,28 @@ pub(crate) fn core_of(file: &ScenarioFile) -> Result<Option<Meters>, ParamError>
 
 /// The range of the core radius, as the parameter table states it.
 const CORE_RANGE: &str = "0 < core_radius < r0 m (only with snow_depth < 0)";
+
+/// The core's own mass of a scenario file, checked: > 0 kg, and only with a
+/// core radius (so only for an unwinding roll). A massless hollow core is
+/// refused: the last layer would leave a body of no mass and no moment of
+/// inertia, and the speed of every model would grow without bound as it does.
+pub(crate) fn core_mass_of(file: &ScenarioFile) -> Result<Option<Kilograms>, ParamError> {
+    const NAME: &str = "core_mass (kg)";
+    let Some(m) = file.core_mass else {
+        return Ok(None);
+    };
+    let m = check(NAME, m, |m| m > 0.0, CORE_MASS_RANGE)?;
+    if file.core_radius.is_none() {
+        return Err(ParamError::InvalidParameter {
+            name: NAME,
+            value: m,
+            expected: "no core_mass without core_radius: it is the mass of the tube an \
+                       unwinding roll (snow_depth < 0) ends on; give {core_radius} or drop \
+                       {core_mass}",
+        });
+    }
+    Ok(Some(m))
+}
+
+/// The range of the core's mass, as the parameter table states it.
+const CORE_MASS_RANGE: &str = "core_mass > 0 kg (only with core_radius)";

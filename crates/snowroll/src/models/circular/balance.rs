@@ -7,6 +7,7 @@ use super::per_mass::losses_per_mass;
 use super::Coefficients;
 #[cfg(doc)]
 use super::Derivation;
+use crate::body::TubeShares;
 use crate::losses::Losses;
 use crate::physics::Growth;
 use crate::scenario::{Scenario, Shape};
@@ -70,12 +71,18 @@ impl Balance {
     /// The right-hand side `G − …` of the type doc's equation and its
     /// inertia factor `1 + k + ε r′²`.
     fn drive_and_inertia(&self, s: &Scenario, gr: &Growth, v: f64) -> (f64, f64) {
-        let k = s.shape().inertia_factor();
         let (r, r1, r2, lam) = (gr.r, gr.dr_dx, gr.d2r_dx2, gr.lambda);
-        let inertia = 1.0 + k + self.inertia_r2 * r1 * r1;
-        let v2_coeff = self.c_n * lam * inertia
-            + (self.c_1 * (1.0 + k) + self.c_k * k) * r1 / r
-            + self.inertia_r2 * self.c_rr * r1 * r2;
+        let (inertia, v2_coeff) = match gr.tube {
+            None => {
+                let k = s.shape().inertia_factor();
+                let inertia = 1.0 + k + self.inertia_r2 * r1 * r1;
+                let v2_coeff = self.c_n * lam * inertia
+                    + (self.c_1 * (1.0 + k) + self.c_k * k) * r1 / r
+                    + self.inertia_r2 * self.c_rr * r1 * r2;
+                (inertia, v2_coeff)
+            }
+            Some(t) => self.with_tube(gr, t),
+        };
         let lift =
             s.g_normal() * (self.lift * (lam * r + r1) + self.lift_b * lam * s.snow_depth() / 2.0);
         (s.g_along() - v2_coeff * v * v - lift, inertia)
@@ -83,6 +90,30 @@ impl Balance {
 }
 
 impl Balance {
+    /// The inertia factor and the coefficient of v² of the type doc's
+    /// equation for a body whose moment of inertia is not k M r² (the
+    /// unwinding roll's [`Tube`](crate::body::Tube), `docs/unwinding.md`,
+    /// "The core"). Each balance written with M(x) and I(x) and divided by
+    /// M, with j = I/(M r²) and i′ = (dI/dx)/(M r²):
+    ///
+    /// `(1 + j + ε r′²) a = G − [c_n (λ (1 + ε r′²) + i′ − 2 j r′/r) + ε c_rr r′ r″
+    ///  + (c_1 + c_k) j r′/r + c_1 r′/r] v² − lift`.
+    ///
+    /// (eq. (3): d(Mv)/dt + d(I v/r)/dt/r = M G; eq. (5): d((I + M r²) v/r)/dt
+    /// = M G r; the energy balances: d(½ (M (1 + ε r′²) + I/r²) v²)/dt =
+    /// −dV/dt, eq. (21) without ∂T/∂x.) With j = k, i′ = k (λ + 2 r′/r) it is
+    /// the uniform body's form.
+    fn with_tube(&self, gr: &Growth, t: TubeShares) -> (f64, f64) {
+        let (r, r1, r2, lam) = (gr.r, gr.dr_dx, gr.d2r_dx2, gr.lambda);
+        let (j, i1) = (t.inertia, t.inertia_rate);
+        let radial = 1.0 + self.inertia_r2 * r1 * r1;
+        let v2_coeff = self.c_n * (lam * radial + i1 - 2.0 * j * r1 / r)
+            + self.inertia_r2 * self.c_rr * r1 * r2
+            + (self.c_1 + self.c_k) * j * r1 / r
+            + self.c_1 * r1 / r;
+        (radial + j, v2_coeff)
+    }
+
     /// The common form's coefficients of this balance for `shape` on the
     /// area law ([`Derivation::coefficients_for`]).
     pub fn area_law_coefficients(&self, shape: Shape, accretes: bool) -> Coefficients {

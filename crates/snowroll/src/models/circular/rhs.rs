@@ -125,9 +125,10 @@ impl Acceleration {
 
     /// The acceleration of `derivation` run with `c` on `s` with the losses
     /// `l`: the common form where r(x) follows the area law, else the balance
-    /// (the ball with a fixed swath or the chord).
+    /// (the ball with a fixed swath or the chord, and a roll whose tube has a
+    /// mass of its own).
     pub(super) fn of(derivation: Derivation, c: &Coefficients, s: &Scenario, l: &Losses) -> Self {
-        if s.follows_area_law() {
+        if s.has_common_form() {
             Self::Area(AreaLaw::new(c, s, l))
         } else {
             Self::General {

@@ -81,7 +81,7 @@ impl Derivation {
     /// and its zero is found by bisection to rounding.
     pub fn stall_slope_in(self, s: &Scenario, l: &Losses) -> Option<Radians> {
         let c = self.coefficients_for(s.shape());
-        if !l.any() && s.follows_area_law() {
+        if !l.any() && s.has_common_form() {
             return c.stall_slope(s.snow_depth(), s.initial_radius());
         }
         let at_rest = |alpha: f64| -> Option<f64> {

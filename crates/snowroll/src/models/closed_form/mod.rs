@@ -211,7 +211,7 @@ impl SpeedSquared {
         contact: ContactCheck,
     ) -> Option<SpeedSquared> {
         let shape = scenario.shape();
-        if c.shape != shape || c.drag_b3 != 0.0 || !scenario.follows_area_law() {
+        if c.shape != shape || c.drag_b3 != 0.0 || !scenario.has_common_form() {
             return None;
         }
         let b = if c.accretes {
