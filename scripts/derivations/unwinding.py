@@ -13,7 +13,12 @@ Checks, with sympy, each closed form that crates/snowroll/tests/unwinding.rs typ
 5. who starts from rest on a level floor: a(v = 0, alpha = 0) of each model;
 6. which geometry eq. (10) with b < 0 describes: the laid layer's centre of mass at +|b|/2 above
    the plane the roll's centre is r above (the b^2 term of the potential), against a roll that rides
-   on its own laid layer, whose term has the other sign.
+   on its own laid layer, whose term has the other sign;
+7. the tube (docs/unwinding.md, "The core"): each balance written with M(x) and I(x), divided by M,
+   is the one form of that section (j = I/(M r^2), j' = I'/(M r^2), lambda = M'/M); with
+   I = k M r^2, M ~ r^n it is the uniform body's form of docs/snowball-and-losses.md section 1.2;
+   and on a level floor v^2 = 2g (M(R) R - M(r) r)/(M(r) + I(r)/r^2) solves eq. (15) with the tube
+   (the closed form crates/snowroll/tests/unwinding_core.rs types).
 """
 
 import sympy as sp
@@ -126,5 +131,77 @@ same("eq. (10)'s layer term is the laid layer at h = -b/2 (+|b|/2 for b < 0)",
      layer.subs(h, -b / 2), rho * b * l * x * g * b * sp.cos(alpha) / 2)
 same("a roll riding on its layer (h = b/2): the b^2 term's sign flips",
      layer.subs(h, b / 2), -rho * b * l * x * g * b * sp.cos(alpha) / 2)
+
+# 7. The tube. Each balance with general M(X), I(X), r(X) along the distance X, speed V, a = dV/dt:
+# d/dt f(X, V) = V df/dX + a df/dV.
+X, V, a_, Gs, Cs = sp.symbols("X V a G C", real=True)
+Mf, If, rf = sp.Function("M")(X), sp.Function("I")(X), sp.Function("r")(X)
+
+
+def ddt(expr):
+    return sp.diff(expr, X) * V + sp.diff(expr, V) * a_
+
+
+r1, r2 = sp.diff(rf, X), sp.diff(rf, X, 2)
+U1 = lambda lb: sp.diff(Mf, X) * Cs * (rf + lb * b / 2) + Mf * Cs * r1 - Mf * Gs  # noqa: E731  dU/dX
+A_full = Mf * (1 + r1**2) + If / rf**2
+A_thin = Mf + If / rf**2
+balances = {
+    # name: (residual = 0, (eps, c_n, c_1, c_k, c_rr, lift, lift_b))
+    "eqs. (2)-(3), torque about the centre": (
+        ddt(Mf * V) + ddt(If * V / rf) / rf - Mf * Gs, (0, 1, 0, 1, 0, 0, 0)),
+    "eq. (5), torque about the contact line": (
+        ddt((If + Mf * rf**2) * V / rf) - Mf * Gs * rf, (0, 1, 1, 0, 0, 0, 0)),
+    "eq. (14), energy with r'^2 and the layer's b/2": (
+        ddt(A_full * V**2 / 2) + V * U1(1), (1, sp.Rational(1, 2), 0, 0, 1, 1, 1)),
+    "eq. (15), energy to first order": (
+        ddt(A_thin * V**2 / 2) + V * U1(0), (0, sp.Rational(1, 2), 0, 0, 0, 1, 0)),
+    "eq. (21) as printed, without dT/dx": (
+        ddt(A_full * V) + U1(1), (1, 1, 0, 0, 2, 1, 1)),
+    "eq. (32)": (
+        A_thin * a_ + sp.diff(A_thin, X) * V**2 / 2 - Mf * Gs, (0, sp.Rational(1, 2), 0, 0, 0, 0, 0)),
+}
+j = If / (Mf * rf**2)
+jp = sp.diff(If, X) / (Mf * rf**2)
+lam = sp.diff(Mf, X) / Mf
+
+
+def one_form(eps, c_n, c_1, c_k, c_rr, lift, lift_b):
+    v2 = (c_n * (lam * (1 + eps * r1**2) + jp - 2 * j * r1 / rf) + eps * c_rr * r1 * r2
+          + (c_1 + c_k) * j * r1 / rf + c_1 * r1 / rf)
+    lift_terms = Cs * (lift * (lam * rf + r1) + lift_b * lam * b / 2)
+    return (Gs - v2 * V**2 - lift_terms) / (1 + j + eps * r1**2)
+
+
+k_, n_ = sp.symbols("k n", positive=True)
+rr_ = sp.Function("rho_r")(X)
+for name, (residual, consts) in balances.items():
+    a_sol = sp.solve(sp.expand(residual), a_)[0]
+    check(f"tube: {name} is the one form of 'The core'", sp.simplify(a_sol - one_form(*consts)) == 0)
+    # A uniform body: I = k M r^2, M = c r^n: the form of docs/snowball-and-losses.md section 1.2.
+    cm = sp.Symbol("c_m", positive=True)
+    uni = {If: k_ * cm * rf**(n_ + 2), Mf: cm * rf**n_}
+    eps, c_n, c_1, c_k, c_rr, lift, lift_b = consts
+    lam_u = n_ * r1 / rf
+    inertia = 1 + k_ + eps * r1**2
+    sec12 = (Gs - (c_n * lam_u * inertia + (c_1 * (1 + k_) + c_k * k_) * r1 / rf + eps * c_rr * r1 * r2) * V**2
+             - Cs * (lift * (lam_u * rf + r1) + lift_b * lam_u * b / 2)) / inertia
+    got = one_form(*consts).subs(uni).doit()
+    check(f"tube: {name}, uniform body: the form of section 1.2", sp.simplify(got - sec12) == 0)
+
+# The closed form on a level floor: u(r) = 2g (M(R) R - M(r) r)/(M + I/r^2) with the log's tube
+# solves eq. (15)'s one form, a = (1/2) du/dx, du/dx = (du/dr) b/(2 pi r), G = 0, C = g.
+mc, rc = sp.symbols("m_c r_c", positive=True)
+M_t = mc + rho * l * pi * (r**2 - rc**2)
+I_t = mc * rc**2 + rho * l * pi * (r**4 - rc**4) / 2
+u_t = 2 * g * (M_t.subs(r, R) * R - M_t * r) / (M_t + I_t / r**2)
+dr_dx = b / (2 * pi * r)
+lam_t = sp.diff(M_t, r) * dr_dx / M_t
+j_t = I_t / (M_t * r**2)
+jp_t = sp.diff(I_t, r) * dr_dx / (M_t * r**2)
+a15 = (-(sp.Rational(1, 2) * (lam_t + jp_t - 2 * j_t * dr_dx / r)) * u_t
+       - g * (lam_t * r + dr_dx)) / (1 + j_t)
+check("tube, level floor: u = 2g (M(R) R - M r)/(M + I/r^2) solves eq. (15)",
+      sp.simplify(sp.diff(u_t, r) * dr_dx / 2 - a15) == 0)
 
 finish()
