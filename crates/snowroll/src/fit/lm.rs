@@ -24,6 +24,11 @@ pub(crate) struct Problem {
     pub max_iterations: usize,
     /// Each parameter's name, for errors.
     pub names: Vec<String>,
+    /// The S below which the model matches the data to its own accuracy
+    /// (the runs' rtol times the size of the distances, per point, squared,
+    /// summed): there a step that still promises a relative gain is noise
+    /// of the runs and of the difference Jacobian, not a way down.
+    pub floor: f64,
 }
 
 /// Where the search ended.
@@ -118,7 +123,7 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
         let Some((trial, s_new, taken)) = step else {
             // No step lowers S: converged if the gradient promises nothing
             // measurable, else stuck.
-            let stationary = gauss_newton_gain(&a, &g, &diag) <= 1e-10 * s;
+            let stationary = gauss_newton_gain(&a, &g, &diag) <= 1e-10 * s || s <= problem.floor;
             let reason = if stationary {
                 "no step lowers the residuals further (at the minimum to rounding)"
             } else {
@@ -141,7 +146,7 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
         std::mem::swap(&mut r, &mut trial_r);
         s = s_new;
         let small = moved <= STEP_TOL || (gain <= SUM_TOL && moved <= LOOSE_STEP_TOL);
-        let stuck = small && promised > STUCK;
+        let stuck = small && promised > STUCK && s > problem.floor;
         if small || iterations >= problem.max_iterations {
             let jac = jacobian(problem, f, &p, &r)?;
             let reason = if stuck {

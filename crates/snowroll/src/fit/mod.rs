@@ -356,6 +356,14 @@ pub fn fit(track: &Track, models: &[ModelKind], spec: &FitSpec) -> Result<Vec<Mo
     Ok(fits)
 }
 
+/// S at which the runs match the data to their own accuracy: each point off
+/// by rtol times the largest distance of the track ([`lm::Problem::floor`]).
+fn accuracy_floor(track: &Track, spec: &FitSpec) -> f64 {
+    let size = track.x().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    let off = spec.settings.options.tolerances.rtol * size;
+    track.len() as f64 * off * off
+}
+
 fn fit_one(
     track: &Track,
     kind: ModelKind,
@@ -389,6 +397,7 @@ fn fit_one(
             n => n,
         },
         names: keys.clone(),
+        floor: accuracy_floor(track, spec),
     };
     let start_error = |reason| FitError::Start {
         model: kind.id(),
