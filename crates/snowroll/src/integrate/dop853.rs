@@ -230,6 +230,23 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
         self.peaks.restart();
     }
 
+    /// Goes on from the state `y` a `Reset` event left at `t` (either step
+    /// loop, DOP853's or the Taylor series'): the state must be finite, the
+    /// integration restarts there ([`Integrator::restart`]), and a reset at
+    /// or past `t_end` ends the run there.
+    pub(super) fn reset_to(
+        &mut self,
+        t: f64,
+        y: &[f64; N],
+        t_end: f64,
+    ) -> Result<Option<Outcome<N>>, SimError> {
+        if !y.iter().all(|v| v.is_finite()) {
+            return Err(SimError::NonFiniteState { t });
+        }
+        self.restart(t, y);
+        Ok((t >= t_end).then(|| self.outcome(t, *y, Termination::EndTime)))
+    }
+
     /// The step loop from `(t, y)` to `t_end`: trial steps, the
     /// controller's verdict, and for each accepted step its events and its
     /// report to the observer ([`Integrator::accept`]).
@@ -283,14 +300,10 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                     // that was just accepted (the controller shrinks it if
                     // the new state needs that).
                     (t, y) = (te, y_after);
-                    if !y.iter().all(|v| v.is_finite()) {
-                        return Err(SimError::NonFiniteState { t });
+                    if let Some(outcome) = self.reset_to(t, &y, t_end)? {
+                        return Ok(outcome);
                     }
-                    self.restart(t, &y);
                     control.last_rejected = false;
-                    if t >= t_end {
-                        return Ok(self.outcome(t, y, Termination::EndTime));
-                    }
                     continue;
                 }
             }

@@ -132,12 +132,8 @@ impl<S: OdeSystem<N>, const N: usize> Integrator<'_, S, N> {
                 Some(Interrupt::Finish(outcome)) => return Ok(outcome),
                 Some(Interrupt::Reset(te, y_after)) => {
                     (t, y) = (te, y_after);
-                    if !y.iter().all(|v| v.is_finite()) {
-                        return Err(SimError::NonFiniteState { t });
-                    }
-                    self.restart(t, &y);
-                    if t >= t_end {
-                        return Ok(self.outcome(t, y, Termination::EndTime));
+                    if let Some(outcome) = self.reset_to(t, &y, t_end)? {
+                        return Ok(outcome);
                     }
                     continue;
                 }
