@@ -118,6 +118,8 @@ claim_ids! {
     EnergyLedgerBalances: "energy-ledger-balances";
     /// Issue 35, eq. (15) with b < 0: the unwinding roll on a level floor.
     UnwindingTextbookSpeed: "unwinding-textbook-speed";
+    /// Issue 35, eq. (15) with b < 0 on a hollow roll: the tube's own mass.
+    UnwindingHollowRoll: "unwinding-hollow-roll";
 }
 
 impl fmt::Display for ClaimId {

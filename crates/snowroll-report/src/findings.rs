@@ -133,12 +133,15 @@ pub(crate) fn established(id: ClaimId) -> &'static str {
         UnwindingTextbookSpeed => {
             "A roll that unwinds on a level floor follows the textbook v² = 4g(R³ − r³)/(3r²) under eq. (15); the torque analyses leave it at rest"
         }
+        UnwindingHollowRoll => {
+            "A hollow roll on a light tube is not the textbook's roll: eq. (15) with the tube's own mass and moment of inertia"
+        }
     }
 }
 
 /// Claims the note leaves open (it names the question but not the answer,
 /// or does not ask): they open the "found beyond the note" group when they hold.
-const BEYOND_THE_NOTE: [ClaimId; 11] = [
+const BEYOND_THE_NOTE: [ClaimId; 12] = [
     ClaimId::Fn10HopThreshold,
     ClaimId::Fn7StallThreshold,
     ClaimId::Fn7StallInFirstTurn,
@@ -150,6 +153,7 @@ const BEYOND_THE_NOTE: [ClaimId; 11] = [
     ClaimId::SnowlessDragTerminalVelocity,
     ClaimId::EnergyLedgerBalances,
     ClaimId::UnwindingTextbookSpeed,
+    ClaimId::UnwindingHollowRoll,
 ];
 
 /// The groups of the opening, in the order the report prints them.

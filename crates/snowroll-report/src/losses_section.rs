@@ -49,10 +49,16 @@ const SECTIONS: [Section; 2] = [
 ];
 
 /// The unwinding roll's results.
-const UNWINDING: [Item; 1] = [Item {
-    claim: ClaimId::UnwindingTextbookSpeed,
-    lead: "On a level floor, from rest, only the energy balances move the roll: as it thins, its centre falls. Eq. (15) is then the textbook unrolling carpet (Serway, ch. 10), v² = 4g(R³ − r³)/(3r²) and √(14gR/3) at r = R/2, while the torque analyses of eqs. (4) and (6) have no term that starts it. Down a slope every model unwinds it, the torque balances fastest (docs/unwinding.md gives each model's speed at R/2 and time to unwind).",
-}];
+const UNWINDING: [Item; 2] = [
+    Item {
+        claim: ClaimId::UnwindingTextbookSpeed,
+        lead: "On a level floor, from rest, only the energy balances move the roll: as it thins, its centre falls. Eq. (15) is then the textbook unrolling carpet (Serway, ch. 10), v² = 4g(R³ − r³)/(3r²) and √(14gR/3) at r = R/2, while the torque analyses of eqs. (4) and (6) have no term that starts it. Down a slope every model unwinds it, the torque balances fastest (docs/unwinding.md gives each model's speed at R/2 and time to unwind).",
+    },
+    Item {
+        claim: ClaimId::UnwindingHollowRoll,
+        lead: "The textbook's roll is of one material down to its centre; a real one is hollow, on a tube. With the tube's own mass (--core-mass) every balance runs with the roll's M(r) and I(r), and eq. (15) keeps its energy integral: a 5 g tube under 0.70 kg of paper makes the roll about a fifth faster at R/2 than the textbook says. A measurement should give the tube, or fit it.",
+    },
+];
 
 /// One result: the claim that carries it and the sentence that says what it
 /// means.

@@ -1056,3 +1056,21 @@ fn unwinding_textbook_speed_notices_a_wrong_lift_term() {
     );
     changes(ClaimId::UnwindingTextbookSpeed, &wrong);
 }
+
+#[test]
+fn unwinding_hollow_roll_notices_a_model_that_ignores_the_tube() {
+    // eq. (15) run as if the core were paper down to the centre: the
+    // textbook's uniform roll in place of the hollow one.
+    let wrong = lab().with_runner(|kind, s, opts| {
+        (kind == ModelKind::EnergyThin).then(|| {
+            let f = ScenarioFile {
+                core_mass: None,
+                ..ScenarioFile::from(*s)
+            };
+            ModelKind::EnergyThin
+                .build()
+                .simulate(&Scenario::new(f)?, opts)
+        })
+    });
+    changes(ClaimId::UnwindingHollowRoll, &wrong);
+}

@@ -69,7 +69,9 @@ pub fn tuned_to_default(id: crate::ClaimId) -> Option<&'static str> {
             Some("its b → 0 extrapolation and absolute tolerance are set for the default run's growth x/r0")
         }
         SlipMuMin => Some("its closed forms are for a start from rest on a slope where no model hops"),
-        UnwindingTextbookSpeed => Some("it runs its own roll of paper on a level floor, whatever the report's scenario"),
+        UnwindingTextbookSpeed | UnwindingHollowRoll => {
+            Some("it runs its own roll of paper on a level floor, whatever the report's scenario")
+        }
         SnowballFiveSevenths | TptLetterClosedForm | SnowballTerminalFractions => {
             Some("the ball's closed forms start from rest and its runs are as long as the default b/r0 needs")
         }

@@ -44,7 +44,9 @@ use super::terminal::{
     EQ33_PRINTED_APART, EQ34_LATE, EQ35_LIMIT, EQ35_POSITION, ERRATUM_33_35, TERMINAL_LIMIT,
     TERMINAL_PRINTED,
 };
-use super::unwinding::{unwinding_textbook_speed, UNWINDING_SPEED};
+use super::unwinding::{
+    unwinding_hollow_roll, unwinding_textbook_speed, HOLLOW_ROLL, UNWINDING_SPEED,
+};
 use super::ClaimCheck;
 use crate::{Claim, ClaimId, Verdict};
 
@@ -453,6 +455,17 @@ pub static CLAIMS: &[ClaimCheck] = &[
             expected: Verdict::Holds,
         },
         check: unwinding_textbook_speed,
+    },
+    ClaimCheck {
+        claim: Claim {
+            id: ClaimId::UnwindingHollowRoll,
+            paper_ref: "eq. (15) with b < 0",
+            statement: "A real roll is hollow: its layer lies on a cardboard tube of its own mass, so M and I are not those of the uniform roll of the textbook (docs/unwinding.md, 'The core'). Eq. (15) written with the roll's and the tube's M(r) and I(r) keeps its energy integral, v² = 2g (M(R) R − M(r) r)/(M(r) + I(r)/r²) on a level floor from rest, and a light tube makes the roll faster than the textbook's.",
+            method: "energy-thin with R = 0.06 m, b = −1e-4 m, paper of 700 kg/m³ 0.1 m wide on a tube of 5 g at 0.02 m (--core-mass), α = 0, from rest, stopped at r = 0.055, 0.045, 0.03 and 0.025 m; its speed against the energy integral with the tube, M and I typed in the check",
+            tolerances: &[HOLLOW_ROLL],
+            expected: Verdict::Holds,
+        },
+        check: unwinding_hollow_roll,
     },
 ];
 

@@ -95,3 +95,79 @@ pub(super) fn unwinding_textbook_speed(lab: &Lab) -> Result<Finding, SimError> {
         ),
     })
 }
+
+/// `unwinding-hollow-roll`: eq. (15) with a tube of its own mass
+/// (`docs/unwinding.md`, "The core").
+pub(super) const HOLLOW_ROLL: Criterion = Criterion {
+    quantity: "|v²/v²_E − 1| of energy-thin on a 5 g tube at r = 0.055, 0.045, 0.03 (R/2) and 0.025 m, v²_E = 2g (M(R) R − M(r) r)/(M(r) + I(r)/r²) with M and I of the paper and the tube",
+    tolerance: Tolerance::Relative { value: 1e-9 },
+    reason: "the runs are integrated at rtol 1e-12 on a smooth right-hand side (DOP853 keeps a few times rtol), as for the uniform roll",
+};
+
+/// The hollow roll of the check: R = 6 cm, 0.1 mm paper of 700 kg/m³, 10 cm
+/// wide, on a 2 cm tube of 5 g, level floor.
+const HOLLOW: (f64, f64, f64) = (0.06, 700.0, 0.1);
+const TUBE: f64 = 0.005;
+
+/// The check: energy-thin on a hollow roll against its energy integral with
+/// the tube, typed here (thin tube I = m r_c², paper between r_c and r), and
+/// how far the hollow roll is from the textbook's uniform one at R/2.
+pub(super) fn unwinding_hollow_roll(lab: &Lab) -> Result<Finding, SimError> {
+    let g = lab.scenario().gravity();
+    let (r0, rho, l) = HOLLOW;
+    let s = Scenario::new(ScenarioFile {
+        alpha_deg: 0.0,
+        snow_depth: B,
+        r0,
+        g,
+        density: rho,
+        length: l,
+        core_radius: Some(CORE),
+        core_mass: Some(TUBE),
+        ..ScenarioFile::default()
+    })?;
+    let mass = |r: f64| TUBE + PI * rho * l * (r * r - CORE * CORE);
+    let inertia = |r: f64| TUBE * CORE * CORE + PI * rho * l * (r.powi(4) - CORE.powi(4)) / 2.0;
+    let closed =
+        |r: f64| 2.0 * g * (mass(r0) * r0 - mass(r) * r) / (mass(r) + inertia(r) / (r * r));
+    let mut worst: f64 = 0.0;
+    let mut numbers = Vec::new();
+    let mut at_half = f64::NAN;
+    for r in [0.055, 0.045, r0 / 2.0, 0.025] {
+        let mut opts = SimOptions {
+            t_end: 1e6,
+            x_end: Some(PI * (r * r - r0 * r0) / B),
+            sampling: Sampling::Ends,
+            ..SimOptions::default()
+        };
+        opts.tolerances.rtol = 1e-12;
+        opts.tolerances.atol = 1e-14;
+        let traj = lab.run(ModelKind::EnergyThin, &s, &opts)?;
+        let v = traj.stop.v_m_s;
+        let want = closed(r);
+        let dev = if traj.stop.reason == StopReason::Distance {
+            (v * v / want - 1.0).abs()
+        } else {
+            f64::INFINITY
+        };
+        worst = worst.max(dev);
+        numbers.extend([v, want]);
+        if r == r0 / 2.0 {
+            at_half = v;
+        }
+    }
+    let textbook = (14.0 * g * r0 / 3.0).sqrt();
+    let ok = worst.is_finite() && HOLLOW_ROLL.accepts_deviation(worst);
+    Ok(Finding {
+        headline: None,
+        measured: format!(
+            "energy-thin at r = R/2 on a 5 g tube: v = {at_half:.6} m/s, {:.1} % above the uniform roll's √(14gR/3) = {textbook:.6} m/s",
+            100.0 * (at_half / textbook - 1.0)
+        ),
+        verdict: holds_if(ok, &numbers),
+        evidence: format!(
+            "largest |v²/v²_E − 1| = {worst:.2e} ({}) over r = 0.055 … 0.025 m; R = {r0} m, b = {B} m, paper {rho} kg/m³, {l} m wide (0.70 kg), tube {TUBE} kg at {CORE} m, α = 0 (synthetic runs of the program)",
+            HOLLOW_ROLL.tolerance
+        ),
+    })
+}
