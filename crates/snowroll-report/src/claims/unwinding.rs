@@ -133,7 +133,8 @@ pub(super) fn unwinding_hollow_roll(lab: &Lab) -> Result<Finding, SimError> {
     let mut worst: f64 = 0.0;
     let mut numbers = Vec::new();
     let mut at_half = f64::NAN;
-    for r in [0.055, 0.045, r0 / 2.0, 0.025] {
+    // The third radius is R/2.
+    for (i, r) in [0.055, 0.045, r0 / 2.0, 0.025].into_iter().enumerate() {
         let mut opts = SimOptions {
             t_end: 1e6,
             x_end: Some(PI * (r * r - r0 * r0) / B),
@@ -152,7 +153,7 @@ pub(super) fn unwinding_hollow_roll(lab: &Lab) -> Result<Finding, SimError> {
         };
         worst = worst.max(dev);
         numbers.extend([v, want]);
-        if r == r0 / 2.0 {
+        if i == 2 {
             at_half = v;
         }
     }
