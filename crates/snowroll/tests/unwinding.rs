@@ -293,6 +293,18 @@ fn turn_models_refuse_and_the_core_goes_with_a_negative_depth() {
     .unwrap_err()
     .to_string();
     assert!(e.contains("0 <= alpha_deg for an unwinding roll"), "{e}");
+    // Compaction: the roll compacts nothing; with b < 0 the term e_c dM/dx
+    // would push it (it sped the roll up before it was refused).
+    let mut opts = SimOptions::default();
+    opts.losses.compaction_energy = 10.0;
+    let s = roll(Shape::Cylinder, 5.0, 0.0);
+    for model in [ModelKind::EnergyThin, ModelKind::TorqueCm, ModelKind::Loney] {
+        let e = model.build().simulate(&s, &opts).unwrap_err().to_string();
+        assert!(e.contains("compacts nothing"), "{model:?}: {e}");
+    }
+    opts.losses.compaction_energy = 0.0;
+    opts.losses.rolling_resistance = 0.01;
+    assert!(ModelKind::EnergyThin.build().simulate(&s, &opts).is_ok());
 }
 
 /// fn. 7's stall slope does not apply to the unwinding roll: every model

@@ -105,6 +105,7 @@ pub trait Model {
         opts.validate()?;
         self.kind().check_shape(scenario)?;
         check_tolerances(self.kind(), scenario, opts)?;
+        check_unwinding_losses(scenario, opts)?;
         Ok(())
     }
 
@@ -148,6 +149,23 @@ pub trait Model {
 pub use crate::model_kind::{ModelInfo, ModelKind, MODEL_TABLE};
 
 /// What each model computes (the names are in [`MODEL_TABLE`]).
+/// The losses an unwinding roll (b < 0) takes: air drag and rolling
+/// resistance, not the work of compacting snow, since it lays its layer down
+/// and picks nothing up (`docs/unwinding.md`); with b < 0 the term
+/// e_c dM/dx would push the roll instead of braking it.
+fn check_unwinding_losses(scenario: &Scenario, opts: &SimOptions) -> Result<(), ParamError> {
+    let e = opts.losses.compaction_energy;
+    if scenario.unwinds() && e > 0.0 {
+        return Err(ParamError::InvalidParameter {
+            name: "compaction_energy (J/kg)",
+            value: e,
+            expected: "compaction_energy = 0 for an unwinding roll (snow_depth < 0): it lays its \
+                       layer down and compacts nothing; drop {compaction_energy}",
+        });
+    }
+    Ok(())
+}
+
 impl ModelKind {
     /// Late-time acceleration as a fraction of g sin α, where the model has
     /// one (with snow, b > 0), computed from the model's coefficients. `None`
