@@ -275,3 +275,37 @@ fn rows_that_hop_are_not_taken_by_the_fast_path() {
         assert_eq!(format!("{auto:?}"), format!("{ode:?}"));
     }
 }
+
+/// A roll that unwound to its core turned (r0 − r_c)/|b| times (eq. (8): the
+/// angle 2π(r − r0)/b): whole numbers here, which the end's rounded x and r
+/// put a hair below themselves (399 for 400) on the cases a tester found.
+#[test]
+fn an_unwound_roll_counts_its_whole_turns() {
+    // (model, snow_depth, r0, core_radius, core_mass, turns)
+    let cases = [
+        (ModelKind::EnergyThin, "-1e-4", "0.06", "0.02", "0.001,0.005,0.088", 400),
+        (ModelKind::LagrangianPrinted, "-1e-4", "0.06", "0.03", "0.005", 300),
+        (ModelKind::EnergyThin, "-2e-4", "0.1", "0.01", "0.005", 450),
+    ];
+    for (model, b, r0, core, mass, want) in cases {
+        let g = Grid::new(
+            vec![model],
+            vec![
+                axis(AxisParam::named("alpha_deg"), "0,10"),
+                axis(AxisParam::named("snow_depth"), b),
+                axis(AxisParam::named("r0"), r0),
+                axis(AxisParam::named("core_radius"), core),
+                axis(AxisParam::named("core_mass"), mass),
+                axis(AxisParam::named("density"), "700"),
+                axis(AxisParam::named("length"), "0.1"),
+                axis(AxisParam::named("t_end"), "1000"),
+            ],
+        )
+        .unwrap();
+        for i in 0..g.len() {
+            let row = run_point(&g, i, Method::Auto).unwrap();
+            assert_eq!(row.stop, Some(StopReason::Unwound), "{row:?}");
+            assert_eq!(row.turns, Some(want), "{model:?} {b} {core} {row:?}");
+        }
+    }
+}

@@ -4,7 +4,7 @@ use super::axis::{AxisParam, AXES};
 use super::grid::Point;
 use crate::models::{run_warnings, warning_codes, CollisionModel, ModelKind};
 use crate::params::Settings;
-use crate::scenario::ScenarioFile;
+use crate::scenario::{Scenario, ScenarioFile};
 use crate::trajectory::{OnHop, Sample, StopReason, Trajectory};
 
 /// One trajectory of a sweep: its grid index, its parameters (every one,
@@ -120,6 +120,7 @@ impl SweepRow {
         };
         let turns = match traj.turn_states.last() {
             Some(k) => k.turn,
+            None if traj.stop.reason == StopReason::Unwound => unwound_turns(&point.scenario),
             None => circular_turns(end.x_m, end.r_m, point.scenario.initial_radius()),
         };
         row.set_results(point, traj.stop.reason, end, turns);
@@ -226,6 +227,24 @@ pub(crate) fn circular_turns(x: f64, r: f64, r0: f64) -> u64 {
         turns.floor() as u64
     } else {
         0
+    }
+}
+
+/// Full turns of a roll that unwound to its core: (r0 − r_c)/|b| by
+/// eq. (8) (the angle 2π(r − r0)/b over 2π), taken from the scenario rather
+/// than from the end's x and r, whose rounding put a whole count a hair
+/// below itself (399 turns for 400). A count within 1e-9 of a whole number is
+/// that number: the last turn ends within 1e-9 of a turn of the core.
+fn unwound_turns(s: &Scenario) -> u64 {
+    let (Some(core), b) = (s.core_radius(), s.snow_depth()) else {
+        return 0;
+    };
+    let turns = (s.initial_radius() - core) / b.abs();
+    let whole = turns.round();
+    if (turns - whole).abs() <= 1e-9 * whole {
+        whole as u64
+    } else {
+        turns.floor() as u64
     }
 }
 
