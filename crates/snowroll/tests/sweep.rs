@@ -283,8 +283,22 @@ fn rows_that_hop_are_not_taken_by_the_fast_path() {
 fn an_unwound_roll_counts_its_whole_turns() {
     // (model, snow_depth, r0, core_radius, core_mass, turns)
     let cases = [
-        (ModelKind::EnergyThin, "-1e-4", "0.06", "0.02", "0.001,0.005,0.088", 400),
-        (ModelKind::LagrangianPrinted, "-1e-4", "0.06", "0.03", "0.005", 300),
+        (
+            ModelKind::EnergyThin,
+            "-1e-4",
+            "0.06",
+            "0.02",
+            "0.001,0.005,0.088",
+            400,
+        ),
+        (
+            ModelKind::LagrangianPrinted,
+            "-1e-4",
+            "0.06",
+            "0.03",
+            "0.005",
+            300,
+        ),
         (ModelKind::EnergyThin, "-2e-4", "0.1", "0.01", "0.005", 450),
     ];
     for (model, b, r0, core, mass, want) in cases {

@@ -69,6 +69,16 @@ const MARGIN: f64 = 1e-9;
 /// reason when the model cannot be run there.
 pub(crate) type Residuals<'a> = dyn FnMut(&[f64], &mut Vec<f64>) -> Result<(), String> + 'a;
 
+/// Whether a Gauss–Newton gain in S is too small to matter: below 1e-10 of S,
+/// or below 0.01 of the residuals' variance S/(N − p), the change of χ² by
+/// 0.01 that moves the parameters by a tenth of their standard errors. The
+/// finite-difference Jacobian (steps of 1e-6) estimates the gain only to
+/// about 1e-8 of S, so with correlated parameters the first test alone took
+/// the minimum for a search stuck beside it.
+fn negligible(gain: f64, s: f64, dof: usize) -> bool {
+    gain <= 1e-10 * s || gain <= 0.01 * s / dof.max(1) as f64
+}
+
 /// Runs the search.
 ///
 /// # Errors
@@ -123,9 +133,13 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
         let Some((trial, s_new, taken)) = step else {
             // No step lowers S: converged if the gradient promises nothing
             // measurable, else stuck.
-            let stationary = gauss_newton_gain(&a, &g, &diag) <= 1e-10 * s || s <= problem.floor;
-            let reason = if stationary {
+            let gain = gauss_newton_gain(&a, &g, &diag);
+            let stationary = negligible(gain, s, r.len() - n) || s <= problem.floor;
+            let reason = if gain <= 1e-10 * s || s <= problem.floor {
                 "no step lowers the residuals further (at the minimum to rounding)"
+            } else if stationary {
+                "no step lowers the residuals further (within a tenth of the standard errors of \
+                 the minimum)"
             } else {
                 "no step lowers the residuals, yet the gradient is not zero (stuck, e.g. on a bound or where the model cannot run)"
             };
@@ -146,7 +160,10 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
         std::mem::swap(&mut r, &mut trial_r);
         s = s_new;
         let small = moved <= STEP_TOL || (gain <= SUM_TOL && moved <= LOOSE_STEP_TOL);
-        let stuck = small && promised > STUCK && s > problem.floor;
+        let stuck = small
+            && promised > STUCK
+            && !negligible(promised * s, s, r.len() - n)
+            && s > problem.floor;
         if small || iterations >= problem.max_iterations {
             let jac = jacobian(problem, f, &p, &r)?;
             let reason = if stuck {
