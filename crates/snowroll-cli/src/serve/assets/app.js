@@ -17,6 +17,44 @@ const PAGE_TURNS = 100000;
 const state = { params: [], models: [], inputs: {}, runs: [], seq: 0, timer: null, busy: false, dirty: false, limits: null };
 const $ = (id) => document.getElementById(id);
 
+// The bodies the page offers. Choosing one sets every parameter to the
+// table's default, then to the body's `values` (text, as typed into the
+// form), and ticks its `models`; `note` is the page's line on what it is.
+// A key or a model the table does not have is an error (a preset that has
+// gone stale says so instead of quietly running something else).
+const BODIES = {
+  log: {
+    models: ['torque-cm', 'loney', 'turns'],
+    values: {},
+    note: 'The note\'s snow log rolling down a snowy slope, picking up snow as it goes.',
+  },
+  ball: {
+    // The turn models take the log only: the circular analyses that
+    // disagree most, eq. (4) and the energy balance eq. (14).
+    models: ['torque-cm', 'energy'],
+    values: { shape: 'sphere' },
+    note: 'A snowball rolling down a snowy slope, picking up snow as it goes.',
+  },
+  roll: {
+    // A roll of toilet tissue, its free end held on a level floor
+    // (docs/unwinding.md): R = 6 cm on a 2 cm tube, 10 cm long. About 25 m
+    // of tissue (200 sheets of 12.5 cm), so the layer it lays per unit
+    // length is pi (R^2 - r_c^2)/25 m = 4.0e-4 m: the loosely wound
+    // two-ply's thickness in the roll, more than the sheet's own. Density:
+    // about 100 g of tissue in pi (R^2 - r_c^2) 0.1 m = 1.0e-3 m^3, so
+    // 100 kg/m^3 (a roll of printing paper is nearer 700; tissue is mostly
+    // air). On the level floor the energy balances unwind it in about 42 s,
+    // within the default t_end of 100 s; the torque balances and eq. (32)
+    // do not start it. The turn models refuse a roll (their log climbs a
+    // step onto each new layer), so none is ticked.
+    models: ['energy-thin', 'energy', 'torque-cm', 'quasi-circular'],
+    values: { alpha_deg: '0', snow_depth: '-0.0004', r0: '0.06', core_radius: '0.02', density: '100', length: '0.1' },
+    note: 'A roll of paper on a level floor or a gentle board, its free end held: it lays its paper down as it ' +
+      'rolls, shrinking to its tube. The energy balances start it on a level floor, the torque balances do not ' +
+      '(why: "The unwinding roll" in snowroll\'s documentation).',
+  },
+};
+
 // A command's JSON output as columns (Float64Array per numeric field), its
 // stop and summary. Runs in the worker too (its source is sent there).
 function shapeOutput(body) {
@@ -231,6 +269,40 @@ function setGiven(key, value) {
   else { input.text.value = value; syncSlider(input); }
 }
 
+// A field back at the table's default.
+function resetField(key) {
+  const input = state.inputs[key];
+  const p = input.p;
+  if (input.check) input.check.checked = p.default === true;
+  else if (input.select) input.select.value = p.default;
+  else { input.text.value = p.default === null ? '' : p.default_text; syncSlider(input); }
+}
+
+// Fills the form with body `id`'s defaults and ticks its models.
+function applyBody(id) {
+  const body = BODIES[id];
+  for (const key of Object.keys(body.values)) if (!state.inputs[key]) throw new Error('body ' + id + ': the parameter table has no ' + key);
+  const ids = state.models.map((m) => m.id);
+  for (const m of body.models) if (!ids.includes(m)) throw new Error('body ' + id + ': no model ' + m);
+  for (const key of Object.keys(state.inputs)) resetField(key);
+  for (const [key, value] of Object.entries(body.values)) setGiven(key, value);
+  for (const c of $('models').querySelectorAll('input')) c.checked = body.models.includes(c.value);
+  $('ball-too').checked = false;
+  showBody(id);
+}
+
+function showBody(id) {
+  state.body = id;
+  $('body-choice').value = id;
+  $('body-note').textContent = BODIES[id].note;
+}
+
+// The body an address without `body=` shows: its snow depth and shape say.
+function bodyOf(q) {
+  if (parseFloat(q.get('snow_depth')) < 0) return 'roll';
+  return q.get('shape') === 'sphere' ? 'ball' : 'log';
+}
+
 function buildForm() {
   const form = $('form');
   const groups = { scenario: 'the slope, the snow, the body', run: 'the run', losses: 'losses (circular models)' };
@@ -250,6 +322,13 @@ function buildForm() {
     box.appendChild(label);
   }
   $('ball-too').addEventListener('change', changed);
+  $('body-choice').addEventListener('change', () => { applyBody($('body-choice').value); changed(); });
+  // The shape chosen by hand for the log or the ball: the body follows.
+  state.inputs.shape.select.addEventListener('change', () => {
+    if (state.body === 'roll') return;
+    showBody(state.inputs.shape.select.value === 'sphere' ? 'ball' : 'log');
+    writePermalink();
+  });
   $('replay').addEventListener('click', () => race(false));
 }
 
@@ -455,22 +534,34 @@ async function download(format) {
   setTimeout(() => URL.revokeObjectURL(a.href), 60000);
 }
 
-// The scenario in the address: models, the ball box, every value given.
+// The scenario in the address: the body (but the log, the page's own), the
+// models, the ball box, and every value not the body's default (a value
+// the body changes, set back to the table's default, is written too).
 function writePermalink() {
   const q = new URLSearchParams();
-  const models = chosen();
-  if (models.length) q.set('models', models.join(','));
+  const body = BODIES[state.body];
+  if (state.body !== 'log') q.set('body', state.body);
+  q.set('models', chosen().join(','));
   if ($('ball-too').checked) q.set('ball', '1');
-  for (const p of state.params) { const v = given(p.key); if (v !== '') q.set(p.key, v); }
+  for (const p of state.params) {
+    const v = given(p.key);
+    const preset = body.values[p.key];
+    const base = preset === undefined || preset === p.default_text ? '' : preset;
+    if (v !== base) q.set(p.key, v !== '' ? v : p.default === null ? '' : p.default_text);
+  }
   const url = location.pathname + '?' + q.toString() + location.hash;
   history.replaceState(null, '', url);
   $('permalink').href = url;
 }
 
+// The body's defaults, then what the address gives over them.
 function readPermalink() {
   const q = new URLSearchParams(location.search);
-  const models = (q.get('models') || 'torque-cm,loney,turns').split(',');
-  for (const c of $('models').querySelectorAll('input')) c.checked = models.includes(c.value);
+  applyBody(Object.hasOwn(BODIES, q.get('body')) ? q.get('body') : bodyOf(q));
+  if (q.has('models')) {
+    const models = q.get('models').split(',');
+    for (const c of $('models').querySelectorAll('input')) c.checked = models.includes(c.value);
+  }
   $('ball-too').checked = q.get('ball') === '1';
   for (const [k, v] of q.entries()) setGiven(k, v);
 }
