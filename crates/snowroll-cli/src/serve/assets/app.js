@@ -487,9 +487,12 @@ function readout() {
       tr.innerHTML = name + '<td class="err" colspan="5"></td>';
       tr.querySelector('.err').textContent = r.error;
     } else {
-      // a at the end: the last row's (a turn table's: the last turn's mean).
+      // a at the end: the last row's (a turn table's: the last turn's mean);
+      // on a level floor (g sin α = 0, the unwinding roll) in m/s².
       const a = r.kind === 'sim' ? r.cols.a_m_s2 : r.cols.mean_a_turn_m_s2;
-      const end = a && a.length ? (a[a.length - 1] / r.g).toPrecision(6) + (r.kind === 'sim' ? '' : ' (last turn\'s mean)') : '';
+      const level = !(r.g > 0);
+      const end = a && a.length ? (level ? a[a.length - 1].toPrecision(6) + ' m/s² (g sin α = 0)' : (a[a.length - 1] / r.g).toPrecision(6)) +
+        (r.kind === 'sim' ? '' : ' (last turn\'s mean)') : '';
       tr.innerHTML = name + '<td></td><td></td><td></td><td class="v"></td><td></td>';
       const cells = tr.querySelectorAll('td');
       cells[1].textContent = r.stop.reason;
