@@ -366,7 +366,10 @@ function commandLine(cmd, q) {
     const p = state.params.find((x) => x.key === k);
     const flag = '--' + (p ? p.flag : k);
     if (p && p.kind === 'flag') { if (v === 'true') words.push(flag); continue; }
-    words.push(flag, /^[A-Za-z0-9_.,+-]+$/.test(v) ? v : "'" + v.replace(/'/g, "'\\''") + "'");
+    const word = /^[A-Za-z0-9_.,+-]+$/.test(v) ? v : "'" + v.replace(/'/g, "'\\''") + "'";
+    // A negative number joined to its flag: `--snow-depth -4e-4` would be
+    // read as a flag of its own.
+    if (v.startsWith('-')) words.push(flag + '=' + word); else words.push(flag, word);
   }
   return words.join(' ');
 }
