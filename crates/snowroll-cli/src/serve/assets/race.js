@@ -183,5 +183,6 @@ const Race = (function () {
     frame = requestAnimationFrame(step);
   }
 
-  return { start, MARKS };
+  // The lanes' geometry (the browser test finds a lane's laid paper by it).
+  return { start, MARKS, layout: { LANE, MARGIN, TOP, PAPER, labelRoom } };
 })();
