@@ -123,7 +123,8 @@ const Race = (function () {
       const mark = MARKS[run.stop.reason];
       if (mark && t >= run.stop.t_s) {
         ctx.fillStyle = '#b42318';
-        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - rad);
+        // A roll's beside it, clear of the paper on the lane above.
+        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, core !== null ? cy + 4 : cy - rad);
       } else if (run.stop.reason === 'unwound' && t >= run.stop.t_s) {
         // Left of the roll, which has reached the lane's end.
         ctx.fillStyle = '#1a7f37';
