@@ -35,7 +35,8 @@
 // frames (no gap over 500 ms on a loaded 2-core machine, against the whole
 // run's second or more were it on the page's thread), and ends with 100000
 // turns.
-// --shots DIR writes explorer.png (1400 px) and explorer-phone.png (400 px).
+// --shots DIR writes explorer.png (1400 px), explorer-phone.png (400 px) and
+// explorer-roll.png (the unwinding roll, 1400 px).
 // --bench FILE writes the time from a slider's input event to the redrawn
 // page (the Performance API's measure), 15 moves per configuration.
 'use strict';
@@ -327,6 +328,11 @@ async function desktopShot(browser, base, shot) {
   await page.waitForSelector('#race[data-done="1"]', { timeout: 20000 });
   await page.screenshot({ path: shot, fullPage: false });
   await context.close();
+  // The unwinding roll on its level floor, at its end.
+  const roll = await openPage(browser, base + '?body=roll#end', 1400, 900);
+  await roll.page.waitForSelector('#race[data-done="1"]', { timeout: 20000 });
+  await roll.page.screenshot({ path: path.join(path.dirname(shot), 'explorer-roll.png'), fullPage: false });
+  await roll.context.close();
 }
 
 // A 10^5-turn run: in the worker, a progress line, frames keep coming.
