@@ -20,8 +20,9 @@
 //   - the choice of body: the unwinding roll fills the form (a level floor,
 //     a negative snow depth, a core radius), ticks energy-thin, energy,
 //     torque-cm and quasi-circular and no turn model, says what it is; every
-//     run runs; the energy balances stop `unwound`, energy-thin at the
-//     textbook v^2 = 4g(R^3 - r^3)/(3r^2), the torque balance and eq. (32)
+//     run runs; the energy balances stop `unwound`, energy-thin at its
+//     energy integral's speed (the hollow roll on its tube), the torque
+//     balance and eq. (32)
 //     `does-not-start`; a in m/s^2 on the level floor; the command line
 //     shown writes the same stop (also with a snow depth in exponent form);
 //     the permalink reopens it (body, form, readout), its race with the
@@ -181,10 +182,12 @@ async function checkBodies(browser, base, name) {
   let before = await page.evaluate(() => document.documentElement.dataset.refreshed);
   await page.selectOption('#body-choice', 'roll');
   await refreshedAfter(page, before);
-  const form = await formValues(page, ['alpha_deg', 'snow_depth', 'r0', 'core_radius', 'g']);
-  const [alpha, b, r0, core, g] = ['alpha_deg', 'snow_depth', 'r0', 'core_radius', 'g'].map((k) => Number(form[k]));
-  check(alpha === 0 && b < 0 && core > 0 && core < r0, name + ': the unwinding roll fills the form: a level floor, a negative snow depth, 0 < core_radius < r0',
-    JSON.stringify(form));
+  const keys = ['alpha_deg', 'snow_depth', 'r0', 'core_radius', 'core_mass', 'g', 'density', 'length'];
+  const form = await formValues(page, keys);
+  const [alpha, b, r0, core, mc, g, rho, len] = keys.map((k) => Number(form[k]));
+  // A tube of a few grams (a toilet roll's: 2 to 10 g), under about 100 g of tissue.
+  check(alpha === 0 && b < 0 && core > 0 && core < r0 && mc >= 0.002 && mc <= 0.01,
+    name + ': the unwinding roll fills the form: a level floor, a negative snow depth, 0 < core_radius < r0, a tube of a few grams', JSON.stringify(form));
   const models = await ticked(page);
   check(['energy-thin', 'energy', 'torque-cm', 'quasi-circular'].every((m) => models.includes(m)) && !models.some((m) => m.startsWith('turns')),
     name + ': the roll ticks energy-thin, energy, torque-cm and quasi-circular, and no turn model (' + models.join(',') + ')');
@@ -199,13 +202,20 @@ async function checkBodies(browser, base, name) {
     name + ': the torque balance and eq. (32) do not start it on the level floor (stop does-not-start)', JSON.stringify(stops));
   check(Object.values(rows).every((r) => r.a && /m\/s²/.test(r.a) && !/NaN|Infinity/.test(r.a)), name + ': on the level floor the readout gives a in m/s^2',
     JSON.stringify(rows));
-  // Eq. (15) reversed on a level floor, the textbook unrolling roll:
-  // v^2 = 4 g (R^3 - r^3)/(3 r^2) at r = core_radius (docs/unwinding.md),
-  // independent of b. The run's rtol is 1e-10; the library's own test holds
-  // it to 1e-9; 1e-7 here leaves room for the stop's root-finding.
+  // Eq. (15) reversed on a level floor conserves the energy: from rest at
+  // R, v^2 = 2 g (M(R) R - M(r) r)/(M(r) + I(r)/r^2) at r = core_radius
+  // (docs/unwinding.md, "The core"), with the hollow roll on its thin tube
+  // of mass m_c typed here from its definition: M = m_c + pi rho l (r^2 -
+  // r_c^2), I = m_c r_c^2 + (pi rho l/2)(r^4 - r_c^4). Independent of b.
+  // The run's rtol is 1e-10, the library's own test holds it to 1e-9; 1e-7
+  // leaves room for the stop's root-finding. (A uniform roll, the
+  // textbook's 4g(R^3 - r^3)/(3r^2), would be 2.61 m/s here, not 3.90.)
   const vText = rows['energy-thin'].v;
-  const want = Math.sqrt(4 * g * (r0 ** 3 - core ** 3) / (3 * core ** 2));
-  check(Math.abs(Number(vText) / want - 1) < 1e-7, name + ': energy-thin ends at the textbook v = sqrt(4g(R^3 - r^3)/(3r^2)) = ' + want.toPrecision(10) + ' m/s (page ' + vText + ')');
+  const k = Math.PI * rho * len;
+  const M = (r) => mc + k * (r ** 2 - core ** 2), I = (r) => mc * core ** 2 + (k / 2) * (r ** 4 - core ** 4);
+  const want = Math.sqrt(2 * g * (M(r0) * r0 - M(core) * core) / (M(core) + I(core) / core ** 2));
+  check(Math.abs(Number(vText) / want - 1) < 1e-7, name + ': energy-thin ends at the energy integral\'s v = sqrt(2g(M(R)R - M(r)r)/(M + I/r^2)) = ' +
+    want.toPrecision(10) + ' m/s at the tube (page ' + vText + ')');
   const line = await shownLine(page, 'energy-thin');
   const stop = cliStop(line);
   check(stop.reason === 'unwound' && vText === String(stop.v_m_s), name + ': the command line shown for energy-thin writes the same stop (' + line + ')',
@@ -269,7 +279,7 @@ async function checkBodies(browser, base, name) {
   await page.selectOption('#body-choice', 'log');
   await refreshedAfter(page, before);
   const table = await page.evaluate(() => Object.fromEntries(state.params.map((p) => [p.key, p.default === null ? '' : p.default_text])));
-  const logForm = await formValues(page, Object.keys(form).concat(['density', 'length']));
+  const logForm = await formValues(page, keys);
   const v = (await readoutRows(page))['torque-cm'].v;
   const cliLog = JSON.parse(runCli(['simulate', '--model', 'torque-cm', '--format', 'json']).toString());
   check(Object.keys(logForm).every((k) => logForm[k] === table[k]) && (await ticked(page)).join(',') === 'torque-cm,loney,turns' &&

@@ -28,12 +28,17 @@ const BODIES = {
     // two-ply's thickness in the roll, more than the sheet's own. Density:
     // about 100 g of tissue in pi (R^2 - r_c^2) 0.1 m = 1.0e-3 m^3, so
     // 100 kg/m^3 (a roll of printing paper is nearer 700; tissue is mostly
-    // air). On the level floor the energy balances unwind it in about 42 s,
+    // air). The tube: a cardboard wall about 0.5 mm thick, 4 cm across and
+    // 10 cm long, of board near 700 kg/m^3: pi 0.04 m 0.1 m 0.5e-3 m 700
+    // kg/m^3 = 4.4 g, so core_mass = 4 g (the roll is then hollow inside
+    // it). On the level floor the energy balances unwind it in about 40 s,
     // within the default t_end of 100 s; the torque balances and eq. (32)
     // do not start it. The turn models refuse a roll (their log climbs a
     // step onto each new layer), so none is ticked.
     models: ['energy-thin', 'energy', 'torque-cm', 'quasi-circular'],
-    values: { alpha_deg: '0', snow_depth: '-0.0004', r0: '0.06', core_radius: '0.02', density: '100', length: '0.1' },
+    values: {
+      alpha_deg: '0', snow_depth: '-0.0004', r0: '0.06', core_radius: '0.02', core_mass: '0.004', density: '100', length: '0.1',
+    },
     note: 'A roll of paper on a level floor or a gentle board, its free end held: it lays its paper down as it ' +
       'rolls, shrinking to its tube. The energy balances start it on a level floor, the torque balances do not ' +
       '(why: "The unwinding roll" in snowroll\'s documentation).',
