@@ -8,7 +8,8 @@
 #   .ci/explorer-browser-test.sh SNOWROLL EXPLORER.html OUT_DIR
 #
 # SNOWROLL is a snowroll binary built with the `serve` feature. Screenshots
-# at 1400 and 400 px are written to OUT_DIR (explorer.png, explorer-phone.png).
+# at 1400 and 400 px are written to OUT_DIR (explorer.png, explorer-phone.png,
+# and the unwinding roll's explorer-roll.png).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)

@@ -52,6 +52,7 @@ parts = {
         "const SNOWROLL_WASM = '" + b64 + "';\n</script>\n"
         "<script>\n" + inline("race.js", read("race.js"), "script") + "</script>",
     '<script src="plots.js"></script>': "<script>\n" + inline("plots.js", read("plots.js"), "script") + "</script>",
+    '<script src="bodies.js"></script>': "<script>\n" + inline("bodies.js", read("bodies.js"), "script") + "</script>",
     '<script src="app.js"></script>': "<script>\n" + inline("app.js", read("app.js"), "script") + "</script>",
 }
 for old, new in parts.items():

@@ -455,7 +455,14 @@ fn params_lists_the_table_with_its_defaults() {
     // The page and its assets are served, and name no other host.
     let page = server.get("/");
     assert_eq!(page.status, 200);
-    for asset in ["/", "/app.js", "/race.js", "/plots.js", "/style.css"] {
+    for asset in [
+        "/",
+        "/app.js",
+        "/race.js",
+        "/plots.js",
+        "/bodies.js",
+        "/style.css",
+    ] {
         let body = String::from_utf8(server.get(asset).body).unwrap();
         assert!(
             !body.contains("http://") && !body.contains("https://"),

@@ -45,6 +45,11 @@ pub const FILES: &[StaticFile] = &[
         body: include_bytes!("assets/plots.js"),
     },
     StaticFile {
+        path: "/bodies.js",
+        content_type: JS,
+        body: include_bytes!("assets/bodies.js"),
+    },
+    StaticFile {
         path: "/style.css",
         content_type: CSS,
         body: include_bytes!("assets/style.css"),

@@ -250,6 +250,13 @@ function buildForm() {
     box.appendChild(label);
   }
   $('ball-too').addEventListener('change', changed);
+  $('body-choice').addEventListener('change', () => { applyBody($('body-choice').value); changed(); });
+  // The shape chosen by hand for the log or the ball: the body follows.
+  state.inputs.shape.select.addEventListener('change', () => {
+    if (state.body === 'roll') return;
+    showBody(state.inputs.shape.select.value === 'sphere' ? 'ball' : 'log');
+    writePermalink();
+  });
   $('replay').addEventListener('click', () => race(false));
 }
 
@@ -287,7 +294,10 @@ function commandLine(cmd, q) {
     const p = state.params.find((x) => x.key === k);
     const flag = '--' + (p ? p.flag : k);
     if (p && p.kind === 'flag') { if (v === 'true') words.push(flag); continue; }
-    words.push(flag, /^[A-Za-z0-9_.,+-]+$/.test(v) ? v : "'" + v.replace(/'/g, "'\\''") + "'");
+    const word = /^[A-Za-z0-9_.,+-]+$/.test(v) ? v : "'" + v.replace(/'/g, "'\\''") + "'";
+    // A negative number joined to its flag: `--snow-depth -4e-4` would be
+    // read as a flag of its own.
+    if (v.startsWith('-')) words.push(flag + '=' + word); else words.push(flag, word);
   }
   return words.join(' ');
 }
@@ -408,9 +418,12 @@ function readout() {
       tr.innerHTML = name + '<td class="err" colspan="5"></td>';
       tr.querySelector('.err').textContent = r.error;
     } else {
-      // a at the end: the last row's (a turn table's: the last turn's mean).
+      // a at the end: the last row's (a turn table's: the last turn's mean);
+      // on a level floor (g sin α = 0, the unwinding roll) in m/s².
       const a = r.kind === 'sim' ? r.cols.a_m_s2 : r.cols.mean_a_turn_m_s2;
-      const end = a && a.length ? (a[a.length - 1] / r.g).toPrecision(6) + (r.kind === 'sim' ? '' : ' (last turn\'s mean)') : '';
+      const level = !(r.g > 0);
+      const end = a && a.length ? (level ? a[a.length - 1].toPrecision(6) + ' m/s² (g sin α = 0)' : (a[a.length - 1] / r.g).toPrecision(6)) +
+        (r.kind === 'sim' ? '' : ' (last turn\'s mean)') : '';
       tr.innerHTML = name + '<td></td><td></td><td></td><td class="v"></td><td></td>';
       const cells = tr.querySelectorAll('td');
       cells[1].textContent = r.stop.reason;
@@ -455,22 +468,34 @@ async function download(format) {
   setTimeout(() => URL.revokeObjectURL(a.href), 60000);
 }
 
-// The scenario in the address: models, the ball box, every value given.
+// The scenario in the address: the body (but the log, the page's own), the
+// models, the ball box, and every value not the body's default (a value
+// the body changes, set back to the table's default, is written too).
 function writePermalink() {
   const q = new URLSearchParams();
-  const models = chosen();
-  if (models.length) q.set('models', models.join(','));
+  const body = BODIES[state.body];
+  if (state.body !== 'log') q.set('body', state.body);
+  q.set('models', chosen().join(','));
   if ($('ball-too').checked) q.set('ball', '1');
-  for (const p of state.params) { const v = given(p.key); if (v !== '') q.set(p.key, v); }
+  for (const p of state.params) {
+    const v = given(p.key);
+    const preset = body.values[p.key];
+    const base = preset === undefined || preset === p.default_text ? '' : preset;
+    if (v !== base) q.set(p.key, v !== '' ? v : p.default === null ? '' : p.default_text);
+  }
   const url = location.pathname + '?' + q.toString() + location.hash;
   history.replaceState(null, '', url);
   $('permalink').href = url;
 }
 
+// The body's defaults, then what the address gives over them.
 function readPermalink() {
   const q = new URLSearchParams(location.search);
-  const models = (q.get('models') || 'torque-cm,loney,turns').split(',');
-  for (const c of $('models').querySelectorAll('input')) c.checked = models.includes(c.value);
+  applyBody(Object.hasOwn(BODIES, q.get('body')) ? q.get('body') : bodyOf(q));
+  if (q.has('models')) {
+    const models = q.get('models').split(',');
+    for (const c of $('models').querySelectorAll('input')) c.checked = models.includes(c.value);
+  }
   $('ball-too').checked = q.get('ball') === '1';
   for (const [k, v] of q.entries()) setGiven(k, v);
 }

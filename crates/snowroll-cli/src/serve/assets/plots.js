@@ -1,6 +1,7 @@
 // The plots: each quantity of the runs against t, drawn on canvases with a
 // legend and units. Only drawing: every number is one the library computed
-// (a is shown over g sin α, the scale the library sends with each run).
+// (a is shown over g sin α, the scale the library sends with each run, or
+// in m/s² on a level floor, where g sin α = 0).
 // A turn model is drawn from its turn table (`snowroll turns`): the mean a
 // of each turn with the turn's range as a light band, v and x at the turns'
 // ends, the least N and the largest F/N of each turn. A run that stopped on
@@ -244,10 +245,14 @@ const Plots = (function () {
   function drawAll(box, runs) {
     const ok = runs.filter((r) => !r.error && r.n > 0);
     const shown = new Set();
-    for (const spec of SPECS) {
+    // A level floor (the unwinding roll): a itself, in m/s².
+    const level = ok.some((r) => !(r.g > 0));
+    for (const plain of SPECS) {
+      const spec = level && plain.id === 'a' ? Object.assign({}, plain, { title: 'acceleration (level floor)', y: 'a (m/s²)' }) : plain;
       const series = [];
       for (const r of ok) {
-        const d = r.kind === 'table' ? spec.table(r.cols, r.g) : spec.sim(r.cols, r.g);
+        const g = level ? 1 : r.g;
+        const d = r.kind === 'table' ? spec.table(r.cols, g) : spec.sim(r.cols, g);
         if (!d || !d.y) continue;
         series.push({
           xs: d.x, ys: d.y, lo: d.lo, hi: d.hi, color: r.color, dash: DASHES[r.index % DASHES.length],

@@ -2,7 +2,9 @@
 // rolling to its x(t) as the library computed it (no physics here: positions
 // are the run's rows, interpolated in time for drawing; a turn model's are
 // its turns' starts). Hops, slips and stalls are marked where the run
-// stopped for them.
+// stopped for them. An unwinding roll (a negative snow depth, down to its
+// core radius) is drawn to scale, its cardboard tube inside it, with the
+// paper it has laid down as a strip on the ground behind it.
 'use strict';
 
 const Race = (function () {
@@ -33,6 +35,17 @@ const Race = (function () {
   }
 
   const LANE = 30, MARGIN = 20, TOP = 34;
+  // An unwinding roll's largest drawn radius (px); the laid paper's drawn
+  // thickness (px: the real |b|, a fraction of a millimetre, would not show).
+  const ROLL = LANE / 2 - 2, PAPER = 3;
+
+  // The core radius of a run that unwinds (its request's snow depth < 0),
+  // else null.
+  function coreOf(run) {
+    const q = run.request || {};
+    const b = parseFloat(q.snow_depth), core = parseFloat(q.core_radius);
+    return b < 0 && core > 0 ? core : null;
+  }
   // Room for the runs' names at the slope's foot: less on a narrow screen.
   const labelRoom = (w) => Math.min(170, Math.round(w * 0.3));
 
@@ -47,15 +60,21 @@ const Race = (function () {
     const n = runs.length;
     const cos = Math.cos(alpha), sin = Math.sin(alpha);
     const x0 = MARGIN, y0 = TOP;
-    const length = Math.min((w - 2 * MARGIN - labelRoom(w)) / cos, (h - y0 - n * LANE - MARGIN) / Math.max(sin, 1e-3));
+    // Across the width, and down the height left below the lanes (a level
+    // floor needs none: the canvas is then only as tall as its lanes).
+    const down = sin > 1e-9 ? Math.max(0, h - y0 - n * LANE - MARGIN) / sin : Infinity;
+    const length = Math.min((w - 2 * MARGIN - labelRoom(w)) / cos, down);
     const xMax = Math.max(1e-9, ...runs.map((r) => r.stop.x_m));
     const [rMin, rMax] = radii(runs);
     ctx.font = '12px system-ui, sans-serif';
     runs.forEach((run, k) => {
       const s = at(run.track, Math.min(t, run.stop.t_s));
       const along = (s.x / xMax) * length;
-      // From 5 px at the smallest radius to the lane's half-width at the largest.
-      const rad = s.r === null ? LANE / 4 : 5 + (LANE / 2 - 7) * (rMax > rMin ? (s.r - rMin) / (rMax - rMin) : 0);
+      const core = s.r === null ? null : coreOf(run);
+      // An unwinding roll to scale (its tube a third of it, say); else from
+      // 5 px at the smallest radius to the lane's half-width at the largest.
+      const rad = s.r === null ? LANE / 4 : core !== null ? ROLL * s.r / rMax :
+        5 + (LANE / 2 - 7) * (rMax > rMin ? (s.r - rMin) / (rMax - rMin) : 0);
       // Each run on its own lane, parallel to the slope; the surface under it.
       const bx = x0, by = y0 + (k + 1) * LANE;
       ctx.strokeStyle = k === n - 1 ? '#57606a' : '#d0d7de';
@@ -65,6 +84,19 @@ const Race = (function () {
       ctx.lineTo(bx + length * cos, by + length * sin);
       ctx.stroke();
       const cx = bx + along * cos + sin * rad, cy = by + along * sin - cos * rad;
+      if (core !== null && along > 0) {
+        // The paper laid down, at rest on the ground from the start to the
+        // roll's contact point (none ahead of it).
+        const up = PAPER / 2;
+        ctx.strokeStyle = run.color;
+        ctx.globalAlpha = 0.45;
+        ctx.lineWidth = PAPER;
+        ctx.beginPath();
+        ctx.moveTo(bx + sin * up, by - cos * up);
+        ctx.lineTo(bx + along * cos + sin * up, by + along * sin - cos * up);
+        ctx.stroke();
+        ctx.globalAlpha = 1;
+      }
       ctx.fillStyle = run.color;
       ctx.beginPath();
       ctx.arc(cx, cy, rad, 0, 2 * Math.PI);
@@ -75,13 +107,30 @@ const Race = (function () {
       ctx.moveTo(cx, cy);
       ctx.lineTo(cx + rad * Math.cos(s.angle), cy + rad * Math.sin(s.angle));
       ctx.stroke();
+      if (core !== null) {
+        // The cardboard tube the roll shrinks to.
+        ctx.fillStyle = '#d9bf94';
+        ctx.strokeStyle = '#7a5a32';
+        ctx.lineWidth = 1;
+        ctx.beginPath();
+        ctx.arc(cx, cy, ROLL * core / rMax, 0, 2 * Math.PI);
+        ctx.fill();
+        ctx.stroke();
+      }
       ctx.fillStyle = '#1c2733';
       // The name past the slope's foot, clear of a body that has arrived.
       ctx.fillText(run.label, bx + length * cos + LANE + 6, by + length * sin);
       const mark = MARKS[run.stop.reason];
       if (mark && t >= run.stop.t_s) {
         ctx.fillStyle = '#b42318';
-        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, cy - rad);
+        // A roll's beside it, clear of the paper on the lane above.
+        ctx.fillText('✕ ' + mark + ' at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx + rad + 4, core !== null ? cy + 4 : cy - rad);
+      } else if (run.stop.reason === 'unwound' && t >= run.stop.t_s) {
+        // Left of the roll, which has reached the lane's end.
+        ctx.fillStyle = '#1a7f37';
+        ctx.textAlign = 'right';
+        ctx.fillText('unwound at x = ' + run.stop.x_m.toPrecision(3) + ' m', cx - rad - 4, cy - rad);
+        ctx.textAlign = 'left';
       }
       // A run that goes on through a hop (on_hop = continue): the first
       // row whose normal force the library gave as <= 0, once passed.
@@ -135,5 +184,6 @@ const Race = (function () {
     frame = requestAnimationFrame(step);
   }
 
-  return { start, MARKS };
+  // The lanes' geometry (the browser test finds a lane's laid paper by it).
+  return { start, MARKS, layout: { LANE, MARGIN, TOP, PAPER, labelRoom } };
 })();
