@@ -17,6 +17,7 @@
 //! [`ScenarioFile::default`] and [`SimOptions::default`]: the table reads
 //! them ([`Param::default_value`]) rather than repeating them.
 
+mod base;
 mod given;
 mod keys;
 mod record;

@@ -2,59 +2,12 @@
 //! them (JSON `params`; a CSV header sorts them by [`Section`] first) and
 //! `--help` lists them.
 
+use super::base::{pick, BASE, LOSS, RUN};
 use super::{
-    Applies, Choice, Group, Kind, Param, Presence, RecordedSampling, Scope, Section, Value,
-    WrongKind,
+    Applies, Choice, Kind, Param, Presence, RecordedSampling, Scope, Section, Value, WrongKind,
 };
 use crate::scenario::{ChordWord, Shape, SwathWidth};
 use crate::trajectory::{CollisionModel, OnHop, Sampling};
-
-/// The row every field of which is the most common choice: a real number
-/// of the scenario, set everywhere, recorded always at the head.
-const BASE: Param = Param {
-    key: "",
-    aliases: &[],
-    unit: "",
-    value_name: "X",
-    kind: Kind::Real,
-    scope: Scope::Shared,
-    group: Group::Scenario,
-    applies: Applies::All,
-    range: "",
-    help: "",
-    default_note: None,
-    json: Presence::Always,
-    csv: (Section::Head, Presence::Always),
-    exponent: false,
-    sweep: false,
-    plot: ("", ""),
-    get: |_| Value::None,
-    set: |_, _| Err(WrongKind),
-};
-
-/// A run parameter (of [`crate::SimOptions`]).
-const RUN: Param = Param {
-    group: Group::Run,
-    ..BASE
-};
-
-/// A loss parameter: recorded, after the optional ones, only with losses.
-const LOSS: Param = Param {
-    group: Group::Losses,
-    applies: Applies::CircularModels,
-    json: Presence::WithLosses,
-    csv: (Section::Extra, Presence::WithLosses),
-    ..BASE
-};
-
-/// The variant of `all` whose id is `id` (ids are checked before a setter
-/// runs: [`Param::set`]).
-fn pick<T: Copy>(all: &[T], id: &str, name: impl Fn(T) -> &'static str) -> Result<T, WrongKind> {
-    all.iter()
-        .copied()
-        .find(|t| name(*t) == id)
-        .ok_or(WrongKind)
-}
 
 /// Every parameter. See [`Param`] for the meaning of each field.
 pub static PARAMS: [Param; 30] = TABLE;
