@@ -507,3 +507,37 @@ fn correlated_parameters_at_their_minimum_converge() {
     // twelve is pushed to the bound.
     assert!(converged >= 10, "{converged} of 12");
 }
+
+/// A model that does not start from rest (a torque balance on a level
+/// floor) cannot follow a track of a roll that moves: its fit is not
+/// converged and says why, though its least squares end at x0 = the mean of
+/// the data with nothing left to lower (it said "converged" before), and it
+/// ranks below the model that starts.
+#[test]
+fn a_model_that_does_not_start_is_not_a_converged_fit() {
+    let level = ScenarioFile {
+        alpha_deg: 0.0,
+        snow_depth: -1e-4,
+        r0: 0.06,
+        core_radius: Some(0.02),
+        ..ScenarioFile::default()
+    };
+    let t = times(60, 120.0);
+    let x = noisy(&positions(ModelKind::EnergyThin, &level, &t), 0.003, 31);
+    let track = Track::new(t, x).unwrap();
+    let mut s = spec(level, &[START_POSITION]);
+    s.x0 = None;
+    let fits = fit(&track, &[ModelKind::TorqueCm, ModelKind::EnergyThin], &s).unwrap();
+    let torque = fits
+        .iter()
+        .find(|f| f.model == ModelKind::TorqueCm)
+        .unwrap();
+    assert!(!torque.converged, "{}", torque.reason);
+    assert!(
+        torque.reason.contains("does not start"),
+        "{}",
+        torque.reason
+    );
+    assert_eq!(fits[0].model, ModelKind::EnergyThin);
+    assert!(fits[0].converged, "{}", fits[0].reason);
+}

@@ -28,6 +28,7 @@ mod track;
 
 use crate::model_kind::ModelKind;
 use crate::params::{Group, Kind, Param, Settings, Value};
+use crate::trajectory::StopReason;
 
 pub use error::FitError;
 pub use stats::Unseparated;
@@ -417,6 +418,8 @@ fn fit_one(
     let (aic, bic) = stats::criteria(ssr, m, summary.rank);
     let (settings, t0, x0) = at(plan, spec, track, &out.p).map_err(start_error)?;
     let params = fit_params(plan, &keys, &out.p, &summary.stderr);
+    let does_not_start =
+        ending(kind, &settings, spec.atol_given, (t0, x0), track) == Some(StopReason::DoesNotStart);
     Ok(ModelFit {
         model: kind,
         params,
@@ -429,8 +432,15 @@ fn fit_one(
         aic,
         bic,
         rank: 0,
-        converged: out.converged,
-        reason: out.reason,
+        converged: out.converged && !does_not_start,
+        reason: if does_not_start {
+            "the model does not start from rest here (its acceleration at rest is not \
+             positive, e.g. a torque balance on a level floor), so x(t) stays at x0 and \
+             cannot follow the data"
+                .to_string()
+        } else {
+            out.reason
+        },
         iterations: out.iterations,
         residuals: out.r,
         settings,
@@ -438,6 +448,27 @@ fn fit_one(
         t0,
         x0,
     })
+}
+
+/// Why the run of `kind` at the fitted `settings`, let go at `(t0, x0)`,
+/// stopped; `None` if it could not run or nothing ran.
+fn ending(
+    kind: ModelKind,
+    settings: &Settings,
+    atol_given: bool,
+    (t0, x0): (f64, f64),
+    track: &Track,
+) -> Option<StopReason> {
+    let model = kind.build();
+    let run = track::Run {
+        kind,
+        model: model.as_ref(),
+        settings,
+        atol_given,
+        t0,
+        x0,
+    };
+    run.positions(track.t(), &mut Vec::new()).ok().flatten()
 }
 
 /// The free parameters as fitted, with their units, values `p`, errors and

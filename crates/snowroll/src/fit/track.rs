@@ -109,12 +109,17 @@ pub(crate) struct Run<'a> {
 impl Run<'_> {
     /// x at each of `times`, into `out`: x0 before t0 (the body is let go
     /// at t0), x0 plus the run's distance after. A run that stalls or does
-    /// not start stays where it stopped.
+    /// not start stays where it stopped. Returns why the run stopped (`None`
+    /// when every time is before t0, so that nothing ran).
     ///
     /// # Errors
     /// The reason in words: a scenario or options the library refuses, a
     /// failed run, a run that stops (a hop, a slip, …) before the last time.
-    pub fn positions(&self, times: &[f64], out: &mut Vec<f64>) -> Result<(), String> {
+    pub fn positions(
+        &self,
+        times: &[f64],
+        out: &mut Vec<f64>,
+    ) -> Result<Option<StopReason>, String> {
         out.clear();
         let taus: Vec<f64> = times
             .iter()
@@ -124,7 +129,7 @@ impl Run<'_> {
         let before = times.len() - taus.len();
         out.resize(before, self.x0);
         let Some(&last) = taus.last() else {
-            return Ok(());
+            return Ok(None);
         };
         let scenario = Scenario::new(self.settings.scenario).map_err(|e| e.to_string())?;
         let mut opts = self.settings.options.clone();
@@ -159,6 +164,6 @@ impl Run<'_> {
         if out.iter().any(|x| !x.is_finite()) {
             return Err("the run gave a distance that is not finite".into());
         }
-        Ok(())
+        Ok(Some(end.stop.reason))
     }
 }
