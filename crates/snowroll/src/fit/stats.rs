@@ -167,8 +167,8 @@ pub(crate) fn summarise(
 /// The directions of N split into those the data fix (their covariance,
 /// in u, summed in `cov_u`; `rank` of them) and those they do not
 /// (`loose`: each in u, for the combination's powers, and as a unit vector
-/// of N, for which parameters take part; `loose_share[j]`, parameter j's
-/// share of them).
+/// of N kept where parameters take part, zero elsewhere; `loose_share[j]`,
+/// parameter j's share of them).
 struct Split {
     cov_u: Sym,
     loose_share: Vec<f64>,
@@ -213,10 +213,25 @@ fn split(nrm: &Normalised, n: usize, s2: f64) -> Split {
                 }
             }
         } else {
+            // A parameter takes part when it has a share of the direction
+            // and its own 1-σ move along it is at least a tenth of its size
+            // (else a parameter correlated with a loose one, t0 with a
+            // tube's mass, was called not fixed though the data fix it to
+            // a fraction of a percent); at least the largest share does.
             let mut unit = vec![0.0; n];
             for (i, &j) in nrm.live.iter().enumerate() {
-                unit[j] = w[i];
-                out.loose_share[j] += w[i] * w[i];
+                if w[i].abs() >= SHARE && sd * v[j].abs() >= SHARE {
+                    unit[j] = w[i];
+                }
+            }
+            if unit.iter().all(|&x| x == 0.0) {
+                let top = (0..nrm.live.len())
+                    .max_by(|&a, &b| w[a].abs().total_cmp(&w[b].abs()))
+                    .unwrap_or(0);
+                unit[nrm.live[top]] = w[top];
+            }
+            for j in 0..n {
+                out.loose_share[j] += unit[j] * unit[j];
             }
             out.loose.push((v, unit));
         }
