@@ -230,8 +230,8 @@ fn split(nrm: &Normalised, n: usize, s2: f64) -> Split {
                     .unwrap_or(0);
                 unit[nrm.live[top]] = w[top];
             }
-            for j in 0..n {
-                out.loose_share[j] += unit[j] * unit[j];
+            for (share, u) in out.loose_share.iter_mut().zip(&unit) {
+                *share += u * u;
             }
             out.loose.push((v, unit));
         }
