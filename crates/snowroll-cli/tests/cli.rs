@@ -1493,6 +1493,49 @@ fn negative_snow_depth_is_rejected_by_name_value_and_range() {
     );
 }
 
+/// A negative value in exponent form is a value, not a flag: `--snow-depth
+/// -1e-4` runs as `--snow-depth=-1e-4` (clap took `-1e-4` for an unknown
+/// flag and advised `-- -1e-4`, a tester's case), and a negative tube mass
+/// is refused by its own range, naming the value.
+#[test]
+fn negative_values_in_exponent_form_are_values() {
+    let roll = [
+        "simulate",
+        "--model",
+        "energy-thin",
+        "--alpha-deg",
+        "0",
+        "--r0",
+        "0.06",
+        "--core-radius",
+        "0.02",
+        "--t-end",
+        "1",
+        "--dt",
+        "0.5",
+    ];
+    let spaced = snowroll()
+        .args(roll)
+        .args(["--snow-depth", "-1e-4"])
+        .output()
+        .unwrap();
+    let joined = snowroll()
+        .args(roll)
+        .arg("--snow-depth=-1e-4")
+        .output()
+        .unwrap();
+    assert!(
+        spaced.status.success(),
+        "{}",
+        String::from_utf8_lossy(&spaced.stderr)
+    );
+    assert_eq!(spaced.stdout, joined.stdout);
+    let mut args = roll.to_vec();
+    args.extend(["--snow-depth", "-1e-4", "--core-mass", "-5e-3"]);
+    let err = fails(&args);
+    assert_one_line_error(&err, &["core_mass", "-0.005", "core_mass > 0 kg"]);
+}
+
 #[test]
 fn right_angle_slope_is_rejected() {
     let err = fails(&["simulate", "--model", "eq4", "--alpha-deg", "90"]);

@@ -33,12 +33,12 @@ pub struct FitArgs {
     #[arg(long, value_name = "KEY[,KEY...]", value_delimiter = ',')]
     pub free: Option<Vec<String>>,
 
-    /// The time t0 at which the body is let go, in s on the data's clock: the start of the fit if t0 is free, else its value [default: the first data time]
-    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    /// The time t0 at which the body is let go, in s on the data's clock: the start of the fit if t0 is free, else its value [default: fixed, the first data time; free, the release time of a constant acceleration through the middle and last points]
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
     pub t0: Option<f64>,
 
     /// The position x0 of the body at t0, in m on the data's ruler: the start of the fit if x0 is free, else its value [default: the first data distance]
-    #[arg(long, value_name = "M", allow_negative_numbers = true)]
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
     pub x0: Option<f64>,
 
     /// The names of the time and distance columns in DATA's header, TIME,DISTANCE (without the unit) [default: t, t_s or time; x, x_m or distance]

@@ -63,10 +63,14 @@ fn param_arg(p: &'static Param) -> Arg {
             .action(ArgAction::Set)
             .ignore_case(true)
             .value_parser(PossibleValuesParser::new(c.possible_values())),
+        // A value may start with a hyphen (clap takes `-0.0001` for a
+        // number but `-1e-4` for a flag): `--snow-depth -1e-4` works as
+        // `--snow-depth=-1e-4`, and a flag given in a value's place is
+        // refused as a value that is not a number.
         Kind::OptionalRealOr(word) => arg
             .value_name(p.value_name)
             .action(ArgAction::Set)
-            .allow_negative_numbers(true)
+            .allow_hyphen_values(true)
             .value_parser(clap::builder::ValueParser::new(
                 move |text: &str| -> Result<Value, String> {
                     if text.trim().eq_ignore_ascii_case(word) {
@@ -81,7 +85,7 @@ fn param_arg(p: &'static Param) -> Arg {
         Kind::Real | Kind::OptionalReal | Kind::Reals | Kind::Text => arg
             .value_name(p.value_name)
             .action(ArgAction::Set)
-            .allow_negative_numbers(true)
+            .allow_hyphen_values(true)
             .value_parser(clap::value_parser!(f64)),
     }
 }
