@@ -60,12 +60,12 @@ impl StopReason {
             StopReason::Turns => "completed the requested number of turns",
             StopReason::Stalled => "the speed returned to zero (stall)",
             StopReason::DoesNotStart => {
-                "the log does not start: a(0) <= 0, it cannot lift the snow (fn. 7), or, an \
-                 unwinding roll on a level floor, nothing in its equation drives it"
+                "the body does not start: a(0) <= 0 (a log or ball that cannot lift the snow, \
+                 fn. 7, or an unwinding roll on a level floor that nothing in its equation drives)"
             }
-            StopReason::Hop => "the normal force reached zero: the log hops (fn. 10)",
+            StopReason::Hop => "the normal force reached zero: the body hops (fn. 10)",
             StopReason::Slip => {
-                "the friction needed reached mu times the normal force: the log slips"
+                "the friction needed reached mu times the normal force: the body slips"
             }
             StopReason::Stuck => "the log cannot climb the step onto the new layer of snow (stuck)",
             StopReason::StepLimit => {
