@@ -71,9 +71,9 @@ pub enum Command {
     /// Every scenario flag and --model takes one value, a list `a,b,c` or a
     /// range `start:end:count` (both ends included; angles in degrees), e.g.
     /// `--alpha-deg 5:60:12 --snow-depth 0.001,0.01,0.1 --model torque-cm,energy`.
-    /// Rows come in grid order: model first, then alpha_deg, snow_depth, r0,
-    /// g, density, length, v0, t_end, x_end, rtol, atol, the last varying
-    /// fastest. Columns: index, the parameters, stop, t_s, x_m, v_m_s (at
+    /// Rows come in grid order: model first, then the swept parameters in
+    /// the order of the header's columns (the order of the flags below),
+    /// the last varying fastest. Columns: index, the parameters, stop, t_s, x_m, v_m_s (at
     /// the end of the run), a_over_g_sin_alpha (the acceleration there over
     /// g sin(alpha)), turns (full turns completed), error.
     Sweep(Box<SweepArgs>),
