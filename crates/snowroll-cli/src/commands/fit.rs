@@ -88,6 +88,9 @@ pub fn run(args: FitArgs) -> Result<()> {
         let label = data_label(measured.name.as_deref().unwrap_or(&data_name));
         let mut prov =
             figure::provenance(&fits.iter().map(|f| f.model).collect::<Vec<_>>(), &given);
+        // A free parameter's flag gave its start, not its value: each model
+        // fitted its own (the text and JSON outputs give them).
+        prov.params.retain(|(k, _)| !spec.free.contains(k));
         prov.params.push(("free".into(), spec.free.join(",")));
         draw(path, format, &fits, &track, &label, &prov)?;
     }

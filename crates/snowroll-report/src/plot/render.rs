@@ -83,7 +83,18 @@ impl Chart {
     ) -> Result<(), PlotError> {
         let px = |v: f64| (v * scale).round() as u32;
         let (width, height) = root.dim_in_pixel();
-        let (main, footer) = root.split_vertically(height.saturating_sub(px(28.0)));
+        // The footer takes as many lines as its text needs at this width
+        // (one for most figures; a fit's fixed parameters can fill two).
+        let font = (FAMILY, px(15.0)).into_font().color(&RGBColor(90, 90, 90));
+        let lines = wrap(
+            root,
+            &provenance.line(),
+            &font,
+            width.saturating_sub(px(24.0)),
+        );
+        let line_height = px(19.0);
+        let extra = line_height * u32::try_from(lines.len().saturating_sub(1)).unwrap_or(0);
+        let (main, footer) = root.split_vertically(height.saturating_sub(px(28.0) + extra));
         // The title spans the figure, above plot and legend.
         let (title, main) = main.split_vertically(px(TITLE_HEIGHT));
         let (plot, legend) = main.split_horizontally(width - self.legend_width(root, scale));
@@ -92,13 +103,15 @@ impl Chart {
         }
         root.fill(&WHITE).map_err(|e| self.backend(e))?;
         self.draw_title(&title, scale)?;
-        footer
-            .draw_text(
-                &provenance.line(),
-                &(FAMILY, px(15.0)).into_font().color(&RGBColor(90, 90, 90)),
-                (px(12.0) as i32, px(4.0) as i32),
-            )
-            .map_err(|e| self.backend(e))?;
+        for (k, line) in (0u32..).zip(&lines) {
+            footer
+                .draw_text(
+                    line,
+                    &font,
+                    (px(12.0) as i32, (px(4.0) + k * line_height) as i32),
+                )
+                .map_err(|e| self.backend(e))?;
+        }
         self.draw_plot(&plot, scale, AxisLook::FILE)
     }
 
@@ -480,5 +493,83 @@ pub(super) fn with_provenance_comment(svg: String, parts: &[&str]) -> String {
     match svg.find('>') {
         Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
         None => svg,
+    }
+}
+
+/// `text` in lines no wider than `width` px in `font`, broken after the
+/// commas of its list; one line when it fits (or cannot be measured).
+fn wrap<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    text: &str,
+    font: &TextStyle,
+    width: u32,
+) -> Vec<String> {
+    let fits = |line: &str| {
+        root.estimate_text_size(line, font)
+            .map_or(true, |(w, _)| w <= width)
+    };
+    if fits(text) {
+        return vec![text.to_string()];
+    }
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for piece in text.split_inclusive(", ") {
+        let longer = format!("{line}{piece}");
+        if line.is_empty() || fits(longer.trim_end()) {
+            line = longer;
+        } else {
+            lines.push(line.trim_end().to_string());
+            line = piece.to_string();
+        }
+    }
+    lines.push(line.trim_end().to_string());
+    lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Axis, Chart, Provenance, Series};
+
+    /// A footer longer than the figure is wide is drawn on several lines,
+    /// each starting inside the figure and every parameter on one of them
+    /// (a fit's footer ran off the right edge, hiding `core_radius` and
+    /// `free`); a short one stays on one line.
+    #[test]
+    fn a_long_footer_wraps_inside_the_figure() {
+        let chart = Chart::new(
+            "t",
+            "a title",
+            Axis::linear("x", "m"),
+            Axis::linear("y", "m"),
+        )
+        .with_series(Series::new("line", vec![(0.0, 0.0), (1.0, 1.0)]));
+        let footer_texts = |prov: &Provenance| {
+            let svg = chart.render_svg(prov).unwrap();
+            svg.split("<text")
+                .skip(1)
+                .filter_map(|t| t.split("</text>").next())
+                .filter(|t| t.contains("snowroll 0.1.0") || t.contains("key_"))
+                .count()
+        };
+        let long = Provenance {
+            software: "snowroll 0.1.0".into(),
+            params: (0..24)
+                .map(|i| (format!("key_{i}"), "0.125".to_string()))
+                .collect(),
+        };
+        let svg = chart.render_svg(&long).unwrap();
+        for i in 0..24 {
+            assert!(svg.contains(&format!("key_{i} = 0.125")), "key_{i} missing");
+        }
+        assert!(
+            footer_texts(&long) >= 2,
+            "one line: {}",
+            footer_texts(&long)
+        );
+        let short = Provenance {
+            software: "snowroll 0.1.0".into(),
+            params: vec![("key_0".into(), "1".into())],
+        };
+        assert_eq!(footer_texts(&short), 1);
     }
 }
