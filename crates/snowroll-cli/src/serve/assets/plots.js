@@ -14,7 +14,7 @@ const Plots = (function () {
   // Each run's line: solid for the first, then dashes, so that curves that
   // coincide (eq. (4) and Loney's fn. 4) are both seen.
   const DASHES = [[], [8, 5], [2, 5], [10, 4, 2, 4], [4, 6], [1, 4]];
-  const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'stall', stuck: 'stuck' };
+  const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'does not start', stuck: 'stuck' };
   const MAX_POINTS = 2000;
 
   // What each panel shows: for a trajectory (sim) and for a turn table.

@@ -8,7 +8,7 @@
 'use strict';
 
 const Race = (function () {
-  const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'stall', stuck: 'stuck' };
+  const MARKS = { hop: 'hop', slip: 'slip', stalled: 'stall', 'does-not-start': 'does not start', stuck: 'stuck' };
   let frame = null;
 
   // The row index at or before time t (rows ascend in t).
