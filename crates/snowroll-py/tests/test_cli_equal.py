@@ -58,6 +58,9 @@ CASES = [
     # The turn models' ledger (collision losses; the note's created lift).
     ("turns", {"turns": 4, "ledger": True}),
     ("turns-exact", {"turns": 3, "collision": "pivot", "on_hop": "continue", "ledger": True}),
+    # Issue 35: the unwinding roll, on a tube of its own mass (log and ball, with the ledger).
+    ("energy-thin", {"alpha_deg": 0, "snow_depth": -1e-4, "r0": 0.06, "core_radius": 0.02, "core_mass": 0.005, "density": 700, "length": 0.1, "t_end": 200}),
+    ("torque-cm", {"alpha_deg": 10, "snow_depth": -1e-4, "r0": 0.06, "core_radius": 0.02, "core_mass": 0.005, "shape": "sphere", "ledger": True, "t_end": 20}),
     # Issue 7's limits: a row limit and a step limit cut the run short.
     ("torque-cm", {"t_end": 30, "max_rows": 40}),
     ("energy", {"t_end": 30, "max_steps": 25}),
