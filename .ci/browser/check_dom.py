@@ -206,10 +206,10 @@ def main():
           and (report_dir / "figures" / "geometry.svg").is_file(),
           f"the problem section has the geometry drawing and {dom.model_rows} model rows (page declares {want_models})")
     results = sorted(i for i in dom.ids if i.startswith("result-"))
-    check("snowball-and-losses" in dom.ids and "unwinding-roll" in dom.ids and len(results) == 6
-          and "result-unwinding-textbook-speed" in results
+    check("snowball-and-losses" in dom.ids and "unwinding-roll" in dom.ids and len(results) == 7
+          and "result-unwinding-textbook-speed" in results and "result-unwinding-hollow-roll" in results
           and all(("claim-" + r[len("result-"):], r) in dom.hrefs for r in results),
-          "the snowball-and-losses section has its 5 results and the unwinding roll's its 1, "
+          "the snowball-and-losses section has its 5 results and the unwinding roll's its 2, "
           f"each linked to its claim ({results})")
     check("errata" in dom.ids and any(i.startswith("erratum-") for i in dom.ids),
           "the errata section is there, with a row per erratum")
