@@ -459,6 +459,34 @@ fn exact_data_fit_to_the_truth_and_converge() {
     );
 }
 
+/// The fit of eq. (15) to a SYNTHETIC track of a foam roll (2 mm foam, R 8
+/// cm, 20 cm wide, 150 kg/m³) on a tube of `tube` kg at 2 cm, filmed at 30
+/// frames a second for 3.1 s after it is let go at 0.4 s from 0.15 m,
+/// σ = 3 mm (noise `seed`): the tube's mass, t0 and x0 free.
+fn foam_fit(tube: f64, seed: u64) -> snowroll::fit::ModelFit {
+    let roll = ScenarioFile {
+        alpha_deg: 3.0,
+        snow_depth: -0.002,
+        r0: 0.08,
+        density: 150.0,
+        length: 0.2,
+        core_radius: Some(0.02),
+        core_mass: Some(tube),
+        ..ScenarioFile::default()
+    };
+    let t = times(93, 3.1);
+    let x: Vec<f64> = positions(ModelKind::EnergyThin, &roll, &t)
+        .iter()
+        .map(|v| v + 0.15)
+        .collect();
+    let shifted: Vec<f64> = t.iter().map(|v| v + 0.4).collect();
+    let track = Track::new(shifted, noisy(&x, 0.003, seed)).unwrap();
+    let mut s = spec(roll, &["core_mass", START_TIME, START_POSITION]);
+    s.t0 = None;
+    s.x0 = None;
+    fit(&track, &[ModelKind::EnergyThin], &s).unwrap().remove(0)
+}
+
 /// Correlated parameters at their minimum are a converged fit: a foam roll
 /// on a 10 g tube (SYNTHETIC, 30 frames a second over 3.1 s, σ = 3 mm, let
 /// go at 0.4 s from 0.15 m), with the tube's mass, t0 and x0 free (the mass
@@ -469,29 +497,9 @@ fn exact_data_fit_to_the_truth_and_converge() {
 /// unless its noise pushes the mass to its bound.
 #[test]
 fn correlated_parameters_at_their_minimum_converge() {
-    let roll = ScenarioFile {
-        alpha_deg: 3.0,
-        snow_depth: -0.002,
-        r0: 0.08,
-        density: 150.0,
-        length: 0.2,
-        core_radius: Some(0.02),
-        core_mass: Some(0.01),
-        ..ScenarioFile::default()
-    };
-    let t = times(93, 3.1);
-    let x: Vec<f64> = positions(ModelKind::EnergyThin, &roll, &t)
-        .iter()
-        .map(|v| v + 0.15)
-        .collect();
-    let shifted: Vec<f64> = t.iter().map(|v| v + 0.4).collect();
     let mut converged = 0;
     for seed in 0..12 {
-        let track = Track::new(shifted.clone(), noisy(&x, 0.003, 100 + seed)).unwrap();
-        let mut s = spec(roll, &["core_mass", START_TIME, START_POSITION]);
-        s.t0 = None;
-        s.x0 = None;
-        let f = &fit(&track, &[ModelKind::EnergyThin], &s).unwrap()[0];
+        let f = &foam_fit(0.01, 100 + seed);
         // A copy whose noise asks for a tube lighter than nothing ends on
         // the bound core_mass > 0, and is rightly not converged.
         let at_bound = f.params[0].value < 1e-6;
@@ -550,29 +558,9 @@ fn a_model_that_does_not_start_is_not_a_converged_fit() {
 /// t0, +0.00 x0", a tester's case).
 #[test]
 fn a_loose_parameter_is_named_alone() {
-    let roll = ScenarioFile {
-        alpha_deg: 3.0,
-        snow_depth: -0.002,
-        r0: 0.08,
-        density: 150.0,
-        length: 0.2,
-        core_radius: Some(0.02),
-        core_mass: Some(0.003),
-        ..ScenarioFile::default()
-    };
-    let t = times(93, 3.1);
-    let x: Vec<f64> = positions(ModelKind::EnergyThin, &roll, &t)
-        .iter()
-        .map(|v| v + 0.15)
-        .collect();
-    let shifted: Vec<f64> = t.iter().map(|v| v + 0.4).collect();
     let mut loose = 0;
     for seed in 0..12 {
-        let track = Track::new(shifted.clone(), noisy(&x, 0.003, 200 + seed)).unwrap();
-        let mut s = spec(roll, &["core_mass", START_TIME, START_POSITION]);
-        s.t0 = None;
-        s.x0 = None;
-        let f = &fit(&track, &[ModelKind::EnergyThin], &s).unwrap()[0];
+        let f = &foam_fit(0.003, 200 + seed);
         for u in &f.unseparated {
             loose += 1;
             assert_eq!(u.keys, ["core_mass"], "seed {seed}: {}", u.text);

@@ -39,32 +39,10 @@ pub(super) fn unwinding_textbook_speed(lab: &Lab) -> Result<Finding, SimError> {
         core_radius: Some(CORE),
         ..ScenarioFile::default()
     })?;
-    let mut worst: f64 = 0.0;
-    let mut numbers = Vec::new();
-    let mut at_half = f64::NAN;
-    for r in RADII {
-        let mut opts = SimOptions {
-            t_end: 1e6,
-            x_end: Some(PI * (r * r - R * R) / B),
-            sampling: Sampling::Ends,
-            ..SimOptions::default()
-        };
-        opts.tolerances.rtol = 1e-12;
-        opts.tolerances.atol = 1e-14;
-        let traj = lab.run(ModelKind::EnergyThin, &s, &opts)?;
-        let v = traj.stop.v_m_s;
-        let want = 4.0 * g * (R.powi(3) - r.powi(3)) / (3.0 * r * r);
-        let dev = if traj.stop.reason == StopReason::Distance {
-            (v * v / want - 1.0).abs()
-        } else {
-            f64::INFINITY
-        };
-        worst = worst.max(dev);
-        numbers.extend([v, want]);
-        if r == R / 2.0 {
-            at_half = v;
-        }
-    }
+    let textbook = |r: f64| 4.0 * g * (R.powi(3) - r.powi(3)) / (3.0 * r * r);
+    let (worst, numbers, speeds) = speeds_against(lab, &s, R, &RADII, textbook)?;
+    // The third radius is R/2.
+    let at_half = speeds[2];
     let opts = SimOptions {
         t_end: 10.0,
         sampling: Sampling::Ends,
@@ -130,33 +108,10 @@ pub(super) fn unwinding_hollow_roll(lab: &Lab) -> Result<Finding, SimError> {
     let inertia = |r: f64| TUBE * CORE * CORE + PI * rho * l * (r.powi(4) - CORE.powi(4)) / 2.0;
     let closed =
         |r: f64| 2.0 * g * (mass(r0) * r0 - mass(r) * r) / (mass(r) + inertia(r) / (r * r));
-    let mut worst: f64 = 0.0;
-    let mut numbers = Vec::new();
-    let mut at_half = f64::NAN;
+    let radii = [0.055, 0.045, r0 / 2.0, 0.025];
+    let (worst, numbers, speeds) = speeds_against(lab, &s, r0, &radii, closed)?;
     // The third radius is R/2.
-    for (i, r) in [0.055, 0.045, r0 / 2.0, 0.025].into_iter().enumerate() {
-        let mut opts = SimOptions {
-            t_end: 1e6,
-            x_end: Some(PI * (r * r - r0 * r0) / B),
-            sampling: Sampling::Ends,
-            ..SimOptions::default()
-        };
-        opts.tolerances.rtol = 1e-12;
-        opts.tolerances.atol = 1e-14;
-        let traj = lab.run(ModelKind::EnergyThin, &s, &opts)?;
-        let v = traj.stop.v_m_s;
-        let want = closed(r);
-        let dev = if traj.stop.reason == StopReason::Distance {
-            (v * v / want - 1.0).abs()
-        } else {
-            f64::INFINITY
-        };
-        worst = worst.max(dev);
-        numbers.extend([v, want]);
-        if i == 2 {
-            at_half = v;
-        }
-    }
+    let at_half = speeds[2];
     let textbook = (14.0 * g * r0 / 3.0).sqrt();
     let ok = worst.is_finite() && HOLLOW_ROLL.accepts_deviation(worst);
     Ok(Finding {
@@ -171,4 +126,39 @@ pub(super) fn unwinding_hollow_roll(lab: &Lab) -> Result<Finding, SimError> {
             HOLLOW_ROLL.tolerance
         ),
     })
+}
+
+/// energy-thin on `s` (a roll of radius `r0` unwinding from rest) stopped at
+/// each of `radii` (x_end = π(r² − r0²)/b, rtol 1e-12) against v² = `want(r)`:
+/// the largest |v²/want − 1| (infinite for a run that stopped before its
+/// radius), every (v, want) in turn, and each v.
+fn speeds_against(
+    lab: &Lab,
+    s: &Scenario,
+    r0: f64,
+    radii: &[f64],
+    want: impl Fn(f64) -> f64,
+) -> Result<(f64, Vec<f64>, Vec<f64>), SimError> {
+    let (mut worst, mut numbers, mut speeds) = (0.0_f64, Vec::new(), Vec::new());
+    for &r in radii {
+        let mut opts = SimOptions {
+            t_end: 1e6,
+            x_end: Some(PI * (r * r - r0 * r0) / s.snow_depth()),
+            sampling: Sampling::Ends,
+            ..SimOptions::default()
+        };
+        opts.tolerances.rtol = 1e-12;
+        opts.tolerances.atol = 1e-14;
+        let traj = lab.run(ModelKind::EnergyThin, s, &opts)?;
+        let (v, want) = (traj.stop.v_m_s, want(r));
+        let dev = if traj.stop.reason == StopReason::Distance {
+            (v * v / want - 1.0).abs()
+        } else {
+            f64::INFINITY
+        };
+        worst = worst.max(dev);
+        numbers.extend([v, want]);
+        speeds.push(v);
+    }
+    Ok((worst, numbers, speeds))
 }

@@ -4,6 +4,8 @@
 
 use std::sync::OnceLock;
 
+use plotters::coord::Shift;
+use plotters::prelude::{DrawingArea, DrawingBackend, TextStyle};
 use plotters::style::FontStyle;
 
 use super::PlotError;
@@ -34,4 +36,34 @@ pub fn register_embedded_font() -> Result<(), PlotError> {
     } else {
         Err(PlotError::Font)
     }
+}
+
+/// `text` in lines no wider than `width` px in `font`, broken after the
+/// commas of its list; one line when it fits (or cannot be measured).
+pub(super) fn wrap<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    text: &str,
+    font: &TextStyle,
+    width: u32,
+) -> Vec<String> {
+    let fits = |line: &str| {
+        root.estimate_text_size(line, font)
+            .map_or(true, |(w, _)| w <= width)
+    };
+    if fits(text) {
+        return vec![text.to_string()];
+    }
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for piece in text.split_inclusive(", ") {
+        let longer = format!("{line}{piece}");
+        if line.is_empty() || fits(longer.trim_end()) {
+            line = longer;
+        } else {
+            lines.push(line.trim_end().to_string());
+            line = piece.to_string();
+        }
+    }
+    lines.push(line.trim_end().to_string());
+    lines
 }

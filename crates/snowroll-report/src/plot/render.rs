@@ -8,7 +8,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::font::{FAMILY, PAGE_TEXT};
+use super::font::{wrap, FAMILY, PAGE_TEXT};
 use super::legend::{colour_slots, PALETTE};
 use super::ticks::{log_ticks, AxisTicks};
 use super::{
@@ -494,36 +494,6 @@ pub(super) fn with_provenance_comment(svg: String, parts: &[&str]) -> String {
         Some(end) => format!("{}\n{comment}{}", &svg[..=end], &svg[end + 1..]),
         None => svg,
     }
-}
-
-/// `text` in lines no wider than `width` px in `font`, broken after the
-/// commas of its list; one line when it fits (or cannot be measured).
-fn wrap<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    text: &str,
-    font: &TextStyle,
-    width: u32,
-) -> Vec<String> {
-    let fits = |line: &str| {
-        root.estimate_text_size(line, font)
-            .map_or(true, |(w, _)| w <= width)
-    };
-    if fits(text) {
-        return vec![text.to_string()];
-    }
-    let mut lines: Vec<String> = Vec::new();
-    let mut line = String::new();
-    for piece in text.split_inclusive(", ") {
-        let longer = format!("{line}{piece}");
-        if line.is_empty() || fits(longer.trim_end()) {
-            line = longer;
-        } else {
-            lines.push(line.trim_end().to_string());
-            line = piece.to_string();
-        }
-    }
-    lines.push(line.trim_end().to_string());
-    lines
 }
 
 #[cfg(test)]

@@ -79,6 +79,35 @@ fn negligible(gain: f64, s: f64, dof: usize) -> bool {
     gain <= 1e-10 * s || gain <= 0.01 * s / dof.max(1) as f64
 }
 
+/// Why a search that stopped on negligible steps is not converged.
+const STUCK_REASON: &str = "stuck: the steps became negligible while a step without limits would \
+     still lower the residuals much (the model refuses the parameters just beyond, e.g. a depth \
+     reaching 0 or a radius its limit): start nearer the answer";
+
+/// Whether a search that found no step lowering S is at the minimum, and
+/// why: the Gauss–Newton `gain` still promised, against S = `s` with `dof`
+/// degrees of freedom and the runs' accuracy `floor`.
+fn without_a_step(gain: f64, s: f64, dof: usize, floor: f64) -> (bool, &'static str) {
+    if gain <= 1e-10 * s || s <= floor {
+        (
+            true,
+            "no step lowers the residuals further (at the minimum to rounding)",
+        )
+    } else if negligible(gain, s, dof) {
+        (
+            true,
+            "no step lowers the residuals further (within a tenth of the standard errors of the \
+             minimum)",
+        )
+    } else {
+        (
+            false,
+            "no step lowers the residuals, yet the gradient is not zero (stuck, e.g. on a bound or \
+             where the model cannot run)",
+        )
+    }
+}
+
 /// Runs the search.
 ///
 /// # Errors
@@ -134,15 +163,7 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
             // No step lowers S: converged if the gradient promises nothing
             // measurable, else stuck.
             let gain = gauss_newton_gain(&a, &g, &diag);
-            let stationary = negligible(gain, s, r.len() - n) || s <= problem.floor;
-            let reason = if gain <= 1e-10 * s || s <= problem.floor {
-                "no step lowers the residuals further (at the minimum to rounding)"
-            } else if stationary {
-                "no step lowers the residuals further (within a tenth of the standard errors of \
-                 the minimum)"
-            } else {
-                "no step lowers the residuals, yet the gradient is not zero (stuck, e.g. on a bound or where the model cannot run)"
-            };
+            let (stationary, reason) = without_a_step(gain, s, r.len() - n, problem.floor);
             return Ok(plateau(
                 done(p, r, jac, iterations, stationary, reason),
                 moving,
@@ -166,14 +187,10 @@ pub(crate) fn minimise(problem: &Problem, f: &mut Residuals<'_>) -> Result<Outco
             && s > problem.floor;
         if small || iterations >= problem.max_iterations {
             let jac = jacobian(problem, f, &p, &r)?;
-            let reason = if stuck {
-                "stuck: the steps became negligible while a step without limits would still lower \
-                 the residuals much (the model refuses the parameters just beyond, e.g. a depth \
-                 reaching 0 or a radius its limit): start nearer the answer"
-            } else if small {
-                "the steps became negligible"
-            } else {
-                "reached the most iterations allowed"
+            let reason = match (stuck, small) {
+                (true, _) => STUCK_REASON,
+                (false, true) => "the steps became negligible",
+                (false, false) => "reached the most iterations allowed",
             };
             return Ok(plateau(
                 done(p, r, jac, iterations, small && !stuck, reason),

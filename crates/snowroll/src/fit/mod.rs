@@ -28,7 +28,6 @@ mod track;
 
 use crate::model_kind::ModelKind;
 use crate::params::{Group, Kind, Param, Settings, Value};
-use crate::trajectory::StopReason;
 
 pub use error::FitError;
 pub use stats::Unseparated;
@@ -357,14 +356,6 @@ pub fn fit(track: &Track, models: &[ModelKind], spec: &FitSpec) -> Result<Vec<Mo
     Ok(fits)
 }
 
-/// S at which the runs match the data to their own accuracy: each point off
-/// by rtol times the largest distance of the track ([`lm::Problem::floor`]).
-fn accuracy_floor(track: &Track, spec: &FitSpec) -> f64 {
-    let size = track.x().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-    let off = spec.settings.options.tolerances.rtol * size;
-    track.len() as f64 * off * off
-}
-
 fn fit_one(
     track: &Track,
     kind: ModelKind,
@@ -398,7 +389,7 @@ fn fit_one(
             n => n,
         },
         names: keys.clone(),
-        floor: accuracy_floor(track, spec),
+        floor: track::accuracy_floor(track, spec.settings.options.tolerances.rtol),
     };
     let start_error = |reason| FitError::Start {
         model: kind.id(),
@@ -418,8 +409,7 @@ fn fit_one(
     let (aic, bic) = stats::criteria(ssr, m, summary.rank);
     let (settings, t0, x0) = at(plan, spec, track, &out.p).map_err(start_error)?;
     let params = fit_params(plan, &keys, &out.p, &summary.stderr);
-    let does_not_start =
-        ending(kind, &settings, spec.atol_given, (t0, x0), track) == Some(StopReason::DoesNotStart);
+    let not_started = track::not_started(kind, &settings, spec.atol_given, (t0, x0), track);
     Ok(ModelFit {
         model: kind,
         params,
@@ -432,15 +422,8 @@ fn fit_one(
         aic,
         bic,
         rank: 0,
-        converged: out.converged && !does_not_start,
-        reason: if does_not_start {
-            "the model does not start from rest here (its acceleration at rest is not \
-             positive, e.g. a torque balance on a level floor), so x(t) stays at x0 and \
-             cannot follow the data"
-                .to_string()
-        } else {
-            out.reason
-        },
+        converged: out.converged && not_started.is_none(),
+        reason: not_started.map_or(out.reason, str::to_string),
         iterations: out.iterations,
         residuals: out.r,
         settings,
@@ -448,27 +431,6 @@ fn fit_one(
         t0,
         x0,
     })
-}
-
-/// Why the run of `kind` at the fitted `settings`, let go at `(t0, x0)`,
-/// stopped; `None` if it could not run or nothing ran.
-fn ending(
-    kind: ModelKind,
-    settings: &Settings,
-    atol_given: bool,
-    (t0, x0): (f64, f64),
-    track: &Track,
-) -> Option<StopReason> {
-    let model = kind.build();
-    let run = track::Run {
-        kind,
-        model: model.as_ref(),
-        settings,
-        atol_given,
-        t0,
-        x0,
-    };
-    run.positions(track.t(), &mut Vec::new()).ok().flatten()
 }
 
 /// The free parameters as fitted, with their units, values `p`, errors and

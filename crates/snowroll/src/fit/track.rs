@@ -167,3 +167,38 @@ impl Run<'_> {
         Ok(Some(end.stop.reason))
     }
 }
+
+/// S at which the runs match the data to their own accuracy: each point off
+/// by `rtol` times the largest distance of the track ([`super::lm::Problem::floor`]).
+pub(crate) fn accuracy_floor(track: &Track, rtol: f64) -> f64 {
+    let size = track.x().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    let off = rtol * size;
+    track.len() as f64 * off * off
+}
+
+/// Why a fit is not converged though its search is, when the run of `kind`
+/// at the fitted `settings`, let go at `(t0, x0)`, does not start: it then
+/// stays at x0 and cannot follow data that move; `None` otherwise (or when
+/// it cannot run).
+pub(crate) fn not_started(
+    kind: ModelKind,
+    settings: &Settings,
+    atol_given: bool,
+    (t0, x0): (f64, f64),
+    track: &Track,
+) -> Option<&'static str> {
+    let model = kind.build();
+    let run = Run {
+        kind,
+        model: model.as_ref(),
+        settings,
+        atol_given,
+        t0,
+        x0,
+    };
+    let stop = run.positions(track.t(), &mut Vec::new()).ok().flatten()?;
+    (stop == StopReason::DoesNotStart).then_some(
+        "the model does not start from rest here (its acceleration at rest is not positive, e.g. \
+         a torque balance on a level floor), so x(t) stays at x0 and cannot follow the data",
+    )
+}
