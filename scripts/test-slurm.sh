@@ -87,12 +87,14 @@ if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
 
 # The grid of the array test: 80,000 trajectories through the ODE solver,
 # about a second of CPU in all on an idle machine (13 us each). The grid of
-# the cancel test: the same points at rtol 1e-12, about 25 us each, so each
-# of its two tasks runs for about 1 s on an idle CPU (3-5 s on a loaded
-# one), long enough to cancel it mid-run (here it was cancelled within the
-# first tenth); its rows go to FILE.partial 200 at a time.
+# the cancel test: four times the slopes at rtol 1e-12, 320,000 trajectories
+# of about 9 us each (the Taylor-series steps made them 3x faster), so each
+# of its two tasks runs for about 1.5 s on an idle CPU, long enough to cancel
+# it mid-run: with 80,000 trajectories a task of one of two copies run at
+# once finished (in 0.4 s) before scancel reached it. Its rows go to
+# FILE.partial 200 at a time.
 export GRID_FLAGS="--model torque-cm,torque-contact,energy,quasi-circular --alpha-deg 1:89:200 --snow-depth 0.0001:0.1:100 --t-end 100 --method ode"
-cancel_grid="--model torque-cm,torque-contact,energy,quasi-circular --alpha-deg 1:89:200 --snow-depth 0.0001:0.1:100 --t-end 100 --method ode --rtol 1e-12 --chunk-rows 200"
+cancel_grid="--model torque-cm,torque-contact,energy,quasi-circular --alpha-deg 1:89:800 --snow-depth 0.0001:0.1:100 --t-end 100 --method ode --rtol 1e-12 --chunk-rows 200"
 export SNOWROLL=$cli
 
 tmp=$(mktemp -d /tmp/snowroll-slurm.XXXXXX)
@@ -359,7 +361,7 @@ if [ -e "$tmp/out2/sweep-1.csv" ] || [ ! -e "$partial" ]; then
     exit 1
 fi
 left=$(grep -vc '^#' "$partial")
-echo "test-slurm: cancelled ${job}_1 with $((left - 1)) of 40000 rows in its partial file"
+echo "test-slurm: cancelled ${job}_1 with $((left - 1)) of 160000 rows in its partial file"
 job=$(cd "$tmp/out2" && SHARDS=2 OUT="$tmp/out2" bounded sbatch --parsable --array=1 \
     --cpus-per-task=1 "$root/examples/slurm-sweep.sh")
 echo "test-slurm: resubmitted task 1 as job $job"
