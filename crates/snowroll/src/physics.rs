@@ -35,14 +35,10 @@ pub fn growth_at(s: &Scenario, x: Meters, accretes: bool) -> Growth {
 /// `T = ½ (M (1 + r′²) + I/r²) v²` with M and I of [`crate::body::Tube`].
 pub fn kinetic_energy(s: &Scenario, x: Meters, v: MetersPerSecond) -> Joules {
     let (rho, l, b) = (s.density(), s.length(), s.snow_depth());
-    if s.core_mass().is_some() {
+    if s.shape() == Shape::Sphere || s.core_mass().is_some() {
         let gr = growth_at(s, x, true);
         let j = gr.tube.map_or(s.shape().inertia_factor(), |t| t.inertia);
         return 0.5 * gr.mass * (1.0 + j + gr.dr_dx * gr.dr_dx) * v * v;
-    }
-    if s.shape() == Shape::Sphere {
-        let gr = growth_at(s, x, true);
-        return 0.5 * gr.mass * (1.0 + s.shape().inertia_factor() + gr.dr_dx * gr.dr_dx) * v * v;
     }
     let r = radius_at(s, x);
     3.0 * PI * rho * l * r * r * v * v / 4.0 + rho * l * b * b * v * v / (8.0 * PI)

@@ -47,6 +47,23 @@ fn spec(start: ScenarioFile, free: &[&str]) -> FitSpec {
     }
 }
 
+/// Each fitted parameter of `f` within `k` of its standard errors of its
+/// truth in `want` (the free parameters in order).
+fn assert_within(f: &snowroll::fit::ModelFit, want: &[f64], k: f64) {
+    assert_eq!(f.params.len(), want.len());
+    for (p, want) in f.params.iter().zip(want) {
+        let se = p
+            .stderr
+            .unwrap_or_else(|| panic!("{} has no standard error", p.key));
+        assert!(
+            (p.value - want).abs() < k * se,
+            "{} = {} ± {se}, truth {want}",
+            p.key,
+            p.value
+        );
+    }
+}
+
 const CIRCULAR: [ModelKind; 7] = [
     ModelKind::Snowless,
     ModelKind::TorqueCm,
@@ -195,15 +212,7 @@ fn a_fit_started_far_away_converges_or_says_it_did_not() {
     let fits = fit(&track, &[ModelKind::Energy], &far).unwrap();
     let f = &fits[0];
     if f.converged {
-        for (p, want) in f.params.iter().zip([30.0, 0.01, 0.0]) {
-            let se = p.stderr.unwrap();
-            assert!(
-                (p.value - want).abs() < 5.0 * se,
-                "{} = {} ± {se}",
-                p.key,
-                p.value
-            );
-        }
+        assert_within(f, &[30.0, 0.01, 0.0], 5.0);
     } else {
         assert!(!f.reason.is_empty());
     }
@@ -235,15 +244,7 @@ fn start_time_and_position_are_recovered() {
     s.x0 = None;
     let f = &fit(&track, &[ModelKind::Loney], &s).unwrap()[0];
     assert!(f.converged, "{}", f.reason);
-    for (p, want) in f.params.iter().zip([30.0, 0.25, 1.5]) {
-        let se = p.stderr.unwrap();
-        assert!(
-            (p.value - want).abs() < 5.0 * se,
-            "{} = {} ± {se}",
-            p.key,
-            p.value
-        );
-    }
+    assert_within(f, &[30.0, 0.25, 1.5], 5.0);
 }
 
 /// Bad data and bad free parameters are refused with a message naming the
@@ -323,8 +324,7 @@ fn the_unwinding_roll_fits_and_names_its_combination() {
     )
     .unwrap()[0];
     assert!(f.converged, "{}", f.reason);
-    let b = &f.params[0];
-    assert!((b.value + 1e-4).abs() < 5.0 * b.stderr.unwrap(), "{b:?}");
+    assert_within(f, &[-1e-4], 5.0);
 }
 
 /// The true model (eq. (15), a roll of 0.1 mm paper, R 5 cm, core 2 cm,
@@ -369,15 +369,7 @@ fn converged_means_fitted_when_a_limit_blocks_the_search() {
     s.t0 = None;
     let f = &fit(&track, &[ModelKind::EnergyThin], &s).unwrap()[0];
     assert!(f.converged, "{}", f.reason);
-    for (p, want) in f.params.iter().zip([-1e-4, 0.3, 0.12]) {
-        let se = p.stderr.unwrap();
-        assert!(
-            (p.value - want).abs() < 5.0 * se,
-            "{} = {} ± {se}",
-            p.key,
-            p.value
-        );
-    }
+    assert_within(f, &[-1e-4, 0.3, 0.12], 5.0);
 }
 
 /// A roll's tube is weighed by its motion: on a level floor eq. (15) with a
@@ -411,8 +403,7 @@ fn the_tubes_mass_is_fitted_from_the_motion() {
     )
     .unwrap()[0];
     assert!(f.converged, "{}", f.reason);
-    let m = &f.params[0];
-    assert!((m.value - 0.005).abs() < 4.0 * m.stderr.unwrap(), "{m:?}");
+    assert_within(f, &[0.005], 4.0);
     // Without the tube's mass: r0 free (the paper's amount) cannot make up
     // for the tube.
     let uniform = &fit(&track, &[ModelKind::EnergyThin], &spec(roll(None), &["r0"])).unwrap()[0];
